@@ -1,0 +1,76 @@
+"""The framebuffer state a trace replays into."""
+from __future__ import annotations
+
+import numpy as np
+
+MAX_GRID = 4096
+NO_COLOR = -1  # stored in the colour buffer where no value was written
+
+
+class Raster:
+    """Pixels of a W x H grid, row 0 at y = 0.
+
+    ``counts`` says how often each pixel was written (duplicates show as
+    counts above one); ``colors`` holds the last packed 0xRRGGBB value
+    written, and exists only when the run writes values.
+    """
+
+    def __init__(self, width: int, height: int, with_colors: bool = False):
+        check_grid(width, height)
+        self.width = width
+        self.height = height
+        self.counts = np.zeros((height, width), dtype=np.int32)
+        self.colors = np.full((height, width), NO_COLOR, np.int64) if with_colors else None
+
+    def copy(self) -> "Raster":
+        other = Raster.__new__(Raster)
+        other.width, other.height = self.width, self.height
+        other.counts = self.counts.copy()
+        other.colors = None if self.colors is None else self.colors.copy()
+        return other
+
+    def inside(self, x: int, y: int) -> bool:
+        return 0 <= x < self.width and 0 <= y < self.height
+
+    def write(self, x: int, y: int, value=None) -> None:
+        """Write one pixel; pixels outside the grid are clipped."""
+        if not self.inside(x, y):
+            return
+        self.counts[y, x] += 1
+        if self.colors is not None and value is not None:
+            self.colors[y, x] = int(value)
+
+    def write_many(self, flat: np.ndarray, values: np.ndarray | None = None) -> None:
+        """Write pixels given as flat indices y * W + x, in order.
+
+        Negative indices stand for pixels outside the grid and are skipped.
+        """
+        keep = flat >= 0
+        flat = flat[keep]
+        if flat.size == 0:
+            return
+        np.add.at(self.counts.reshape(-1), flat, 1)
+        if self.colors is not None and values is not None:
+            _write_last(self.colors.reshape(-1), flat, values[keep])
+
+    def written(self) -> np.ndarray:
+        """Boolean mask of pixels written at least once."""
+        return self.counts > 0
+
+    def bytes(self) -> int:
+        extra = 0 if self.colors is None else self.colors.nbytes
+        return self.counts.nbytes + extra
+
+
+def _write_last(target: np.ndarray, flat: np.ndarray, values: np.ndarray) -> None:
+    # Where a pixel is written more than once the last write must win;
+    # np.unique on the reversed order finds each pixel's last write.
+    reversed_flat = flat[::-1]
+    pixels, first = np.unique(reversed_flat, return_index=True)
+    target[pixels] = values[::-1][first].astype(np.int64)
+
+
+def check_grid(width: int, height: int) -> None:
+    if not (1 <= width <= MAX_GRID and 1 <= height <= MAX_GRID):
+        raise ValueError(
+            f"grid {width}x{height} is outside 1x1 .. {MAX_GRID}x{MAX_GRID}")

@@ -1,0 +1,251 @@
+"""Algorithm specs by name: family, inputs, options, pseudo-code, generator."""
+from __future__ import annotations
+
+import math
+import re
+from dataclasses import dataclass, field
+from typing import Callable, Sequence
+
+from .steps import CodeLine
+from .trace import DEFAULT_STEP_CAP, Trace
+
+FAMILIES = ("lines",)
+# Modules that register specs when imported; add a family's module here.
+_FAMILY_MODULES = ("algorithms.lines",)
+
+
+class InputError(ValueError):
+    """Bad input from a person: the message is shown as it is."""
+
+
+@dataclass(frozen=True)
+class Option:
+    """A typed option with a default and, where it applies, a range."""
+
+    name: str
+    kind: str  # "int", "float", "bool", "choice" or "colors"
+    default: object
+    help: str = ""
+    minimum: float | None = None
+    maximum: float | None = None
+    choices: tuple[str, ...] = ()  # names a "choice" takes, or a number may be instead of
+
+    def parse(self, text: str):
+        """Turn command-line text into a checked value."""
+        text = text.strip()
+        if text in self.choices:
+            return text
+        if self.kind == "bool":
+            if text.lower() in ("true", "yes", "on", "1"):
+                return True
+            if text.lower() in ("false", "no", "off", "0"):
+                return False
+            raise InputError(f"option {self.name}: expected true or false, got {text!r}")
+        if self.kind == "choice":
+            raise InputError(f"option {self.name}: expected one of {', '.join(self.choices)}, got {text!r}")
+        if self.kind == "colors":
+            return self.check([part for part in text.split(",") if part.strip()])
+        return self.check(parse_number(text, f"option {self.name}", integer=self.kind == "int"))
+
+    def check(self, value):
+        """Check a typed value (from the command line or a widget)."""
+        if isinstance(value, str) and value in self.choices:
+            return value
+        checker = _CHECKERS.get(self.kind)
+        if checker is None:
+            raise InputError(f"option {self.name}: unknown kind {self.kind!r}")
+        return checker(self, value)
+
+    def describe(self) -> dict:
+        info = {"name": self.name, "type": self.kind, "default": self.default, "help": self.help}
+        if self.minimum is not None:
+            info["min"] = self.minimum
+        if self.maximum is not None:
+            info["max"] = self.maximum
+        if self.choices:
+            info["choices"] = list(self.choices)
+        return info
+
+
+def _check_number(option: Option, value):
+    if isinstance(value, bool) or not isinstance(value, (int, float)):
+        raise InputError(f"option {option.name}: expected a number, got {value!r}")
+    if not math.isfinite(value):
+        raise InputError(f"option {option.name}: {value} is not a finite number")
+    if option.kind == "int" and not float(value).is_integer():
+        raise InputError(f"option {option.name}: expected a whole number, got {value}")
+    if option.minimum is not None and value < option.minimum:
+        raise InputError(f"option {option.name}: {value} is below the minimum {option.minimum}")
+    if option.maximum is not None and value > option.maximum:
+        raise InputError(f"option {option.name}: {value} is above the maximum {option.maximum}")
+    return int(value) if option.kind == "int" else float(value)
+
+
+def _check_bool(option: Option, value):
+    if not isinstance(value, bool):
+        raise InputError(f"option {option.name}: expected true or false, got {value!r}")
+    return value
+
+
+def _check_choice(option: Option, value):
+    raise InputError(f"option {option.name}: expected one of {', '.join(option.choices)}, got {value!r}")
+
+
+_COLOR = re.compile(r"#[0-9a-fA-F]{6}")
+
+
+def _check_colors(option: Option, value):
+    if not isinstance(value, (list, tuple)):
+        raise InputError(f"option {option.name}: expected a list of #rrggbb colours")
+    colors = []
+    for item in value:
+        if not isinstance(item, str) or not _COLOR.fullmatch(item.strip()):
+            raise InputError(f"option {option.name}: {item!r} is not a #rrggbb colour")
+        colors.append(item.strip().lower())
+    return tuple(colors)
+
+
+_CHECKERS = {"int": _check_number, "float": _check_number, "bool": _check_bool,
+             "choice": _check_choice, "colors": _check_colors}
+
+
+def parse_number(text: str, what: str, integer: bool = False):
+    """Parse a finite number; whole numbers only when ``integer``."""
+    try:
+        value = float(text)
+    except ValueError:
+        raise InputError(f"{what}: {text!r} is not a number") from None
+    if not math.isfinite(value):
+        raise InputError(f"{what}: {text!r} is not a finite number")
+    if integer:
+        if not value.is_integer():
+            raise InputError(f"{what}: {text!r} is not a whole number")
+        return int(value)
+    return value
+
+
+@dataclass(frozen=True)
+class Inputs:
+    """What points an algorithm takes."""
+
+    count: int  # exact number of points
+    integer: bool = True
+    names: tuple[str, ...] = ()  # e.g. ("P", "Q")
+
+    def check(self, points: Sequence[Sequence[float]]) -> tuple:
+        if len(points) != self.count:
+            raise InputError(f"expected {self.count} points, got {len(points)}")
+        checked = []
+        for n, point in enumerate(points):
+            if len(point) != 2:
+                raise InputError(f"point {n + 1} must have two coordinates")
+            for value in point:
+                if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value):
+                    raise InputError(f"point {n + 1}: {value!r} is not a finite number")
+                if self.integer and not float(value).is_integer():
+                    raise InputError(f"point {n + 1}: {value} is not a whole pixel coordinate")
+            checked.append(tuple(int(v) if self.integer else float(v) for v in point))
+        return tuple(checked)
+
+
+@dataclass(frozen=True)
+class AlgorithmSpec:
+    """Everything the program knows about one algorithm."""
+
+    name: str
+    title: str
+    family: str
+    summary: str
+    inputs: Inputs
+    options: tuple[Option, ...]
+    # The pseudo-code, which may depend on the points and options (the
+    # tie rule Bresenham uses depends on both, say).
+    code: Callable[[tuple, dict], tuple[CodeLine, ...]]
+    generator: Callable[[tuple, dict], object]
+    kernel: Callable[[tuple, dict], object] | None = None
+    notes: tuple[str, ...] = field(default=())  # shown under the pseudo-code
+    # Extra panel rows (name, text) for a step, beyond the named variables:
+    # the decision and its update, say. Called for the visible step only.
+    explain: Callable[[Trace, int], list[tuple[str, str]]] | None = None
+
+    def option(self, name: str) -> Option:
+        for option in self.options:
+            if option.name == name:
+                return option
+        known = ", ".join(o.name for o in self.options) or "none"
+        raise InputError(f"{self.name} has no option {name!r} (options: {known})")
+
+    def resolve(self, given: dict | None = None) -> dict:
+        """Defaults overlaid with the given options, each checked."""
+        options = {option.name: option.default for option in self.options}
+        for name, value in (given or {}).items():
+            options[name] = self.option(name).check(value)
+        return options
+
+    def frames(self, points, options: dict | None = None):
+        """Check the inputs and start the generator."""
+        options = self.resolve(options)
+        return self.generator(self.inputs.check(points), options)
+
+    def record(self, points, options: dict | None = None, grid=(32, 24),
+               step_cap: int = DEFAULT_STEP_CAP) -> Trace:
+        options = self.resolve(options)
+        points = self.inputs.check(points)
+        frames = self.generator(points, options)
+        return Trace.record(frames, self.code(points, options), grid[0], grid[1], step_cap)
+
+    def panel_rows(self, trace: Trace, i: int) -> list[tuple[str, str]]:
+        """Rows for the variables panel at step i: named values, then extras."""
+        rows = [(name, format_value(value)) for name, value in trace.variables_at(i).items()]
+        if self.explain is not None:
+            rows += self.explain(trace, i)
+        return rows
+
+    def describe(self) -> dict:
+        return {"name": self.name, "title": self.title, "family": self.family,
+                "summary": self.summary,
+                "inputs": {"points": self.inputs.count, "integer": self.inputs.integer},
+                "options": [option.describe() for option in self.options],
+                "fast_kernel": self.kernel is not None}
+
+
+def format_value(value) -> str:
+    """Short text for a panel: whole numbers without a decimal point."""
+    if isinstance(value, bool) or not isinstance(value, (int, float)):
+        return str(value)
+    if isinstance(value, float) and value.is_integer() and abs(value) < 2 ** 53:
+        return str(int(value))
+    if isinstance(value, float):
+        return f"{value:.9g}"
+    return str(value)
+
+
+_REGISTRY: dict[str, AlgorithmSpec] = {}
+
+
+def register(spec: AlgorithmSpec) -> AlgorithmSpec:
+    if spec.name in _REGISTRY:
+        raise ValueError(f"algorithm {spec.name!r} registered twice")
+    if spec.family not in FAMILIES:
+        raise ValueError(f"unknown family {spec.family!r}")
+    _REGISTRY[spec.name] = spec
+    return spec
+
+
+def _load() -> None:
+    import importlib
+    for module in _FAMILY_MODULES:
+        importlib.import_module(module)
+
+
+def all_specs() -> list[AlgorithmSpec]:
+    _load()
+    return list(_REGISTRY.values())
+
+
+def get(name: str) -> AlgorithmSpec:
+    _load()
+    try:
+        return _REGISTRY[name]
+    except KeyError:
+        raise InputError(f"unknown algorithm {name!r}; `rasterlab list` shows them") from None

@@ -1,0 +1,302 @@
+"""Record a step generator once; give random access to every step.
+
+Frames are stored as columns (pseudo-code line, x, y and one float64
+column per named value), about 10 + 8k bytes a step for k values, instead
+of one Python object per step. ``state_at(i)`` copies the nearest keyframe
+before i and replays the frames in between with numpy, so scrubbing and
+stepping backward never replay from step 0 on long traces.
+"""
+from __future__ import annotations
+
+import bisect
+import math
+from dataclasses import dataclass
+from itertools import groupby, islice
+from typing import Iterable, Sequence
+
+import numpy as np
+
+from .raster import Raster
+from .steps import NO_PIXEL, PLOT, RICH_RECORDS, CodeLine, Start, Step, Vars
+
+DEFAULT_STEP_CAP = 5_000_000
+CHUNK = 1 << 16
+KEYFRAME_BUDGET = 64 * 2 ** 20  # bytes all keyframes of one trace may take
+MIN_KEYFRAME_GAP = 1024
+
+
+class TraceError(ValueError):
+    """A generator broke the frame protocol of steps.py."""
+
+
+@dataclass
+class FrameState:
+    """Everything known at one step: what panels and the grid display."""
+
+    index: int
+    step: Step
+    raster: Raster
+    variables: dict
+    candidates: list
+
+    @property
+    def pixel(self):
+        return self.step.pixel
+
+
+class Trace:
+    """A recorded run: columns of frames plus the sparse rich records."""
+
+    def __init__(self, code: Sequence[CodeLine], width: int, height: int,
+                 step_cap: int = DEFAULT_STEP_CAP):
+        if step_cap < 1:
+            raise ValueError("the step cap must be at least 1")
+        self.code = tuple(code)
+        self.width, self.height = width, height
+        self.step_cap = step_cap
+        self.start: Start | None = None
+        self.records: dict[int, object] = {}
+        self.truncated = False
+        self.message = ""
+        self._vars_at: list[int] = []
+        self._chunks: list[np.ndarray] = []
+        self._keyframes: list[Raster] | None = None
+        self._gap = 0
+        self._flat: np.ndarray | None = None
+        kinds = np.array([line.kind == PLOT for line in self.code], dtype=bool)
+        self._line_plots = kinds
+
+    # ----------------------------------------------------------- recording
+    @classmethod
+    def record(cls, frames: Iterable, code: Sequence[CodeLine], width: int,
+               height: int, step_cap: int = DEFAULT_STEP_CAP) -> "Trace":
+        trace = cls(code, width, height, step_cap)
+        trace._record(iter(frames))
+        return trace
+
+    def _record(self, frames) -> None:
+        start = next(frames, None)
+        if not isinstance(start, Start):
+            raise TraceError("the first frame of a run must be a Start record")
+        self.start = start
+        self._dtype = np.dtype([("line", "u2"), ("x", "i4"), ("y", "i4")]
+                               + [(f"v{k}", "f8") for k in range(len(start.values))])
+        self._chunks.append(self._rich_row(start))
+        self._count = 1
+        self._store_rich(0, start)
+        capped = islice(frames, self.step_cap - 1)
+        # Lean tuples go to numpy in bulk; groupby(type) sets the rare rich
+        # records aside without a Python-level test per frame.
+        for kind, group in groupby(capped, type):
+            if kind is tuple:
+                self._record_lean(group)
+            else:
+                for record in group:
+                    self._record_rich(record)
+        if self._count >= self.step_cap and next(frames, None) is not None:
+            self.truncated = True
+            self.message = (f"Recording stopped at the step cap of {self.step_cap:,} steps; "
+                            "the run goes on beyond it. Raise the cap or use a smaller input.")
+        self._finish()
+
+    def _record_lean(self, group) -> None:
+        while True:
+            first = self._count
+            try:
+                rows = np.fromiter(islice(group, CHUNK), self._dtype)
+            except (ValueError, TypeError, OverflowError) as error:
+                raise TraceError(f"near step {first}: a frame is not (line, x, y"
+                                 f"{', value' * len(self.start.values)}): {error}") from None
+            if not len(rows):
+                return
+            self._check_rows(rows, first)
+            self._chunks.append(rows)
+            self._count += len(rows)
+
+    def _record_rich(self, record) -> None:
+        index = self._count
+        if not isinstance(record, RICH_RECORDS) or isinstance(record, Start):
+            raise TraceError(f"step {index}: {record!r} is not a frame steps.py allows here")
+        row = self._rich_row(record)
+        self._check_rows(row, index)
+        self._store_rich(index, record)
+        self._chunks.append(row)
+        self._count += 1
+
+    def _rich_row(self, record) -> np.ndarray:
+        row = np.zeros(1, self._dtype)
+        pixel = getattr(record, "pixel", None) or (NO_PIXEL, NO_PIXEL)
+        row["line"], row["x"], row["y"] = record.line, pixel[0], pixel[1]
+        for name in self._dtype.names[3:]:
+            row[name] = math.nan
+        return row
+
+    def _check_rows(self, rows: np.ndarray, first_index: int) -> None:
+        bad = rows["line"] >= len(self.code)
+        if bad.any():
+            index = first_index + int(np.argmax(bad))
+            raise TraceError(f"step {index}: pseudo-code line {rows['line'][index - first_index]} "
+                             f"does not exist")
+
+    def _store_rich(self, index: int, record) -> None:
+        self.records[index] = record
+        if isinstance(record, Vars):
+            self._vars_at.append(index)
+
+    def _finish(self) -> None:
+        frames = np.concatenate(self._chunks)
+        self._chunks = []
+        self.line = frames["line"].copy()
+        self.x = frames["x"].copy()
+        self.y = frames["y"].copy()
+        names = self._dtype.names[3:]
+        self.values = np.empty((len(frames), len(names)))
+        for column, name in enumerate(names):
+            self.values[:, column] = frames[name]
+
+    # ------------------------------------------------------------ queries
+    def __len__(self) -> int:
+        return len(self.line)
+
+    @property
+    def value_names(self) -> tuple[str, ...]:
+        return self.start.values
+
+    def nbytes(self) -> int:
+        """Bytes held by the recorded frames (not counting keyframes)."""
+        return self.line.nbytes + self.x.nbytes + self.y.nbytes + self.values.nbytes
+
+    def series(self, name: str) -> np.ndarray:
+        """One named value over all steps; NaN where a step lacks it."""
+        return self.values[:, self.value_names.index(name)]
+
+    def writes(self) -> np.ndarray:
+        """Per step: does it write a pixel?"""
+        return self._line_plots[self.line] & (self.x != NO_PIXEL)
+
+    def written_pixels(self) -> np.ndarray:
+        """(n, 2) array of the written pixels, in emission order, duplicates kept."""
+        mask = self.writes()
+        return np.stack([self.x[mask], self.y[mask]], axis=1)
+
+    def pixel_values(self) -> np.ndarray | None:
+        """The value written with each written pixel, if the run writes values."""
+        if self.start.pixel_value is None:
+            return None
+        return self.series(self.start.pixel_value)[self.writes()]
+
+    def step(self, i: int) -> Step:
+        i = self._index(i)
+        line = int(self.line[i])
+        code = self.code[line]
+        x, y = int(self.x[i]), int(self.y[i])
+        pixel = None if x == NO_PIXEL else (x, y)
+        values = {name: float(v) for name, v in zip(self.value_names, self.values[i])
+                  if not math.isnan(v)}
+        return Step(i, line, code.kind, pixel, values, code.branch, self.records.get(i))
+
+    def variables_at(self, i: int) -> dict:
+        """Constants, every Vars update up to step i, and step i's own values."""
+        i = self._index(i)
+        result = dict(self.start.constants)
+        for index in self._vars_at[:bisect.bisect_right(self._vars_at, i)]:
+            result.update(self.records[index].values)
+        result.update(self.step(i).values)
+        branch = self.code[int(self.line[i])].branch
+        if branch:
+            result["choice"] = branch
+        return result
+
+    def final_variables(self) -> dict:
+        """The named variables at the end of the run."""
+        result = dict(self.start.constants)
+        for index in self._vars_at:
+            result.update(self.records[index].values)
+        for column, name in enumerate(self.value_names):
+            known = self.values[~np.isnan(self.values[:, column]), column]
+            if known.size:
+                result[name] = _plain_number(known[-1])
+        return result
+
+    def candidates_at(self, i: int) -> list[tuple[int, int]]:
+        i = self._index(i)
+        if not self.start.candidates or i == 0 or not self.code[int(self.line[i])].branch:
+            return []
+        px, py = int(self.x[i - 1]), int(self.y[i - 1])
+        if px == NO_PIXEL:
+            return []
+        return [(px + dx, py + dy) for dx, dy in self.start.candidates]
+
+    def state_at(self, i: int) -> FrameState:
+        i = self._index(i)
+        raster = self.raster_at(i)
+        return FrameState(i, self.step(i), raster, self.variables_at(i), self.candidates_at(i))
+
+    def raster_at(self, i: int) -> Raster:
+        """The framebuffer after step i: nearest keyframe plus a numpy replay."""
+        i = self._index(i)
+        keyframes = self._ensure_keyframes()
+        slot = min((i + 1) // self._gap, len(keyframes) - 1)
+        # A fresh zeroed raster is cheaper than copying the empty keyframe.
+        raster = keyframes[slot].copy() if slot else self._empty_raster()
+        self._apply(raster, slot * self._gap, i + 1)
+        return raster
+
+    def replay_slowly(self, i: int) -> Raster:
+        """Step-by-step replay from step 0, one pixel at a time (for checks)."""
+        raster = self._empty_raster()
+        column = self._value_column()
+        for k in range(self._index(i) + 1):
+            step = self.step(k)
+            if step.writes:
+                value = None if column is None else self.values[k, column]
+                raster.write(*step.pixel, value)
+        return raster
+
+    # ---------------------------------------------------------- internals
+    def _index(self, i: int) -> int:
+        n = len(self)
+        if not -n <= i < n:
+            raise IndexError(f"step {i} is outside 0..{n - 1}")
+        return i % n
+
+    def _value_column(self):
+        name = self.start.pixel_value
+        return None if name is None else self.value_names.index(name)
+
+    def _empty_raster(self) -> Raster:
+        return Raster(self.width, self.height, self.start.pixel_value is not None)
+
+    def _apply(self, raster: Raster, lo: int, hi: int) -> None:
+        """Apply steps lo..hi-1 to the raster, vectorised."""
+        if hi <= lo:
+            return
+        column = self._value_column()
+        values = None if column is None else self.values[lo:hi, column]
+        raster.write_many(self._flat_pixels()[lo:hi], values)
+
+    def _flat_pixels(self) -> np.ndarray:
+        """Per step, y * W + x of the pixel it writes, or -1 (no write, or clipped)."""
+        if self._flat is None:
+            x, y = self.x.astype(np.int64), self.y.astype(np.int64)
+            inside = self.writes() & (x >= 0) & (x < self.width) & (y >= 0) & (y < self.height)
+            self._flat = np.where(inside, y * self.width + x, -1).astype(np.int32)
+        return self._flat
+
+    def _ensure_keyframes(self) -> list[Raster]:
+        if self._keyframes is not None:
+            return self._keyframes
+        empty = self._empty_raster()
+        most = max(1, KEYFRAME_BUDGET // max(1, empty.bytes()))
+        self._gap = max(MIN_KEYFRAME_GAP, math.ceil(len(self) / most))
+        keyframes = [empty]
+        for lo in range(0, len(self) - self._gap, self._gap):
+            raster = keyframes[-1].copy()
+            self._apply(raster, lo, lo + self._gap)
+            keyframes.append(raster)
+        self._keyframes = keyframes
+        return keyframes
+
+
+def _plain_number(value: float):
+    return int(value) if float(value).is_integer() else float(value)
