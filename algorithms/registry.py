@@ -23,7 +23,7 @@ class Option:
     """A typed option with a default and, where it applies, a range."""
 
     name: str
-    kind: str  # "int", "float", "bool", "choice" or "colors"
+    kind: str  # "int", "float", "bool", "choice", "colors" or "point"
     default: object
     help: str = ""
     minimum: float | None = None
@@ -45,6 +45,11 @@ class Option:
             raise InputError(f"option {self.name}: expected one of {', '.join(self.choices)}, got {text!r}")
         if self.kind == "colors":
             return self.check([part for part in text.split(",") if part.strip()])
+        if self.kind == "point":
+            parts = text.split(",")
+            if len(parts) != 2:
+                raise InputError(f"option {self.name}: expected X,Y, got {text!r}")
+            return self.check(tuple(parse_number(part, f"option {self.name}") for part in parts))
         return self.check(parse_number(text, f"option {self.name}", integer=self.kind == "int"))
 
     def check(self, value):
@@ -105,8 +110,19 @@ def _check_colors(option: Option, value):
     return tuple(colors)
 
 
+def _check_point(option: Option, value):
+    if not isinstance(value, (list, tuple)) or len(value) != 2:
+        raise InputError(f"option {option.name}: expected a point X,Y, got {value!r}")
+    for item in value:
+        if isinstance(item, bool) or not isinstance(item, (int, float)) or not math.isfinite(item):
+            raise InputError(f"option {option.name}: {item!r} is not a finite number")
+        if not float(item).is_integer():
+            raise InputError(f"option {option.name}: {item} is not a whole pixel coordinate")
+    return (int(value[0]), int(value[1]))
+
+
 _CHECKERS = {"int": _check_number, "float": _check_number, "bool": _check_bool,
-             "choice": _check_choice, "colors": _check_colors}
+             "choice": _check_choice, "colors": _check_colors, "point": _check_point}
 
 
 def parse_number(text: str, what: str, integer: bool = False):
@@ -126,26 +142,47 @@ def parse_number(text: str, what: str, integer: bool = False):
 
 @dataclass(frozen=True)
 class Inputs:
-    """What points an algorithm takes."""
+    """What points an algorithm takes.
 
-    count: int  # exact number of points
+    Most algorithms take one list of exactly ``count`` points. With
+    ``contours`` the input is a list of contours (polygons with holes), each
+    of at least ``count`` points.
+    """
+
+    count: int
     integer: bool = True
     names: tuple[str, ...] = ()  # e.g. ("P", "Q")
+    contours: bool = False
 
-    def check(self, points: Sequence[Sequence[float]]) -> tuple:
-        if len(points) != self.count:
-            raise InputError(f"expected {self.count} points, got {len(points)}")
-        checked = []
-        for n, point in enumerate(points):
-            if len(point) != 2:
-                raise InputError(f"point {n + 1} must have two coordinates")
-            for value in point:
-                if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value):
-                    raise InputError(f"point {n + 1}: {value!r} is not a finite number")
-                if self.integer and not float(value).is_integer():
-                    raise InputError(f"point {n + 1}: {value} is not a whole pixel coordinate")
-            checked.append(tuple(int(v) if self.integer else float(v) for v in point))
-        return tuple(checked)
+    def check(self, points) -> tuple:
+        if not self.contours:
+            return self._check_list(points, exact=True)
+        if len(points) == 0:
+            raise InputError("expected at least one contour")
+        return tuple(self._check_list(contour, exact=False, label=f"contour {n + 1}: ")
+                     for n, contour in enumerate(points))
+
+    def _check_list(self, points, exact: bool, label: str = "") -> tuple:
+        if exact and len(points) != self.count:
+            raise InputError(f"{label}expected {self.count} points, got {len(points)}")
+        if not exact and len(points) < self.count:
+            raise InputError(f"{label}expected at least {self.count} points, got {len(points)}")
+        return tuple(self._check_point(point, f"{label}point {n + 1}")
+                     for n, point in enumerate(points))
+
+    def _check_point(self, point, label: str) -> tuple:
+        if len(point) != 2:
+            raise InputError(f"{label} must have two coordinates")
+        for value in point:
+            if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value):
+                raise InputError(f"{label}: {value!r} is not a finite number")
+            if self.integer and not float(value).is_integer():
+                raise InputError(f"{label}: {value} is not a whole pixel coordinate")
+        return tuple(int(v) if self.integer else float(v) for v in point)
+
+    def flat(self, points) -> list:
+        """Every point, whatever the nesting."""
+        return [p for contour in points for p in contour] if self.contours else list(points)
 
 
 @dataclass(frozen=True)
@@ -204,7 +241,8 @@ class AlgorithmSpec:
     def describe(self) -> dict:
         return {"name": self.name, "title": self.title, "family": self.family,
                 "summary": self.summary,
-                "inputs": {"points": self.inputs.count, "integer": self.inputs.integer},
+                "inputs": {"points": self.inputs.count, "integer": self.inputs.integer,
+                           "contours": self.inputs.contours},
                 "options": [option.describe() for option in self.options],
                 "fast_kernel": self.kernel is not None}
 

@@ -22,6 +22,7 @@ from .steps import NO_PIXEL, PLOT, RICH_RECORDS, CodeLine, Start, Step, Vars
 DEFAULT_STEP_CAP = 5_000_000
 CHUNK = 1 << 16
 KEYFRAME_BUDGET = 64 * 2 ** 20  # bytes all keyframes of one trace may take
+KEYFRAME_BYTES_PER_STEP = 16  # and no more than this per recorded step
 MIN_KEYFRAME_GAP = 1024
 
 
@@ -163,8 +164,13 @@ class Trace:
         return self.start.values
 
     def nbytes(self) -> int:
-        """Bytes held by the recorded frames (not counting keyframes)."""
+        """Bytes held by the recorded frames (not counting replay caches)."""
         return self.line.nbytes + self.x.nbytes + self.y.nbytes + self.values.nbytes
+
+    def cache_nbytes(self) -> int:
+        """Bytes held by the replay caches: keyframes and the pixel index."""
+        keyframes = sum(raster.bytes() for raster in self._keyframes or () if raster)
+        return keyframes + (0 if self._flat is None else self._flat.nbytes)
 
     def series(self, name: str) -> np.ndarray:
         """One named value over all steps; NaN where a step lacks it."""
@@ -237,7 +243,6 @@ class Trace:
         i = self._index(i)
         keyframes = self._ensure_keyframes()
         slot = min((i + 1) // self._gap, len(keyframes) - 1)
-        # A fresh zeroed raster is cheaper than copying the empty keyframe.
         raster = keyframes[slot].copy() if slot else self._empty_raster()
         self._apply(raster, slot * self._gap, i + 1)
         return raster
@@ -287,11 +292,14 @@ class Trace:
         if self._keyframes is not None:
             return self._keyframes
         empty = self._empty_raster()
-        most = max(1, KEYFRAME_BUDGET // max(1, empty.bytes()))
+        budget = min(KEYFRAME_BUDGET, KEYFRAME_BYTES_PER_STEP * len(self))
+        most = max(1, budget // max(1, empty.bytes()))
         self._gap = max(MIN_KEYFRAME_GAP, math.ceil(len(self) / most))
-        keyframes = [empty]
+        # Slot 0 is the empty raster, made afresh when needed (np.zeros is
+        # cheaper than a copy and holds no memory until written).
+        keyframes = [None]
         for lo in range(0, len(self) - self._gap, self._gap):
-            raster = keyframes[-1].copy()
+            raster = keyframes[-1].copy() if keyframes[-1] else self._empty_raster()
             self._apply(raster, lo, lo + self._gap)
             keyframes.append(raster)
         self._keyframes = keyframes

@@ -1,0 +1,31 @@
+#!/usr/bin/env bash
+# Set up RasterLab on a fresh Debian or Ubuntu machine: the system libraries
+# Qt needs, a virtual environment in .venv, and RasterLab with its test tools.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+# Qt's offscreen and X11 platforms, fonts for the panels.
+SYSTEM_PACKAGES="libegl1 libgl1 libglib2.0-0 libfontconfig1 libdbus-1-3 fonts-dejavu-core
+  libxkbcommon0 libxkbcommon-x11-0 libxcb-cursor0 libxcb-icccm4 libxcb-image0
+  libxcb-keysyms1 libxcb-randr0 libxcb-render-util0 libxcb-shape0 libxcb-xinerama0 libxcb-xkb1"
+
+missing=""
+if command -v dpkg >/dev/null 2>&1; then
+  for package in $SYSTEM_PACKAGES; do
+    dpkg -s "$package" >/dev/null 2>&1 || missing="$missing $package"
+  done
+fi
+if [ -n "$missing" ]; then
+  echo "installing system packages:$missing"
+  if [ "$(id -u)" -eq 0 ]; then SUDO=""; else SUDO="sudo"; fi
+  $SUDO apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq $missing >/dev/null
+fi
+
+PYTHON="${PYTHON:-python3}"
+if [ ! -x .venv/bin/python ]; then
+  "$PYTHON" -m venv .venv
+fi
+.venv/bin/python -m pip install --quiet --upgrade pip
+.venv/bin/python -m pip install --quiet -e ".[test]"
+echo "RasterLab is set up in .venv"
