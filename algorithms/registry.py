@@ -9,9 +9,10 @@ from typing import Callable, Sequence
 from .steps import CodeLine
 from .trace import DEFAULT_STEP_CAP, Trace
 
-FAMILIES = ("lines",)
+FAMILIES = ("lines", "circles", "polygons", "fill")
 # Modules that register specs when imported; add a family's module here.
-_FAMILY_MODULES = ("algorithms.lines",)
+_FAMILY_MODULES = ("algorithms.lines", "algorithms.circles", "algorithms.polygons",
+                   "algorithms.fill")
 
 
 class InputError(ValueError):

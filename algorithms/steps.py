@@ -89,7 +89,25 @@ class Note:
     pixel: tuple[int, int] | None = None
 
 
-RICH_RECORDS = (Start, Vars, Table, Note)
+@dataclass(frozen=True, slots=True)
+class Span:
+    """A run of pixels x_start .. x_end - 1 on row y, written at once.
+
+    It writes only when its code line is a PLOT line, like a lean frame.
+    """
+
+    line: int
+    y: int
+    x_start: int
+    x_end: int
+
+    @property
+    def pixel(self):
+        # The first pixel of the run stands for the frame's position.
+        return (self.x_start, self.y) if self.x_end > self.x_start else None
+
+
+RICH_RECORDS = (Start, Vars, Table, Note, Span)
 
 
 @dataclass(frozen=True, slots=True)

@@ -17,7 +17,7 @@ from typing import Iterable, Sequence
 import numpy as np
 
 from .raster import Raster
-from .steps import NO_PIXEL, PLOT, RICH_RECORDS, CodeLine, Start, Step, Vars
+from .steps import NO_PIXEL, PLOT, RICH_RECORDS, CodeLine, Span, Start, Step, Vars
 
 DEFAULT_STEP_CAP = 5_000_000
 CHUNK = 1 << 16
@@ -60,6 +60,7 @@ class Trace:
         self.truncated = False
         self.message = ""
         self._vars_at: list[int] = []
+        self._spans: list[int] = []  # indices of Span records on PLOT lines
         self._chunks: list[np.ndarray] = []
         self._keyframes: list[Raster] | None = None
         self._gap = 0
@@ -143,6 +144,8 @@ class Trace:
         self.records[index] = record
         if isinstance(record, Vars):
             self._vars_at.append(index)
+        elif isinstance(record, Span) and self.code[record.line].kind == PLOT:
+            self._spans.append(index)
 
     def _finish(self) -> None:
         frames = np.concatenate(self._chunks)
@@ -177,13 +180,33 @@ class Trace:
         return self.values[:, self.value_names.index(name)]
 
     def writes(self) -> np.ndarray:
-        """Per step: does it write a pixel?"""
-        return self._line_plots[self.line] & (self.x != NO_PIXEL)
+        """Per step: does it write a single pixel? (Span steps are not counted.)"""
+        mask = self._line_plots[self.line] & (self.x != NO_PIXEL)
+        mask[self._spans] = False
+        return mask
 
     def written_pixels(self) -> np.ndarray:
         """(n, 2) array of the written pixels, in emission order, duplicates kept."""
         mask = self.writes()
-        return np.stack([self.x[mask], self.y[mask]], axis=1)
+        order = np.flatnonzero(mask)
+        pixels = np.stack([self.x[mask], self.y[mask]], axis=1).astype(np.int64)
+        if not self._spans:
+            return pixels
+        span_order, span_pixels = self._span_pixels(0, len(self))
+        order = np.concatenate([order, span_order])
+        pixels = np.concatenate([pixels, span_pixels])
+        return pixels[np.argsort(order, kind="stable")]
+
+    def _span_pixels(self, lo: int, hi: int):
+        """Step indices and pixels of the spans recorded in steps lo..hi-1."""
+        chosen = self._spans[bisect.bisect_left(self._spans, lo):bisect.bisect_left(self._spans, hi)]
+        orders, pixels = [np.zeros(0, np.int64)], [np.zeros((0, 2), np.int64)]
+        for index in chosen:
+            span = self.records[index]
+            xs = np.arange(span.x_start, span.x_end, dtype=np.int64)
+            orders.append(np.full(len(xs), index, np.int64))
+            pixels.append(np.stack([xs, np.full(len(xs), span.y, np.int64)], axis=1))
+        return np.concatenate(orders), np.concatenate(pixels)
 
     def pixel_values(self) -> np.ndarray | None:
         """The value written with each written pixel, if the run writes values."""
@@ -253,7 +276,11 @@ class Trace:
         column = self._value_column()
         for k in range(self._index(i) + 1):
             step = self.step(k)
-            if step.writes:
+            if isinstance(step.record, Span):
+                for x in range(step.record.x_start, step.record.x_end):
+                    if step.kind == PLOT:
+                        raster.write(x, step.record.y)
+            elif step.writes:
                 value = None if column is None else self.values[k, column]
                 raster.write(*step.pixel, value)
         return raster
@@ -279,6 +306,11 @@ class Trace:
         column = self._value_column()
         values = None if column is None else self.values[lo:hi, column]
         raster.write_many(self._flat_pixels()[lo:hi], values)
+        if self._spans:
+            _, pixels = self._span_pixels(lo, hi)
+            x, y = pixels[:, 0], pixels[:, 1]
+            inside = (x >= 0) & (x < self.width) & (y >= 0) & (y < self.height)
+            raster.write_many(np.where(inside, y * self.width + x, -1))
 
     def _flat_pixels(self) -> np.ndarray:
         """Per step, y * W + x of the pixel it writes, or -1 (no write, or clipped)."""
