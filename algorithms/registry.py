@@ -146,6 +146,7 @@ class Inputs:
     """What points an algorithm takes.
 
     Most algorithms take one list of exactly ``count`` points. With
+    ``multiple`` they take k * count points (k triangles of 3 points). With
     ``contours`` the input is a list of contours (polygons with holes), each
     of at least ``count`` points.
     """
@@ -154,6 +155,7 @@ class Inputs:
     integer: bool = True
     names: tuple[str, ...] = ()  # e.g. ("P", "Q")
     contours: bool = False
+    multiple: bool = False
 
     def check(self, points) -> tuple:
         if not self.contours:
@@ -164,7 +166,9 @@ class Inputs:
                      for n, contour in enumerate(points))
 
     def _check_list(self, points, exact: bool, label: str = "") -> tuple:
-        if exact and len(points) != self.count:
+        if self.multiple and (len(points) == 0 or len(points) % self.count):
+            raise InputError(f"{label}expected a multiple of {self.count} points, got {len(points)}")
+        if exact and not self.multiple and len(points) != self.count:
             raise InputError(f"{label}expected {self.count} points, got {len(points)}")
         if not exact and len(points) < self.count:
             raise InputError(f"{label}expected at least {self.count} points, got {len(points)}")
@@ -243,7 +247,7 @@ class AlgorithmSpec:
         return {"name": self.name, "title": self.title, "family": self.family,
                 "summary": self.summary,
                 "inputs": {"points": self.inputs.count, "integer": self.inputs.integer,
-                           "contours": self.inputs.contours},
+                           "contours": self.inputs.contours, "multiple": self.inputs.multiple},
                 "options": [option.describe() for option in self.options],
                 "fast_kernel": self.kernel is not None}
 
