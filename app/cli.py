@@ -35,9 +35,11 @@ def build_parser() -> Parser:
     listing = commands.add_parser("list", help="list the algorithms")
     listing.add_argument("--json", action="store_true", help="print JSON")
     run = commands.add_parser("run", help="run an algorithm headless and print its pixels")
-    run.add_argument("algorithm", help="algorithm name, as `rasterlab list` shows it")
-    run.add_argument("--points", nargs="+", action="append", metavar="X,Y", required=True,
+    run.add_argument("algorithm", nargs="?", help="algorithm name, as `rasterlab list` shows it")
+    run.add_argument("--points", nargs="+", action="append", metavar="X,Y",
                      help="points in pixel coordinates (y up); repeat once per contour")
+    run.add_argument("--scene", metavar="SCENE.json",
+                     help="run a saved scene instead of ALGO --points (options and grid from the file)")
     run.add_argument("--set", action="append", default=[], metavar="KEY=VALUE",
                      help="set an option (numbers, names, true/false, comma lists)")
     run.add_argument("--grid", metavar="W,H",
@@ -67,6 +69,13 @@ def parse_grid(text: str) -> tuple[int, int]:
     if not (1 <= width <= MAX_GRID and 1 <= height <= MAX_GRID):
         raise InputError(f"grid {width}x{height} is outside 1x1 .. {MAX_GRID}x{MAX_GRID}")
     return width, height
+
+
+def parse_step_cap(text: str) -> int:
+    step_cap = parse_number(text, "--step-cap", integer=True)
+    if step_cap < 1:
+        raise InputError("--step-cap must be at least 1")
+    return step_cap
 
 
 def parse_settings(spec, settings: list[str]) -> dict:
@@ -130,6 +139,10 @@ def _default_text(value) -> str:
 
 
 def command_run(args) -> int:
+    if args.scene is not None:
+        return run_scene(args)
+    if args.algorithm is None or args.points is None:
+        raise CommandError("run needs ALGO and --points, or --scene SCENE.json")
     spec = registry.get(args.algorithm)
     groups = [[parse_point(text) for text in group] for group in args.points]
     if spec.inputs.contours:
@@ -139,12 +152,29 @@ def command_run(args) -> int:
     else:
         points = groups[0]
     options = parse_settings(spec, args.set)
-    step_cap = parse_number(args.step_cap, "--step-cap", integer=True)
-    if step_cap < 1:
-        raise InputError("--step-cap must be at least 1")
+    step_cap = parse_step_cap(args.step_cap)
     spec.inputs.check(points)
     grid = fit_grid(spec.inputs.flat(points), args.grid, spec.inputs.integer)
     trace = spec.record(points, options, grid=grid, step_cap=step_cap)
+    return print_run(args, spec, trace, options)
+
+
+def run_scene(args) -> int:
+    from app import scene as scenes
+    if args.algorithm is not None or args.points is not None or args.set or args.grid:
+        raise CommandError("--scene takes its algorithm, points, options and grid from the file")
+    step_cap = parse_step_cap(args.step_cap)
+    try:
+        scene = scenes.load(args.scene)
+    except scenes.SceneError as error:
+        raise InputError(str(error)) from None
+    spec = scene.spec
+    trace = spec.record(scene.points, scene.options, grid=(scene.width, scene.height),
+                        step_cap=step_cap)
+    return print_run(args, spec, trace, scene.options)
+
+
+def print_run(args, spec, trace, options) -> int:
     if trace.truncated:
         print(f"rasterlab: {trace.message}", file=sys.stderr)
     if args.json:

@@ -1,0 +1,263 @@
+"""Scene files: what a person set up, saved as JSON and read back checked.
+
+A scene file is data only: it is parsed as JSON and every field is checked
+against the registry; nothing in it is ever evaluated. Saving writes a
+temporary file beside the target and renames it over the target, so a save
+that fails leaves the old file as it was.
+"""
+from __future__ import annotations
+
+import json
+import math
+import os
+import tempfile
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from algorithms import registry
+from algorithms.raster import MAX_GRID
+from algorithms.registry import InputError
+
+VERSION = 1
+ORIGINS = ("bottom-left", "top-left")
+MAX_FILE_BYTES = 8 * 2 ** 20
+MAX_POINTS = 100_000
+RESOURCES = Path(__file__).resolve().parents[1] / "resources"
+
+
+class SceneError(ValueError):
+    """A scene file that cannot be used; the message names the field."""
+
+
+@dataclass
+class Scene:
+    algorithm: str = "line-bresenham"
+    # Points as the algorithm takes them: a flat list, or a list of contours.
+    points: list = field(default_factory=lambda: [[3, 4], [27, 15]])
+    options: dict = field(default_factory=dict)
+    width: int = 32
+    height: int = 24
+    origin: str = "bottom-left"
+    title: str = ""
+    description: str = ""
+    view: dict = field(default_factory=dict)
+    bookmarks: list = field(default_factory=list)  # [{"name": str, "step": int}]
+
+    @property
+    def spec(self):
+        return registry.get(self.algorithm)
+
+    def to_json(self) -> dict:
+        return {
+            "version": VERSION,
+            "title": self.title,
+            "description": self.description,
+            "grid": {"width": self.width, "height": self.height},
+            "origin": self.origin,
+            "algorithm": self.algorithm,
+            "options": _json_options(self.options),
+            "primitives": _primitives(self.spec.inputs, self.points),
+            "view": dict(self.view),
+            "bookmarks": [dict(b) for b in self.bookmarks],
+        }
+
+
+def _json_options(options: dict) -> dict:
+    return {k: list(v) if isinstance(v, tuple) else v for k, v in options.items()}
+
+
+def _primitives(inputs, points) -> list:
+    """Group the points into primitives: contours, triangles or one primitive."""
+    if inputs.contours:
+        return [{"points": [list(p) for p in contour]} for contour in points]
+    size = inputs.count if inputs.multiple else len(points)
+    groups = [points[k:k + size] for k in range(0, len(points), size)] or [[]]
+    return [{"points": [list(p) for p in group]} for group in groups]
+
+
+# ------------------------------------------------------------------ reading
+def load(path: str | os.PathLike) -> Scene:
+    """Read and check a scene file; SceneError names what is wrong."""
+    path = Path(path)
+    try:
+        size = path.stat().st_size
+        if size > MAX_FILE_BYTES:
+            raise SceneError(f"{path.name}: the file is {size:,} bytes; a scene is at most "
+                             f"{MAX_FILE_BYTES:,}")
+        text = path.read_bytes().decode("utf-8")
+    except OSError as error:
+        raise SceneError(f"{path.name}: cannot read the file ({error.strerror or error})") from None
+    except UnicodeDecodeError:
+        raise SceneError(f"{path.name}: not a text file (not UTF-8)") from None
+    return parse(text, path.name)
+
+
+def parse(text: str, name: str = "scene") -> Scene:
+    try:
+        data = json.loads(text, parse_constant=_reject_constant)
+    except json.JSONDecodeError as error:
+        raise SceneError(f"{name}: not valid JSON ({error.msg} at line {error.lineno})") from None
+    except ValueError as error:
+        raise SceneError(f"{name}: {error}") from None
+    try:
+        return from_json(data)
+    except SceneError as error:
+        raise SceneError(f"{name}: {error}") from None
+
+
+def _reject_constant(constant: str):
+    raise ValueError(f"{constant} is not a finite number")
+
+
+def from_json(data) -> Scene:
+    if not isinstance(data, dict):
+        raise SceneError("the file must hold a JSON object")
+    version = _field(data, "version", int)
+    if version != VERSION:
+        raise SceneError(f"version: this RasterLab reads version {VERSION}, not {version}")
+    grid = _field(data, "grid", dict)
+    width = _grid_size(grid, "width")
+    height = _grid_size(grid, "height")
+    origin = data.get("origin", "bottom-left")
+    if origin not in ORIGINS:
+        raise SceneError(f"origin: expected one of {', '.join(ORIGINS)}, got {origin!r}")
+    algorithm = _field(data, "algorithm", str)
+    try:
+        spec = registry.get(algorithm)
+    except InputError as error:
+        raise SceneError(f"algorithm: {error}") from None
+    options = _options(spec, data.get("options", {}))
+    points = _points(spec, _field(data, "primitives", list), width, height)
+    return Scene(algorithm=algorithm, points=points, options=options, width=width,
+                 height=height, origin=origin, title=_text(data, "title"),
+                 description=_text(data, "description"), view=_view(data.get("view", {})),
+                 bookmarks=_bookmarks(data.get("bookmarks", [])))
+
+
+def _field(data: dict, name: str, kind: type):
+    if name not in data:
+        raise SceneError(f"{name}: missing")
+    value = data[name]
+    if kind is int and (isinstance(value, bool) or not isinstance(value, int)):
+        raise SceneError(f"{name}: expected a whole number, got {value!r}")
+    if not isinstance(value, kind):
+        raise SceneError(f"{name}: expected {_kind_name(kind)}, got {type(value).__name__}")
+    return value
+
+
+def _kind_name(kind: type) -> str:
+    return {dict: "an object", list: "a list", str: "text", int: "a whole number"}[kind]
+
+
+def _text(data: dict, name: str) -> str:
+    value = data.get(name, "")
+    if not isinstance(value, str):
+        raise SceneError(f"{name}: expected text, got {type(value).__name__}")
+    return value
+
+
+def _grid_size(grid: dict, name: str) -> int:
+    value = grid.get(name)
+    if isinstance(value, bool) or not isinstance(value, int) or not 1 <= value <= MAX_GRID:
+        raise SceneError(f"grid.{name}: expected a whole number 1..{MAX_GRID}, got {value!r}")
+    return value
+
+
+def _options(spec, options) -> dict:
+    if not isinstance(options, dict):
+        raise SceneError("options: expected an object")
+    checked = {}
+    for name, value in options.items():
+        try:
+            checked[name] = spec.option(name).check(value)
+        except InputError as error:
+            raise SceneError(f"options.{name}: {error}") from None
+    return checked
+
+
+def _points(spec, primitives: list, width: int, height: int) -> list:
+    groups = []
+    for n, primitive in enumerate(primitives):
+        if not isinstance(primitive, dict) or not isinstance(primitive.get("points"), list):
+            raise SceneError(f"primitives[{n}]: expected an object with a list of points")
+        groups.append(primitive["points"])
+    if sum(len(g) for g in groups) > MAX_POINTS:
+        raise SceneError(f"primitives: more than {MAX_POINTS:,} points")
+    points = groups if spec.inputs.contours else [p for group in groups for p in group]
+    try:
+        checked = spec.inputs.check(points)
+    except (InputError, TypeError) as error:
+        raise SceneError(f"primitives: {error}") from None
+    for x, y in spec.inputs.flat(checked):
+        if not _inside(x, y, width, height, spec.inputs.integer):
+            raise SceneError(f"primitives: point ({x}, {y}) lies outside the {width}x{height} grid")
+    if spec.inputs.contours:
+        return [[list(p) for p in contour] for contour in checked]
+    return [list(p) for p in checked]
+
+
+def _inside(x, y, width, height, integer) -> bool:
+    if integer:
+        return 0 <= x < width and 0 <= y < height
+    return 0 <= x <= width and 0 <= y <= height
+
+
+_VIEW_FIELDS = {"step": int, "speed": (int, float), "show_grid": bool, "compare": bool}
+
+
+def _view(view) -> dict:
+    if not isinstance(view, dict):
+        raise SceneError("view: expected an object")
+    checked = {}
+    for name, value in view.items():
+        kind = _VIEW_FIELDS.get(name)
+        if kind is None:
+            continue  # a newer program's view setting: harmless to drop
+        if isinstance(value, bool) != (kind is bool) or not isinstance(value, kind):
+            raise SceneError(f"view.{name}: wrong type {type(value).__name__}")
+        if isinstance(value, (int, float)) and not isinstance(value, bool) and (
+                not math.isfinite(value) or value < 0):
+            raise SceneError(f"view.{name}: expected a finite number >= 0, got {value!r}")
+        checked[name] = value
+    return checked
+
+
+def _bookmarks(bookmarks) -> list:
+    if not isinstance(bookmarks, list):
+        raise SceneError("bookmarks: expected a list")
+    checked = []
+    for n, mark in enumerate(bookmarks):
+        step = mark.get("step") if isinstance(mark, dict) else None
+        name = mark.get("name") if isinstance(mark, dict) else None
+        if not isinstance(name, str) or isinstance(step, bool) or not isinstance(step, int) or step < 0:
+            raise SceneError(f"bookmarks[{n}]: expected {{\"name\": text, \"step\": whole number >= 0}}")
+        checked.append({"name": name, "step": step})
+    return checked
+
+
+# ------------------------------------------------------------------ writing
+def save(scene: Scene, path: str | os.PathLike) -> None:
+    """Write the scene atomically: the old file survives any failure."""
+    text = json.dumps(scene.to_json(), indent=2, allow_nan=False) + "\n"
+    write_atomically(Path(path), text.encode("utf-8"))
+
+
+def write_atomically(path: Path, data: bytes) -> None:
+    directory = path.parent if str(path.parent) else Path(".")
+    if not directory.is_dir():
+        raise SceneError(f"{path}: the folder {directory} does not exist")
+    try:
+        handle, temporary = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=directory)
+    except OSError as error:
+        raise SceneError(f"{path}: cannot write in {directory} ({error.strerror})") from None
+    try:
+        with os.fdopen(handle, "wb") as stream:
+            stream.write(data)
+            stream.flush()
+            os.fsync(stream.fileno())
+        os.replace(temporary, path)
+    except BaseException as error:
+        Path(temporary).unlink(missing_ok=True)
+        if isinstance(error, OSError):
+            raise SceneError(f"{path}: cannot write the file ({error.strerror})") from None
+        raise
