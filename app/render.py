@@ -1,0 +1,259 @@
+"""Compose what the pixel grid shows into an RGBA image, with numpy only.
+
+The grid view and any exporter share this module, so a picture written to a
+file has the same colours, the same overdraw shade and the same outlines as
+the window. Nothing here imports Qt.
+
+Images come out with row 0 at y = 0, the same order as ``Raster.counts``.
+In the default frame (origin bottom-left, y up) that row is the *bottom* of
+the picture; ``top_down`` turns an image the right way up for a file.
+
+At ``scale`` 1 every grid cell is one image pixel, and there is no room for
+outlines: highlighted cells are tinted instead. At ``scale`` 3 and above each
+cell becomes ``scale`` x ``scale`` image pixels, and highlights are drawn as
+outlines inset into the cell, as the window draws them, together with the
+grid lines and the ideal primitive.
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Sequence
+
+import numpy as np
+
+# Little-endian so that the bytes of each cell read R, G, B, A on any machine.
+_RGBA = np.dtype("<u4")
+
+__all__ = ["Palette", "PALETTE", "Overlay", "OUTLINE_STYLE", "compose", "top_down",
+           "packed_rgba", "differences"]
+
+
+@dataclass(frozen=True)
+class Palette:
+    """Colours (#rrggbb) of everything the grid draws."""
+
+    background: str = "#fbfcfd"   # a cell nothing was written to
+    ink: str = "#2563a8"          # a cell written once, when the run writes no values
+    overdraw: str = "#0b2a4f"     # a cell written more than once
+    grid: str = "#c5ccd6"         # cell borders
+    outside: str = "#e4e8ee"      # the view around the grid
+    current: str = "#f08c00"      # the pixel the current step plots or visits
+    candidate: str = "#23a55a"    # the pixels the current decision chooses between
+    difference: str = "#e0327a"   # cells where the compared run ended differently
+    primitive: str = "#e8452c"    # the ideal primitive
+    handle: str = "#ffffff"       # vertex handles (fill)
+    handle_edge: str = "#1d2733"  # vertex handles (border and label)
+
+
+PALETTE = Palette()
+
+
+@dataclass(frozen=True)
+class OutlineStyle:
+    """Where an outline sits in its cell and how it is drawn.
+
+    ``inset`` is a fraction of the cell; ``width`` is in screen pixels in
+    the window and scales with the cell size in composed images.
+    """
+
+    inset: float
+    width: float
+    dashed: bool = False
+
+
+# Nested so that a cell that is at once current, a candidate and different
+# shows all three rings.
+OUTLINE_STYLE = {
+    "difference": OutlineStyle(0.0, 2.5),
+    "current": OutlineStyle(0.06, 3.0),
+    "candidate": OutlineStyle(0.24, 2.0),
+}
+
+# Tints used at scale 1, where there is no room for outlines.
+_TINT = {"difference": 0.55, "candidate": 0.45, "current": 0.7}
+
+
+@dataclass(frozen=True)
+class Overlay:
+    """What is drawn over the pixels of one frame.
+
+    ``current`` is the step's pixel, ``candidates`` the pixels its decision
+    chose between, ``differences`` an (n, 2) array of cells (x, y) to mark
+    as different from a compared run. ``primitive`` is the ideal primitive
+    as a polyline in grid units (pixel (i, j) is the square [i, i+1) x
+    [j, j+1)); ``closed`` joins its last point to the first.
+    """
+
+    current: tuple[int, int] | None = None
+    candidates: Sequence[tuple[int, int]] = ()
+    differences: np.ndarray | None = None
+    primitive: Sequence[tuple[float, float]] = ()
+    closed: bool = False
+
+
+def packed_rgba(color: str, alpha: int = 255) -> np.uint32:
+    """'#rrggbb' as one uint32 whose bytes in memory are R, G, B, A."""
+    r, g, b = _channels(color)
+    return np.array(r | (g << 8) | (b << 16) | (alpha << 24), dtype=_RGBA)[()]
+
+
+def _channels(color: str) -> tuple[int, int, int]:
+    value = int(color.lstrip("#"), 16)
+    return (value >> 16) & 255, (value >> 8) & 255, value & 255
+
+
+def compose(raster, overlay: Overlay | None = None, palette: Palette = PALETTE,
+            scale: int = 1, grid_lines: bool | None = None) -> np.ndarray:
+    """The grid as a uint8 array of shape (H * scale, W * scale, 4).
+
+    ``raster`` is an ``algorithms.raster.Raster``. Cells written once take the ink colour, or their value from
+    ``raster.colors`` where the run writes colours; cells written more than
+    once take the overdraw colour (coloured cells are darkened instead).
+    """
+    if scale < 1 or int(scale) != scale:
+        raise ValueError(f"scale must be a whole number >= 1, got {scale}")
+    scale = int(scale)
+    cells = _cells(raster, palette)
+    if overlay is not None and scale < 3:
+        _tint(cells, overlay, palette)
+    if scale > 1:
+        height, width = cells.shape
+        cells = np.broadcast_to(cells[:, None, :, None], (height, scale, width, scale))
+        cells = cells.reshape(height * scale, width * scale).copy()
+        if grid_lines is None:
+            grid_lines = scale >= 4
+        if grid_lines:
+            grid = packed_rgba(palette.grid)
+            cells[scale::scale, :] = grid
+            cells[:, scale::scale] = grid
+        if overlay is not None and scale >= 3:
+            _draw_primitive(cells, overlay, palette, scale)
+            _draw_outlines(cells, overlay, palette, scale)
+    return cells.view(np.uint8).reshape(cells.shape[0], cells.shape[1], 4)
+
+
+def top_down(image: np.ndarray, y_down: bool = False) -> np.ndarray:
+    """The image with its top row first, as files store pictures.
+
+    In the default frame (y up) row 0 of a composed image is the bottom
+    row of the picture, so it is flipped; in the y-down frame it is not.
+    """
+    return image if y_down else image[::-1]
+
+
+def differences(before, after) -> np.ndarray:
+    """(n, 2) array of cells (x, y) where two final rasters differ.
+
+    A cell differs when one run wrote it and the other did not, or when
+    both wrote a value (a colour) and the values differ.
+    """
+    if before is None or after is None or before.counts.shape != after.counts.shape:
+        return np.zeros((0, 2), dtype=np.int64)
+    differ = before.written() != after.written()
+    if before.colors is not None and after.colors is not None:
+        both = before.written() & after.written()
+        differ |= both & (before.colors != after.colors)
+    ys, xs = np.nonzero(differ)
+    return np.stack([xs, ys], axis=1).astype(np.int64)
+
+
+# ------------------------------------------------------------------ parts
+def _cells(raster, palette: Palette) -> np.ndarray:
+    """One packed RGBA uint32 per cell."""
+    lut = np.array([packed_rgba(palette.background), packed_rgba(palette.ink),
+                    packed_rgba(palette.overdraw)], dtype=_RGBA)
+    # take(mode="clip") maps every count of 2 or more to the overdraw entry
+    # in one pass over the buffer.
+    cells = lut.take(raster.counts, mode="clip")
+    colors = raster.colors
+    if colors is not None:
+        valued = colors >= 0
+        if valued.any():
+            values = colors[valued]
+            packed = (((values >> 16) & 255) | (values & 0xFF00) | ((values & 255) << 16)
+                      | 0xFF000000).astype(_RGBA)
+            again = raster.counts[valued] > 1
+            if again.any():
+                packed[again] = _darken(packed[again], 0.6)
+            cells[valued] = packed
+    return cells
+
+
+def _darken(packed: np.ndarray, factor: float) -> np.ndarray:
+    rgba = packed.view(np.uint8).reshape(-1, 4).astype(np.float32)
+    rgba[:, :3] *= factor
+    return rgba.astype(np.uint8).view(_RGBA).reshape(-1)
+
+
+def _mix(packed: np.uint32, color: str, amount: float) -> np.uint32:
+    rgba = np.array([packed], dtype=_RGBA).view(np.uint8).astype(np.float32)
+    target = np.array(_channels(color), dtype=np.float32)
+    rgba[:3] = rgba[:3] * (1 - amount) + target * amount
+    return rgba.round().astype(np.uint8).view(_RGBA)[0]
+
+
+def _layers(overlay: Overlay):
+    """(name, cells) from the bottom layer to the top one."""
+    diff = overlay.differences
+    yield "difference", [] if diff is None else [tuple(int(v) for v in cell) for cell in diff]
+    yield "candidate", [tuple(cell) for cell in overlay.candidates]
+    yield "current", [] if overlay.current is None else [tuple(overlay.current)]
+
+
+def _tint(cells: np.ndarray, overlay: Overlay, palette: Palette) -> None:
+    height, width = cells.shape
+    for name, layer in _layers(overlay):
+        color = getattr(palette, name)
+        for x, y in layer:
+            if 0 <= x < width and 0 <= y < height:
+                cells[y, x] = _mix(cells[y, x], color, _TINT[name])
+
+
+def _draw_outlines(image: np.ndarray, overlay: Overlay, palette: Palette, scale: int) -> None:
+    height, width = image.shape[0] // scale, image.shape[1] // scale
+    for name, layer in _layers(overlay):
+        style = OUTLINE_STYLE[name]
+        color = packed_rgba(getattr(palette, name))
+        thick = max(1, round(scale * style.width / 36))
+        inset = int(round(style.inset * scale))
+        for x, y in layer:
+            if not (0 <= x < width and 0 <= y < height):
+                continue
+            r0, c0 = y * scale + inset, x * scale + inset
+            r1, c1 = (y + 1) * scale - inset, (x + 1) * scale - inset
+            if r1 - r0 <= 2 * thick or c1 - c0 <= 2 * thick:
+                image[r0:r1, c0:c1] = color
+                continue
+            ring = np.zeros((r1 - r0, c1 - c0), dtype=bool)
+            ring[:thick, :] = ring[-thick:, :] = True
+            ring[:, :thick] = ring[:, -thick:] = True
+            if style.dashed:
+                period = max(2, 2 * thick)
+                rows, cols = np.indices(ring.shape)
+                ring &= ((rows + cols) // period) % 2 == 0
+            image[r0:r1, c0:c1][ring] = color
+
+
+def _draw_primitive(image: np.ndarray, overlay: Overlay, palette: Palette, scale: int) -> None:
+    points = [(float(x) * scale, float(y) * scale) for x, y in overlay.primitive]
+    if len(points) < 2:
+        return
+    if overlay.closed and len(points) > 2:
+        points.append(points[0])
+    color = packed_rgba(palette.primitive)
+    radius = max(0.5, scale / 16)
+    rows, cols = image.shape
+    for (x0, y0), (x1, y1) in zip(points, points[1:]):
+        length = math.hypot(x1 - x0, y1 - y0)
+        t = np.linspace(0.0, 1.0, max(2, int(length * 2) + 1))
+        xs, ys = x0 + (x1 - x0) * t, y0 + (y1 - y0) * t
+        r = int(math.ceil(radius))
+        for dy in range(-r, r + 1):
+            for dx in range(-r, r + 1):
+                if dx * dx + dy * dy > radius * radius + 0.25:
+                    continue
+                c = np.floor(xs + dx).astype(np.int64)
+                rr = np.floor(ys + dy).astype(np.int64)
+                keep = (c >= 0) & (c < cols) & (rr >= 0) & (rr < rows)
+                image[rr[keep], c[keep]] = color

@@ -1,0 +1,136 @@
+"""The pixel grid view: clicks, drags, origin, grid lines, highlights."""
+import numpy as np
+import pytest
+from PySide6.QtCore import Qt
+from PySide6.QtTest import QTest
+
+from app.render import OUTLINE_STYLE, PALETTE
+from widgets.grid_view import MIN_CELL_PX, PixelGridView, visible_grid_lines
+
+LEFT = Qt.MouseButton.LeftButton
+NONE = Qt.KeyboardModifier.NoModifier
+
+
+@pytest.fixture
+def view(qtbot):
+    v = PixelGridView(PALETTE, OUTLINE_STYLE)
+    qtbot.addWidget(v)
+    v.resize(640, 480)
+    v.show()
+    qtbot.waitExposed(v)
+    v.set_input(2, True, ("P", "Q"))
+    # pyqtgraph fits the view to the widget's final size a moment later.
+    where = []
+
+    def still():
+        where.append(v.widget_pos_of((0.0, 0.0)))
+        return len(where) > 2 and where[-1] == where[-2] == where[-3]
+    qtbot.waitUntil(still, timeout=2000)
+    return v
+
+
+def click(view, grid_pos):
+    QTest.mouseClick(view.viewport(), LEFT, NONE, view.widget_pos_of(grid_pos))
+
+
+def drag(view, start, end, steps=6):
+    a, b = view.widget_pos_of(start), view.widget_pos_of(end)
+    QTest.mousePress(view.viewport(), LEFT, NONE, a)
+    for k in range(1, steps + 1):
+        QTest.mouseMove(view.viewport(), a + (b - a) * (k / steps))
+    QTest.mouseRelease(view.viewport(), LEFT, NONE, b)
+
+
+def test_two_clicks_place_a_segment_and_a_third_starts_anew(view):
+    edited = []
+    view.pointsEdited.connect(edited.append)
+    click(view, (5.5, 3.5))
+    click(view, (20.2, 10.9))  # anywhere inside pixel (20, 10)
+    assert edited == [[(5, 3)], [(5, 3), (20, 10)]]
+    click(view, (1.5, 1.5))
+    assert edited[-1] == [(1, 1)]
+    assert view.points == [(1, 1)]
+
+
+def test_clicks_are_clamped_to_the_grid(view):
+    view.set_grid(10, 8)
+    edited = []
+    view.pointsEdited.connect(edited.append)
+    click(view, (-0.6, 3.5))
+    assert edited[-1] == [(0, 3)]
+
+
+def test_dragging_a_handle_moves_its_point(view):
+    view.set_points([(5, 3), (20, 10)])
+    edited = []
+    view.pointsEdited.connect(edited.append)
+    drag(view, (20.5, 10.5), (25.5, 12.5))
+    assert edited and edited[-1] == [(5, 3), (25, 12)]
+    assert view.points == [(5, 3), (25, 12)]
+
+
+def test_dragging_empty_space_pans_instead(view):
+    view.set_points([(5, 3), (20, 10)])
+    before = view.view_box.viewRect()
+    edited = []
+    view.pointsEdited.connect(edited.append)
+    drag(view, (12.5, 18.5), (8.5, 14.5))
+    assert edited == []
+    assert view.view_box.viewRect() != before
+
+
+def test_y_down_origin_maps_clicks_in_that_frame(view):
+    view.set_y_down(True)
+    edited = []
+    view.pointsEdited.connect(edited.append)
+    click(view, (3.5, 2.5))
+    assert edited[-1] == [(3, 2)]
+    # Pixel (3, 2) is near the top of the widget, pixel (3, 21) near the bottom.
+    assert view.widget_pos_of((3.5, 2.5)).y() < view.widget_pos_of((3.5, 21.5)).y()
+    view.set_y_down(False)
+    assert view.widget_pos_of((3.5, 2.5)).y() > view.widget_pos_of((3.5, 21.5)).y()
+
+
+def test_hover_reports_the_pixel_under_the_cursor(view, qtbot):
+    seen = []
+    view.hoverChanged.connect(seen.append)
+    QTest.mouseMove(view.viewport(), view.widget_pos_of((7.3, 4.8)))
+    qtbot.waitUntil(lambda: seen and seen[-1] == (7, 4), timeout=1000)
+
+
+def test_grid_lines_only_in_view_and_only_when_cells_are_large():
+    # Zoomed out on a 4096 x 4096 grid: no lines at all.
+    assert visible_grid_lines(0, 4096, 0, 4096, 4096, 4096, cell_px=0.2) is None
+    # Zoomed in: only the few lines in view, whatever the grid's size.
+    (xs, ys), span = visible_grid_lines(1000.2, 1040.7, 2000.5, 2030.1, 4096, 4096,
+                                        cell_px=MIN_CELL_PX * 3)
+    assert list(xs) == list(range(1001, 1041))
+    assert list(ys) == list(range(2001, 2031))
+    assert span == (1000.2, 1040.7, 2000.5, 2030.1)
+    # The grid's own border is not an inner line.
+    (xs, ys), _ = visible_grid_lines(-5, 50, -5, 50, 32, 24, cell_px=20)
+    assert list(xs) == list(range(1, 32)) and list(ys) == list(range(1, 24))
+
+
+def test_image_and_outlines(view):
+    image = np.zeros((24, 32, 4), np.uint8)
+    view.set_image(image)
+    assert view.image.image.shape == (24, 32, 4)
+    view.set_highlights([(3, 4)], [(4, 4), (4, 5)])
+    view.set_differences(np.array([[1, 1], [2, 2]]))
+    assert view.outlines.layer("current").tolist() == [[3, 4]]
+    assert view.outlines.layer("candidate").tolist() == [[4, 4], [4, 5]]
+    assert view.outlines.layer("difference").tolist() == [[1, 1], [2, 2]]
+    view.grab()  # paints every layer without error
+    # A new image of another size resizes the grid.
+    view.set_image(np.zeros((10, 12, 4), np.uint8))
+    assert view.grid_size == (12, 10)
+
+
+def test_large_grid_paints(view):
+    view.set_grid(4096, 4096)
+    view.set_image(np.zeros((4096, 4096, 4), np.uint8))
+    view.view_box.setRange(xRange=(2000, 2040), yRange=(2000, 2030), padding=0)
+    view.grab()
+    view.fit()
+    view.grab()

@@ -1,0 +1,100 @@
+"""Pseudo-code panel, variables panel and transport bar."""
+import numpy as np
+from PySide6.QtCore import Qt
+
+from widgets.panels import CURRENT_LINE, CodePanel, VariablesPanel
+from widgets.transport import TransportBar
+
+
+def test_code_panel_marks_one_line(qtbot):
+    panel = CodePanel()
+    qtbot.addWidget(panel)
+    panel.set_code(["first", "    second", "third"], notes=("A note.",))
+    assert panel.lines.rowCount() == 3
+    assert panel.lines.item(1, 1).text() == "    second"
+    assert panel.notes.text() == "A note."
+    panel.set_current(1)
+    assert panel.current == 1
+    assert panel.lines.item(1, 1).background().color() == CURRENT_LINE
+    assert panel.lines.item(1, 0).text().startswith("\u25b6")
+    panel.set_current(2)
+    assert panel.lines.item(1, 1).background().style() == Qt.BrushStyle.NoBrush
+    assert not panel.lines.item(1, 0).text().startswith("\u25b6")
+    panel.set_current(None)
+    assert panel.current is None
+    panel.set_code(["only"], notes=())
+    assert panel.lines.rowCount() == 1 and panel.notes_area.isHidden()
+
+
+def test_variables_panel_rows_and_changes(qtbot):
+    panel = VariablesPanel()
+    qtbot.addWidget(panel)
+    panel.set_rows([("d", "1"), ("x", "4")])
+    assert panel.rows() == [("d", "1"), ("x", "4")]
+    panel.set_rows([("d", "-23"), ("x", "4")])
+    assert panel.table.item(0, 1).text() == "-23"
+    assert panel.table.item(0, 1).font().bold()        # changed
+    assert not panel.table.item(1, 1).font().bold()    # unchanged
+    panel.set_rows([("d", "-23")])
+    assert panel.table.rowCount() == 1
+    # Packed colours read as #rrggbb, with a swatch.
+    panel.set_rows([("rgb", "16744448"), ("d", "2")], color_names=("rgb",))
+    assert panel.table.item(0, 1).text() == "#ff8000"
+    assert panel.table.item(0, 1).data(Qt.ItemDataRole.DecorationRole).name() == "#ff8000"
+    assert panel.table.item(1, 1).data(Qt.ItemDataRole.DecorationRole) is None
+
+
+def test_variables_plot_shows_and_hides(qtbot):
+    panel = VariablesPanel()
+    qtbot.addWidget(panel)
+    panel.show()
+    panel.set_series(np.array([np.nan, 1.0, -3.0, 5.0]), "d", decision=True)
+    assert panel.plot.isVisible() and panel.zero.isVisible()
+    panel.set_marker(2)
+    assert panel.marker.value() == 2
+    assert panel.point.data["y"].tolist() == [-3.0]
+    panel.set_marker(0)  # no value at the Start frame
+    assert len(panel.point.data) == 0
+    panel.set_series(np.array([np.nan, np.nan]), "x")
+    assert not panel.plot.isVisible()
+    panel.set_series(None)
+    assert not panel.plot.isVisible()
+
+
+def test_transport_bar_signals_and_counter(qtbot):
+    bar = TransportBar()
+    qtbot.addWidget(bar)
+    bar.set_range(26)
+    bar.set_position(13)
+    assert bar.counter.text() == "step 13 / 26"
+    assert bar.timeline.maximum() == 26 and bar.timeline.value() == 13
+    for button, signal in ((bar.first_button, bar.firstRequested),
+                           (bar.back_button, bar.backRequested),
+                           (bar.play_button, bar.playRequested),
+                           (bar.forward_button, bar.forwardRequested),
+                           (bar.last_button, bar.lastRequested)):
+        with qtbot.waitSignal(signal, timeout=500):
+            qtbot.mouseClick(button, Qt.MouseButton.LeftButton)
+    with qtbot.waitSignal(bar.seekRequested, timeout=500) as blocker:
+        bar.timeline.setValue(20)
+    assert blocker.args == [20]
+    # Positions set from outside do not echo back as seek requests.
+    with qtbot.assertNotEmitted(bar.seekRequested):
+        bar.set_position(5)
+    bar.set_range(-1)
+    assert bar.counter.text() == "no run" and not bar.play_button.isEnabled()
+
+
+def test_transport_speed(qtbot):
+    bar = TransportBar()
+    qtbot.addWidget(bar)
+    with qtbot.waitSignal(bar.speedChanged, timeout=500) as blocker:
+        bar.speed_box.setValue(120)
+    assert blocker.args == [120.0]
+    # The logarithmic slider spans 1 .. 2000 steps a second.
+    bar.speed_slider.setValue(bar.speed_slider.maximum())
+    assert bar.speed == 2000
+    bar.speed_slider.setValue(0)
+    assert bar.speed == 1
+    bar.set_speed(1e6)
+    assert bar.speed == 2000

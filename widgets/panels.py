@@ -1,0 +1,301 @@
+"""The pseudo-code panel and the variables panel."""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pyqtgraph as pg
+from PySide6.QtCore import Qt
+from PySide6.QtGui import QBrush, QColor, QFont, QFontDatabase
+from PySide6.QtWidgets import (QAbstractItemView, QFrame, QHeaderView, QLabel, QScrollArea,
+                               QTableWidget, QTableWidgetItem, QVBoxLayout, QWidget)
+
+CURRENT_LINE = QColor("#ffe8b3")
+CURRENT_EDGE = QColor("#f08c00")
+CHANGED_VALUE = QColor("#b35900")
+LINE_NUMBER = QColor("#8a94a1")
+NOTES_MAX_HEIGHT = 120
+
+
+def monospace_font(scale: float = 1.0) -> QFont:
+    font = QFontDatabase.systemFont(QFontDatabase.SystemFont.FixedFont)
+    if scale != 1.0 and font.pointSizeF() > 0:
+        font.setPointSizeF(font.pointSizeF() * scale)
+    return font
+
+
+def _as_color(text) -> str:
+    """'9851488' -> '#96d2e0'; anything that is not a whole number is kept."""
+    try:
+        value = float(text)
+    except (TypeError, ValueError):
+        return str(text)
+    if not value.is_integer() or not 0 <= value <= 0xFFFFFF:
+        return str(text)
+    return f"#{int(value):06x}"
+
+
+class _WrappingTable(QTableWidget):
+    """A table whose rows grow and shrink with its width, for wrapped text."""
+
+    def resizeEvent(self, event):  # noqa: N802
+        super().resizeEvent(event)
+        self.resizeRowsToContents()
+
+
+class CodePanel(QWidget):
+    """An algorithm's pseudo-code with the current step's line marked,
+    and the algorithm's notes under it. Long lines wrap under their text,
+    clear of the line numbers."""
+
+    def __init__(self, parent=None):
+        super().__init__(parent)
+        self.lines = _WrappingTable(0, 2, self)
+        self.lines.setObjectName("codeLines")
+        self.lines.setFont(monospace_font())
+        self.lines.horizontalHeader().setVisible(False)
+        self.lines.verticalHeader().setVisible(False)
+        self.lines.setShowGrid(False)
+        self.lines.setWordWrap(True)
+        self.lines.setEditTriggers(QAbstractItemView.EditTrigger.NoEditTriggers)
+        self.lines.setSelectionMode(QAbstractItemView.SelectionMode.NoSelection)
+        self.lines.setFocusPolicy(Qt.FocusPolicy.NoFocus)
+        self.lines.setHorizontalScrollBarPolicy(Qt.ScrollBarPolicy.ScrollBarAlwaysOff)
+        self.lines.setVerticalScrollMode(QAbstractItemView.ScrollMode.ScrollPerPixel)
+        header = self.lines.horizontalHeader()
+        header.setSectionResizeMode(0, QHeaderView.ResizeMode.ResizeToContents)
+        header.setSectionResizeMode(1, QHeaderView.ResizeMode.Stretch)
+        header.sectionResized.connect(lambda *_: self.lines.resizeRowsToContents())
+        self.notes = QLabel()
+        self.notes.setObjectName("codeNotes")
+        self.notes.setWordWrap(True)
+        self.notes.setTextFormat(Qt.TextFormat.PlainText)
+        self.notes.setAlignment(Qt.AlignmentFlag.AlignLeft | Qt.AlignmentFlag.AlignTop)
+        # Long notes scroll rather than squeeze the code.
+        self.notes_area = QScrollArea(self)
+        self.notes_area.setWidget(self.notes)
+        self.notes_area.setWidgetResizable(True)
+        self.notes_area.setFrameShape(QFrame.Shape.NoFrame)
+        self.notes_area.setHorizontalScrollBarPolicy(Qt.ScrollBarPolicy.ScrollBarAlwaysOff)
+        layout = QVBoxLayout(self)
+        layout.setContentsMargins(6, 6, 6, 6)
+        layout.setSpacing(6)
+        layout.addWidget(self.lines, 1)
+        layout.addWidget(self.notes_area)
+        self._texts: tuple[str, ...] = ()
+        self._current: int | None = None
+
+    def set_code(self, texts, notes=()) -> None:
+        """The lines (strings) and the notes shown under them."""
+        texts = tuple(texts)
+        if texts != self._texts:
+            self._texts = texts
+            self._current = None
+            self.lines.setRowCount(len(texts))
+            for row, text in enumerate(texts):
+                number = QTableWidgetItem(f"  {row + 1}")
+                number.setForeground(QBrush(LINE_NUMBER))
+                number.setTextAlignment(Qt.AlignmentFlag.AlignRight | Qt.AlignmentFlag.AlignTop)
+                code = QTableWidgetItem(text)
+                code.setTextAlignment(Qt.AlignmentFlag.AlignLeft | Qt.AlignmentFlag.AlignTop)
+                code.setToolTip(text)
+                self.lines.setItem(row, 0, number)
+                self.lines.setItem(row, 1, code)
+            self.lines.resizeColumnToContents(0)
+            self.lines.resizeRowsToContents()
+        self.notes.setText("\n".join(notes))
+        self.notes_area.setVisible(bool(notes))
+        self._fit_notes()
+
+    def resizeEvent(self, event):  # noqa: N802
+        super().resizeEvent(event)
+        self._fit_notes()
+
+    def _fit_notes(self) -> None:
+        """As tall as the notes need, up to NOTES_MAX_HEIGHT."""
+        width = max(50, self.notes_area.viewport().width())
+        needed = self.notes.heightForWidth(width)
+        if needed <= 0:
+            needed = self.notes.sizeHint().height()
+        self.notes_area.setFixedHeight(min(NOTES_MAX_HEIGHT, needed + 2))
+
+    def set_current(self, line: int | None) -> None:
+        """Mark line ``line`` (0-based), or none."""
+        if line == self._current:
+            return
+        if self._current is not None and self._current < self.lines.rowCount():
+            self._paint(self._current, False)
+        self._current = line
+        if line is not None and 0 <= line < self.lines.rowCount():
+            self._paint(line, True)
+            self.lines.scrollToItem(self.lines.item(line, 1),
+                                    QAbstractItemView.ScrollHint.EnsureVisible)
+
+    @property
+    def current(self) -> int | None:
+        return self._current
+
+    def line_text(self, line: int) -> str:
+        return self._texts[line]
+
+    def _paint(self, row: int, current: bool) -> None:
+        number, code = self.lines.item(row, 0), self.lines.item(row, 1)
+        for item in (number, code):
+            item.setBackground(QBrush(CURRENT_LINE) if current else QBrush())
+            font = item.font()
+            font.setBold(current)
+            item.setFont(font)
+        number.setText(("\u25b6 " if current else "  ") + str(row + 1))
+        number.setForeground(QBrush(CURRENT_EDGE if current else LINE_NUMBER))
+
+
+class VariablesPanel(QWidget):
+    """A table of the current step's named values and a plot of one value
+    over the whole run, with a marker at the current step."""
+
+    def __init__(self, parent=None):
+        super().__init__(parent)
+        self.caption = QLabel(self)
+        self.caption.setObjectName("stepCaption")
+        self.caption.setWordWrap(True)
+        self.table = QTableWidget(0, 2, self)
+        self.table.setObjectName("variables")
+        self.table.setHorizontalHeaderLabels(["Name", "Value"])
+        self.table.verticalHeader().setVisible(False)
+        self.table.horizontalHeader().setSectionResizeMode(0, QHeaderView.ResizeMode.ResizeToContents)
+        self.table.horizontalHeader().setSectionResizeMode(1, QHeaderView.ResizeMode.Stretch)
+        self.table.horizontalHeader().setDefaultAlignment(Qt.AlignmentFlag.AlignLeft)
+        self.table.setEditTriggers(QAbstractItemView.EditTrigger.NoEditTriggers)
+        self.table.setSelectionMode(QAbstractItemView.SelectionMode.NoSelection)
+        self.table.setFocusPolicy(Qt.FocusPolicy.NoFocus)
+        self.table.setAlternatingRowColors(True)
+        self.table.setShowGrid(False)
+        self.table.verticalHeader().setDefaultSectionSize(self.fontMetrics().height() + 6)
+        self._value_font = monospace_font()
+
+        self.plot = pg.PlotWidget(self)
+        self.plot.setObjectName("series")
+        self.plot.setBackground("#ffffff")
+        self.plot.setMinimumHeight(120)
+        self.plot.setMaximumHeight(190)
+        item = self.plot.getPlotItem()
+        item.hideButtons()
+        item.setMenuEnabled(False)
+        # No background grid: pyqtgraph redraws it whole whenever the
+        # step marker moves, which costs more than the rest of the panel.
+        item.setDownsampling(auto=True, mode="peak")
+        item.setClipToView(True)
+        for name in ("bottom", "left"):
+            axis = item.getAxis(name)
+            axis.setPen(pg.mkPen("#8a94a1"))
+            axis.setTextPen(pg.mkPen("#3d4754"))
+        item.getViewBox().setMouseEnabled(x=True, y=False)
+        self.zero = pg.InfiniteLine(0, angle=0, pen=pg.mkPen("#9aa5b1", style=Qt.PenStyle.DashLine))
+        self.curve = pg.PlotDataItem(pen=pg.mkPen("#2563a8", width=1.5), connect="finite",
+                                     symbol="o", symbolSize=4, symbolBrush="#2563a8",
+                                     symbolPen=None)
+        self.marker = pg.InfiniteLine(0, angle=90, pen=pg.mkPen("#f08c00", width=2))
+        self.point = pg.ScatterPlotItem(size=9, brush=pg.mkBrush("#f08c00"),
+                                        pen=pg.mkPen("#ffffff", width=1.5))
+        for part in (self.zero, self.curve, self.marker, self.point):
+            self.plot.addItem(part)
+        self.marker.setZValue(10)
+        self.point.setZValue(11)
+        self.plot_title = QLabel(self)
+        self.plot_title.setObjectName("seriesTitle")
+
+        layout = QVBoxLayout(self)
+        layout.setContentsMargins(6, 6, 6, 6)
+        layout.setSpacing(6)
+        layout.addWidget(self.caption)
+        layout.addWidget(self.table, 1)
+        layout.addWidget(self.plot_title)
+        layout.addWidget(self.plot)
+        self._rows: list[tuple[str, str]] = []
+        self._series: np.ndarray | None = None
+        self.set_series(None)
+
+    # ----------------------------------------------------------- table
+    def set_caption(self, text: str) -> None:
+        self.caption.setText(text)
+
+    def set_rows(self, rows, color_names=()) -> None:
+        """Rows (name, text) of the step on show. Values that changed since
+        the rows shown before are set in a warmer colour. Rows named in
+        ``color_names`` hold packed 0xRRGGBB colours: they read as #rrggbb,
+        with a swatch."""
+        rows = [(str(name), _as_color(text) if name in color_names else str(text))
+                for name, text in rows]
+        before = dict(self._rows)
+        self.table.setUpdatesEnabled(False)
+        if self.table.rowCount() != len(rows):
+            self.table.setRowCount(len(rows))
+        for row, (name, text) in enumerate(rows):
+            self._set_cell(row, 0, name, None)
+            changed = name in before and before[name] != text
+            self._set_cell(row, 1, text, CHANGED_VALUE if changed else None, self._value_font,
+                           bold=changed)
+            item = self.table.item(row, 1)
+            swatch = text if name in color_names and QColor.isValidColorName(text) else None
+            item.setData(Qt.ItemDataRole.DecorationRole, QColor(swatch) if swatch else None)
+        self.table.setUpdatesEnabled(True)
+        self._rows = rows
+
+    def rows(self) -> list[tuple[str, str]]:
+        return list(self._rows)
+
+    def _set_cell(self, row, column, text, color, font=None, bold=False):
+        item = self.table.item(row, column)
+        if item is None:
+            item = QTableWidgetItem()
+            self.table.setItem(row, column, item)
+        if item.text() != text:
+            item.setText(text)
+            item.setToolTip(text)
+        if font is not None:
+            font = QFont(font)
+            font.setBold(bold)
+            item.setFont(font)
+        item.setForeground(QBrush(color) if color is not None else QBrush())
+
+    # ------------------------------------------------------------ plot
+    def set_series(self, values: np.ndarray | None, name: str = "",
+                   decision: bool = False) -> None:
+        """Plot ``values`` against the step index, or hide the plot.
+
+        For a decision variable (whose sign picks the branch) the zero line
+        is drawn and kept in view.
+        """
+        finite = values is not None and bool(np.isfinite(values).any())
+        self.plot.setVisible(finite)
+        self.plot_title.setVisible(finite)
+        if not finite:
+            self._series = None
+            self.curve.setData([], [])
+            self.point.setData([], [])
+            return
+        self._series = values
+        steps = np.arange(len(values), dtype=np.float64)
+        # Markers on every step only while there are few enough to see.
+        self.curve.setSymbol("o" if len(values) <= 300 else None)
+        self.curve.setData(steps, values)
+        self.plot_title.setText(f"{name} over the run" + (" (its sign decides)" if decision else ""))
+        low, high = float(np.nanmin(values)), float(np.nanmax(values))
+        self.zero.setVisible(decision)
+        if decision:
+            low, high = min(low, 0.0), max(high, 0.0)
+        pad = max(0.5, (high - low) * 0.08)
+        self.plot.getPlotItem().getViewBox().setRange(
+            xRange=(0, max(1, len(values) - 1)), yRange=(low - pad, high + pad), padding=0.02)
+
+    def set_marker(self, index: int) -> None:
+        self.marker.setValue(index)
+        if self._series is not None and 0 <= index < len(self._series) \
+                and math.isfinite(self._series[index]):
+            self.point.setData([index], [float(self._series[index])])
+        else:
+            self.point.setData([], [])
+
+    @property
+    def series(self):
+        return self._series

@@ -1,0 +1,176 @@
+"""The transport bar: first, back, play/pause, forward, last, speed,
+timeline and the step counter."""
+from __future__ import annotations
+
+import math
+
+from PySide6.QtCore import QSize, Qt, Signal
+from PySide6.QtWidgets import (QHBoxLayout, QLabel, QSizePolicy, QSlider, QSpinBox, QStyle,
+                               QToolButton, QVBoxLayout, QWidget)
+
+SPEED_MIN = 1
+SPEED_MAX = 2000
+_SPEED_TICKS = 1000  # resolution of the logarithmic speed slider
+
+
+class TransportBar(QWidget):
+    """Buttons, speed and timeline. Emits requests; shows what it is told."""
+
+    firstRequested = Signal()
+    backRequested = Signal()
+    playRequested = Signal()   # toggle play / pause
+    forwardRequested = Signal()
+    lastRequested = Signal()
+    seekRequested = Signal(int)
+    speedChanged = Signal(float)
+
+    def __init__(self, parent=None):
+        super().__init__(parent)
+        self.setObjectName("transport")
+        style = self.style()
+        self._icons = {
+            "play": style.standardIcon(QStyle.StandardPixmap.SP_MediaPlay),
+            "pause": style.standardIcon(QStyle.StandardPixmap.SP_MediaPause),
+        }
+
+        def button(icon, tip, signal):
+            b = QToolButton(self)
+            b.setIcon(style.standardIcon(icon))
+            b.setIconSize(QSize(20, 20))
+            b.setToolTip(tip)
+            b.setAutoRaise(True)
+            # Buttons never take the keyboard focus, so Space and the arrows
+            # stay with the window's shortcuts.
+            b.setFocusPolicy(Qt.FocusPolicy.NoFocus)
+            b.clicked.connect(signal.emit)
+            return b
+
+        self.first_button = button(QStyle.StandardPixmap.SP_MediaSkipBackward, "First step (Home)",
+                                   self.firstRequested)
+        self.back_button = button(QStyle.StandardPixmap.SP_MediaSeekBackward, "Step back (Left)",
+                                  self.backRequested)
+        self.play_button = button(QStyle.StandardPixmap.SP_MediaPlay, "Play (Space)",
+                                  self.playRequested)
+        self.play_button.setIconSize(QSize(26, 26))
+        self.forward_button = button(QStyle.StandardPixmap.SP_MediaSeekForward,
+                                     "Step forward (Right)", self.forwardRequested)
+        self.last_button = button(QStyle.StandardPixmap.SP_MediaSkipForward, "Last step (End)",
+                                  self.lastRequested)
+
+        self.timeline = QSlider(Qt.Orientation.Horizontal, self)
+        self.timeline.setToolTip("Drag to scrub through the run")
+        self.timeline.setFocusPolicy(Qt.FocusPolicy.NoFocus)
+        self.timeline.setRange(0, 0)
+        self.timeline.setSizePolicy(QSizePolicy.Policy.Expanding, QSizePolicy.Policy.Fixed)
+        self.timeline.valueChanged.connect(self._timeline_moved)
+
+        self.counter = QLabel(self)
+        self.counter.setObjectName("stepCounter")
+        self.counter.setAlignment(Qt.AlignmentFlag.AlignLeft | Qt.AlignmentFlag.AlignVCenter)
+        self.counter.setToolTip("The step on show and the last step of the run")
+
+        speed_label = QLabel("Speed", self)
+        self.speed_slider = QSlider(Qt.Orientation.Horizontal, self)
+        self.speed_slider.setRange(0, _SPEED_TICKS)
+        self.speed_slider.setFixedWidth(110)
+        self.speed_slider.setFocusPolicy(Qt.FocusPolicy.NoFocus)
+        self.speed_slider.setToolTip("Steps per second while playing (logarithmic)")
+        self.speed_box = QSpinBox(self)
+        self.speed_box.setRange(SPEED_MIN, SPEED_MAX)
+        self.speed_box.setSuffix(" steps/s")
+        self.speed_box.setKeyboardTracking(False)
+        self.speed_box.setToolTip("Steps per second while playing; at high speeds "
+                                  "frames are skipped to keep up")
+        self.speed_slider.valueChanged.connect(self._speed_slid)
+        self.speed_box.valueChanged.connect(self._speed_typed)
+
+        # The timeline takes the whole width above the buttons: scrubbing
+        # wants every pixel it can get.
+        top = QHBoxLayout()
+        top.setContentsMargins(0, 0, 0, 0)
+        top.addWidget(self.timeline, 1)
+        row = QHBoxLayout()
+        row.setContentsMargins(0, 0, 0, 0)
+        row.setSpacing(2)
+        for b in (self.first_button, self.back_button, self.play_button, self.forward_button,
+                  self.last_button):
+            row.addWidget(b)
+        row.addSpacing(12)
+        row.addWidget(self.counter)
+        row.addStretch(1)
+        row.addWidget(speed_label)
+        row.addSpacing(6)
+        row.addWidget(self.speed_slider)
+        row.addSpacing(4)
+        row.addWidget(self.speed_box)
+        layout = QVBoxLayout(self)
+        layout.setContentsMargins(10, 6, 10, 4)
+        layout.setSpacing(2)
+        layout.addLayout(top)
+        layout.addLayout(row)
+
+        self._last = 0
+        self._position = 0
+        self.set_speed(8)
+        self.set_range(0)
+
+    # ------------------------------------------------------------ shown state
+    def set_range(self, last: int) -> None:
+        """The run has steps 0 .. last (last = -1 when there is no run)."""
+        self._last = last
+        self.timeline.blockSignals(True)
+        self.timeline.setRange(0, max(0, last))
+        self.timeline.setPageStep(max(1, (last + 1) // 20))
+        self.timeline.blockSignals(False)
+        enabled = last > 0
+        for widget in (self.first_button, self.back_button, self.play_button, self.forward_button,
+                       self.last_button, self.timeline):
+            widget.setEnabled(enabled)
+        digits = len(f"{max(last, 0):,}")
+        self.counter.setMinimumWidth(self.counter.fontMetrics().horizontalAdvance(
+            "step " + "8" * (2 * digits + 1) + " / "))
+        self._update_counter()
+
+    def set_position(self, index: int) -> None:
+        self._position = index
+        if self.timeline.value() != index:
+            self.timeline.blockSignals(True)
+            self.timeline.setValue(index)
+            self.timeline.blockSignals(False)
+        self._update_counter()
+
+    def set_playing(self, playing: bool) -> None:
+        self.play_button.setIcon(self._icons["pause" if playing else "play"])
+        self.play_button.setToolTip("Pause (Space)" if playing else "Play (Space)")
+
+    @property
+    def speed(self) -> float:
+        return float(self.speed_box.value())
+
+    def set_speed(self, speed: float) -> None:
+        speed = int(min(max(round(speed), SPEED_MIN), SPEED_MAX))
+        self.speed_box.setValue(speed)
+
+    def _update_counter(self) -> None:
+        if self._last < 0:
+            self.counter.setText("no run")
+        else:
+            self.counter.setText(f"step {self._position:,} / {self._last:,}")
+
+    # ---------------------------------------------------------------- input
+    def _timeline_moved(self, value: int) -> None:
+        self.seekRequested.emit(value)
+
+    def _speed_slid(self, tick: int) -> None:
+        speed = round(math.exp(math.log(SPEED_MIN) + (math.log(SPEED_MAX) - math.log(SPEED_MIN))
+                               * tick / _SPEED_TICKS))
+        if speed != self.speed_box.value():
+            self.speed_box.setValue(speed)
+
+    def _speed_typed(self, speed: int) -> None:
+        tick = round((math.log(speed) - math.log(SPEED_MIN))
+                     / (math.log(SPEED_MAX) - math.log(SPEED_MIN)) * _SPEED_TICKS)
+        self.speed_slider.blockSignals(True)
+        self.speed_slider.setValue(tick)
+        self.speed_slider.blockSignals(False)
+        self.speedChanged.emit(float(speed))
