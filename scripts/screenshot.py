@@ -5,7 +5,7 @@ so the picture shows the step's pixel, the two candidates of its decision,
 the pixels where the two algorithms differ, the pseudo-code line and the
 variables.
 
-    python tools/screenshot.py [OUT.png] [--size 1280x800]
+    python scripts/screenshot.py [OUT.png] [--size 1280x800]
 """
 from __future__ import annotations
 
