@@ -37,13 +37,14 @@ class Raster:
         if not self.inside(x, y):
             return
         self.counts[y, x] += 1
-        if self.colors is not None and value is not None:
+        if self.colors is not None and value is not None and value == value:  # NaN: no colour
             self.colors[y, x] = int(value)
 
     def write_many(self, flat: np.ndarray, values: np.ndarray | None = None) -> None:
         """Write pixels given as flat indices y * W + x, in order.
 
-        Negative indices stand for pixels outside the grid and are skipped.
+        Negative indices stand for pixels outside the grid and are skipped;
+        a NaN value writes no colour.
         """
         keep = flat >= 0
         flat = flat[keep]
@@ -51,7 +52,9 @@ class Raster:
             return
         np.add.at(self.counts.reshape(-1), flat, 1)
         if self.colors is not None and values is not None:
-            _write_last(self.colors.reshape(-1), flat, values[keep])
+            values = values[keep]
+            valued = ~np.isnan(values)
+            _write_last(self.colors.reshape(-1), flat[valued], values[valued])
 
     def written(self) -> np.ndarray:
         """Boolean mask of pixels written at least once."""

@@ -37,6 +37,9 @@ class CodeLine:
     text: str
     kind: str = CALC
     branch: str = ""  # the decision outcome this line stands for, e.g. "E"
+    # Candidate offsets for frames on this line, where they differ from
+    # Start.candidates (a two-region algorithm has two pairs of them).
+    candidates: tuple[tuple[int, int], ...] = ()
 
     def __post_init__(self):
         if self.kind not in KINDS:
@@ -94,12 +97,15 @@ class Span:
     """A run of pixels x_start .. x_end - 1 on row y, written at once.
 
     It writes only when its code line is a PLOT line, like a lean frame.
+    ``value`` is the packed colour written into every pixel of the run when
+    the run writes values (``Start.pixel_value``); None writes no colour.
     """
 
     line: int
     y: int
     x_start: int
     x_end: int
+    value: float | None = None
 
     @property
     def pixel(self):
@@ -124,4 +130,5 @@ class Step:
 
     @property
     def writes(self) -> bool:
-        return self.kind == PLOT and self.pixel is not None
+        """Does this step write its one pixel? (A Span writes its own run.)"""
+        return self.kind == PLOT and self.pixel is not None and self.record is None

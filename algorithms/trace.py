@@ -182,7 +182,8 @@ class Trace:
     def writes(self) -> np.ndarray:
         """Per step: does it write a single pixel? (Span steps are not counted.)"""
         mask = self._line_plots[self.line] & (self.x != NO_PIXEL)
-        mask[self._spans] = False
+        # Rich records never write a single pixel (a Span writes its run).
+        mask[list(self.records)] = False
         return mask
 
     def written_pixels(self) -> np.ndarray:
@@ -192,27 +193,39 @@ class Trace:
         pixels = np.stack([self.x[mask], self.y[mask]], axis=1).astype(np.int64)
         if not self._spans:
             return pixels
-        span_order, span_pixels = self._span_pixels(0, len(self))
+        span_order, span_pixels, _ = self._span_pixels(0, len(self))
         order = np.concatenate([order, span_order])
         pixels = np.concatenate([pixels, span_pixels])
         return pixels[np.argsort(order, kind="stable")]
 
     def _span_pixels(self, lo: int, hi: int):
-        """Step indices and pixels of the spans recorded in steps lo..hi-1."""
+        """Step indices, pixels and values of the spans recorded in steps lo..hi-1.
+
+        A span without a value gives NaN values.
+        """
         chosen = self._spans[bisect.bisect_left(self._spans, lo):bisect.bisect_left(self._spans, hi)]
         orders, pixels = [np.zeros(0, np.int64)], [np.zeros((0, 2), np.int64)]
+        values = [np.zeros(0)]
         for index in chosen:
             span = self.records[index]
             xs = np.arange(span.x_start, span.x_end, dtype=np.int64)
             orders.append(np.full(len(xs), index, np.int64))
             pixels.append(np.stack([xs, np.full(len(xs), span.y, np.int64)], axis=1))
-        return np.concatenate(orders), np.concatenate(pixels)
+            values.append(np.full(len(xs), math.nan if span.value is None else float(span.value)))
+        return np.concatenate(orders), np.concatenate(pixels), np.concatenate(values)
 
     def pixel_values(self) -> np.ndarray | None:
-        """The value written with each written pixel, if the run writes values."""
+        """The value written with each written pixel (spans included), in emission order."""
         if self.start.pixel_value is None:
             return None
-        return self.series(self.start.pixel_value)[self.writes()]
+        mask = self.writes()
+        values = self.series(self.start.pixel_value)[mask]
+        if not self._spans:
+            return values
+        span_order, _, span_values = self._span_pixels(0, len(self))
+        order = np.concatenate([np.flatnonzero(mask), span_order])
+        values = np.concatenate([values, span_values])
+        return values[np.argsort(order, kind="stable")]
 
     def step(self, i: int) -> Step:
         i = self._index(i)
@@ -237,24 +250,30 @@ class Trace:
         return result
 
     def final_variables(self) -> dict:
-        """The named variables at the end of the run."""
-        result = dict(self.start.constants)
-        for index in self._vars_at:
-            result.update(self.records[index].values)
+        """The named variables at the end of the run: for each name, the
+        value set last, whether by a Vars record or by a frame's value."""
+        updates = [(index, name, value) for index in self._vars_at
+                   for name, value in self.records[index].values.items()]
         for column, name in enumerate(self.value_names):
-            known = self.values[~np.isnan(self.values[:, column]), column]
+            known = np.flatnonzero(~np.isnan(self.values[:, column]))
             if known.size:
-                result[name] = _plain_number(known[-1])
+                last = int(known[-1])
+                updates.append((last, name, _plain_number(self.values[last, column])))
+        result = dict(self.start.constants)
+        for _, name, value in sorted(updates, key=lambda update: update[0]):
+            result[name] = value
         return result
 
     def candidates_at(self, i: int) -> list[tuple[int, int]]:
         i = self._index(i)
-        if not self.start.candidates or i == 0 or not self.code[int(self.line[i])].branch:
+        line = self.code[int(self.line[i])]
+        offsets = line.candidates or self.start.candidates
+        if not offsets or i == 0 or not line.branch:
             return []
         px, py = int(self.x[i - 1]), int(self.y[i - 1])
         if px == NO_PIXEL:
             return []
-        return [(px + dx, py + dy) for dx, dy in self.start.candidates]
+        return [(px + dx, py + dy) for dx, dy in offsets]
 
     def state_at(self, i: int) -> FrameState:
         i = self._index(i)
@@ -279,7 +298,7 @@ class Trace:
             if isinstance(step.record, Span):
                 for x in range(step.record.x_start, step.record.x_end):
                     if step.kind == PLOT:
-                        raster.write(x, step.record.y)
+                        raster.write(x, step.record.y, step.record.value)
             elif step.writes:
                 value = None if column is None else self.values[k, column]
                 raster.write(*step.pixel, value)
@@ -305,12 +324,18 @@ class Trace:
             return
         column = self._value_column()
         values = None if column is None else self.values[lo:hi, column]
-        raster.write_many(self._flat_pixels()[lo:hi], values)
-        if self._spans:
-            _, pixels = self._span_pixels(lo, hi)
+        flat = self._flat_pixels()[lo:hi]
+        orders, pixels, span_values = self._span_pixels(lo, hi) if self._spans else ((),) * 3
+        if len(orders):
             x, y = pixels[:, 0], pixels[:, 1]
             inside = (x >= 0) & (x < self.width) & (y >= 0) & (y < self.height)
-            raster.write_many(np.where(inside, y * self.width + x, -1))
+            # Spans and single pixels merged in step order, so that the last
+            # write to a pixel sets its colour.
+            order = np.argsort(np.concatenate([np.arange(lo, hi), orders]), kind="stable")
+            flat = np.concatenate([flat, np.where(inside, y * self.width + x, -1)])[order]
+            if values is not None:
+                values = np.concatenate([values, span_values])[order]
+        raster.write_many(flat, values)
 
     def _flat_pixels(self) -> np.ndarray:
         """Per step, y * W + x of the pixel it writes, or -1 (no write, or clipped)."""
