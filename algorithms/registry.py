@@ -6,17 +6,14 @@ import re
 from dataclasses import dataclass, field
 from typing import Callable, Sequence
 
+from .errors import InputError
 from .steps import CodeLine
 from .trace import DEFAULT_STEP_CAP, Trace
 
-FAMILIES = ("lines", "circles", "polygons", "fill")
+FAMILIES = ("lines", "circles", "polygons", "fill", "triangles")
 # Modules that register specs when imported; add a family's module here.
 _FAMILY_MODULES = ("algorithms.lines", "algorithms.circles", "algorithms.polygons",
-                   "algorithms.fill")
-
-
-class InputError(ValueError):
-    """Bad input from a person: the message is shown as it is."""
+                   "algorithms.fill", "algorithms.triangles")
 
 
 @dataclass(frozen=True)
@@ -24,7 +21,7 @@ class Option:
     """A typed option with a default and, where it applies, a range."""
 
     name: str
-    kind: str  # "int", "float", "bool", "choice", "colors" or "point"
+    kind: str  # "int", "float", "bool", "choice", "colors", "point" or "numbers"
     default: object
     help: str = ""
     minimum: float | None = None
@@ -46,6 +43,9 @@ class Option:
             raise InputError(f"option {self.name}: expected one of {', '.join(self.choices)}, got {text!r}")
         if self.kind == "colors":
             return self.check([part for part in text.split(",") if part.strip()])
+        if self.kind == "numbers":
+            parts = [part for part in text.split(",") if part.strip()]
+            return self.check(tuple(parse_number(part, f"option {self.name}") for part in parts))
         if self.kind == "point":
             parts = text.split(",")
             if len(parts) != 2:
@@ -122,8 +122,18 @@ def _check_point(option: Option, value):
     return (int(value[0]), int(value[1]))
 
 
+def _check_numbers(option: Option, value):
+    if not isinstance(value, (list, tuple)):
+        raise InputError(f"option {option.name}: expected a list of numbers such as 1,2,3")
+    for item in value:
+        if isinstance(item, bool) or not isinstance(item, (int, float)) or not math.isfinite(item):
+            raise InputError(f"option {option.name}: {item!r} is not a finite number")
+    return tuple(float(item) for item in value)
+
+
 _CHECKERS = {"int": _check_number, "float": _check_number, "bool": _check_bool,
-             "choice": _check_choice, "colors": _check_colors, "point": _check_point}
+             "choice": _check_choice, "colors": _check_colors, "point": _check_point,
+             "numbers": _check_numbers}
 
 
 def parse_number(text: str, what: str, integer: bool = False):
@@ -209,6 +219,9 @@ class AlgorithmSpec:
     # Extra panel rows (name, text) for a step, beyond the named variables:
     # the decision and its update, say. Called for the visible step only.
     explain: Callable[[Trace, int], list[tuple[str, str]]] | None = None
+    # The generator also takes the grid (width, height) as a third argument:
+    # a flood fill is bounded by the grid's edges.
+    uses_grid: bool = False
 
     def option(self, name: str) -> Option:
         for option in self.options:
@@ -224,17 +237,22 @@ class AlgorithmSpec:
             options[name] = self.option(name).check(value)
         return options
 
-    def frames(self, points, options: dict | None = None):
+    def frames(self, points, options: dict | None = None, grid=(32, 24)):
         """Check the inputs and start the generator."""
         options = self.resolve(options)
-        return self.generator(self.inputs.check(points), options)
+        return self._start(self.inputs.check(points), options, grid)
 
     def record(self, points, options: dict | None = None, grid=(32, 24),
                step_cap: int = DEFAULT_STEP_CAP) -> Trace:
         options = self.resolve(options)
         points = self.inputs.check(points)
-        frames = self.generator(points, options)
+        frames = self._start(points, options, grid)
         return Trace.record(frames, self.code(points, options), grid[0], grid[1], step_cap)
+
+    def _start(self, points, options, grid):
+        if self.uses_grid:
+            return self.generator(points, options, (int(grid[0]), int(grid[1])))
+        return self.generator(points, options)
 
     def panel_rows(self, trace: Trace, i: int) -> list[tuple[str, str]]:
         """Rows for the variables panel at step i: named values, then extras."""
@@ -259,7 +277,7 @@ def format_value(value) -> str:
     if isinstance(value, float) and value.is_integer() and abs(value) < 2 ** 53:
         return str(int(value))
     if isinstance(value, float):
-        return f"{value:.9g}"
+        return repr(value)  # shortest exact text: float drift must stay visible
     return str(value)
 
 
@@ -282,8 +300,9 @@ def _load() -> None:
 
 
 def all_specs() -> list[AlgorithmSpec]:
+    """Every spec, family by family in FAMILIES order (whatever the import order)."""
     _load()
-    return list(_REGISTRY.values())
+    return sorted(_REGISTRY.values(), key=lambda spec: FAMILIES.index(spec.family))
 
 
 def get(name: str) -> AlgorithmSpec:

@@ -16,6 +16,7 @@ from typing import Iterable, Sequence
 
 import numpy as np
 
+from .errors import InputError
 from .raster import Raster
 from .steps import NO_PIXEL, PLOT, RICH_RECORDS, CodeLine, Span, Start, Step, Vars
 
@@ -106,6 +107,8 @@ class Trace:
             first = self._count
             try:
                 rows = np.fromiter(islice(group, CHUNK), self._dtype)
+            except InputError:
+                raise  # the generator refused its input: not a protocol fault
             except (ValueError, TypeError, OverflowError) as error:
                 raise TraceError(f"near step {first}: a frame is not (line, x, y"
                                  f"{', value' * len(self.start.values)}): {error}") from None
