@@ -10,6 +10,7 @@ from __future__ import annotations
 import json
 import math
 import os
+import reprlib
 import tempfile
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -23,10 +24,36 @@ ORIGINS = ("bottom-left", "top-left")
 MAX_FILE_BYTES = 8 * 2 ** 20
 MAX_POINTS = 100_000
 RESOURCES = Path(__file__).resolve().parents[1] / "resources"
+MAX_MESSAGE = 300  # characters; a message quoting a huge value is cut here
+# Whole numbers in a scene file have at most this many digits: every field
+# is far smaller, and longer ones cannot even become a float to be checked.
+MAX_DIGITS = 15
+
+
+def one_line(text: str, limit: int = MAX_MESSAGE) -> str:
+    """The text as one short printable line: line breaks and other control
+    characters escaped as in Python strings, the tail cut past ``limit``."""
+    text = "".join(c if c.isprintable() else repr(c)[1:-1] for c in text)
+    return text if len(text) <= limit else text[:limit - 3] + "..."
+
+
+_short = reprlib.Repr()
+_short.maxstring = _short.maxother = _short.maxlong = 40
+
+
+def show(value) -> str:
+    """A value as a message quotes it: short, even for a huge or deep one."""
+    return _short.repr(value)
 
 
 class SceneError(ValueError):
-    """A scene file that cannot be used; the message names the field."""
+    """A scene file that cannot be used; the message names the field.
+
+    The message is always one line, whatever the file held.
+    """
+
+    def __init__(self, message: str):
+        super().__init__(one_line(message))
 
 
 @dataclass
@@ -79,26 +106,35 @@ def _primitives(inputs, points) -> list:
 def load(path: str | os.PathLike) -> Scene:
     """Read and check a scene file; SceneError names what is wrong."""
     path = Path(path)
+    name = path.name or str(path)
     try:
-        size = path.stat().st_size
-        if size > MAX_FILE_BYTES:
-            raise SceneError(f"{path.name}: the file is {size:,} bytes; a scene is at most "
-                             f"{MAX_FILE_BYTES:,}")
-        text = path.read_bytes().decode("utf-8")
+        # Read one byte past the limit rather than trust stat(): a device
+        # such as /dev/zero or a pipe has no size and never ends.
+        with path.open("rb") as stream:
+            data = stream.read(MAX_FILE_BYTES + 1)
     except OSError as error:
-        raise SceneError(f"{path.name}: cannot read the file ({error.strerror or error})") from None
+        raise SceneError(f"{name}: cannot read the file ({error.strerror or error})") from None
+    if len(data) > MAX_FILE_BYTES:
+        raise SceneError(f"{name}: the file is larger than {MAX_FILE_BYTES:,} bytes, "
+                         "the most a scene may be")
+    try:
+        text = data.decode("utf-8")
     except UnicodeDecodeError:
-        raise SceneError(f"{path.name}: not a text file (not UTF-8)") from None
-    return parse(text, path.name)
+        raise SceneError(f"{name}: not a text file (not UTF-8)") from None
+    return parse(text, name)
 
 
 def parse(text: str, name: str = "scene") -> Scene:
     try:
-        data = json.loads(text, parse_constant=_reject_constant)
+        data = json.loads(text, parse_constant=_reject_constant, parse_int=_whole_number,
+                          parse_float=_finite_number)
     except json.JSONDecodeError as error:
         raise SceneError(f"{name}: not valid JSON ({error.msg} at line {error.lineno})") from None
     except ValueError as error:
         raise SceneError(f"{name}: {error}") from None
+    except RecursionError:
+        # The decoder recurses once per level of [ or {.
+        raise SceneError(f"{name}: the JSON nests too deeply to be a scene") from None
     try:
         return from_json(data)
     except SceneError as error:
@@ -109,18 +145,32 @@ def _reject_constant(constant: str):
     raise ValueError(f"{constant} is not a finite number")
 
 
+def _whole_number(text: str) -> int:
+    if len(text.lstrip("-")) > MAX_DIGITS:
+        raise ValueError(f"the number {show(text)} is too large")
+    return int(text)
+
+
+def _finite_number(text: str) -> float:
+    # 1e400 is valid JSON but no float: json would make it infinity.
+    value = float(text)
+    if not math.isfinite(value):
+        raise ValueError(f"the number {show(text)} is too large")
+    return value
+
+
 def from_json(data) -> Scene:
     if not isinstance(data, dict):
         raise SceneError("the file must hold a JSON object")
     version = _field(data, "version", int)
     if version != VERSION:
-        raise SceneError(f"version: this RasterLab reads version {VERSION}, not {version}")
+        raise SceneError(f"version: this RasterLab reads version {VERSION}, not {show(version)}")
     grid = _field(data, "grid", dict)
     width = _grid_size(grid, "width")
     height = _grid_size(grid, "height")
     origin = data.get("origin", "bottom-left")
     if origin not in ORIGINS:
-        raise SceneError(f"origin: expected one of {', '.join(ORIGINS)}, got {origin!r}")
+        raise SceneError(f"origin: expected one of {', '.join(ORIGINS)}, got {show(origin)}")
     algorithm = _field(data, "algorithm", str)
     try:
         spec = registry.get(algorithm)
@@ -139,7 +189,7 @@ def _field(data: dict, name: str, kind: type):
         raise SceneError(f"{name}: missing")
     value = data[name]
     if kind is int and (isinstance(value, bool) or not isinstance(value, int)):
-        raise SceneError(f"{name}: expected a whole number, got {value!r}")
+        raise SceneError(f"{name}: expected a whole number, got {show(value)}")
     if not isinstance(value, kind):
         raise SceneError(f"{name}: expected {_kind_name(kind)}, got {type(value).__name__}")
     return value
@@ -159,7 +209,7 @@ def _text(data: dict, name: str) -> str:
 def _grid_size(grid: dict, name: str) -> int:
     value = grid.get(name)
     if isinstance(value, bool) or not isinstance(value, int) or not 1 <= value <= MAX_GRID:
-        raise SceneError(f"grid.{name}: expected a whole number 1..{MAX_GRID}, got {value!r}")
+        raise SceneError(f"grid.{name}: expected a whole number 1..{MAX_GRID}, got {show(value)}")
     return value
 
 
@@ -172,6 +222,10 @@ def _options(spec, options) -> dict:
             checked[name] = spec.option(name).check(value)
         except InputError as error:
             raise SceneError(f"options.{name}: {error}") from None
+        except (OverflowError, RecursionError):
+            # from_json also takes data that never was JSON text: an int
+            # too large for a float, a list nested past repr's depth.
+            raise SceneError(f"options.{name}: {show(value)} is not a usable value") from None
     return checked
 
 
@@ -188,6 +242,9 @@ def _points(spec, primitives: list, width: int, height: int) -> list:
         checked = spec.inputs.check(points)
     except (InputError, TypeError) as error:
         raise SceneError(f"primitives: {error}") from None
+    except (OverflowError, RecursionError):
+        # An int beyond any float, or a list nested past repr's depth.
+        raise SceneError("primitives: a point is not two usable numbers") from None
     for x, y in spec.inputs.flat(checked):
         if not _inside(x, y, width, height, spec.inputs.integer):
             raise SceneError(f"primitives: point ({x}, {y}) lies outside the {width}x{height} grid")
@@ -200,6 +257,13 @@ def _inside(x, y, width, height, integer) -> bool:
     if integer:
         return 0 <= x < width and 0 <= y < height
     return 0 <= x <= width and 0 <= y <= height
+
+
+def _finite(value) -> bool:
+    try:
+        return math.isfinite(value)
+    except OverflowError:  # an int beyond any float
+        return False
 
 
 _VIEW_FIELDS = {"step": int, "speed": (int, float), "show_grid": bool, "compare": bool}
@@ -216,8 +280,8 @@ def _view(view) -> dict:
         if isinstance(value, bool) != (kind is bool) or not isinstance(value, kind):
             raise SceneError(f"view.{name}: wrong type {type(value).__name__}")
         if isinstance(value, (int, float)) and not isinstance(value, bool) and (
-                not math.isfinite(value) or value < 0):
-            raise SceneError(f"view.{name}: expected a finite number >= 0, got {value!r}")
+                not _finite(value) or value < 0):
+            raise SceneError(f"view.{name}: expected a finite number >= 0, got {show(value)}")
         checked[name] = value
     return checked
 
@@ -249,9 +313,15 @@ def write_atomically(path: Path, data: bytes) -> None:
     try:
         handle, temporary = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=directory)
     except OSError as error:
-        raise SceneError(f"{path}: cannot write in {directory} ({error.strerror})") from None
+        raise SceneError(f"{path}: cannot write in {directory} "
+                         f"({error.strerror or error})") from None
     try:
-        with os.fdopen(handle, "wb") as stream:
+        try:
+            stream = os.fdopen(handle, "wb")
+        except BaseException:
+            os.close(handle)  # fdopen failed, so nothing else will close it
+            raise
+        with stream:
             stream.write(data)
             stream.flush()
             os.fsync(stream.fileno())
@@ -259,5 +329,6 @@ def write_atomically(path: Path, data: bytes) -> None:
     except BaseException as error:
         Path(temporary).unlink(missing_ok=True)
         if isinstance(error, OSError):
-            raise SceneError(f"{path}: cannot write the file ({error.strerror})") from None
+            # An OSError made in code may carry a message but no strerror.
+            raise SceneError(f"{path}: cannot write the file ({error.strerror or error})") from None
         raise
