@@ -14,8 +14,12 @@ from algorithms import registry
 from algorithms.raster import MAX_GRID
 from algorithms.registry import InputError, parse_number
 from algorithms.trace import DEFAULT_STEP_CAP, TraceError
+from app.scene import one_line
 
 DEFAULT_GRID = (32, 24)
+# Far beyond what memory holds, and below sys.maxsize, which the recorder's
+# islice needs: a larger cap used to end in a traceback.
+MAX_STEP_CAP = 10 ** 12
 
 
 class CommandError(Exception):
@@ -50,11 +54,13 @@ def build_parser() -> Parser:
     output = run.add_mutually_exclusive_group()
     output.add_argument("--json", action="store_true", help="print one JSON object")
     output.add_argument("--ascii", action="store_true", help="print the grid as text")
+    add_export_command(commands)
     return parser
 
 
 # ------------------------------------------------------------------ parsing
 def parse_point(text: str) -> tuple[float, float]:
+    text = text.strip()  # messages quote the point without main's shielding space
     parts = text.split(",")
     if len(parts) != 2:
         raise InputError(f"point {text!r} must be X,Y")
@@ -62,6 +68,7 @@ def parse_point(text: str) -> tuple[float, float]:
 
 
 def parse_grid(text: str) -> tuple[int, int]:
+    text = text.strip()
     parts = text.split(",")
     if len(parts) != 2:
         raise InputError(f"grid {text!r} must be W,H")
@@ -73,8 +80,8 @@ def parse_grid(text: str) -> tuple[int, int]:
 
 def parse_step_cap(text: str) -> int:
     step_cap = parse_number(text, "--step-cap", integer=True)
-    if step_cap < 1:
-        raise InputError("--step-cap must be at least 1")
+    if not 1 <= step_cap <= MAX_STEP_CAP:
+        raise InputError(f"--step-cap must be 1 .. {MAX_STEP_CAP:,}, got {text.strip()!r}")
     return step_cap
 
 
@@ -123,10 +130,12 @@ def command_list(args) -> int:
     if args.json:
         print(json.dumps([spec.describe() for spec in specs], indent=2))
         return 0
+    name_width = max(len(spec.name) for spec in specs)
+    family_width = max(len(spec.family) for spec in specs)
     for spec in specs:
         options = ", ".join(f"{o.name}={_default_text(o.default)}" for o in spec.options)
-        print(f"{spec.name:<20} {spec.family:<8} {spec.inputs.count} points  "
-              f"{spec.summary}" + (f"  [{options}]" if options else ""))
+        print(f"{spec.name:<{name_width}}  {spec.family:<{family_width}}  "
+              f"{spec.inputs.text():<24}  {spec.summary}" + (f"  [{options}]" if options else ""))
     return 0
 
 
@@ -142,7 +151,7 @@ def command_run(args) -> int:
     if args.scene is not None:
         return run_scene(args)
     if args.algorithm is None or args.points is None:
-        raise CommandError("run needs ALGO and --points, or --scene SCENE.json")
+        raise CommandError(_missing_algorithm(args.points))
     spec = registry.get(args.algorithm)
     groups = [[parse_point(text) for text in group] for group in args.points]
     if spec.inputs.contours:
@@ -157,6 +166,16 @@ def command_run(args) -> int:
     grid = fit_grid(spec.inputs.flat(points), args.grid, spec.inputs.integer)
     trace = spec.record(points, options, grid=grid, step_cap=step_cap)
     return print_run(args, spec, trace, options)
+
+
+def _missing_algorithm(points) -> str:
+    # `--points` takes every word up to the next option, so a name after the
+    # points lands among them: say so instead of "needs ALGO".
+    names = {spec.name for spec in registry.all_specs()}
+    misplaced = [word for group in points or [] for word in group if word.strip() in names]
+    if misplaced:
+        return f"put ALGO before --points: {misplaced[0].strip()!r} was read as a point"
+    return "run needs ALGO and --points, or --scene SCENE.json"
 
 
 def run_scene(args) -> int:
@@ -178,7 +197,7 @@ def print_run(args, spec, trace, options) -> int:
     if trace.truncated:
         print(f"rasterlab: {trace.message}", file=sys.stderr)
     if args.json:
-        print(json.dumps(run_result(spec, trace, options)))
+        print(json.dumps(run_result(spec, trace, options), allow_nan=False))
     elif args.ascii:
         print(ascii_grid(trace))
     else:
@@ -206,22 +225,27 @@ def run_result(spec, trace, options) -> dict:
 
 
 def _pixel_values(name: str, values) -> list:
+    # A pixel written without a value (NaN) or with a value that is not a
+    # colour gets null: strict JSON has no NaN, and "#-00001" is no colour.
     if name == "rgb":
-        return [f"#{int(v):06x}" for v in values]
-    return [float(v) for v in values]
+        return [f"#{int(v):06x}" if 0 <= v <= 0xFFFFFF else None for v in values]
+    return [_jsonable(float(v)) for v in values]
 
 
-def _jsonable(mapping: dict) -> dict:
-    result = {}
-    for key, value in mapping.items():
-        if isinstance(value, tuple):
-            value = list(value)
-        elif hasattr(value, "item"):
-            value = value.item()
-        if isinstance(value, float) and not math.isfinite(value):
-            value = None
-        result[key] = value
-    return result
+def _jsonable(value):
+    """The value as strict JSON takes it: lists for tuples and arrays, plain
+    numbers for numpy scalars, null for NaN and infinities, at any depth."""
+    if isinstance(value, dict):
+        return {str(key): _jsonable(item) for key, item in value.items()}
+    if isinstance(value, (tuple, list)):
+        return [_jsonable(item) for item in value]
+    if hasattr(value, "tolist"):  # numpy scalars and arrays
+        return _jsonable(value.tolist())
+    if isinstance(value, float) and not math.isfinite(value):
+        return None
+    if value is None or isinstance(value, (bool, int, float, str)):
+        return value
+    return str(value)
 
 
 def ascii_grid(trace) -> str:
@@ -244,14 +268,129 @@ def summary(spec, trace) -> str:
     ])
 
 
+# ------------------------------------------------------------------- export
+def add_export_command(commands) -> None:
+    """`rasterlab export SCENE.json --gif OUT.gif ...` (see app/export.py)."""
+    export = commands.add_parser(
+        "export", help="export a scene's run as an animated GIF and/or PNG frames",
+        description="Draw every step of a scene's run as the window shows it, with an optional "
+                    "caption and side panel, into an animated GIF and/or numbered PNG frames.")
+    export.add_argument("scene", metavar="SCENE.json", help="a scene file saved by RasterLab")
+    export.add_argument("--gif", metavar="OUT.gif", help="write an animated GIF")
+    export.add_argument("--frames-dir", metavar="DIR",
+                        help="write frame_0000.png, frame_0001.png, ... into DIR")
+    export.add_argument("--fps", default="4", metavar="N",
+                        help="frames per second, 0.1 .. 50 (default %(default)s)")
+    export.add_argument("--scale", default=None, metavar="N",
+                        help="pixels per grid cell, 1 .. 64 (default: the grid fits 640 pixels)")
+    export.add_argument("--from", dest="first", metavar="I",
+                        help="first step: a number or a bookmark name (default 0)")
+    export.add_argument("--to", dest="last", metavar="J",
+                        help="last step, included: a number or a bookmark name (default: the last)")
+    export.add_argument("--hold", default="2", metavar="SECONDS",
+                        help="extra time on the last frame (default %(default)s)")
+    export.add_argument("--caption", action=argparse.BooleanOptionalAction, default=True,
+                        help="the caption under the grid: step, pseudo-code line, values "
+                             "(default: on)")
+    export.add_argument("--panel", choices=("code", "variables", "both", "none"), default="code",
+                        help="side panel: the pseudo-code with the current line marked, the "
+                             "variables, both, or none (default %(default)s)")
+    export.add_argument("--theme", choices=("light", "dark"), default="light",
+                        help="colours (default %(default)s)")
+    export.add_argument("--once", action="store_true", help="play once instead of looping")
+    export.add_argument("--no-grid", action="store_true", help="no grid lines")
+    export.add_argument("--no-primitive", action="store_true", help="no ideal primitive")
+    export.add_argument("--no-highlight", action="store_true",
+                        help="no outlines on the step's pixel and the candidates")
+
+
+def command_export(args) -> int:
+    import os
+
+    if args.gif is None and args.frames_dir is None:
+        raise CommandError("export needs --gif OUT.gif, --frames-dir DIR, or both")
+    fps = parse_number(args.fps, "--fps")
+    hold = parse_number(args.hold, "--hold")
+    scale = None if args.scale is None else parse_number(args.scale, "--scale", integer=True)
+    from app import export as exporting
+    from app import scene as scenes
+    if not exporting.MIN_FPS <= fps <= exporting.MAX_FPS:
+        raise InputError(f"--fps must be {exporting.MIN_FPS:g} .. {exporting.MAX_FPS:g}, "
+                         f"got {args.fps.strip()}")
+    if not 0 <= hold <= exporting.MAX_HOLD:
+        raise InputError(f"--hold must be 0 .. {exporting.MAX_HOLD:g} seconds, "
+                         f"got {args.hold.strip()}")
+    if scale is not None and not 1 <= scale <= exporting.MAX_SCALE:
+        raise InputError(f"--scale must be 1 .. {exporting.MAX_SCALE}, got {args.scale.strip()}")
+    try:
+        scene = scenes.load(args.scene)
+    except scenes.SceneError as error:
+        raise InputError(str(error)) from None
+    settings = exporting.ExportSettings(
+        first=args.first, last=args.last, fps=fps, hold=hold, scale=scale,
+        grid_lines=not args.no_grid, primitive=not args.no_primitive,
+        highlight=not args.no_highlight, caption=args.caption, panel=args.panel,
+        theme=args.theme, loop=not args.once)
+    # Headless by default: the export draws text with Qt, and needs no window.
+    os.environ.setdefault("QT_QPA_PLATFORM", "offscreen")
+    bar = _ProgressBar(sys.stderr)
+    try:
+        run = exporting.Run.from_scene(scene)
+        result = exporting.export(run, settings, gif=args.gif, frames_dir=args.frames_dir,
+                                  progress=bar.show if bar.active else None,
+                                  names=("--from", "--to"))
+    except exporting.ExportError as error:
+        raise InputError(str(error)) from None
+    except KeyboardInterrupt:
+        bar.clear()
+        print("rasterlab: export interrupted; nothing was written", file=sys.stderr)
+        return 130
+    finally:
+        bar.clear()
+    width, height = result.size
+    written = [str(path) for path in (result.gif, result.frames_dir) if path is not None]
+    print(f"{' and '.join(written)}: {result.frames} frame{'s' if result.frames != 1 else ''} "
+          f"of {width}x{height} pixels, {sum(result.durations) / 1000:g} s")
+    return 0
+
+
+class _ProgressBar:
+    """A one-line progress bar on a terminal; nothing when not a terminal."""
+
+    WIDTH = 30
+
+    def __init__(self, stream):
+        self.stream = stream
+        try:
+            self.active = stream.isatty()
+        except (AttributeError, ValueError):
+            self.active = False
+        self.shown = False
+
+    def show(self, done: int, total: int) -> None:
+        filled = done * self.WIDTH // max(1, total)
+        tail = ", writing" if done == total else ""
+        self.stream.write(f"\rexporting [{'#' * filled}{'.' * (self.WIDTH - filled)}] "
+                          f"{done}/{total} frames{tail} ")
+        self.stream.flush()
+        self.shown = True
+
+    def clear(self) -> None:
+        if self.shown:
+            self.stream.write("\r\033[K")
+            self.stream.flush()
+            self.shown = False
+
+
 # --------------------------------------------------------------------- main
 def _shield_negative_points(argv: list[str]) -> list[str]:
     # argparse takes "-3,4" for an option flag; a leading space stops that
-    # and parse_number strips it again.
+    # and parse_number strips it again. No flag holds a comma, so "-inf,0"
+    # and "-x,1" are points too, and get a message about the number.
     return [" " + arg if _NEGATIVE_POINT.match(arg) else arg for arg in argv]
 
 
-_NEGATIVE_POINT = re.compile(r"^-[0-9.]+.*,")
+_NEGATIVE_POINT = re.compile(r"^-(?!-).*,", re.DOTALL)
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -261,12 +400,14 @@ def main(argv: list[str] | None = None) -> int:
         if args.command is None:
             from app.window import launch
             return launch()
-        return {"list": command_list, "run": command_run}[args.command](args)
+        return {"list": command_list, "run": command_run,
+                "export": command_export}[args.command](args)
     except (CommandError, InputError) as error:
-        print(f"rasterlab: {error}", file=sys.stderr)
+        print(f"rasterlab: {one_line(str(error))}", file=sys.stderr)
         return 2
     except TraceError as error:
-        print(f"rasterlab: the algorithm broke its step protocol: {error}", file=sys.stderr)
+        print(f"rasterlab: the algorithm broke its step protocol: {one_line(str(error))}",
+              file=sys.stderr)
         return 1
     except BrokenPipeError:
         sys.stderr.close()  # the reader went away (`| head`); nothing to report

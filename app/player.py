@@ -13,6 +13,15 @@ Where the step goes after a re-recording
   half-way), so a run being stepped through mid-way stays mid-way. Play goes
   on if it was on.
 
+Points, contours and shapes still being drawn
+---------------------------------------------
+``points`` is always one flat list; ``breaks`` holds the indices where a
+new contour starts (polygons with holes, several fill outlines), so that
+the grid, the points editor and the undo history all deal with one list.
+While a person is still drawing, the run uses only what is complete: the
+contours that have enough vertices, the whole triangles among 3k + 1 or
+3k + 2 points. The rest stays on the grid as handles until it is finished.
+
 Comparison with the previous algorithm
 --------------------------------------
 When the algorithm changes, the one before it is remembered. From then on
@@ -64,6 +73,7 @@ class Player(QObject):
         self.spec = None
         self.options: dict = {}
         self.points: list[tuple] = []
+        self.breaks: tuple[int, ...] = ()  # where contours 2, 3, ... start in points
         self.grid = (32, 24)
         self.trace: Trace | None = None
         self.index = 0
@@ -72,6 +82,7 @@ class Player(QObject):
         self.previous = None  # (spec, options) of the algorithm before this one
         self.differences = np.zeros((0, 2), dtype=np.int64)
         self.compared = False  # did the last recording run the comparison?
+        self.refusal = ""  # why the last algorithm switch fell back to an example shape
         self._state: FrameState | None = None
         self._final: Raster | None = None
         self._speed = DEFAULT_SPEED
@@ -91,9 +102,10 @@ class Player(QObject):
         spec = registry.get(algorithm)
         width, height = _checked_grid(grid)
         resolved = spec.resolve(options)
-        points = [tuple(p) for p in points]
-        trace = self._record(spec, points, resolved, (width, height))
-        self.spec, self.options, self.points, self.grid = spec, resolved, points, (width, height)
+        points, breaks = flatten(spec, points)
+        trace = self._record(spec, points, resolved, (width, height), breaks)
+        self.spec, self.options, self.grid = spec, resolved, (width, height)
+        self.points, self.breaks = points, breaks
         self.previous = None
         self._install(trace, at_end=True)
 
@@ -115,45 +127,79 @@ class Player(QObject):
                 except InputError:
                     pass
         options = spec.resolve(carried)
-        points = self._fit_points(self.points, spec)
-        if not self._complete(points, spec):
-            # Too few points for this algorithm: start it on a shape of its own.
-            points = default_points(spec, self.grid)
-        trace = self._record(spec, points, options, self.grid) if self._complete(points, spec) else None
+        points, breaks = self._fit_points(spec)
+        self.refusal = ""
+        trace = None
+        if complete(spec, points, breaks):
+            try:
+                trace = self._record(spec, points, options, self.grid, breaks)
+            except InputError as error:
+                # The algorithm refuses this shape (a concave polygon for the
+                # convex fill, say): show its own example and say why.
+                self.refusal = str(error)
+        if trace is None:
+            points, breaks, defaults = default_scene(spec, self.grid)
+            options = spec.resolve({**carried, **defaults})
+            trace = self._record(spec, points, options, self.grid, breaks)
         previous = (self.spec, dict(self.options)) if self.spec is not None else None
-        self.spec, self.options, self.points = spec, options, points
+        self.spec, self.options, self.points, self.breaks = spec, options, points, breaks
         self.previous = previous
         self._install(trace, at_end=self._at_end())
 
     def set_option(self, name: str, value) -> None:
         """Set one option; raises InputError (and keeps the last good value)
         when the value is bad or the run rejects it."""
-        option = self.spec.option(name)
-        checked = option.check(value)
-        if self.options.get(name) == checked:
+        self.set_options({name: value})
+
+    def set_options(self, values: dict) -> None:
+        """Set several options with one recording (an ellipse's rx and ry
+        dragged together); all or none of them change."""
+        checked = {name: self.spec.option(name).check(value) for name, value in values.items()}
+        if all(self.options.get(name) == value for name, value in checked.items()):
             return
-        options = dict(self.options, **{name: checked})
+        options = dict(self.options, **checked)
         trace = None
-        if self._complete(self.points):
-            trace = self._record(self.spec, self.points, options, self.grid)
+        if self._complete(self.points, self.breaks):
+            trace = self._record(self.spec, self.points, options, self.grid, self.breaks)
         self.options = options
         self._install(trace, at_end=self._at_end())
 
-    def set_points(self, points) -> None:
-        """Set the points; fewer than the algorithm takes leaves no trace
-        (the person is still placing them). Raises InputError on bad points."""
+    def set_points(self, points, breaks=None) -> None:
+        """Set the points (and, for contour inputs, where each contour
+        starts; None keeps the breaks that still fit). Fewer points than the
+        algorithm takes leave no trace (the person is still placing them).
+        Raises InputError on bad points; nothing changes then."""
         points = [tuple(p) for p in points]
         if not open_ended(self.spec) and len(points) > self.spec.inputs.count:
             raise InputError(f"{self.spec.title} takes {self.spec.inputs.count} points, "
                              f"got {len(points)}")
-        if points == self.points and self.trace is not None:
+        breaks = clean_breaks(self.spec, len(points), self.breaks if breaks is None else breaks)
+        if points == self.points and breaks == self.breaks and self.trace is not None:
             return
         trace = None
-        if self._complete(points):
-            trace = self._record(self.spec, points, self.options, self.grid)
+        if self._complete(points, breaks):
+            trace = self._record(self.spec, points, self.options, self.grid, breaks)
         at_end = self._at_end()
-        self.points = points
+        self.points, self.breaks = points, breaks
         self._install(trace, at_end=at_end)
+
+    def restore(self, points, breaks, options: dict) -> None:
+        """Put back points, breaks and options together (undo); raises
+        InputError and changes nothing when the run refuses them."""
+        points = [tuple(p) for p in points]
+        options = self.spec.resolve(options)
+        breaks = clean_breaks(self.spec, len(points), breaks)
+        trace = None
+        if self._complete(points, breaks):
+            trace = self._record(self.spec, points, options, self.grid, breaks)
+        at_end = self._at_end()
+        self.points, self.breaks, self.options = points, breaks, options
+        self._install(trace, at_end=at_end)
+
+    def input_points(self):
+        """The points as the algorithm takes them (a list of contours for
+        polygon inputs), without anything still being drawn."""
+        return runnable_input(self.spec, self.points, self.breaks)
 
     def set_grid(self, width: int, height: int) -> None:
         """Resize the grid; points outside it are moved to its edge."""
@@ -162,8 +208,8 @@ class Player(QObject):
             return
         points = [_clamp(p, width, height, self.spec.inputs.integer) for p in self.points]
         trace = None
-        if self._complete(points):
-            trace = self._record(self.spec, points, self.options, (width, height))
+        if self._complete(points, self.breaks):
+            trace = self._record(self.spec, points, self.options, (width, height), self.breaks)
         at_end = self._at_end()
         self.grid, self.points = (width, height), points
         self._install(trace, at_end=at_end)
@@ -276,9 +322,10 @@ class Player(QObject):
             self.pause()
 
     # --------------------------------------------------------- internals
-    def _record(self, spec, points, options, grid) -> Trace:
+    def _record(self, spec, points, options, grid, breaks=()) -> Trace:
         try:
-            return spec.record(_as_input(spec, points), options, grid, step_cap=self.step_cap)
+            return spec.record(runnable_input(spec, points, breaks), options, grid,
+                               step_cap=self.step_cap)
         except InputError:
             raise
         except Exception as error:  # noqa: BLE001 - a failing run must not end the program
@@ -310,15 +357,26 @@ class Player(QObject):
     def _at_end(self) -> bool:
         return self.trace is None or self.index >= self.last
 
-    def _complete(self, points, spec=None) -> bool:
-        return complete(spec or self.spec, points)
+    def _complete(self, points, breaks=()) -> bool:
+        return complete(self.spec, points, breaks)
 
-    def _fit_points(self, points, spec):
-        """The current points as the new algorithm takes them."""
-        points = [_clamp(p, *self.grid, spec.inputs.integer) for p in points]
-        if not open_ended(spec) and len(points) > spec.inputs.count:
-            points = points[:spec.inputs.count]
-        return points
+    def _fit_points(self, spec):
+        """The current points and breaks as the new algorithm takes them:
+        triangles become contours of three and back; a fixed count keeps
+        the first points."""
+        points = [_clamp(p, *self.grid, spec.inputs.integer) for p in self.points]
+        old = self.spec.inputs if self.spec is not None else None
+        inputs = spec.inputs
+        if inputs.contours:
+            if old is not None and old.multiple:
+                return points, tuple(range(old.count, len(points), old.count))
+            return points, clean_breaks(spec, len(points), self.breaks)
+        if inputs.multiple:
+            sizes = contour_sizes(len(points), self.breaks)
+            if self.breaks and any(size != inputs.count for size in sizes):
+                return [], ()  # contours that are not triangles: start afresh
+            return points, ()
+        return points[:inputs.count], ()
 
     def _same_option(self, option) -> bool:
         """Is ``option`` also an option of the current algorithm, of the same
@@ -333,9 +391,9 @@ class Player(QObject):
         self.compared = False
         if self.compare_enabled and self.previous is not None and self.trace is not None:
             spec, options = self.previous
-            if complete(spec, self.points):
+            if complete(spec, self.points, self.breaks):
                 try:
-                    other = self._record(spec, self.points, options, self.grid)
+                    other = self._record(spec, self.points, options, self.grid, self.breaks)
                     result = differences(other.raster_at(len(other) - 1), self.final_raster())
                     self.compared = True
                 except InputError:
@@ -349,11 +407,39 @@ class Player(QObject):
         return "" if self.previous is None else self.previous[0].title
 
 
-def default_points(spec, grid) -> list[tuple]:
+# A concave hexagon with a notch on its right (fractions of the grid): the
+# example shape of polygon fills and flood fill.
+_CONCAVE = ((0.12, 0.14), (0.86, 0.1), (0.6, 0.46), (0.88, 0.86), (0.42, 0.7), (0.14, 0.88))
+
+
+def default_scene(spec, grid) -> tuple[list[tuple], tuple[int, ...], dict]:
+    """A pleasant first scene for an algorithm: (points, breaks, options).
+
+    Polygon and fill algorithms get a concave shape; one that only takes a
+    convex polygon gets a convex one instead (tried, not looked up by name).
+    """
+    width, height = grid
+    if spec.inputs.contours:
+        points = [_grid_point(spec, fx * width, fy * height, grid) for fx, fy in _CONCAVE]
+        try:
+            spec.record(runnable_input(spec, points, ()), spec.resolve(), grid, step_cap=100_000)
+        except Exception:  # noqa: BLE001 - any refusal: fall back to the convex shape
+            points = default_points(spec, grid, vertices=6)
+        return points, (), {}
+    return default_points(spec, grid), (), {}
+
+
+def _grid_point(spec, x: float, y: float, grid):
+    if spec.inputs.integer:
+        return _clamp((math.floor(x), math.floor(y)), *grid, True)
+    return _clamp((round(x * 4) / 4, round(y * 4) / 4), *grid, False)
+
+
+def default_points(spec, grid, vertices: int | None = None) -> list[tuple]:
     """A pleasant first input for an algorithm on a grid: the centre for one
     point, a shallow segment for two, a slightly irregular polygon for more."""
     width, height = grid
-    count = max(1, spec.inputs.count)
+    count = max(1, vertices or spec.inputs.count)
     integer = spec.inputs.integer
     if count == 1:
         raw = [(width / 2, height / 2)]
@@ -378,19 +464,65 @@ def open_ended(spec) -> bool:
     return bool(getattr(inputs, "contours", False) or getattr(inputs, "multiple", False))
 
 
-def complete(spec, points) -> bool:
-    """Are there enough points, in a number the algorithm takes, to run it?"""
+def complete(spec, points, breaks=()) -> bool:
+    """Is there enough to run: at least one whole contour, one whole
+    triangle, or exactly the points a fixed-count algorithm takes?"""
     inputs = spec.inputs
-    if getattr(inputs, "contours", False):
+    if inputs.contours:
+        return any(size >= inputs.count for size in contour_sizes(len(points), breaks))
+    if inputs.multiple:
         return len(points) >= inputs.count
-    if getattr(inputs, "multiple", False):
-        return len(points) > 0 and len(points) % inputs.count == 0
     return len(points) == inputs.count
 
 
-def _as_input(spec, points):
-    """The flat list of points in the shape the algorithm takes (one contour)."""
-    return [list(points)] if getattr(spec.inputs, "contours", False) else list(points)
+def runnable_input(spec, points, breaks=()):
+    """The points in the shape the algorithm takes, leaving out what is
+    still being drawn: contours with too few vertices, a last incomplete
+    triangle."""
+    inputs = spec.inputs
+    points = list(points)
+    if inputs.contours:
+        contours = split_contours(points, breaks)
+        return [contour for contour in contours if len(contour) >= inputs.count]
+    if inputs.multiple:
+        return points[:len(points) - len(points) % inputs.count]
+    return points
+
+
+def split_contours(points, breaks) -> list[list]:
+    """The flat points cut at the break indices."""
+    edges = [0, *breaks, len(points)]
+    return [list(points[a:b]) for a, b in zip(edges, edges[1:])]
+
+
+def contour_sizes(count: int, breaks) -> list[int]:
+    edges = [0, *breaks, count]
+    return [b - a for a, b in zip(edges, edges[1:])]
+
+
+def clean_breaks(spec, count: int, breaks) -> tuple[int, ...]:
+    """Breaks sorted, inside 1 .. count - 1; none unless the algorithm takes contours."""
+    if not spec.inputs.contours:
+        return ()
+    return tuple(sorted({int(b) for b in breaks if 0 < int(b) < count}))
+
+
+def flatten(spec, points) -> tuple[list[tuple], tuple[int, ...]]:
+    """Points given flat or as contours (as scene files hold them) as one
+    flat list and its breaks."""
+    points = list(points)
+    if spec.inputs.contours and points and _is_contour(points[0]):
+        flat, breaks = [], []
+        for contour in points:
+            if flat:
+                breaks.append(len(flat))
+            flat += [tuple(p) for p in contour]
+        return flat, tuple(breaks)
+    return [tuple(p) for p in points], ()
+
+
+def _is_contour(item) -> bool:
+    return isinstance(item, (list, tuple)) and bool(item) and isinstance(item[0], (list, tuple))
 
 
 def _checked_grid(grid) -> tuple[int, int]:

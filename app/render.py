@@ -13,6 +13,10 @@ outlines: highlighted cells are tinted instead. At ``scale`` 3 and above each
 cell becomes ``scale`` x ``scale`` image pixels, and highlights are drawn as
 outlines inset into the cell, as the window draws them, together with the
 grid lines and the ideal primitive.
+
+``coverage=True`` colours each cell by how many times it was written
+(0, 1, 2, 3 or more) instead of by its ink or colour, so that pixels two
+triangles of a mesh both fill stand out.
 """
 from __future__ import annotations
 
@@ -26,7 +30,10 @@ import numpy as np
 _RGBA = np.dtype("<u4")
 
 __all__ = ["Palette", "PALETTE", "Overlay", "OUTLINE_STYLE", "compose", "top_down",
-           "packed_rgba", "differences"]
+           "packed_rgba", "differences", "coverage_counts", "COVERAGE_LEVELS"]
+
+# What the coverage colours stand for, in Palette.coverage order.
+COVERAGE_LEVELS = ("not covered", "covered once", "covered twice", "covered 3+ times")
 
 
 @dataclass(frozen=True)
@@ -44,6 +51,10 @@ class Palette:
     primitive: str = "#e8452c"    # the ideal primitive
     handle: str = "#ffffff"       # vertex handles (fill)
     handle_edge: str = "#1d2733"  # vertex handles (border and label)
+    seed: str = "#7048e8"         # the seed marker of a fill
+    # Coverage counts 0, 1, 2, 3+: light to dark, and the two overlap
+    # levels in warm hues that no ink or highlight colour uses.
+    coverage: tuple[str, str, str, str] = ("#fbfcfd", "#a9cdf0", "#f59f00", "#c2255c")
 
 
 PALETTE = Palette()
@@ -68,6 +79,8 @@ OUTLINE_STYLE = {
     "difference": OutlineStyle(0.0, 2.5),
     "current": OutlineStyle(0.06, 3.0),
     "candidate": OutlineStyle(0.24, 2.0),
+    # Around the whole run of cells a span step fills or scans.
+    "span": OutlineStyle(0.0, 3.0),
 }
 
 # Tints used at scale 1, where there is no room for outlines.
@@ -82,7 +95,9 @@ class Overlay:
     chose between, ``differences`` an (n, 2) array of cells (x, y) to mark
     as different from a compared run. ``primitive`` is the ideal primitive
     as a polyline in grid units (pixel (i, j) is the square [i, i+1) x
-    [j, j+1)); ``closed`` joins its last point to the first.
+    [j, j+1)); ``closed`` joins its last point to the first. ``spans`` are
+    runs (x_start, x_end, y) of cells x_start .. x_end - 1 on row y that a
+    step fills or scans at once, outlined as one box each.
     """
 
     current: tuple[int, int] | None = None
@@ -90,6 +105,7 @@ class Overlay:
     differences: np.ndarray | None = None
     primitive: Sequence[tuple[float, float]] = ()
     closed: bool = False
+    spans: Sequence[tuple[int, int, int]] = ()
 
 
 def packed_rgba(color: str, alpha: int = 255) -> np.uint32:
@@ -104,17 +120,19 @@ def _channels(color: str) -> tuple[int, int, int]:
 
 
 def compose(raster, overlay: Overlay | None = None, palette: Palette = PALETTE,
-            scale: int = 1, grid_lines: bool | None = None) -> np.ndarray:
+            scale: int = 1, grid_lines: bool | None = None, coverage: bool = False) -> np.ndarray:
     """The grid as a uint8 array of shape (H * scale, W * scale, 4).
 
     ``raster`` is an ``algorithms.raster.Raster``. Cells written once take the ink colour, or their value from
     ``raster.colors`` where the run writes colours; cells written more than
     once take the overdraw colour (coloured cells are darkened instead).
+    With ``coverage`` every cell takes the colour of its write count
+    instead (``palette.coverage``: 0, 1, 2, 3 or more).
     """
     if scale < 1 or int(scale) != scale:
         raise ValueError(f"scale must be a whole number >= 1, got {scale}")
     scale = int(scale)
-    cells = _cells(raster, palette)
+    cells = _coverage_cells(raster, palette) if coverage else _cells(raster, palette)
     if overlay is not None and scale < 3:
         _tint(cells, overlay, palette)
     if scale > 1:
@@ -140,6 +158,12 @@ def top_down(image: np.ndarray, y_down: bool = False) -> np.ndarray:
     row of the picture, so it is flipped; in the y-down frame it is not.
     """
     return image if y_down else image[::-1]
+
+
+def coverage_counts(raster) -> tuple[int, int, int, int]:
+    """How many cells are covered 0, 1, 2 and 3 or more times."""
+    levels = np.minimum(raster.counts, 3).ravel()
+    return tuple(int(n) for n in np.bincount(levels, minlength=4)[:4])
 
 
 def differences(before, after) -> np.ndarray:
@@ -180,6 +204,11 @@ def _cells(raster, palette: Palette) -> np.ndarray:
     return cells
 
 
+def _coverage_cells(raster, palette: Palette) -> np.ndarray:
+    lut = np.array([packed_rgba(color) for color in palette.coverage], dtype=_RGBA)
+    return lut.take(raster.counts, mode="clip")
+
+
 def _darken(packed: np.ndarray, factor: float) -> np.ndarray:
     rgba = packed.view(np.uint8).reshape(-1, 4).astype(np.float32)
     rgba[:, :3] *= factor
@@ -201,9 +230,16 @@ def _layers(overlay: Overlay):
     yield "current", [] if overlay.current is None else [tuple(overlay.current)]
 
 
+def _span_cells(overlay: Overlay):
+    for x_start, x_end, y in overlay.spans:
+        for x in range(x_start, x_end):
+            yield x, y
+
+
 def _tint(cells: np.ndarray, overlay: Overlay, palette: Palette) -> None:
     height, width = cells.shape
-    for name, layer in _layers(overlay):
+    layers = list(_layers(overlay)) + [("current", list(_span_cells(overlay)))]
+    for name, layer in layers:
         color = getattr(palette, name)
         for x, y in layer:
             if 0 <= x < width and 0 <= y < height:
@@ -233,6 +269,23 @@ def _draw_outlines(image: np.ndarray, overlay: Overlay, palette: Palette, scale:
                 rows, cols = np.indices(ring.shape)
                 ring &= ((rows + cols) // period) % 2 == 0
             image[r0:r1, c0:c1][ring] = color
+    _draw_span_boxes(image, overlay, palette, scale)
+
+
+def _draw_span_boxes(image: np.ndarray, overlay: Overlay, palette: Palette, scale: int) -> None:
+    """One box around each span's run of cells, in the current step's colour."""
+    height, width = image.shape[0] // scale, image.shape[1] // scale
+    color = packed_rgba(palette.current)
+    thick = max(1, round(scale * OUTLINE_STYLE["span"].width / 36))
+    for x_start, x_end, y in overlay.spans:
+        x0, x1 = max(0, x_start), min(width, x_end)
+        if not (0 <= y < height) or x1 <= x0:
+            continue
+        r0, r1, c0, c1 = y * scale, (y + 1) * scale, x0 * scale, x1 * scale
+        image[r0:r0 + thick, c0:c1] = color
+        image[r1 - thick:r1, c0:c1] = color
+        image[r0:r1, c0:c0 + thick] = color
+        image[r0:r1, c1 - thick:c1] = color
 
 
 def _draw_primitive(image: np.ndarray, overlay: Overlay, palette: Palette, scale: int) -> None:

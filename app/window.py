@@ -7,27 +7,40 @@ on its own (tests, screenshots, benchmarks) and driven through
 """
 from __future__ import annotations
 
+import bisect
 import sys
 
 import numpy as np
 from PySide6.QtCore import QRect, Qt
-from PySide6.QtGui import QAction, QColor, QIcon, QKeySequence, QPainter, QPixmap
+from PySide6.QtGui import (QAction, QActionGroup, QColor, QIcon, QKeySequence, QPainter,
+                           QPixmap)
 from PySide6.QtWidgets import (QApplication, QCheckBox, QDialog, QDialogButtonBox, QDockWidget,
                                QFrame, QHBoxLayout, QHeaderView, QLabel, QMainWindow, QMessageBox,
                                QPushButton, QScrollArea, QSizePolicy, QTableWidget,
-                               QTableWidgetItem, QVBoxLayout, QWidget)
+                               QTableWidgetItem, QToolBar, QVBoxLayout, QWidget)
 
 from algorithms import registry
 from algorithms.raster import MAX_GRID, Raster
 from algorithms.registry import InputError
-from algorithms.steps import PLOT, VISIT, Span
+from algorithms.steps import Note, Span
+from widgets.drawing import CONTOURS, point_labels
 from widgets.editors import AlgorithmPicker, GridEditor, OptionsEditor, PointsEditor
-from widgets.grid_view import PixelGridView
+from widgets.grid_view import DRAW, MARKER, PixelGridView
 from widgets.panels import CodePanel, VariablesPanel
+from widgets.tables import TablesPanel
 from widgets.transport import TransportBar
 
-from .player import Player, open_ended
-from .render import OUTLINE_STYLE, PALETTE, compose
+from .history import EditHistory, Snapshot
+from .insight import PixelTally, has_insight, inside_chips, row_tones
+from .player import Player, default_scene, open_ended, split_contours
+from .render import COVERAGE_LEVELS, OUTLINE_STYLE, PALETTE, compose, coverage_counts
+from .tables import TableIndex
+from .tools import (circle_kind, circle_options, clamp_option, drawing_mode, grid_option_names,
+                    marker_option, placing_message, shape_paths, tool_hint)
+# What a frame shows is worked out in app/frame_view.py, shared with export.
+from .frame_view import current_cells as _current_cells
+from .frame_view import html_caption as _caption
+from .frame_view import ideal_paths  # noqa: F401 (part of this module's interface)
 
 APP_NAME = "RasterLab"
 PREFERRED_ALGORITHM = "line-bresenham"
@@ -45,10 +58,23 @@ SHORTCUTS = (
     ("Home", "First step"),
     ("End", "Last step"),
     ("F", "Fit the grid to the view"),
+    ("C", "Coverage counts on or off"),
     ("Mouse wheel", "Zoom the grid"),
-    ("Drag (empty cell)", "Pan the grid"),
+    ("Drag (empty cell)", "Pan the grid (with any tool: drag with the middle button)"),
     ("Click", "Place a point (a full set of points starts a new one)"),
     ("Drag a handle", "Move a point"),
+    ("Ctrl+click, Ctrl+drag", "Polygons and triangles: place to 1/256 px (otherwise 1/8 px)"),
+    ("Double-click, Enter", "Close the polygon being drawn (so does a click on its first vertex)"),
+    ("Shift+click", "Start a new contour: a hole or a second part of the polygon"),
+    ("Backspace", "Remove the last point (while the grid has the focus)"),
+    ("Click on a vertex", "Triangles: add a point exactly there, shared by two triangles"),
+    ("Drag (circles)", "From an empty cell: the centre, then the radius"),
+    ("Drag the square handle", "Change a circle's radius, or an ellipse's rx and ry"),
+    ("Shift+drag (ellipses)", "Keep rx and ry equal"),
+    ("S", "Flood fill: the seed tool (a click places the seed); drag the star to move it"),
+    ("Right-click", "Menu: place the seed, close the contour, remove or clear points"),
+    ("Ctrl+Z", "Undo a drawing step (points, contours, radius, seed)"),
+    ("Ctrl+Shift+Z, Ctrl+Y", "Redo it"),
     ("F1", "This list"),
     ("Ctrl+Q", "Quit"),
 )
@@ -68,7 +94,10 @@ QWidget#transport { background: #f3f5f8; border-top: 1px solid #d5dbe2; }
 QLabel#legend { color: #3d4754; }
 QStatusBar QLabel#differences { color: #b0245f; padding: 0 10px; }
 QStatusBar QLabel#cursor { color: #3d4754; padding: 0 6px 0 10px; border-left: 1px solid #cfd5dc; }
+QStatusBar QLabel#coverage { color: #c2255c; padding: 0 10px; }
+QToolBar#drawingTools { spacing: 2px; padding: 1px 4px; }
 """
+ERROR_STYLE = "color: #c92a2a;"
 
 
 def _section(text: str, parent=None) -> QLabel:
@@ -98,6 +127,37 @@ def _legend_chip(color: str, fill: bool) -> QLabel:
     label = QLabel()
     label.setPixmap(pixmap)
     return label
+
+
+def _legend(rows) -> QWidget:
+    """Chips with their meaning: (colour, filled?, text) per row."""
+    widget = QWidget()
+    box = QVBoxLayout(widget)
+    box.setSpacing(2)
+    box.setContentsMargins(0, 4, 0, 0)
+    for color, fill, text in rows:
+        row = QHBoxLayout()
+        row.setSpacing(6)
+        row.addWidget(_legend_chip(color, fill))
+        label = QLabel(text)
+        label.setObjectName("legend")
+        row.addWidget(label, 1)
+        box.addLayout(row)
+    return widget
+
+
+def _is_pixel(value) -> bool:
+    return isinstance(value, tuple) and len(value) == 2 and all(
+        isinstance(v, int) and not isinstance(v, bool) for v in value)
+
+
+def _step_cells(state) -> tuple[list, list]:
+    """The cells the step works on, and the runs (x_start, x_end, y) of a
+    span step, which the grid outlines as one box each."""
+    record = state.step.record
+    if isinstance(record, Span):
+        return [], [(record.x_start, record.x_end, record.y)]
+    return _current_cells(state), []
 
 
 def app_icon() -> QIcon:
@@ -136,8 +196,14 @@ class MainWindow(QMainWindow):
         self.setStyleSheet(STYLE)
         self.palette_ = PALETTE
         self.player = Player(self)
+        self.history = EditHistory()
         self._empty_image = None
         self._last_hover = None
+        self._error = ""  # the last refusal, shown until the next good change
+        self._tables = TableIndex(None)
+        self._tally = None
+        self._notes: list[int] = []
+        self._tables_for = None  # the algorithm the tables dock was last shown for
 
         self._build_centre()
         self._build_scene_dock()
@@ -151,10 +217,17 @@ class MainWindow(QMainWindow):
         names = [spec.name for spec in specs]
         if algorithm is None:
             algorithm = PREFERRED_ALGORITHM if PREFERRED_ALGORITHM in names else names[0]
-        self.set_scene(algorithm, DEMO_POINTS if points is None else points, options, grid)
+        breaks = ()
+        if points is None and algorithm == PREFERRED_ALGORITHM:
+            points = DEMO_POINTS
+        elif points is None:
+            points, breaks, _ = default_scene(registry.get(algorithm), grid)
+        self.set_scene(algorithm, points, options, grid, breaks)
         self.resize(1280, 800)
         self.resizeDocks([self.scene_dock, self.code_dock], [255, 395], Qt.Orientation.Horizontal)
         self.resizeDocks([self.code_dock, self.variables_dock], [330, 430], Qt.Orientation.Vertical)
+        if self._tables:
+            self._make_room_for_tables()
 
     # ----------------------------------------------------------- building
     def _build_centre(self) -> None:
@@ -188,10 +261,10 @@ class MainWindow(QMainWindow):
         layout.addWidget(_section("Points"))
         self.points = PointsEditor(panel)
         layout.addWidget(self.points)
-        hint = QLabel("Click the grid to place points; drag a handle to move one.", panel)
-        hint.setObjectName("summary")
-        hint.setWordWrap(True)
-        layout.addWidget(hint)
+        self.hint = QLabel(panel)
+        self.hint.setObjectName("summary")
+        self.hint.setWordWrap(True)
+        layout.addWidget(self.hint)
 
         layout.addWidget(_section("Grid"))
         self.grid_editor = GridEditor(MAX_GRID, panel)
@@ -209,9 +282,20 @@ class MainWindow(QMainWindow):
         self.compare.setChecked(True)
         self.compare.setToolTip("After switching algorithm, outline the pixels where the "
                                 "previous algorithm's final result differs")
-        layout.addWidget(self.show_primitive)
-        layout.addWidget(self.compare)
-        layout.addLayout(self._legend())
+        self.coverage = QCheckBox("Coverage counts", panel)
+        self.coverage.setToolTip("Colour every pixel by how many times it has been written "
+                                 "so far (0, 1, 2, 3+): overlaps in a mesh stand out")
+        for box in (self.show_primitive, self.compare, self.coverage):
+            layout.addWidget(box)
+        self.legend = _legend(((PALETTE.current, False, "pixel or span of this step"),
+                               (PALETTE.candidate, False, "candidates of the decision"),
+                               (PALETTE.difference, False, "differs from previous algorithm"),
+                               (PALETTE.overdraw, True, "written more than once")))
+        self.coverage_legend = _legend(tuple((color, True, text) for color, text
+                                             in zip(PALETTE.coverage, COVERAGE_LEVELS)))
+        self.coverage_legend.hide()
+        layout.addWidget(self.legend)
+        layout.addWidget(self.coverage_legend)
         layout.addStretch(1)
 
         scroll = QScrollArea()
@@ -227,24 +311,6 @@ class MainWindow(QMainWindow):
         self.addDockWidget(Qt.DockWidgetArea.LeftDockWidgetArea, self.scene_dock)
         panel.setMinimumWidth(240)
 
-    def _legend(self) -> QVBoxLayout:
-        rows = ((PALETTE.current, False, "pixel of this step"),
-                (PALETTE.candidate, False, "candidates of the decision"),
-                (PALETTE.difference, False, "differs from previous algorithm"),
-                (PALETTE.overdraw, True, "written more than once"))
-        box = QVBoxLayout()
-        box.setSpacing(2)
-        box.setContentsMargins(0, 4, 0, 0)
-        for color, fill, text in rows:
-            row = QHBoxLayout()
-            row.setSpacing(6)
-            row.addWidget(_legend_chip(color, fill))
-            label = QLabel(text)
-            label.setObjectName("legend")
-            row.addWidget(label, 1)
-            box.addLayout(row)
-        return box
-
     def _build_code_dock(self) -> None:
         self.code = CodePanel(self)
         self.code_dock = QDockWidget("Pseudo-code", self)
@@ -254,23 +320,41 @@ class MainWindow(QMainWindow):
         self.variables_dock = QDockWidget("Variables", self)
         self.variables_dock.setObjectName("variablesDock")
         self.variables_dock.setWidget(self.variables)
-        for dock in (self.code_dock, self.variables_dock):
+        self.tables = TablesPanel(self)
+        self.tables_dock = QDockWidget("Tables", self)
+        self.tables_dock.setObjectName("tablesDock")
+        self.tables_dock.setWidget(self.tables)
+        for dock in (self.code_dock, self.variables_dock, self.tables_dock):
             dock.setFeatures(QDockWidget.DockWidgetFeature.DockWidgetMovable
                              | QDockWidget.DockWidgetFeature.DockWidgetClosable)
+        for dock in (self.code_dock, self.variables_dock):
             self.addDockWidget(Qt.DockWidgetArea.RightDockWidgetArea, dock)
         self.splitDockWidget(self.code_dock, self.variables_dock, Qt.Orientation.Vertical)
+        # Tables are wide and short: under the grid, side by side, between
+        # the scene and the pseudo-code columns (which keep their height).
+        self.setCorner(Qt.Corner.BottomLeftCorner, Qt.DockWidgetArea.LeftDockWidgetArea)
+        self.setCorner(Qt.Corner.BottomRightCorner, Qt.DockWidgetArea.RightDockWidgetArea)
+        self.addDockWidget(Qt.DockWidgetArea.BottomDockWidgetArea, self.tables_dock)
+        across = (Qt.DockWidgetArea.BottomDockWidgetArea, Qt.DockWidgetArea.TopDockWidgetArea)
+        self.tables_dock.dockLocationChanged.connect(
+            lambda area: self.tables.set_side_by_side(area in across))
+        self.tables.set_side_by_side(True)
+        self.tables_dock.hide()
 
     def _build_status(self) -> None:
         status = self.statusBar()
         self.message = QLabel(self)
         self.message.setObjectName("message")
         self.message.setSizePolicy(QSizePolicy.Policy.Ignored, QSizePolicy.Policy.Preferred)
+        self.coverage_label = QLabel(self)
+        self.coverage_label.setObjectName("coverage")
         self.difference_label = QLabel(self)
         self.difference_label.setObjectName("differences")
         self.cursor_label = QLabel(self)
         self.cursor_label.setObjectName("cursor")
         self.cursor_label.setMinimumWidth(210)
         status.addWidget(self.message, 1)
+        status.addPermanentWidget(self.coverage_label)
         status.addPermanentWidget(self.difference_label)
         status.addPermanentWidget(self.cursor_label)
 
@@ -280,53 +364,11 @@ class MainWindow(QMainWindow):
         quit_action = file_menu.addAction("&Quit")
         quit_action.setShortcut(QKeySequence.StandardKey.Quit)
         quit_action.triggered.connect(self.close)
-
-        play = bar.addMenu("&Playback")
         self.actions_: dict[str, QAction] = {}
-
-        def action(key, text, shortcut, slot):
-            act = QAction(text, self)
-            act.setShortcut(QKeySequence(shortcut))
-            # Shortcuts work wherever the focus is in the window; editors
-            # that need the key for typing (spin boxes, text fields) keep it.
-            act.setShortcutContext(Qt.ShortcutContext.WindowShortcut)
-            act.triggered.connect(slot)
-            play.addAction(act)
-            self.addAction(act)
-            self.actions_[key] = act
-            return act
-
-        action("play", "Play / Pause", "Space", self.player.toggle)
-        play.addSeparator()
-        action("forward", "Step forward", "Right", self.player.forward)
-        action("back", "Step back", "Left", self.player.back)
-        action("forward10", "Ten steps forward", "Shift+Right", lambda: self.player.step(10))
-        action("back10", "Ten steps back", "Shift+Left", lambda: self.player.step(-10))
-        play.addSeparator()
-        action("first", "First step", "Home", self.player.first)
-        action("last", "Last step", "End", self.player.to_last)
-
-        view = bar.addMenu("&View")
-        fit = view.addAction("Fit grid to view")
-        fit.setShortcut(QKeySequence("F"))
-        fit.triggered.connect(self.grid.fit)
-        self.addAction(fit)
-        self.y_down_action = view.addAction("Origin top-left, y down")
-        self.y_down_action.setCheckable(True)
-        self.y_down_action.toggled.connect(self.set_y_down)
-        primitive = view.addAction("Ideal primitive")
-        primitive.setCheckable(True)
-        primitive.setChecked(True)
-        primitive.toggled.connect(self.show_primitive.setChecked)
-        self.show_primitive.toggled.connect(primitive.setChecked)
-        compare = view.addAction("Compare with previous algorithm")
-        compare.setCheckable(True)
-        compare.setChecked(True)
-        compare.toggled.connect(self.compare.setChecked)
-        self.compare.toggled.connect(compare.setChecked)
-        view.addSeparator()
-        for dock in (self.scene_dock, self.code_dock, self.variables_dock):
-            view.addAction(dock.toggleViewAction())
+        self._build_edit_menu(bar.addMenu("&Edit"))
+        self._build_playback_menu(bar.addMenu("&Playback"))
+        self._build_view_menu(bar.addMenu("&View"))
+        self._build_toolbar()
 
         help_menu = bar.addMenu("&Help")
         keys = help_menu.addAction("&Keyboard shortcuts")
@@ -334,6 +376,104 @@ class MainWindow(QMainWindow):
         keys.triggered.connect(self.show_shortcuts)
         about = help_menu.addAction(f"&About {APP_NAME}")
         about.triggered.connect(self.show_about)
+
+    def _action(self, menu, key, text, shortcut, slot, context=Qt.ShortcutContext.WindowShortcut,
+                owner=None) -> QAction:
+        act = QAction(text, self)
+        if shortcut:
+            act.setShortcut(QKeySequence(shortcut))
+            keys = act.shortcut().toString(QKeySequence.SequenceFormat.NativeText)
+            act.setToolTip(f"{text.replace('&', '')} ({keys})")
+        # Shortcuts work wherever the focus is in the window; editors that
+        # need the key for typing (spin boxes, text fields) keep it.
+        act.setShortcutContext(context)
+        act.triggered.connect(slot)
+        menu.addAction(act)
+        (owner or self).addAction(act)
+        self.actions_[key] = act
+        return act
+
+    def _build_edit_menu(self, menu) -> None:
+        self._action(menu, "undo", "&Undo drawing", "Ctrl+Z", self.undo)
+        redo = self._action(menu, "redo", "&Redo drawing", "Ctrl+Shift+Z", self.redo)
+        redo.setShortcuts([QKeySequence("Ctrl+Shift+Z"), QKeySequence("Ctrl+Y")])
+        menu.addSeparator()
+        # Enter and Backspace belong to the grid only: elsewhere they confirm
+        # a typed number or delete a character.
+        grid_only = Qt.ShortcutContext.WidgetWithChildrenShortcut
+        self._action(menu, "close", "&Close the contour", "Return", self.grid.close_contour,
+                     grid_only, self.grid)
+        self._action(menu, "remove", "Remove the &last point", "Backspace",
+                     self.grid.remove_last_point, grid_only, self.grid)
+        self._action(menu, "clear", "C&lear points", None, self.clear_points)
+        menu.addSeparator()
+        group = QActionGroup(self)
+        draw = self._action(menu, "draw", "&Draw points", None,
+                            lambda: self.set_tool(DRAW))
+        seed = self._action(menu, "marker", "Place the &seed", "S",
+                            lambda: self.set_tool(MARKER if self.grid.tool != MARKER else DRAW))
+        for act in (draw, seed):
+            act.setCheckable(True)
+            group.addAction(act)
+        draw.setChecked(True)
+
+    def _build_playback_menu(self, play) -> None:
+        self._action(play, "play", "Play / Pause", "Space", self.player.toggle)
+        play.addSeparator()
+        self._action(play, "forward", "Step forward", "Right", self.player.forward)
+        self._action(play, "back", "Step back", "Left", self.player.back)
+        self._action(play, "forward10", "Ten steps forward", "Shift+Right",
+                     lambda: self.player.step(10))
+        self._action(play, "back10", "Ten steps back", "Shift+Left", lambda: self.player.step(-10))
+        play.addSeparator()
+        self._action(play, "first", "First step", "Home", self.player.first)
+        self._action(play, "last", "Last step", "End", self.player.to_last)
+
+    def _build_view_menu(self, view) -> None:
+        fit = view.addAction("Fit grid to view")
+        fit.setShortcut(QKeySequence("F"))
+        fit.triggered.connect(self.grid.fit)
+        self.addAction(fit)
+        self.y_down_action = view.addAction("Origin top-left, y down")
+        self.y_down_action.setCheckable(True)
+        self.y_down_action.toggled.connect(self.set_y_down)
+        for box, text, key in ((self.show_primitive, "Ideal primitive", ""),
+                               (self.compare, "Compare with previous algorithm", ""),
+                               (self.coverage, "Coverage counts", "C")):
+            act = view.addAction(text)
+            act.setCheckable(True)
+            act.setChecked(box.isChecked())
+            if key:
+                act.setShortcut(QKeySequence(key))
+                self.addAction(act)
+            act.toggled.connect(box.setChecked)
+            box.toggled.connect(act.setChecked)
+            self.actions_[f"view-{text}"] = act
+        self.coverage_action = self.actions_["view-Coverage counts"]
+        view.addSeparator()
+        for dock in (self.scene_dock, self.code_dock, self.variables_dock, self.tables_dock):
+            view.addAction(dock.toggleViewAction())
+
+    def _build_toolbar(self) -> None:
+        bar = QToolBar("Drawing", self)
+        bar.setObjectName("drawingTools")
+        bar.setMovable(False)
+        bar.setToolButtonStyle(Qt.ToolButtonStyle.ToolButtonTextOnly)
+        for key in ("draw", "marker"):
+            bar.addAction(self.actions_[key])
+        bar.addSeparator()
+        for key in ("close", "remove", "clear", "undo", "redo"):
+            bar.addAction(self.actions_[key])
+        bar.addSeparator()
+        bar.addAction(self.coverage_action)
+        for act in bar.actions():
+            button = bar.widgetForAction(act)
+            if button is not None:
+                # The buttons never take the focus: Space and the arrows stay
+                # with playback, Enter and Backspace with the grid.
+                button.setFocusPolicy(Qt.FocusPolicy.NoFocus)
+        self.toolbar = bar
+        self.addToolBar(Qt.ToolBarArea.TopToolBarArea, bar)
 
     def _connect(self) -> None:
         p = self.player
@@ -352,31 +492,44 @@ class MainWindow(QMainWindow):
         t.speedChanged.connect(p.set_speed)
         p.set_speed(t.speed)
 
-        self.grid.pointsEdited.connect(self.set_points)
-        self.grid.hoverChanged.connect(self._hover)
-        self.grid.clearRequested.connect(lambda: self.set_points([]))
-        self.points.pointsEdited.connect(self.set_points)
+        g = self.grid
+        g.pointsEdited.connect(lambda points: self.set_points(points, g.breaks))
+        g.editStarted.connect(self._remember)
+        g.radiusDragged.connect(self._radius_dragged)
+        g.markerPlaced.connect(self._marker_placed)
+        g.hoverChanged.connect(self._hover)
+        g.clearRequested.connect(self.clear_points)
+        self.points.pointsEdited.connect(self._typed_points)
         self.picker.algorithmChosen.connect(self.set_algorithm)
         self.options.valueEdited.connect(self.set_option)
         self.grid_editor.gridChanged.connect(self.set_grid)
         self.grid_editor.originChanged.connect(self.set_y_down)
-        self.show_primitive.toggled.connect(self.grid.set_show_primitive)
+        self.show_primitive.toggled.connect(g.set_show_primitive)
         self.compare.toggled.connect(p.set_compare)
+        self.coverage.toggled.connect(self._coverage_toggled)
 
     # ------------------------------------------------------- scene input
-    def set_scene(self, algorithm: str, points, options=None, grid=DEMO_GRID) -> None:
-        """Show a whole scene; raises InputError when it is bad."""
+    def set_scene(self, algorithm: str, points, options=None, grid=DEMO_GRID, breaks=()) -> None:
+        """Show a whole scene; raises InputError when it is bad. Contour
+        inputs may come as a list of contours or flat with ``breaks``."""
+        if breaks:
+            points = split_contours(points, breaks)
         self.player.set_scene(algorithm, points, options, grid)
+        self.history.clear()
         self._scene_changed()
 
     def set_algorithm(self, name: str) -> None:
         try:
             self.player.set_algorithm(name)
         except InputError as error:
-            self._say(str(error))
+            self._say_error(str(error))
             self.picker.set_current(self.player.spec.name)
             return
+        self.history.clear()
         self._scene_changed()
+        if self.player.refusal:
+            self._say_error(f"{self.player.spec.title} refused the points drawn before "
+                            f"({self.player.refusal}); showing an example shape instead.")
 
     def set_option(self, name: str, value) -> None:
         try:
@@ -384,27 +537,75 @@ class MainWindow(QMainWindow):
         except InputError as error:
             self.options.show_error(name, str(error))
             self.options.set_values({name: self.player.options[name]})
+            self._say_error(str(error))
             return
         self.options.accept(name, self.player.options[name])
 
-    def set_points(self, points) -> None:
+    def _set_grid_options(self, values: dict) -> None:
+        """Options set by a gesture on the grid: the editors follow."""
         try:
-            self.player.set_points(points)
+            self.player.set_options(values)
         except InputError as error:
-            self._say(str(error))
-        self.grid.set_points(self.player.points)
-        self.points.set_points(self.player.points)
+            self._say_error(str(error))
+            for name in values:
+                self.options.show_error(name, str(error))
+            return
+        for name in values:
+            self.options.set_values({name: self.player.options[name]})
+            self.options.accept(name, self.player.options[name])
+
+    def set_points(self, points, breaks=None) -> None:
+        try:
+            self.player.set_points(points, breaks)
+        except InputError as error:
+            self._say_error(str(error))
+        self._sync_points(keep_open=True)
+
+    def _typed_points(self, points) -> None:
+        self._remember()
+        self.set_points(points)
+
+    def clear_points(self) -> None:
+        self._remember()
+        self.set_points([], ())
+
+    def _sync_points(self, keep_open: bool = False) -> None:
+        player = self.player
+        self.grid.set_points(player.points, player.breaks, keep_open)
+        self.points.set_points(player.points, self._labels())
+
+    def _labels(self) -> list[str]:
+        spec, player = self.player.spec, self.player
+        return point_labels(drawing_mode(spec), spec.inputs.count, len(player.points),
+                            player.breaks, spec.inputs.names)
+
+    def _radius_dragged(self, rx: float, ry: float) -> None:
+        spec = self.player.spec
+        names = circle_options(spec)
+        self._set_grid_options({name: clamp_option(spec.option(name), value)
+                                for name, value in zip(names, (rx, ry))})
+
+    def _marker_placed(self, pixel) -> None:
+        option = marker_option(self.player.spec)
+        if option is not None:
+            self._set_grid_options({option.name: (int(pixel[0]), int(pixel[1]))})
+
+    def set_tool(self, tool: str) -> None:
+        """``"draw"``: clicks place points; ``"marker"``: a click places the seed."""
+        if tool == MARKER and marker_option(self.player.spec) is None:
+            tool = DRAW
+        self.grid.set_tool(tool)
+        self.actions_["marker" if tool == MARKER else "draw"].setChecked(True)
 
     def set_grid(self, width: int, height: int) -> None:
         try:
             self.player.set_grid(width, height)
         except InputError as error:
-            self._say(str(error))
+            self._say_error(str(error))
         self.grid_editor.set_grid(*self.player.grid)
         self.points.set_grid(*self.player.grid)
         self.grid.set_grid(*self.player.grid)
-        self.grid.set_points(self.player.points)
-        self.points.set_points(self.player.points)
+        self._sync_points()
 
     def set_y_down(self, y_down: bool) -> None:
         """Origin top-left with y down (True), or bottom-left with y up."""
@@ -415,22 +616,78 @@ class MainWindow(QMainWindow):
         self.y_down_action.blockSignals(False)
         self._hover(self._last_hover)
 
+    # -------------------------------------------------------------- undo
+    def _snapshot(self) -> Snapshot:
+        player = self.player
+        names = grid_option_names(player.spec)
+        return Snapshot.of(player.points, player.breaks,
+                           {name: player.options[name] for name in names})
+
+    def _remember(self) -> None:
+        self.history.remember(self._snapshot())
+
+    def undo(self) -> None:
+        self._go_to(self.history.undo(self._snapshot()))
+
+    def redo(self) -> None:
+        self._go_to(self.history.redo(self._snapshot()))
+
+    def _go_to(self, snapshot: Snapshot | None) -> None:
+        if snapshot is None:
+            return
+        try:
+            self.player.restore(snapshot.points, snapshot.breaks,
+                                {**self.player.options, **dict(snapshot.options)})
+        except InputError as error:
+            self._say_error(str(error))
+        self._sync_points()
+        self.options.set_values(self.player.options)
+
     def _scene_changed(self) -> None:
         """Editors follow the player's scene (after an algorithm switch, say)."""
-        spec = self.player.spec
+        spec, player = self.player.spec, self.player
+        mode = drawing_mode(spec)
         self.picker.set_current(spec.name)
         self.setWindowTitle(f"{spec.title} \u2014 {APP_NAME}")
-        self.options.set_options(spec.options, self.player.options, spec.inputs.count,
+        self.options.set_options(spec.options, player.options, spec.inputs.count,
                                  spec.inputs.names)
-        self.points.set_input(spec.inputs.count, spec.inputs.names, spec.inputs.integer)
-        self.points.set_grid(*self.player.grid)
-        self.points.set_points(self.player.points)
-        self.grid_editor.set_grid(*self.player.grid)
-        self.grid.set_grid(*self.player.grid)
+        self.points.set_input(spec.inputs.count, spec.inputs.names, spec.inputs.integer,
+                              open_ended(spec))
+        self.points.set_grid(*player.grid)
+        self.grid_editor.set_grid(*player.grid)
+        self.grid.set_grid(*player.grid)
         self.grid.set_input(spec.inputs.count, spec.inputs.integer, spec.inputs.names,
-                            closed=spec.inputs.count >= 3 and spec.family != "lines",
-                            open_ended=open_ended(spec))
-        self.grid.set_points(self.player.points)
+                            closed=mode == CONTOURS, open_ended=open_ended(spec), mode=mode)
+        marker = marker_option(spec)
+        self.grid.set_marker_name(marker.name if marker else "")
+        self.actions_["marker"].setVisible(marker is not None)
+        if marker is not None:
+            self.actions_["marker"].setText(f"Place the {marker.name}")
+        else:
+            self.set_tool(DRAW)
+        self.actions_["close"].setVisible(mode == CONTOURS)
+        self.hint.setText(tool_hint(spec))
+        self._sync_points()
+        self._show_inputs()
+
+    def _show_inputs(self) -> None:
+        """The circle's rim handle and the seed marker follow the options."""
+        spec, options = self.player.spec, self.player.options
+        names = circle_options(spec)
+        radii = [float(options[name]) for name in names]
+        self.grid.set_circle(circle_kind(spec), *(radii * 2)[:2])
+        marker = marker_option(spec)
+        if marker is None:
+            return
+        value = options.get(marker.name)
+        trace = self.player.trace
+        if isinstance(value, tuple):
+            self.grid.set_marker(value)
+        elif trace is not None and _is_pixel(trace.start.constants.get(marker.name)):
+            # Chosen by the algorithm ("auto"): shown faint.
+            self.grid.set_marker(trace.start.constants[marker.name], automatic=True)
+        else:
+            self.grid.set_marker(None)
 
     # ------------------------------------------------------------ display
     def _scrub(self, index: int) -> None:
@@ -439,17 +696,23 @@ class MainWindow(QMainWindow):
 
     def _trace_changed(self) -> None:
         player, trace, spec = self.player, self.player.trace, self.player.spec
-        self.grid.set_shape(ideal_paths(spec, player.points, player.options))
+        self._error = ""
+        self.grid.set_shape(shape_paths(spec, player.points, player.options, player.breaks))
+        self._show_inputs()
+        self._tables = TableIndex(trace)
+        self._tally = PixelTally(trace) if trace is not None and has_insight(
+            trace.value_names) else None
+        self._notes = [] if trace is None else sorted(
+            i for i, r in trace.records.items() if isinstance(r, Note))
+        self._show_tables_dock()
         if trace is None:
             self.transport.set_range(-1)
             self.variables.set_series(None)
             self.variables.set_rows([])
+            self.variables.set_chips([])
+            self.tables.set_tables([])
             self.code.set_current(None)
-            missing = spec.inputs.count - len(player.points)
-            names = spec.inputs.names
-            following = names[len(player.points)] if len(player.points) < len(names) else "the next point"
-            self._say(f"Click on the grid to place {following}"
-                      + (f" ({missing} more point{'s' if missing > 1 else ''} to go)." if missing > 1 else "."))
+            self._update_message()
             return
         self.code.set_code([line.text for line in trace.code], spec.notes)
         self.transport.set_range(len(trace) - 1)
@@ -457,7 +720,28 @@ class MainWindow(QMainWindow):
         decision = name is not None and name == trace.start.decision
         self.variables.set_series(None if name is None else trace.series(name), name or "",
                                   decision)
-        self._say(trace.message if trace.truncated else "")
+
+    def _show_tables_dock(self) -> None:
+        """The tables dock appears for runs with tables and goes for runs
+        without; a person who closes it keeps it closed for this algorithm."""
+        name = self.player.spec.name
+        if self.player.trace is None:
+            return  # points being placed: the grid must not move under the pointer
+        if not self._tables:
+            if self.tables_dock.isVisibleTo(self):
+                self.tables_dock.hide()
+                self._tables_for = None  # hidden here, so shown again here
+            return
+        if self._tables_for != name:
+            self.tables_dock.show()
+            self._make_room_for_tables()
+        self._tables_for = name
+
+    def _make_room_for_tables(self) -> None:
+        # Room for the tables' rows, up to eight; the grid gives up height.
+        self.tables.set_tables(self._tables.at(self.player.index))
+        self.resizeDocks([self.tables_dock], [self.tables.fitting_height()],
+                         Qt.Orientation.Vertical)
 
     def _frame_changed(self, index: int) -> None:
         self.show_frame()
@@ -470,17 +754,53 @@ class MainWindow(QMainWindow):
             self.grid.set_image(self._blank())
             self.grid.set_highlights((), ())
             self.variables.set_caption("No run: place the points first.")
+            self.coverage_label.setText("")
+            self._update_message()
             return
-        self.grid.set_image(compose(state.raster, None, self.palette_))
-        self.grid.set_highlights(_current_cells(state), state.candidates)
+        self.grid.set_image(compose(state.raster, None, self.palette_,
+                                    coverage=self.coverage.isChecked()))
+        cells, spans = _step_cells(state)
+        self.grid.set_highlights(cells, state.candidates, spans)
         trace, index = player.trace, state.index
         self.transport.set_position(index)
         self.code.set_current(state.step.line)
         self.variables.set_caption(_caption(state, len(trace) - 1))
-        colors = (trace.start.pixel_value,) if trace.start.pixel_value else ()
-        self.variables.set_rows(player.spec.panel_rows(trace, index), colors)
-        self.variables.set_marker(index)
+        self._show_values(state)
+        if self._tables:
+            self.tables.set_tables(self._tables.at(index))
+        self._show_coverage(state)
+        self._update_message()
         self._hover(self._last_hover)
+
+    def _show_values(self, state) -> None:
+        trace, index = self.player.trace, state.index
+        colors = (trace.start.pixel_value,) if trace.start.pixel_value else ()
+        rows = self.player.spec.panel_rows(trace, index)
+        self.variables.set_rows(rows, colors, row_tones(rows) if self._tally else None)
+        chips = []
+        if self._tally is not None:
+            chips = inside_chips(state.step.values, state.step.kind)
+            tested, filled = self._tally.at(index)
+            chips.append((f"{tested:,} tested \u00b7 {filled:,} filled", "info",
+                          "pixels looked at, and pixels written, up to this step"))
+        self.variables.set_chips(chips)
+        self.variables.set_marker(index)
+
+    def _show_coverage(self, state) -> None:
+        if not self.coverage.isChecked():
+            self.coverage_label.setText("")
+            return
+        _none, _once, twice, more = coverage_counts(state.raster)
+        overlaps = twice + more
+        self.coverage_label.setText(
+            "No pixel covered twice" if not overlaps else
+            f"{overlaps:,} pixel{'s' if overlaps != 1 else ''} covered twice or more"
+            + (f" ({more:,} three times or more)" if more else ""))
+
+    def _coverage_toggled(self, on: bool) -> None:
+        self.legend.setVisible(not on)
+        self.coverage_legend.setVisible(on)
+        self.show_frame()
 
     def _comparison_changed(self) -> None:
         player = self.player
@@ -519,9 +839,32 @@ class MainWindow(QMainWindow):
                     text += f" \u00b7 #{int(state.raster.colors[y, x]):06x}"
         self.cursor_label.setText(text)
 
-    def _say(self, text: str) -> None:
+    # ----------------------------------------------------------- messages
+    def _say_error(self, text: str) -> None:
+        """A refusal: shown (in red) until the next change that works."""
+        self._error = text
+        self._update_message()
+
+    def _update_message(self) -> None:
+        """The status line: a refusal, else a cut-short run, else what to
+        place next, else the algorithm's latest note at or before the step."""
+        player = self.player
+        trace = player.trace
+        text, error = self._error, bool(self._error)
+        if not text and trace is not None and trace.truncated:
+            text = trace.message
+        if not text:
+            text = placing_message(player.spec, player.points, player.breaks)
+        if not text and trace is not None and self._notes:
+            k = bisect.bisect_right(self._notes, player.index) - 1
+            if k >= 0:
+                text = f"Step {self._notes[k]:,}: {trace.records[self._notes[k]].text}"
+        self._say(text, error)
+
+    def _say(self, text: str, error: bool = False) -> None:
         self.message.setText(text)
         self.message.setToolTip(text)
+        self.message.setStyleSheet(ERROR_STYLE if error else "")
 
     # ------------------------------------------------------------ dialogs
     def show_shortcuts(self) -> None:
@@ -575,38 +918,7 @@ class ShortcutsDialog(QDialog):
         layout.addWidget(table)
         layout.addWidget(note)
         layout.addWidget(buttons)
-        self.resize(460, 440)
-
-
-def ideal_paths(spec, points, options) -> list:
-    """The ideal primitive as [(points, closed), ...] in grid units.
-
-    A whole-pixel point (i, j) stands for its pixel's centre (i + 1/2,
-    j + 1/2). Lines: the segment between the end pixels' centres. Circles
-    and ellipses: the exact curve of the radius options around the centre.
-    Triangles given in threes: each triangle. Polygons and outlines: the
-    closed polygon through the points.
-    """
-    inputs = spec.inputs
-    if inputs.integer:
-        centres = [(x + 0.5, y + 0.5) for x, y in points]
-    else:
-        centres = [(float(x), float(y)) for x, y in points]
-    if not centres:
-        return []
-    if spec.family == "circles":
-        rx = options.get("rx", options.get("radius"))
-        ry = options.get("ry", options.get("radius"))
-        if len(centres) != 1 or not all(isinstance(r, (int, float)) and not isinstance(r, bool)
-                                        for r in (rx, ry)):
-            return []
-        (cx, cy), angles = centres[0], np.linspace(0, 2 * np.pi, 241)
-        return [(list(zip(cx + rx * np.cos(angles), cy + ry * np.sin(angles))), False)]
-    if getattr(inputs, "multiple", False):
-        count = inputs.count
-        return [(centres[k:k + count], True) for k in range(0, len(centres) - count + 1, count)]
-    closed = getattr(inputs, "contours", False) or inputs.count >= 3
-    return [(centres, closed and len(centres) >= 3)]
+        self.resize(640, 680)
 
 
 def _series_name(trace) -> str | None:
@@ -623,33 +935,6 @@ def _series_name(trace) -> str | None:
     return None
 
 
-def _current_cells(state) -> list:
-    """The cells the step works on: its pixel, or every pixel of a span."""
-    record = state.step.record
-    if isinstance(record, Span):
-        return [(x, record.y) for x in range(record.x_start, record.x_end)]
-    return [] if state.pixel is None else [state.pixel]
-
-
-def _caption(state, last: int) -> str:
-    step = state.step
-    parts = [f"<b>Step {state.index:,}</b> of {last:,}"]
-    if isinstance(step.record, Span) and step.pixel is not None:
-        verb = "fills" if step.kind == PLOT else "scans"
-        parts.append(f"{verb} row {step.record.y}, x {step.record.x_start}\u2013{step.record.x_end - 1}")
-    elif step.pixel is not None and step.kind == PLOT:
-        parts.append(f"plots ({step.pixel[0]}, {step.pixel[1]})")
-    elif step.pixel is not None and step.kind == VISIT:
-        parts.append(f"visits ({step.pixel[0]}, {step.pixel[1]})")
-    elif state.index == 0:
-        parts.append("set-up")
-    else:
-        parts.append("updates variables")
-    if step.branch:
-        parts.append(f"branch <b>{step.branch}</b>")
-    return " \u00b7 ".join(parts)
-
-
 def launch(argv=None) -> int:
     """Open the window on the demo scene and run until it is closed."""
     app = QApplication.instance()
@@ -659,5 +944,8 @@ def launch(argv=None) -> int:
         app.setStyle("Fusion")
     app.setWindowIcon(app_icon())
     window = MainWindow()
+    # Hook: scene files and export (File menu) come from app/file_actions.py.
+    from .file_actions import install_file_actions
+    install_file_actions(window)
     window.show()
     return app.exec()

@@ -8,9 +8,10 @@ import math
 from PySide6.QtCore import QRect, QSize, Qt, Signal
 from PySide6.QtGui import QColor, QFont, QIcon, QPainter, QPalette, QPixmap
 from PySide6.QtWidgets import (QAbstractItemView, QCheckBox, QColorDialog, QComboBox,
-                               QDoubleSpinBox, QFormLayout, QGridLayout, QHBoxLayout, QLabel,
-                               QLineEdit, QSpinBox, QStyle, QStyledItemDelegate, QToolButton,
-                               QTreeWidget, QTreeWidgetItem, QWidget)
+                               QDoubleSpinBox, QFormLayout, QFrame, QGridLayout, QHBoxLayout,
+                               QLabel, QLineEdit, QScrollArea, QSpinBox, QStyle,
+                               QStyledItemDelegate, QToolButton, QTreeWidget, QTreeWidgetItem,
+                               QVBoxLayout, QWidget)
 
 from algorithms.registry import InputError
 
@@ -443,46 +444,116 @@ class PointOptionEditor(QWidget):
 
 
 # ------------------------------------------------------------------ points
-class PointsEditor(QWidget):
-    """The points as numbers, one row per point."""
-
-    pointsEdited = Signal(list)
+class RealSpinBox(QDoubleSpinBox):
+    """A real coordinate kept exactly to 1/256 px (8 decimals), shown
+    without trailing zeros: 12, 12.5, 3.00390625."""
 
     def __init__(self, parent=None):
         super().__init__(parent)
-        self._grid = QGridLayout(self)
+        self.setDecimals(8)
+        self.setSingleStep(0.125)
+        # The digits need the room more than the arrows do; Up and Down
+        # still step by 1/8 px.
+        self.setButtonSymbols(QDoubleSpinBox.ButtonSymbols.NoButtons)
+
+    def textFromValue(self, value: float) -> str:  # noqa: N802
+        text = f"{value:.8f}".rstrip("0").rstrip(".")
+        return text if text not in ("", "-0") else "0"
+
+
+class PointsEditor(QWidget):
+    """The points as numbers, one row per point.
+
+    A fixed set (a segment's P and Q) shows a row for every point, blank
+    until placed. Polygons and triangles list every point placed so far,
+    named as the grid names them (C2.P1: contour 2, vertex 1; T2.P0:
+    triangle 2, vertex 0), in a list that scrolls when it grows long.
+    """
+
+    pointsEdited = Signal(list)
+
+    MAX_VISIBLE_ROWS = 9
+
+    def __init__(self, parent=None):
+        super().__init__(parent)
+        self._body = QWidget()
+        self._grid = QGridLayout(self._body)
         self._grid.setContentsMargins(0, 0, 0, 0)
         self._grid.setHorizontalSpacing(6)
         self._grid.setVerticalSpacing(4)
+        self._scroll = QScrollArea(self)
+        self._scroll.setWidget(self._body)
+        self._scroll.setWidgetResizable(True)
+        self._scroll.setFrameShape(QFrame.Shape.NoFrame)
+        self._scroll.setHorizontalScrollBarPolicy(Qt.ScrollBarPolicy.ScrollBarAlwaysOff)
+        self.empty = QLabel("No points yet.", self)
+        self.empty.setStyleSheet("color: #66707c;")
+        layout = QVBoxLayout(self)
+        layout.setContentsMargins(0, 0, 0, 0)
+        layout.addWidget(self._scroll)
+        layout.addWidget(self.empty)
         self._rows: list[tuple[QLabel, QWidget, QWidget]] = []
         self._points: list[tuple] = []
+        self._labels: list[str] = []
+        self._names: tuple[str, ...] = ()
+        self._count = 0
         self._integer = True
+        self._open_ended = False
         self._size = (32, 24)
 
-    def set_input(self, count: int, names, integer: bool) -> None:
-        if count == len(self._rows) and integer == self._integer and \
-                all(r[0].text() == _name(names, k) for k, r in enumerate(self._rows)):
+    def set_input(self, count: int, names, integer: bool, open_ended: bool = False) -> None:
+        names = tuple(names)
+        if (count, names, integer, open_ended) == (self._count, self._names, self._integer,
+                                                   self._open_ended):
             return
-        for row in self._rows:
-            for widget in row:
+        if integer != self._integer:
+            self._resize_rows(0)  # spin boxes of the other kind
+        self._count, self._names, self._integer = count, names, integer
+        self._open_ended = bool(open_ended)
+        self._apply()
+
+    def set_grid(self, width: int, height: int) -> None:
+        self._size = (width, height)
+        self._apply()
+
+    def set_points(self, points, labels=None) -> None:
+        """The points, and optionally the name of each (as the grid shows them)."""
+        self._points = [tuple(p) for p in points]
+        self._labels = list(labels) if labels is not None else []
+        self._apply()
+
+    def boxes(self, k: int):
+        return self._rows[k][1], self._rows[k][2]
+
+    def row_count(self) -> int:
+        return len(self._rows)
+
+    def label_text(self, k: int) -> str:
+        return self._rows[k][0].text()
+
+    # ---------------------------------------------------------- internals
+    def _row_name(self, k: int) -> str:
+        if k < len(self._labels):
+            return self._labels[k]
+        return _name(self._names, k)
+
+    def _resize_rows(self, n: int) -> None:
+        while len(self._rows) > n:
+            for widget in self._rows.pop():
                 # Out of the layout and out of sight now; deleted later.
                 self._grid.removeWidget(widget)
                 widget.hide()
                 widget.setParent(None)
                 widget.deleteLater()
-        self._rows = []
-        self._integer = integer
-        for k in range(count):
-            label = QLabel(_name(names, k), self)
+        while len(self._rows) < n:
+            k = len(self._rows)
+            label = QLabel(self._body)
             font = label.font()
             font.setBold(True)
             label.setFont(font)
             boxes = []
             for axis in ("x", "y"):
-                box = QSpinBox(self) if integer else QDoubleSpinBox(self)
-                if not integer:
-                    box.setDecimals(4)
-                    box.setSingleStep(0.25)
+                box = QSpinBox(self._body) if self._integer else RealSpinBox(self._body)
                 box.setPrefix(f"{axis} ")
                 box.setKeyboardTracking(False)
                 box.setObjectName(f"point-{k}-{axis}")
@@ -492,23 +563,14 @@ class PointsEditor(QWidget):
             self._grid.addWidget(boxes[0], k, 1)
             self._grid.addWidget(boxes[1], k, 2)
             self._rows.append((label, boxes[0], boxes[1]))
-        self._apply()
-
-    def set_grid(self, width: int, height: int) -> None:
-        self._size = (width, height)
-        self._apply()
-
-    def set_points(self, points) -> None:
-        self._points = [tuple(p) for p in points]
-        self._apply()
-
-    def boxes(self, k: int):
-        return self._rows[k][1], self._rows[k][2]
 
     def _apply(self) -> None:
+        n = len(self._points) if self._open_ended else self._count
+        self._resize_rows(n)
         width, height = self._size
         for k, (label, bx, by) in enumerate(self._rows):
             placed = k < len(self._points)
+            label.setText(self._row_name(k))
             for box, limit, value in ((bx, width, 0), (by, height, 1)):
                 box.blockSignals(True)
                 top = limit - 1 if self._integer else float(limit)
@@ -522,6 +584,16 @@ class PointsEditor(QWidget):
                 box.setEnabled(placed)
                 box.blockSignals(False)
             label.setEnabled(placed)
+        self.empty.setVisible(n == 0)
+        self._scroll.setVisible(n > 0)
+        self._fit_height(n)
+
+    def _fit_height(self, n: int) -> None:
+        """As tall as the rows, up to MAX_VISIBLE_ROWS; then it scrolls."""
+        if not self._rows:
+            return
+        row = max(self._rows[0][1].sizeHint().height(), 20) + self._grid.verticalSpacing()
+        self._scroll.setFixedHeight(min(n, self.MAX_VISIBLE_ROWS) * row + 2)
 
     def _edited(self, _value) -> None:
         points = []

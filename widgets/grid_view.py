@@ -9,7 +9,21 @@ click reads its coordinates in that frame.
 
 The view only displays: it is handed an RGBA image of the grid (row 0 at
 y = 0), the cells to outline, and the points; it reports points the person
-places or drags, and the pixel under the cursor.
+places or drags, radii dragged out, a marker (a seed) placed, and the pixel
+under the cursor. What a click does to the points is decided by
+``widgets.drawing``.
+
+Mouse and keys (the window's Help lists them too):
+
+* click: place a point (the tool's rule); drag a handle: move its point;
+* Ctrl with a click or drag: real coordinates to 1/256 px instead of 1/8;
+* Shift+click: start a new contour (a hole, a second part);
+* double-click, Enter, or a click on the first vertex: close the contour;
+* Backspace: remove the last point;
+* circles: drag from an empty cell: centre and radius; drag the square
+  rim handle: radius; Shift keeps an ellipse's radii equal;
+* drag the seed marker, or use the marker tool, to move a fill's seed;
+* drag elsewhere, or with the middle button: pan; wheel: zoom.
 """
 from __future__ import annotations
 
@@ -21,6 +35,8 @@ from PySide6.QtCore import QLineF, QPointF, QRectF, Qt, Signal
 from PySide6.QtGui import QColor, QCursor, QPen
 from PySide6.QtWidgets import QMenu
 
+from .drawing import CIRCLE, CONTOURS, FIXED, GROUPS, Drawing
+
 
 # Grid lines appear once a cell is this many screen pixels wide, and reach
 # full strength at FULL_CELL_PX.
@@ -30,7 +46,18 @@ FULL_CELL_PX = 14.0
 MAX_OUTLINES = 20000
 HANDLE_SIZE = 15  # screen pixels
 HANDLE_HIT = 12   # screen pixels from a handle's centre that grab it
+RIM_SIZE = 11     # the square handle on a circle's rim
+MARKER_SIZE = 22  # the seed marker
+MAX_LABELS = 40   # more points than this go unlabelled on the grid
 OUTLINE_ORDER = ("difference", "candidate", "current")
+# Real coordinates snap to 1/COARSE_SNAP px on a plain click, 1/FINE_SNAP
+# px (the algorithms' own sub-pixel grid) with FINE held.
+COARSE_SNAP = 8
+FINE_SNAP = 256
+FINE = Qt.KeyboardModifier.ControlModifier
+NEW_CONTOUR = Qt.KeyboardModifier.ShiftModifier
+EQUAL_RADII = Qt.KeyboardModifier.ShiftModifier
+DRAW, MARKER = "draw", "marker"  # the tools
 
 
 class PixelAxis(pg.AxisItem):
@@ -121,16 +148,17 @@ class GridLinesItem(pg.GraphicsObject):
 
 
 class CellOutlines(pg.GraphicsObject):
-    """Outlines around cells, one layer per kind of highlight."""
+    """Outlines around cells, one layer per kind of highlight, and one box
+    around each run of cells a span step fills or scans."""
 
     def __init__(self, palette, styles):
         super().__init__()
         self._size = (1, 1)
         self._styles = styles
         self._pens = {}
-        for name in OUTLINE_ORDER:
+        for name in OUTLINE_ORDER + ("span",):
             style = styles[name]
-            pen = QPen(QColor(getattr(palette, name)))
+            pen = QPen(QColor(getattr(palette, "current" if name == "span" else name)))
             pen.setCosmetic(True)
             pen.setWidthF(style.width)
             pen.setJoinStyle(Qt.PenJoinStyle.MiterJoin)
@@ -139,6 +167,7 @@ class CellOutlines(pg.GraphicsObject):
                 pen.setDashPattern([2.0, 1.5])
             self._pens[name] = pen
         self._layers = {name: np.zeros((0, 2), dtype=np.int64) for name in OUTLINE_ORDER}
+        self._spans = np.zeros((0, 3), dtype=np.int64)
 
     def set_size(self, width: int, height: int) -> None:
         self.prepareGeometryChange()
@@ -155,6 +184,18 @@ class CellOutlines(pg.GraphicsObject):
 
     def layer(self, name: str) -> np.ndarray:
         return self._layers[name]
+
+    def set_spans(self, spans) -> None:
+        """Runs (x_start, x_end, y): cells x_start .. x_end - 1 of row y."""
+        spans = np.asarray(spans if spans is not None else (), dtype=np.int64).reshape(-1, 3)
+        if spans.shape == self._spans.shape and np.array_equal(spans, self._spans):
+            return
+        self._spans = spans
+        self.update()
+
+    @property
+    def spans(self) -> np.ndarray:
+        return self._spans
 
     def boundingRect(self):  # noqa: N802
         width, height = self._size
@@ -184,10 +225,22 @@ class CellOutlines(pg.GraphicsObject):
             painter.setPen(self._pens[name])
             painter.drawRects([QRectF(float(x) + inset, float(y) + inset, size, size)
                                for x, y in seen])
+        if len(self._spans):
+            painter.setPen(self._pens["span"])
+            painter.drawRects([QRectF(float(a), float(y), float(b - a), 1.0)
+                               for a, b, y in self._spans if b > a])
+
+
+class _Handles(pg.ScatterPlotItem):
+    """Handles that leave every click to the view box: a click on a vertex
+    closes a contour or shares the vertex, which the drawing tool decides."""
+
+    def mouseClickEvent(self, ev):  # noqa: N802
+        ev.ignore()
 
 
 class _GridViewBox(pg.ViewBox):
-    """A ViewBox that places points on click and drags handles, and pans
+    """A ViewBox that hands clicks and drags to the drawing tools, and pans
     or zooms otherwise."""
 
     def __init__(self, owner):
@@ -198,36 +251,50 @@ class _GridViewBox(pg.ViewBox):
     def mouseClickEvent(self, ev):  # noqa: N802
         if ev.button() == Qt.MouseButton.LeftButton:
             ev.accept()
-            self._owner._clicked(ev.scenePos())
+            self._owner._clicked(ev.scenePos(), ev.modifiers(), ev.double())
         elif ev.button() == Qt.MouseButton.RightButton:
             ev.accept()
-            self._owner._context_menu(ev.screenPos())
+            self._owner._context_menu(ev.scenePos(), ev.screenPos())
         else:
             super().mouseClickEvent(ev)
 
     def mouseDragEvent(self, ev, axis=None):  # noqa: N802
         if ev.button() == Qt.MouseButton.LeftButton:
             if ev.isStart():
-                self._dragging = self._owner._handle_at(ev.buttonDownScenePos())
+                self._dragging = self._owner._drag_target(ev.buttonDownScenePos(), ev.modifiers())
+                if self._dragging is not None:
+                    self._owner.editStarted.emit()
             if self._dragging is not None:
                 ev.accept()
-                self._owner._dragged(self._dragging, ev.scenePos(), ev.isFinish())
+                self._owner._dragged(self._dragging, ev.scenePos(), ev.modifiers(),
+                                     ev.isFinish())
                 if ev.isFinish():
                     self._dragging = None
                 return
+        # Anything else pans (left or middle button) or zooms (right button).
         super().mouseDragEvent(ev, axis)
 
 
 class PixelGridView(pg.PlotWidget):
-    """The grid of pixels, with everything drawn over it."""
+    """The grid of pixels, with everything drawn over it, and the drawing
+    tools (see ``widgets.drawing``)."""
 
-    #: The points after a click or a drag (a list of (x, y), possibly fewer
-    #: than the algorithm takes while the person is still placing them).
+    #: The points after a click, a drag or a key (a list of (x, y), possibly
+    #: fewer than the algorithm takes while the person is still placing
+    #: them). Contour inputs: ``breaks`` says where each contour starts.
     pointsEdited = Signal(list)
     #: The pixel under the cursor, (x, y) in the current frame, or None.
     hoverChanged = Signal(object)
     #: The person asked to clear the points (context menu).
     clearRequested = Signal()
+    #: A radius was dragged out: (rx, ry) in pixels, not yet rounded. Equal
+    #: for a circle, or for an ellipse dragged with Shift.
+    radiusDragged = Signal(float, float)
+    #: The marker (a fill's seed) was placed or dragged onto pixel (x, y).
+    markerPlaced = Signal(object)
+    #: A click, drag or key is about to edit the points, the radius or the
+    #: marker: one gesture, one step to undo.
+    editStarted = Signal()
 
     def __init__(self, palette, outline_styles, parent=None):
         self._box = _GridViewBox(self)
@@ -258,27 +325,41 @@ class PixelGridView(pg.PlotWidget):
                                                      style=Qt.PenStyle.DashLine),
                                         antialias=True)
         self.preview.setZValue(3)
-        self.handles = pg.ScatterPlotItem(pxMode=True, size=HANDLE_SIZE, symbol="o",
+        self.handles = _Handles(pxMode=True, size=HANDLE_SIZE, symbol="o",
                                           brush=pg.mkBrush(_translucent(palette.handle, 70)),
                                           pen=pg.mkPen(palette.handle_edge, width=2.5))
         self.handles.setZValue(4)
+        self.rim = _Handles(pxMode=True, size=RIM_SIZE, symbol="s",
+                                      brush=pg.mkBrush(palette.handle),
+                                      pen=pg.mkPen(palette.primitive, width=2.5))
+        self.rim.setZValue(4)
+        self.marker = _Handles(pxMode=True, size=MARKER_SIZE, symbol="star",
+                                         brush=pg.mkBrush(palette.seed),
+                                         pen=pg.mkPen(palette.handle, width=1.5))
+        self.marker.setZValue(6)
         for item in (self.image, self.grid_lines, self.outlines, self.primitive,
-                     self.preview, self.handles):
+                     self.preview, self.handles, self.rim, self.marker):
             self._box.addItem(item)
         self._labels: list[pg.TextItem] = []
+        self._marker_label = self._make_label(palette.seed)
 
         self._size = (0, 0)
-        self._points: list[tuple] = []
+        self._drawing = Drawing()
         self._count = 2
         self._integer = True
         self._names: tuple[str, ...] = ()
         self._closed = False
         self._y_down = False
         self._hover = None
-        self._drag_origin = None
         self._show_primitive = True
         self._shape = None
-        self._open_ended = False
+        self._circle: str | None = None  # "radius", "radii" or None
+        self._radii = (0.0, 0.0)
+        self._marker_point = None
+        self._marker_name = ""
+        self._marker_automatic = False
+        self._tool = DRAW
+        self._cursor_at = None  # where the pointer is, in grid units
         # The view keeps the whole grid in sight as the widget resizes until
         # the person pans or zooms.
         self._auto_fit = True
@@ -335,17 +416,62 @@ class PixelGridView(pg.PlotWidget):
         return self._y_down
 
     def set_input(self, count: int, integer: bool, names=(), closed: bool | None = None,
-                  open_ended: bool = False) -> None:
-        """How many points the algorithm takes and whether they are whole pixels.
+                  open_ended: bool = False, mode: str | None = None) -> None:
+        """How many points the algorithm takes, whether they are whole
+        pixels, and which drawing tool places them (``widgets.drawing``).
 
-        With ``open_ended`` (a polygon, say) every click adds a point; the
-        context menu clears them. Otherwise a click after all ``count``
-        points are placed starts a new set.
+        Without a ``mode``: ``open_ended`` inputs are contours when
+        ``closed`` and groups of ``count`` otherwise; the rest a fixed set.
         """
         self._count, self._integer, self._names = count, integer, tuple(names)
         self._closed = count >= 3 if closed is None else closed
-        self._open_ended = bool(open_ended)
+        if mode is None:
+            mode = (CONTOURS if self._closed else GROUPS) if open_ended else FIXED
+        if (mode, count) != (self._drawing.mode, self._drawing.count):
+            self._drawing.set_mode(mode, count)
+        if mode != CIRCLE:
+            self._circle = None
         self._refresh_points()
+
+    @property
+    def mode(self) -> str:
+        return self._drawing.mode
+
+    def set_circle(self, kind: str | None, rx: float = 0.0, ry: float = 0.0) -> None:
+        """The radius the centre's rim handle shows: ``"radius"`` (one, a
+        circle), ``"radii"`` (rx and ry, an ellipse) or None (no handle)."""
+        self._circle, self._radii = kind, (float(rx), float(ry))
+        self._refresh_rim()
+
+    def set_marker_name(self, name: str) -> None:
+        """The name of what the marker tool places (a fill's "seed"), or ""
+        when the algorithm has no such point: then there is no marker."""
+        self._marker_name = name
+        if not name:
+            self.set_marker(None)
+
+    def set_marker(self, pixel, automatic: bool = False) -> None:
+        """Show the marker at a pixel, or none. An automatic one (chosen by
+        the algorithm, not the person) is drawn faint."""
+        self._marker_point = None if pixel is None else (int(pixel[0]), int(pixel[1]))
+        self._marker_automatic = automatic
+        self._refresh_marker()
+
+    @property
+    def marker_point(self):
+        return self._marker_point
+
+    def set_tool(self, tool: str) -> None:
+        """``"draw"`` (clicks place points) or ``"marker"`` (a click places
+        the marker, a fill's seed)."""
+        self._tool = tool if tool in (DRAW, MARKER) else DRAW
+        self.viewport().setCursor(QCursor(Qt.CursorShape.PointingHandCursor if self._tool == MARKER
+                                          else Qt.CursorShape.CrossCursor))
+        self._draw_preview()
+
+    @property
+    def tool(self) -> str:
+        return self._tool
 
     def set_shape(self, paths) -> None:
         """The ideal primitive as paths [(points, closed), ...] in grid
@@ -359,16 +485,32 @@ class PixelGridView(pg.PlotWidget):
         self._show_primitive = bool(show)
         self._refresh_points()
 
-    def set_points(self, points) -> None:
+    def set_points(self, points, breaks=None, keep_open: bool = False) -> None:
+        """Points set from outside; ``breaks`` (contour starts) stay as they
+        are when not given. A contour being drawn stays open when the points
+        are the ones this view reported, or with ``keep_open`` (the same
+        drawing after a refused edit)."""
         points = [tuple(p) for p in points]
-        if points == self._points:
+        breaks = self._drawing.breaks if breaks is None else tuple(breaks)
+        if points == self._drawing.points and breaks == self._drawing.breaks:
             return
-        self._points = points
+        self._drawing.reset(points, breaks, keep_open)
         self._refresh_points()
 
     @property
     def points(self) -> list[tuple]:
-        return list(self._points)
+        return list(self._drawing.points)
+
+    @property
+    def breaks(self) -> tuple[int, ...]:
+        return self._drawing.breaks
+
+    @property
+    def drawing(self) -> Drawing:
+        return self._drawing
+
+    def labels(self) -> list[str]:
+        return self._drawing.labels(self._names)
 
     # ---------------------------------------------------------- frames
     def set_image(self, rgba: np.ndarray) -> None:
@@ -378,10 +520,12 @@ class PixelGridView(pg.PlotWidget):
         if (width, height) != self._size:
             self.set_grid(width, height)
 
-    def set_highlights(self, current=(), candidates=()) -> None:
-        """Outline the cells of the current step and the decision's candidates."""
+    def set_highlights(self, current=(), candidates=(), spans=()) -> None:
+        """Outline the cells of the current step, the decision's candidates
+        and the run of cells a span step works on."""
         self.outlines.set_layer("current", current)
         self.outlines.set_layer("candidate", candidates)
+        self.outlines.set_spans(spans)
 
     def set_differences(self, cells) -> None:
         self.outlines.set_layer("difference", cells)
@@ -402,53 +546,147 @@ class PixelGridView(pg.PlotWidget):
         """Position in the viewport widget (for mouse events) of a grid position."""
         return self.mapFromScene(self.scene_pos_of(grid_pos))
 
-    def snap(self, view_pos: QPointF) -> tuple:
-        """The point a position in grid units stands for, clamped to the grid."""
+    def snap(self, view_pos: QPointF, fine: bool = False) -> tuple:
+        """The point a position in grid units stands for, clamped to the grid.
+
+        Whole pixels for integer inputs; real inputs snap to 1/8 px, easy to
+        hit and to read, or with ``fine`` (Ctrl) to the 1/256 px sub-pixel
+        grid the algorithms themselves use.
+        """
         width, height = self._size
         if self._integer:
             x = min(max(math.floor(view_pos.x()), 0), width - 1)
             y = min(max(math.floor(view_pos.y()), 0), height - 1)
             return (x, y)
-        # Real inputs: 1/16 of a pixel is fine enough to point with.
-        x = min(max(round(view_pos.x() * 16) / 16, 0.0), float(width))
-        y = min(max(round(view_pos.y() * 16) / 16, 0.0), float(height))
+        steps = FINE_SNAP if fine else COARSE_SNAP
+        x = min(max(round(view_pos.x() * steps) / steps, 0.0), float(width))
+        y = min(max(round(view_pos.y() * steps) / steps, 0.0), float(height))
         return (x, y)
+
+    def pixel_at(self, scene_pos) -> tuple[int, int]:
+        """The pixel under a scene position, clamped to the grid."""
+        where = self._box.mapSceneToView(scene_pos)
+        width, height = self._size
+        return (min(max(math.floor(where.x()), 0), width - 1),
+                min(max(math.floor(where.y()), 0), height - 1))
+
+    # ------------------------------------------------------------ edits
+    def close_contour(self) -> bool:
+        """Finish the contour being drawn (Enter, double-click)."""
+        closed = self._drawing.close()
+        if closed:
+            self._refresh_points()
+        return closed
+
+    def remove_last_point(self) -> bool:
+        """Take the last point away (Backspace)."""
+        if not self._drawing.points:
+            return False
+        self.editStarted.emit()
+        if not self._drawing.remove_last():
+            return False
+        self._edited()
+        return True
+
+    def keyPressEvent(self, event):  # noqa: N802
+        key = event.key()
+        if key in (Qt.Key.Key_Return, Qt.Key.Key_Enter) and self.close_contour():
+            event.accept()
+        elif key in (Qt.Key.Key_Backspace, Qt.Key.Key_Delete) and self.remove_last_point():
+            event.accept()
+        else:
+            super().keyPressEvent(event)
+
+    def _edited(self) -> None:
+        self._refresh_points()
+        self.pointsEdited.emit(list(self._drawing.points))
 
     # ----------------------------------------------------------- mouse
     def _handle_at(self, scene_pos) -> int | None:
         best, best_distance = None, HANDLE_HIT
-        for index, point in enumerate(self._points):
-            where = self._box.mapViewToScene(self.anchor(point))
-            distance = math.hypot(where.x() - scene_pos.x(), where.y() - scene_pos.y())
+        for index, point in enumerate(self._drawing.points):
+            distance = self._screen_distance(self.anchor(point), scene_pos)
             if distance <= best_distance:
                 best, best_distance = index, distance
         return best
 
-    def _clicked(self, scene_pos) -> None:
-        if self._handle_at(scene_pos) is not None and self._complete():
-            return  # a click on a handle is a drag that did not move
-        point = self.snap(self._box.mapSceneToView(scene_pos))
-        if len(self._points) >= self._count and not self._open_ended:
-            points = [point]  # all placed: a click starts a new primitive
-        else:
-            points = self._points + [point]
-        self._points = points
-        self._refresh_points()
-        self.pointsEdited.emit(list(points))
+    def _screen_distance(self, grid_pos: QPointF, scene_pos) -> float:
+        where = self._box.mapViewToScene(grid_pos)
+        return math.hypot(where.x() - scene_pos.x(), where.y() - scene_pos.y())
 
-    def _dragged(self, index: int, scene_pos, finished: bool) -> None:
-        if index >= len(self._points):
+    def _on_marker(self, scene_pos) -> bool:
+        point = self._marker_point
+        return point is not None and self._screen_distance(
+            QPointF(point[0] + 0.5, point[1] + 0.5), scene_pos) <= HANDLE_HIT
+
+    def _on_rim(self, scene_pos) -> bool:
+        at = self._rim_position()
+        return at is not None and self._screen_distance(at, scene_pos) <= HANDLE_HIT
+
+    def _clicked(self, scene_pos, modifiers=Qt.KeyboardModifier.NoModifier,
+                 double: bool = False) -> None:
+        self.setFocus(Qt.FocusReason.MouseFocusReason)
+        if self._tool == MARKER and self._marker_name:
+            self.editStarted.emit()
+            self.markerPlaced.emit(self.pixel_at(scene_pos))
             return
-        point = self.snap(self._box.mapSceneToView(scene_pos))
+        if double:
+            # The first click of the pair placed its point already.
+            self.close_contour()
+            return
+        self.editStarted.emit()
+        point = self.snap(self._box.mapSceneToView(scene_pos), bool(modifiers & FINE))
+        new_contour = bool(modifiers & NEW_CONTOUR)
+        if self._drawing.click(point, self._handle_at(scene_pos), new_contour):
+            self._edited()
+        else:
+            self._refresh_points()  # closing a contour changes how it is drawn
+
+    def _drag_target(self, scene_pos, modifiers):
+        """What a left-drag starting here moves: a point, the marker, the
+        radius, a new circle; None pans the view."""
+        handle = self._handle_at(scene_pos)
+        if self._marker_point is not None and self._on_marker(scene_pos) and (
+                handle is None or self._tool == MARKER):
+            return ("marker",)
+        if handle is not None:
+            return ("point", handle)
+        if self._circle and self._drawing.points and self._on_rim(scene_pos):
+            return ("rim",)
+        if self._drawing.mode == CIRCLE and self._circle and self._tool == DRAW:
+            # The press point becomes the centre; the drag is the radius.
+            return ["circle", self.snap(self._box.mapSceneToView(scene_pos)), False]
+        return None
+
+    def _dragged(self, target, scene_pos, modifiers, finished: bool) -> None:
+        kind = target[0]
         self.viewport().setCursor(QCursor(Qt.CursorShape.OpenHandCursor if finished
                                           else Qt.CursorShape.ClosedHandCursor))
-        if point == self._points[index]:
-            return
-        points = list(self._points)
-        points[index] = point
-        self._points = points
-        self._refresh_points()
-        self.pointsEdited.emit(list(points))
+        where = self._box.mapSceneToView(scene_pos)
+        if kind == "point":
+            if self._drawing.move(target[1], self.snap(where, bool(modifiers & FINE))):
+                self._edited()
+        elif kind == "marker":
+            pixel = self.pixel_at(scene_pos)
+            if pixel != self._marker_point:
+                self.markerPlaced.emit(pixel)
+        else:
+            if kind == "circle" and not target[2]:
+                target[2] = True
+                if self._drawing.click(target[1]):
+                    self._edited()
+            self.radiusDragged.emit(*self._radii_to(where, modifiers))
+
+    def _radii_to(self, where: QPointF, modifiers) -> tuple[float, float]:
+        centre = self.anchor(self._drawing.points[0])
+        dx, dy = where.x() - centre.x(), where.y() - centre.y()
+        if self._circle == "radius":
+            radius = math.hypot(dx, dy)
+            return radius, radius
+        rx, ry = abs(dx), abs(dy)
+        if modifiers & EQUAL_RADII:
+            rx = ry = max(rx, ry)
+        return rx, ry
 
     def _mouse_moved(self, scene_pos) -> None:
         pixel = None
@@ -457,80 +695,107 @@ class PixelGridView(pg.PlotWidget):
             x, y = math.floor(where.x()), math.floor(where.y())
             if 0 <= x < self._size[0] and 0 <= y < self._size[1]:
                 pixel = (x, y)
-            on_handle = self._handle_at(scene_pos) is not None
             if self._box._dragging is None:
-                shape = Qt.CursorShape.OpenHandCursor if on_handle else Qt.CursorShape.CrossCursor
-                self.viewport().setCursor(QCursor(shape))
-            self._update_preview(where)
+                self.viewport().setCursor(QCursor(self._cursor_shape(scene_pos)))
+            self._cursor_at = where
+            self._draw_preview()
         if pixel != self._hover:
             self._hover = pixel
             self.hoverChanged.emit(pixel)
 
+    def _cursor_shape(self, scene_pos):
+        if self._tool == MARKER:
+            return Qt.CursorShape.PointingHandCursor
+        handle = self._handle_at(scene_pos)
+        if self._drawing.closes_at(handle):
+            return Qt.CursorShape.PointingHandCursor  # a click here closes the contour
+        if handle is not None or self._on_marker(scene_pos) or self._on_rim(scene_pos):
+            return Qt.CursorShape.OpenHandCursor
+        return Qt.CursorShape.CrossCursor
+
     def leaveEvent(self, event):  # noqa: N802
         super().leaveEvent(event)
-        self.preview.setData([], [])
+        self._cursor_at = None
+        self._draw_preview()
         if self._hover is not None:
             self._hover = None
             self.hoverChanged.emit(None)
 
-    def _context_menu(self, screen_pos) -> None:
+    def _context_menu(self, scene_pos, screen_pos) -> None:
         menu = QMenu(self)
-        menu.addAction("Fit grid to view", self.fit)
+        if self._marker_name:
+            pixel = self.pixel_at(scene_pos)
+            menu.addAction(f"Place the {self._marker_name} at ({pixel[0]}, {pixel[1]})",
+                           lambda: (self.editStarted.emit(), self.markerPlaced.emit(pixel)))
+        if self._drawing.mode == CONTOURS and self._drawing.open:
+            menu.addAction("Close the contour", self.close_contour)
+        if self._drawing.points:
+            menu.addAction("Remove the last point", self.remove_last_point)
         menu.addAction("Clear points", self.clearRequested.emit)
+        menu.addSeparator()
+        menu.addAction("Fit grid to view", self.fit)
         menu.exec(screen_pos.toPoint())
 
-    def _complete(self) -> bool:
-        if self._open_ended:
-            return len(self._points) >= self._count
-        return len(self._points) == self._count
-
     # --------------------------------------------------------- drawing
+    def _make_label(self, color) -> pg.TextItem:
+        label = pg.TextItem(color=color, anchor=(0, 1), fill=pg.mkBrush(255, 255, 255, 215),
+                            border=pg.mkPen(200, 206, 214))
+        font = label.textItem.font()
+        font.setBold(True)
+        font.setPointSizeF(font.pointSizeF() * 1.1)
+        label.setFont(font)
+        label.setZValue(5)
+        label.hide()
+        self._box.addItem(label)
+        return label
+
     def _refresh_points(self) -> None:
-        anchors = [self.anchor(p) for p in self._points]
+        points = self._drawing.points
+        anchors = [self.anchor(p) for p in points]
         self.handles.setData(pos=[(a.x(), a.y()) for a in anchors])
-        while len(self._labels) < len(anchors):
-            label = pg.TextItem(color=self.palette.handle_edge, anchor=(0, 1),
-                                fill=pg.mkBrush(255, 255, 255, 215),
-                                border=pg.mkPen(200, 206, 214))
-            font = label.textItem.font()
-            font.setBold(True)
-            font.setPointSizeF(font.pointSizeF() * 1.1)
-            label.setFont(font)
-            label.setZValue(5)
-            self._box.addItem(label)
-            self._labels.append(label)
-        while len(self._labels) > len(anchors):
+        shown = len(anchors) if len(anchors) <= MAX_LABELS else 0
+        while len(self._labels) < shown:
+            self._labels.append(self._make_label(self.palette.handle_edge))
+            self._labels[-1].show()
+        while len(self._labels) > shown:
             self._box.removeItem(self._labels.pop())
         self._place_labels()
-        complete = self._complete() and len(self._points) >= 2
-        complete = complete or (self._shape is not None and len(self._points) >= self._count)
-        if complete and self._show_primitive:
-            paths = self._shape
-            if paths is None:
-                paths = [([(a.x(), a.y()) for a in anchors], self._closed)]
-            xs, ys = [], []
-            for points, closed in paths:
-                if not points:
-                    continue
-                if closed:
-                    points = list(points) + [points[0]]
-                xs += [p[0] for p in points] + [math.nan]
-                ys += [p[1] for p in points] + [math.nan]
-            self.primitive.setData(np.array(xs, dtype=float), np.array(ys, dtype=float))
-        else:
-            self.primitive.setData([], [])
-        if complete:
-            self.preview.setData([], [])
+        self.primitive.setData(*self._primitive_xy(anchors))
+        self._refresh_rim()
+        self._draw_preview()
+
+    def _primitive_xy(self, anchors):
+        if not self._show_primitive or not anchors:
+            return [], []
+        paths = self._shape
+        if paths is None:
+            if not (self._drawing.complete() and len(anchors) >= 2):
+                return [], []
+            paths = [([(a.x(), a.y()) for a in anchors], self._closed)]
+        xs, ys = [], []
+        for points, closed in paths:
+            if not points:
+                continue
+            if closed:
+                points = list(points) + [points[0]]
+            xs += [p[0] for p in points] + [math.nan]
+            ys += [p[1] for p in points] + [math.nan]
+        return np.array(xs, dtype=float), np.array(ys, dtype=float)
 
     def _place_labels(self) -> None:
-        anchors = [self.anchor(p) for p in self._points]
-        if not anchors:
+        points = self._drawing.points
+        anchors = [self.anchor(p) for p in points]
+        if not anchors or not self._labels:
             return
+        names = self._drawing.labels(self._names)
+        # Coordinates in the label while there are few points; with many the
+        # points editor lists them and the labels only name them.
+        with_numbers = self._drawing.mode in (FIXED, CIRCLE)
         cx = sum(a.x() for a in anchors) / len(anchors)
         cy = sum(a.y() for a in anchors) / len(anchors)
-        for index, (label, point, at) in enumerate(zip(self._labels, self._points, anchors)):
-            name = self._names[index] if index < len(self._names) else f"P{index + 1}"
-            label.setText(f"{name} ({_number(point[0])}, {_number(point[1])})")
+        for label, name, point, at in zip(self._labels, names, points, anchors):
+            text = f"{name} ({_number(point[0])}, {_number(point[1])})" if with_numbers else name
+            label.setText(text)
             # Above or below the handle, away from the middle of the points,
             # so a label does not cover the primitive (on screen, whichever
             # way y runs).
@@ -542,12 +807,48 @@ class PixelGridView(pg.PlotWidget):
             label.setAnchor((0.5, 1.35) if dy >= 0 else (0.5, -0.35))
             label.setPos(at)
 
-    def _update_preview(self, where) -> None:
-        if not self._points or self._complete() or not self._show_primitive:
+    def _rim_position(self) -> QPointF | None:
+        if not self._circle or not self._drawing.points:
+            return None
+        centre = self.anchor(self._drawing.points[0])
+        rx, ry = self._radii
+        if self._circle == "radius":
+            # On the circle, up and to the right of the centre.
+            rx = ry = rx * math.sqrt(0.5)
+        return QPointF(centre.x() + rx, centre.y() + ry)
+
+    def _refresh_rim(self) -> None:
+        at = self._rim_position()
+        self.rim.setData(pos=[] if at is None else [(at.x(), at.y())])
+
+    def _refresh_marker(self) -> None:
+        point = self._marker_point
+        if point is None:
+            self.marker.setData(pos=[])
+            self._marker_label.hide()
+            return
+        at = QPointF(point[0] + 0.5, point[1] + 0.5)
+        brush = _translucent(self.palette.seed, 90) if self._marker_automatic else self.palette.seed
+        self.marker.setData(pos=[(at.x(), at.y())], brush=pg.mkBrush(brush))
+        name = self._marker_name or "marker"
+        self._marker_label.setText(f"{name} ({point[0]}, {point[1]})"
+                                   + (" auto" if self._marker_automatic else ""))
+        self._marker_label.setAnchor((-0.15, 0.5))
+        self._marker_label.setPos(at)
+        self._marker_label.show()
+
+    def _draw_preview(self) -> None:
+        """Dashed lines through the points of the primitive being drawn and
+        on to the pointer, closing back to its first point for polygons."""
+        pending = self._drawing.pending()
+        if not pending or not self._show_primitive or self._tool == MARKER:
             self.preview.setData([], [])
             return
-        target = self.anchor(self.snap(where))
-        anchors = [self.anchor(p) for p in self._points] + [target]
+        anchors = [self.anchor(self._drawing.points[k]) for k in pending]
+        if self._cursor_at is not None:
+            anchors.append(self.anchor(self.snap(self._cursor_at)))
+        if self._drawing.mode in (CONTOURS, GROUPS) and len(anchors) > 2:
+            anchors.append(anchors[0])
         self.preview.setData([a.x() for a in anchors], [a.y() for a in anchors])
 
 

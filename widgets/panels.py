@@ -6,7 +6,7 @@ import math
 import numpy as np
 import pyqtgraph as pg
 from PySide6.QtCore import Qt
-from PySide6.QtGui import QBrush, QColor, QFont, QFontDatabase
+from PySide6.QtGui import QBrush, QColor, QFont, QFontDatabase, QFontMetrics
 from PySide6.QtWidgets import (QAbstractItemView, QFrame, QHeaderView, QLabel, QScrollArea,
                                QTableWidget, QTableWidgetItem, QVBoxLayout, QWidget)
 
@@ -15,6 +15,13 @@ CURRENT_EDGE = QColor("#f08c00")
 CHANGED_VALUE = QColor("#b35900")
 LINE_NUMBER = QColor("#8a94a1")
 NOTES_MAX_HEIGHT = 120
+# Values whose sign or range matters: text colours by tone.
+TONE_COLORS = {"positive": QColor("#1f7a3d"), "negative": QColor("#c92a2a"),
+               "zero": QColor("#b35900")}
+# Chips of the step summary: (background, text) by tone.
+CHIP_COLORS = {"positive": ("#d3f9d8", "#1f6b35"), "negative": ("#ffe3e3", "#a61e1e"),
+               "zero": ("#fff3bf", "#8a5a00"), "in": ("#2f9e44", "#ffffff"),
+               "out": ("#868e96", "#ffffff"), "info": ("#e7ecf2", "#3d4754")}
 
 
 def monospace_font(scale: float = 1.0) -> QFont:
@@ -158,6 +165,11 @@ class VariablesPanel(QWidget):
         self.caption = QLabel(self)
         self.caption.setObjectName("stepCaption")
         self.caption.setWordWrap(True)
+        self.chips = QLabel(self)
+        self.chips.setObjectName("chips")
+        self.chips.setWordWrap(True)
+        self.chips.setTextFormat(Qt.TextFormat.RichText)
+        self.chips.hide()
         self.table = QTableWidget(0, 2, self)
         self.table.setObjectName("variables")
         self.table.setHorizontalHeaderLabels(["Name", "Value"])
@@ -208,10 +220,12 @@ class VariablesPanel(QWidget):
         layout.setContentsMargins(6, 6, 6, 6)
         layout.setSpacing(6)
         layout.addWidget(self.caption)
+        layout.addWidget(self.chips)
         layout.addWidget(self.table, 1)
         layout.addWidget(self.plot_title)
         layout.addWidget(self.plot)
         self._rows: list[tuple[str, str]] = []
+        self._chips: list[tuple[str, str, str]] = []
         self._series: np.ndarray | None = None
         self.set_series(None)
 
@@ -219,13 +233,36 @@ class VariablesPanel(QWidget):
     def set_caption(self, text: str) -> None:
         self.caption.setText(text)
 
-    def set_rows(self, rows, color_names=()) -> None:
+    def set_chips(self, chips) -> None:
+        """A one-line summary over the table: chips (text, tone, tooltip),
+        coloured by tone (see CHIP_COLORS); none hides the line."""
+        chips = [tuple(chip) for chip in chips]
+        if chips == self._chips:
+            return
+        self._chips = chips
+        parts = []
+        for text, tone, _tip in chips:
+            background, color = CHIP_COLORS.get(tone, CHIP_COLORS["info"])
+            # Non-breaking spaces inside a chip: lines wrap between chips only.
+            inner = _escape(text).replace(" ", "&nbsp;")
+            parts.append(f"<span style='background-color:{background}; color:{color};'>"
+                         f"&nbsp;{inner}&nbsp;</span>")
+        self.chips.setText("&nbsp; ".join(parts))
+        self.chips.setToolTip("\n".join(f"{text}: {tip}" for text, _tone, tip in chips if tip))
+        self.chips.setVisible(bool(chips))
+
+    def chip_texts(self) -> list[str]:
+        return [text for text, _tone, _tip in self._chips]
+
+    def set_rows(self, rows, color_names=(), tones=None) -> None:
         """Rows (name, text) of the step on show. Values that changed since
-        the rows shown before are set in a warmer colour. Rows named in
-        ``color_names`` hold packed 0xRRGGBB colours: they read as #rrggbb,
-        with a swatch."""
+        the rows shown before are set in bold and a warmer colour. Rows
+        named in ``color_names`` hold packed 0xRRGGBB colours: they read as
+        #rrggbb, with a swatch. ``tones`` (name -> "positive", "negative" or
+        "zero") colour values whose sign matters."""
         rows = [(str(name), _as_color(text) if name in color_names else str(text))
                 for name, text in rows]
+        tones = tones or {}
         before = dict(self._rows)
         self.table.setUpdatesEnabled(False)
         if self.table.rowCount() != len(rows):
@@ -233,24 +270,53 @@ class VariablesPanel(QWidget):
         for row, (name, text) in enumerate(rows):
             self._set_cell(row, 0, name, None)
             changed = name in before and before[name] != text
-            self._set_cell(row, 1, text, CHANGED_VALUE if changed else None, self._value_font,
-                           bold=changed)
+            color = TONE_COLORS.get(tones.get(name)) or (CHANGED_VALUE if changed else None)
+            self._set_cell(row, 1, text, color, self._value_font, bold=changed)
             item = self.table.item(row, 1)
             swatch = text if name in color_names and QColor.isValidColorName(text) else None
             item.setData(Qt.ItemDataRole.DecorationRole, QColor(swatch) if swatch else None)
+        self._fit_long_rows(rows)
         self.table.setUpdatesEnabled(True)
         self._rows = rows
+        # Values whose sign matters stay in sight, wherever they are listed.
+        toned = [row for row, (name, _text) in enumerate(rows) if name in tones]
+        if toned:
+            self.table.scrollToItem(self.table.item(toned[-1], 1),
+                                    QAbstractItemView.ScrollHint.EnsureVisible)
+            self.table.scrollToItem(self.table.item(toned[0], 1),
+                                    QAbstractItemView.ScrollHint.EnsureVisible)
 
     def rows(self) -> list[tuple[str, str]]:
         return list(self._rows)
+
+    def _fit_long_rows(self, rows) -> None:
+        """A value too long for its cell (a fill's queue, say) wraps onto a
+        second line instead of losing its end; the others keep one line."""
+        width = self.table.columnWidth(1) - 10
+        metrics = QFontMetrics(self._value_font)
+        default = self.table.verticalHeader().defaultSectionSize()
+        for row, (_name, text) in enumerate(rows):
+            if width > 0 and metrics.horizontalAdvance(text) > width:
+                self.table.resizeRowToContents(row)
+            elif self.table.rowHeight(row) != default:
+                self.table.setRowHeight(row, default)
+
+    def value_color(self, name: str) -> QColor | None:
+        """The colour a row's value is drawn in (None: the default)."""
+        for row, (row_name, _text) in enumerate(self._rows):
+            if row_name == name:
+                brush = self.table.item(row, 1).foreground()
+                return brush.color() if brush.style() != Qt.BrushStyle.NoBrush else None
+        raise KeyError(name)
 
     def _set_cell(self, row, column, text, color, font=None, bold=False):
         item = self.table.item(row, column)
         if item is None:
             item = QTableWidgetItem()
             self.table.setItem(row, column, item)
-        if item.text() != text:
-            item.setText(text)
+        if item.toolTip() != text:
+            # Pairs such as (4, 10) stay whole when a long value wraps.
+            item.setText(text.replace(", ", ",\u00a0"))
             item.setToolTip(text)
         if font is not None:
             font = QFont(font)
@@ -276,9 +342,12 @@ class VariablesPanel(QWidget):
             return
         self._series = values
         steps = np.arange(len(values), dtype=np.float64)
+        # Only the steps that carry the value, joined: a value set every
+        # other step (a fill's stack size) still reads as one curve.
+        known = np.isfinite(values)
         # Markers on every step only while there are few enough to see.
-        self.curve.setSymbol("o" if len(values) <= 300 else None)
-        self.curve.setData(steps, values)
+        self.curve.setSymbol("o" if known.sum() <= 300 else None)
+        self.curve.setData(steps[known], values[known])
         self.plot_title.setText(f"{name} over the run" + (" (its sign decides)" if decision else ""))
         low, high = float(np.nanmin(values)), float(np.nanmax(values))
         self.zero.setVisible(decision)
@@ -299,3 +368,7 @@ class VariablesPanel(QWidget):
     @property
     def series(self):
         return self._series
+
+
+def _escape(text: str) -> str:
+    return text.replace("&", "&amp;").replace("<", "&lt;").replace(">", "&gt;")

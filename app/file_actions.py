@@ -1,0 +1,391 @@
+"""Scene files and animation export in the window's File menu.
+
+``install_file_actions(window)`` adds to the File menu of a ``MainWindow``:
+Open…, Open Recent, Open Example, Save, Save As… and Export Animation…
+(Ctrl+E). It reads and changes the window's scene only through the
+window's public methods (``set_scene``, ``set_y_down``, the player, the
+transport's speed), so the window itself knows nothing of files.
+
+Opening a file that cannot be used shows why and leaves the scene on show
+as it was. Saving writes a temporary file and renames it over the target
+(``app.scene.save``), so a failed save never leaves half a file.
+"""
+from __future__ import annotations
+
+import threading
+from pathlib import Path
+
+from PySide6.QtCore import QObject, QSettings, Qt, QThread, Signal
+from PySide6.QtGui import QAction, QKeySequence
+from PySide6.QtWidgets import QFileDialog, QMenu, QMessageBox
+
+from algorithms.registry import InputError
+from widgets.export_dialog import ExportDialog
+
+from . import export as exporting
+from . import scene as scenes
+from .scene import Scene, SceneError, one_line
+
+ORGANIZATION = "RasterLab"
+APPLICATION = "RasterLab"
+RECENT_KEY = "scenes/recent"
+EXPORT_FOLDER_KEY = "export/folder"
+MAX_RECENT = 8
+SCENE_FILTER = "RasterLab scenes (*.json);;All files (*)"
+EXAMPLES = scenes.RESOURCES / "scenes"
+
+
+def install_file_actions(window, settings: QSettings | None = None) -> "FileActions":
+    """Put the scene-file and export actions into ``window``'s File menu.
+
+    ``settings`` keeps the recent files (by default the user's RasterLab
+    settings). The returned object lives as long as the window.
+    """
+    actions = FileActions(window, settings)
+    window.file_actions = actions
+    return actions
+
+
+class FileActions(QObject):
+    """The File menu's scene and export actions for one window."""
+
+    def __init__(self, window, settings: QSettings | None = None):
+        super().__init__(window)
+        self.window = window
+        self.settings = settings if settings is not None else QSettings(ORGANIZATION, APPLICATION)
+        self.path: Path | None = None
+        # What a scene file holds beyond what the window edits; kept from
+        # the file opened last and written back on save.
+        self.title = ""
+        self.description = ""
+        self.bookmarks: list = []
+        self.export_controller: ExportController | None = None
+        self._build_menu()
+
+    # ------------------------------------------------------------- menu
+    def _build_menu(self) -> None:
+        window = self.window
+        menu = _file_menu(window)
+        first = menu.actions()[0] if menu.actions() else None
+
+        def action(text, shortcut, slot):
+            act = QAction(text, window)
+            if shortcut is not None:
+                act.setShortcut(QKeySequence(shortcut))
+            act.setShortcutContext(Qt.ShortcutContext.WindowShortcut)
+            act.triggered.connect(slot)
+            menu.insertAction(first, act)
+            window.addAction(act)  # the shortcut works wherever the focus is in the window
+            return act
+
+        self.open_action = action("&Open\u2026", QKeySequence.StandardKey.Open, self.open_dialog)
+        self.recent_menu = QMenu("Open &Recent", window)
+        menu.insertMenu(first, self.recent_menu)
+        self.examples_menu = QMenu("Open &Example", window)
+        menu.insertMenu(first, self.examples_menu)
+        menu.insertSeparator(first)
+        self.save_action = action("&Save", QKeySequence.StandardKey.Save, self.save)
+        self.save_as_action = action("Save &As\u2026", QKeySequence.StandardKey.SaveAs,
+                                     self.save_as)
+        menu.insertSeparator(first)
+        self.export_action = action("&Export Animation\u2026", "Ctrl+E", self.export_animation)
+        if first is not None:
+            menu.insertSeparator(first)
+        self._fill_examples()
+        self._fill_recent()
+
+    def _fill_examples(self) -> None:
+        self.examples_menu.clear()
+        for path in sorted(EXAMPLES.glob("*.json")):
+            try:
+                title = scenes.load(path).title
+            except SceneError:
+                continue  # a broken shipped scene is a test failure, not a menu entry
+            text = f"{title} ({path.stem})" if title else path.stem
+            act = self.examples_menu.addAction(text)
+            act.setData(str(path))
+            act.triggered.connect(lambda checked=False, p=path: self.open_path(p, remember=False))
+        self.examples_menu.setEnabled(not self.examples_menu.isEmpty())
+
+    def recent(self) -> list[str]:
+        value = self.settings.value(RECENT_KEY, [])
+        if isinstance(value, str):
+            value = [value]  # QSettings gives a single string for a one-item list
+        return [str(v) for v in value or []]
+
+    def _remember(self, path: Path) -> None:
+        text = str(Path(path).resolve())
+        paths = [text] + [p for p in self.recent() if p != text]
+        self.settings.setValue(RECENT_KEY, paths[:MAX_RECENT])
+        self.settings.sync()
+        self._fill_recent()
+
+    def _fill_recent(self) -> None:
+        self.recent_menu.clear()
+        for text in self.recent():
+            act = self.recent_menu.addAction(text)
+            act.triggered.connect(lambda checked=False, p=text: self.open_path(p))
+        if self.recent():
+            self.recent_menu.addSeparator()
+            self.recent_menu.addAction("Clear the list", self._clear_recent)
+        self.recent_menu.setEnabled(bool(self.recent()))
+
+    def _clear_recent(self) -> None:
+        self.settings.setValue(RECENT_KEY, [])
+        self._fill_recent()
+
+    # ------------------------------------------------------------ scenes
+    def current_scene(self) -> Scene:
+        """The scene on show, as a scene file holds it."""
+        window, player = self.window, self.window.player
+        spec = player.spec
+        points = player.input_points()
+        if spec.inputs.contours:
+            points = [[list(p) for p in contour] for contour in points]
+        else:
+            points = [list(p) for p in points]
+        width, height = player.grid
+        view = {"step": int(player.index), "speed": float(player.speed),
+                "compare": bool(window.compare.isChecked())}
+        return Scene(algorithm=spec.name, points=points, options=dict(player.options),
+                     width=width, height=height,
+                     origin="top-left" if window.grid.y_down else "bottom-left",
+                     title=self.title, description=self.description, view=view,
+                     bookmarks=[dict(b) for b in self.bookmarks])
+
+    def apply_scene(self, scene: Scene) -> None:
+        """Show ``scene`` in the window; raises InputError (and changes
+        nothing) when the window cannot show it."""
+        window = self.window
+        window.set_scene(scene.algorithm, scene.points, scene.options,
+                         (scene.width, scene.height))
+        window.set_y_down(scene.origin == "top-left")
+        view = scene.view
+        if "compare" in view:
+            window.compare.setChecked(bool(view["compare"]))
+        if "speed" in view:
+            window.transport.set_speed(view["speed"])
+        if "step" in view:
+            window.player.seek(int(view["step"]))
+        self.title, self.description = scene.title, scene.description
+        self.bookmarks = [dict(b) for b in scene.bookmarks]
+
+    def open_dialog(self) -> bool:
+        start = str(self.path.parent) if self.path else str(Path.home())
+        path, _ = QFileDialog.getOpenFileName(self.window, "Open scene", start, SCENE_FILTER)
+        return self.open_path(path) if path else False
+
+    def open_path(self, path, remember: bool = True) -> bool:
+        """Open a scene file; on failure say why and change nothing."""
+        path = Path(path)
+        try:
+            scene = scenes.load(path)
+            self.apply_scene(scene)
+        except (SceneError, InputError) as error:
+            QMessageBox.warning(self.window, "Open scene",
+                                f"Cannot open {path.name}:\n{one_line(str(error))}")
+            return False
+        self.path = path if remember else None
+        if remember:
+            self._remember(path)
+        self._status(f"Opened {path.name}")
+        return True
+
+    def save(self) -> bool:
+        if self.path is None:
+            return self.save_as()
+        return self.save_to(self.path)
+
+    def save_as(self) -> bool:
+        start = str(self.path) if self.path else str(Path.home() / "scene.json")
+        path, _ = QFileDialog.getSaveFileName(self.window, "Save scene as", start, SCENE_FILTER)
+        if not path:
+            return False
+        path = Path(path)
+        if not path.suffix:
+            path = path.with_suffix(".json")
+        return self.save_to(path)
+
+    def save_to(self, path) -> bool:
+        """Save the scene on show to ``path`` (atomically); say why if not."""
+        path = Path(path)
+        if self.window.player.trace is None:
+            QMessageBox.warning(self.window, "Save scene",
+                                "Place all the points first: a scene is saved with a full input.")
+            return False
+        try:
+            scenes.save(self.current_scene(), path)
+        except (SceneError, ValueError) as error:
+            QMessageBox.warning(self.window, "Save scene",
+                                f"Cannot save {path.name}:\n{one_line(str(error))}")
+            return False
+        self.path = path
+        self._remember(path)
+        self._status(f"Saved {path.name}")
+        return True
+
+    # ------------------------------------------------------------ export
+    def export_animation(self) -> "ExportController | None":
+        """Open the export dialog for the run on show."""
+        window = self.window
+        window.player.pause()
+        try:
+            run = exporting.Run.from_player(window.player, y_down=window.grid.y_down,
+                                            title=self.title)
+        except exporting.ExportError as error:
+            QMessageBox.information(window, "Export animation", str(error))
+            return None
+        run.bookmarks = [dict(b) for b in self.bookmarks]
+        if self.export_controller is not None:
+            old, self.export_controller = self.export_controller, None
+            old.close()
+            old.dialog.deleteLater()
+            old.deleteLater()
+        folder = self.settings.value(EXPORT_FOLDER_KEY, "") or str(
+            self.path.parent if self.path else Path.home())
+        name = (self.path.stem if self.path else run.spec.name) + ".gif"
+        self.export_controller = ExportController(window, run, str(Path(folder) / name),
+                                                  self.settings)
+        self.export_controller.dialog.open()
+        return self.export_controller
+
+    def _status(self, text: str) -> None:
+        self.window.statusBar().showMessage(text, 4000)
+
+
+def _file_menu(window) -> QMenu:
+    for action in window.menuBar().actions():
+        menu = action.menu()
+        if menu is not None and action.text().replace("&", "") == "File":
+            return menu
+    return window.menuBar().addMenu("&File")
+
+
+# -------------------------------------------------------------- export job
+class ExportThread(QThread):
+    """Runs one export beside the window; ``cancel()`` stops it at the next
+    frame, and then nothing is written."""
+
+    progressed = Signal(int, int)
+    succeeded = Signal(object)
+    failed = Signal(str)
+    cancelled = Signal()
+
+    def __init__(self, run, settings, gif, frames_dir, parent=None):
+        super().__init__(parent)
+        self.job = (run, settings, gif, frames_dir)
+        self._stop = threading.Event()
+
+    def cancel(self) -> None:
+        self._stop.set()
+
+    def run(self) -> None:  # the thread's body
+        run, settings, gif, frames_dir = self.job
+        try:
+            result = exporting.export(run, settings, gif=gif, frames_dir=frames_dir,
+                                      progress=self.progressed.emit, cancelled=self._stop.is_set)
+        except exporting.ExportCancelled:
+            self.cancelled.emit()
+        except exporting.ExportError as error:
+            self.failed.emit(str(error))
+        except Exception as error:  # noqa: BLE001 - reported in the dialog, not a crash
+            self.failed.emit(one_line(f"the export failed: {type(error).__name__}: {error}"))
+        else:
+            self.succeeded.emit(result)
+
+
+class ExportController(QObject):
+    """The export dialog for one run, and the thread that exports it."""
+
+    def __init__(self, window, run, default_path: str, settings: QSettings | None = None):
+        super().__init__(window)
+        self.run = run
+        self.settings = settings
+        self.thread: ExportThread | None = None
+        self.result = None
+        self.dialog = ExportDialog(window, exporting.MAX_FPS, exporting.MAX_SCALE,
+                                   exporting.MAX_HOLD)
+        self.dialog.setWindowModality(Qt.WindowModality.WindowModal)
+        trace = run.trace
+        self.dialog.set_steps(window.player.index, len(trace) - 1)
+        self.dialog.set_values({"scale": exporting.auto_scale(trace.width, trace.height),
+                                "gif": default_path})
+        self.dialog.exportRequested.connect(self.start)
+        self.dialog.cancelRequested.connect(self.cancel)
+        self.dialog.changed.connect(self._summarise)
+        self.dialog.finished.connect(lambda _result: self._stop_thread())
+        self._summarise()
+
+    def export_settings(self) -> tuple[exporting.ExportSettings, str | None, str | None]:
+        values = self.dialog.values()
+        settings = exporting.ExportSettings(
+            first=values["first"], last=values["last"], fps=values["fps"], hold=values["hold"],
+            scale=values["scale"], grid_lines=values["grid_lines"],
+            primitive=values["primitive"], highlight=values["highlight"],
+            caption=values["caption"], panel=values["panel"], theme=values["theme"],
+            loop=values["loop"])
+        return settings, values["gif"] or None, values["frames_dir"] or None
+
+    def _summarise(self) -> None:
+        values = self.dialog.values()
+        count = max(0, values["last"] - values["first"] + 1)
+        trace = self.run.trace
+        seconds = sum(exporting.frame_durations(count, values["fps"], values["hold"])) / 1000
+        self.dialog.set_size_text(
+            f"{count:,} frame{'s' if count != 1 else ''}, {seconds:g} s; grid "
+            f"{trace.width * values['scale']}x{trace.height * values['scale']} pixels")
+
+    def start(self) -> None:
+        if self.thread is not None:
+            return
+        settings, gif, frames_dir = self.export_settings()
+        self.result = None
+        self.thread = ExportThread(self.run, settings, gif, frames_dir, self)
+        self.thread.progressed.connect(self.dialog.set_progress)
+        self.thread.succeeded.connect(self._succeeded)
+        self.thread.failed.connect(self._failed)
+        self.thread.cancelled.connect(self._cancelled)
+        self.thread.finished.connect(self._thread_done)
+        self.dialog.set_message("Exporting\u2026")
+        self.dialog.set_running(True)
+        self.thread.start()
+
+    def cancel(self) -> None:
+        if self.thread is not None:
+            self.dialog.set_message("Cancelling\u2026")
+            self.thread.cancel()
+
+    def close(self) -> None:
+        self._stop_thread()
+        self.dialog.close()
+
+    @property
+    def busy(self) -> bool:
+        return self.thread is not None
+
+    def _stop_thread(self) -> None:
+        thread = self.thread
+        if thread is not None:
+            thread.cancel()
+            thread.wait()
+
+    def _succeeded(self, result) -> None:
+        self.result = result
+        written = [str(p) for p in (result.gif, result.frames_dir) if p is not None]
+        width, height = result.size
+        self.dialog.set_message(f"Wrote {' and '.join(written)}: {result.frames} frames of "
+                                f"{width}x{height} pixels.")
+        if self.settings is not None and result.gif is not None:
+            self.settings.setValue(EXPORT_FOLDER_KEY, str(Path(result.gif).resolve().parent))
+
+    def _failed(self, message: str) -> None:
+        self.dialog.set_message(f"Not exported: {message}", error=True)
+
+    def _cancelled(self) -> None:
+        self.dialog.set_message("Cancelled; nothing was written.")
+
+    def _thread_done(self) -> None:
+        thread, self.thread = self.thread, None
+        self.dialog.set_running(False)
+        if thread is not None:
+            thread.deleteLater()
