@@ -195,6 +195,14 @@ class Inputs:
                 raise InputError(f"{label}: {value} is not a whole pixel coordinate")
         return tuple(int(v) if self.integer else float(v) for v in point)
 
+    def text(self) -> str:
+        """How many points, in words: "2 points", "3k points", ..."""
+        if self.contours:
+            return f"contours of >= {self.count} points"
+        if self.multiple:
+            return f"{self.count}k points"
+        return f"{self.count} point" + ("s" if self.count != 1 else "")
+
     def flat(self, points) -> list:
         """Every point, whatever the nesting."""
         return [p for contour in points for p in contour] if self.contours else list(points)
