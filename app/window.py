@@ -22,7 +22,7 @@ from PySide6.QtWidgets import (QApplication, QCheckBox, QDialog, QDialogButtonBo
 from algorithms import registry
 from algorithms.raster import MAX_GRID, Raster
 from algorithms.registry import InputError
-from algorithms.steps import Note, Span
+from algorithms.steps import Note
 from widgets.drawing import CONTOURS, point_labels
 from widgets.editors import AlgorithmPicker, GridEditor, OptionsEditor, PointsEditor
 from widgets.grid_view import DRAW, MARKER, PixelGridView
@@ -38,7 +38,7 @@ from .tables import TableIndex
 from .tools import (circle_kind, circle_options, clamp_option, drawing_mode, grid_option_names,
                     marker_option, placing_message, shape_paths, tool_hint)
 # What a frame shows is worked out in app/frame_view.py, shared with export.
-from .frame_view import current_cells as _current_cells
+from .frame_view import step_cells as _step_cells
 from .frame_view import html_caption as _caption
 from .frame_view import ideal_paths  # noqa: F401 (part of this module's interface)
 
@@ -149,15 +149,6 @@ def _legend(rows) -> QWidget:
 def _is_pixel(value) -> bool:
     return isinstance(value, tuple) and len(value) == 2 and all(
         isinstance(v, int) and not isinstance(v, bool) for v in value)
-
-
-def _step_cells(state) -> tuple[list, list]:
-    """The cells the step works on, and the runs (x_start, x_end, y) of a
-    span step, which the grid outlines as one box each."""
-    record = state.step.record
-    if isinstance(record, Span):
-        return [], [(record.x_start, record.x_end, record.y)]
-    return _current_cells(state), []
 
 
 def app_icon() -> QIcon:

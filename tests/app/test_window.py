@@ -7,21 +7,11 @@ from PySide6.QtWidgets import QApplication
 
 from algorithms import registry
 from algorithms.registry import format_value
+from gui_support import settle
 from app.window import DEMO_POINTS, MainWindow
 
 LEFT = Qt.MouseButton.LeftButton
 NONE = Qt.KeyboardModifier.NoModifier
-
-
-def settle(qtbot, window):
-    """Wait until the grid's view has taken its final place after showing:
-    pyqtgraph fits the view to the widget's final size a moment later."""
-    where = []
-
-    def still():
-        where.append(window.grid.widget_pos_of((0.0, 0.0)))
-        return len(where) > 2 and where[-1] == where[-2] == where[-3]
-    qtbot.waitUntil(still, timeout=2000)
 
 
 @pytest.fixture

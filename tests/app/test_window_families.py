@@ -11,22 +11,13 @@ from algorithms.registry import format_value
 from algorithms.steps import Table
 from app.render import PALETTE, coverage_counts
 from app.tables import cell_text
+from gui_support import settle
 from app.window import MainWindow
 
 LEFT = Qt.MouseButton.LeftButton
 NONE = Qt.KeyboardModifier.NoModifier
 SHIFT = Qt.KeyboardModifier.ShiftModifier
 CTRL = Qt.KeyboardModifier.ControlModifier
-
-
-def settle(qtbot, window):
-    """Wait until the grid's view has taken its final place."""
-    where = []
-
-    def still():
-        where.append(window.grid.widget_pos_of((0.0, 0.0)))
-        return len(where) > 2 and where[-1] == where[-2] == where[-3]
-    qtbot.waitUntil(still, timeout=2000)
 
 
 @pytest.fixture

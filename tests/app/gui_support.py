@@ -1,0 +1,12 @@
+"""Shared by the window tests."""
+
+
+def settle(qtbot, window):
+    """Wait until the grid's view has taken its final place after showing:
+    pyqtgraph fits the view to the widget's final size a moment later."""
+    where = []
+
+    def still():
+        where.append(window.grid.widget_pos_of((0.0, 0.0)))
+        return len(where) > 2 and where[-1] == where[-2] == where[-3]
+    qtbot.waitUntil(still, timeout=2000)
