@@ -24,6 +24,8 @@ CENTRE = Inputs(1, integer=True, names=("C",))
 RADIUS = Option("radius", "int", 8, "radius in pixels", minimum=0, maximum=MAX_RADIUS)
 
 E_SE = ((1, 0), (1, -1))  # offsets of E and SE from the current pixel
+# Operations of one plot at an offset: centre + offset, two additions.
+PLOT_OPS = {"int_add": 2}
 S_SW = ((0, -1), (1, -1))
 
 
@@ -95,12 +97,15 @@ class ArcWatch:
 
 # -------------------------------------------------- 4-way symmetry (sqrt)
 def sqrt4_code(points, options):
+    # Operation counts: a plot adds the offset to the centre (two
+    # additions); the loop's step and test are counted on line 3.
     return (
-        CodeLine("r2 = r*r   (offsets (x, y) from the centre)"),
-        CodeLine("plot (0, r) and (0, -r)", PLOT),
+        CodeLine("r2 = r*r   (offsets (x, y) from the centre)", ops={"mul": 1}),
+        CodeLine("plot (0, r) and (0, -r)", PLOT, ops=PLOT_OPS),
         CodeLine("for x = 1 .. r:"),
-        CodeLine("    y = floor(sqrt(r2 - x*x))      (the cast to int)"),
-        CodeLine("    plot (x, y), (x, -y), (-x, y), (-x, -y)", PLOT),
+        CodeLine("    y = floor(sqrt(r2 - x*x))      (the cast to int)",
+                 ops={"mul": 1, "int_add": 2, "sqrt": 1, "round": 1, "compare": 1}),
+        CodeLine("    plot (x, y), (x, -y), (-x, y), (-x, -y)", PLOT, ops=PLOT_OPS),
         CodeLine("done"),
     )
 
@@ -187,15 +192,16 @@ register(AlgorithmSpec(
 
 # -------------------------------------------------- 8-way symmetry (sqrt)
 def sqrt8_code(points, options):
+    root = {"mul": 1, "int_add": 1, "sqrt": 1, "round": 1}
     return (
-        CodeLine("r2 = r*r   (offsets (x, y) from the centre)"),
-        CodeLine("plot (0, r), (0, -r), (r, 0), (-r, 0)", PLOT),
-        CodeLine("x = 1;  y = floor(sqrt(r2 - x*x))"),
-        CodeLine("while x < y:"),
+        CodeLine("r2 = r*r   (offsets (x, y) from the centre)", ops={"mul": 1}),
+        CodeLine("plot (0, r), (0, -r), (r, 0), (-r, 0)", PLOT, ops=PLOT_OPS),
+        CodeLine("x = 1;  y = floor(sqrt(r2 - x*x))", ops=root),
+        CodeLine("while x < y:", ops={"compare": 1}),
         CodeLine("    plot (x, y), (x, -y), (-x, y), (-x, -y), (y, x), (y, -x), (-y, x), (-y, -x)",
-                 PLOT),
-        CodeLine("    x += 1;  y = floor(sqrt(r2 - x*x))"),
-        CodeLine("if x == y:  plot (x, y), (x, -y), (-x, y), (-x, -y)", PLOT),
+                 PLOT, ops=PLOT_OPS),
+        CodeLine("    x += 1;  y = floor(sqrt(r2 - x*x))", ops={**root, "int_add": 2}),
+        CodeLine("if x == y:  plot (x, y), (x, -y), (-x, y), (-x, -y)", PLOT, ops=PLOT_OPS),
         CodeLine("done"),
     )
 
@@ -292,18 +298,22 @@ def midpoint_code(points, options):
     else:
         first = ("d = 1 - R   (5/4 - R less 1/4: d then stays a whole number and "
                  "has the same sign test)")
+    # Operation counts: 2x is an addition; the diagonal test of line 5
+    # runs every iteration and is counted on the E and SE lines (line 5
+    # has a frame only when it stops the loop).
     return (
-        CodeLine(f"x = 0;  y = R;  {first}"),
-        CodeLine("plot (0, R), (0, -R), (R, 0), (-R, 0)   (offsets; one pixel when R = 0)", PLOT),
-        CodeLine("while y > x:"),
+        CodeLine(f"x = 0;  y = R;  {first}", ops={"int_add": 1}),
+        CodeLine("plot (0, R), (0, -R), (R, 0), (-R, 0)   (offsets; one pixel when R = 0)", PLOT,
+                 ops=PLOT_OPS),
+        CodeLine("while y > x:", ops={"compare": 1}),
         CodeLine("    if d < 0:  d += 2x + 3;  x += 1            (midpoint inside: E)",
-                 branch="E"),
+                 branch="E", ops={"compare": 2, "int_add": 4}),
         CodeLine("    else:  d += 2(x - y) + 5;  x += 1;  y -= 1   (on or outside: SE)",
-                 branch="SE"),
+                 branch="SE", ops={"compare": 2, "int_add": 6}),
         CodeLine("    if x > y:  stop   (SE crossed the diagonal: these pixels are "
                  "mirrors of the last ones)"),
         CodeLine("    plot (x, y), (y, x), (y, -x), (x, -y), (-x, -y), (-y, -x), (-y, x), (-x, y)"
-                 "   (four when x == y)", PLOT),
+                 "   (four when x == y)", PLOT, ops=PLOT_OPS),
         CodeLine("done"),
     )
 
@@ -438,22 +448,31 @@ RY = Option("ry", "int", 6, "half height in pixels (0: a horizontal segment)",
 
 
 def ellipse_code(points, options):
+    # Operation counts: rx^2, ry^2 and their multiples 4ry^2, 8rx^2, ...
+    # are computed once, on line 0; doubling is an addition. The tail loop
+    # of line 11 plots two pixels per step and counts plotting only.
     return (
         CodeLine("x = 0;  y = ry;  d = 4F(x + 1, y - 1/2) = 4ry^2 - 4rx^2*ry + rx^2   "
-                 "(F = ry^2 x^2 + rx^2 y^2 - rx^2 ry^2; 4F keeps d whole)"),
-        CodeLine("plot (0, ry), (0, -ry)", PLOT),
-        CodeLine("while ry^2 * x < rx^2 * y:     (region 1: slope above -1, one pixel per column)"),
-        CodeLine("    if d < 0:  d += 4ry^2(2x + 3);  x += 1", branch="E"),
-        CodeLine("    else:  d += 4ry^2(2x + 3) - 8rx^2(y - 1);  x += 1;  y -= 1", branch="SE"),
-        CodeLine("    plot (x, y), (x, -y), (-x, y), (-x, -y)", PLOT),
-        CodeLine("d = 4F(x + 1/2, y - 1)         (region 2: one pixel per row)"),
-        CodeLine("while y > 0:"),
-        CodeLine("    if d > 0:  d += 4rx^2(3 - 2y);  y -= 1", branch="S", candidates=S_SW),
+                 "(F = ry^2 x^2 + rx^2 y^2 - rx^2 ry^2; 4F keeps d whole)",
+                 ops={"mul": 6, "int_add": 2}),
+        CodeLine("plot (0, ry), (0, -ry)", PLOT, ops=PLOT_OPS),
+        CodeLine("while ry^2 * x < rx^2 * y:     (region 1: slope above -1, one pixel per column)",
+                 ops={"mul": 2, "compare": 1}),
+        CodeLine("    if d < 0:  d += 4ry^2(2x + 3);  x += 1", branch="E",
+                 ops={"compare": 1, "mul": 1, "int_add": 4}),
+        CodeLine("    else:  d += 4ry^2(2x + 3) - 8rx^2(y - 1);  x += 1;  y -= 1", branch="SE",
+                 ops={"compare": 1, "mul": 2, "int_add": 7}),
+        CodeLine("    plot (x, y), (x, -y), (-x, y), (-x, -y)", PLOT, ops=PLOT_OPS),
+        CodeLine("d = 4F(x + 1/2, y - 1)         (region 2: one pixel per row)",
+                 ops={"mul": 4, "int_add": 5}),
+        CodeLine("while y > 0:", ops={"compare": 1}),
+        CodeLine("    if d > 0:  d += 4rx^2(3 - 2y);  y -= 1", branch="S", candidates=S_SW,
+                 ops={"compare": 1, "mul": 1, "int_add": 4}),
         CodeLine("    else:  d += 8ry^2(x + 1) + 4rx^2(3 - 2y);  x += 1;  y -= 1",
-                 branch="SW", candidates=S_SW),
-        CodeLine("    plot (x, y), (x, -y), (-x, y), (-x, -y)", PLOT),
+                 branch="SW", candidates=S_SW, ops={"compare": 1, "mul": 2, "int_add": 7}),
+        CodeLine("    plot (x, y), (x, -y), (-x, y), (-x, -y)", PLOT, ops=PLOT_OPS),
         CodeLine("while x < rx:  x += 1;  plot (x, 0), (-x, 0)   (a flat ellipse reaches "
-                 "y = 0 before x = rx)", PLOT),
+                 "y = 0 before x = rx)", PLOT, ops=PLOT_OPS),
         CodeLine("done"),
     )
 

@@ -19,7 +19,7 @@ from collections import deque
 from fractions import Fraction
 
 from .registry import AlgorithmSpec, InputError, Inputs, Option, register
-from .steps import PLOT, VISIT, CodeLine, Note, Span, Start, Vars
+from .steps import PER_PIXEL, PLOT, VISIT, CodeLine, Note, Span, Start, Vars
 
 NAN = math.nan
 
@@ -196,17 +196,30 @@ def fill_code(points, options):
                "draw each outline segment, closing each outline, with a corner pixel at each "
                "diagonal step (4-connected)")
     names = _neighbour_names(options)
+    # Operation counts. An outline pixel costs what a Bresenham step does.
+    # Every pixel pushed is popped once, so a push (one addition to the
+    # stack pointer) is counted with its pop; a pop is an addition and the
+    # loop's emptiness test. pixels_tested counts reads of a pixel's state.
+    outline_ops = {"int_add": 3, "compare": 2}
+    pop = {"int_add": 2, "compare": 1}
     if options["order"] == "span":
+        # The "filled already" test runs at every pop; its line has a frame
+        # only when it skips, so the test is counted on the pop's line.
         return (
-            CodeLine(outline, PLOT),
+            CodeLine(outline, PLOT, ops=outline_ops),
             CodeLine("push(seed)"),
             CodeLine("while the stack is not empty:"),
-            CodeLine("    (x, y) = pop()", VISIT),
+            CodeLine("    (x, y) = pop()", VISIT,
+                     ops={"int_add": 2, "compare": 2, "pixels_tested": 1}),
             CodeLine("    if (x, y) is filled already:  continue", VISIT),
-            CodeLine("    widen x to the run xl .. xr of free pixels on row y;  fill xl .. xr", PLOT),
+            CodeLine("    widen x to the run xl .. xr of free pixels on row y;  fill xl .. xr", PLOT,
+                     ops={"compare": 2, "pixels_tested": 2},
+                     per={PER_PIXEL: {"int_add": 1, "compare": 1, "pixels_tested": 1}}),
             CodeLine("    for the rows y + 1 and y - 1, over " +
                      ("xl - 1 .. xr + 1" if options["connectivity"] == "8" else "xl .. xr") +
-                     ":  push the leftmost pixel of each run of free pixels", VISIT),
+                     ":  push the leftmost pixel of each run of free pixels", VISIT,
+                     ops={"compare": 1},
+                     per={PER_PIXEL: {"int_add": 1, "compare": 2, "pixels_tested": 1}}),
             CodeLine("done"),
         )
     take = ("pop()   (the top: last pushed, first out)" if options["order"] == "stack"
@@ -215,13 +228,21 @@ def fill_code(points, options):
     push = (f"push the free neighbours among {names}, in reverse, so {names.split(',')[0]} "
             f"comes out first" if options["order"] == "stack"
             else f"push the free neighbours among {names}")
+    # The pop of line 3 has a frame only for the first pops (its panel
+    # detail); every pop ends on line 4 or 5, so it is counted there. A
+    # fill reads each neighbour's state (an address addition and a test).
+    k = len(NEIGHBOURS[options["connectivity"]])
     return (
-        CodeLine(outline, PLOT),
+        CodeLine(outline, PLOT, ops=outline_ops),
         CodeLine("push(seed)"),
         CodeLine(f"while the {container} is not empty:"),
         CodeLine(f"    p = {take}", VISIT),
-        CodeLine("    if p is filled already:  continue   (pushed twice before it was filled)", VISIT),
-        CodeLine(f"    fill p;  {push}   (free: inside the grid, not boundary, not filled)", PLOT),
+        CodeLine("    if p is filled already:  continue   (pushed twice before it was filled)", VISIT,
+                 ops={"int_add": pop["int_add"], "compare": pop["compare"] + 1,
+                      "pixels_tested": 1}),
+        CodeLine(f"    fill p;  {push}   (free: inside the grid, not boundary, not filled)", PLOT,
+                 ops={"int_add": pop["int_add"] + k, "compare": pop["compare"] + 1 + k,
+                      "pixels_tested": 1 + k}),
         CodeLine("done"),
     )
 

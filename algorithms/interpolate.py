@@ -85,6 +85,10 @@ def plane_coefficients(points, values):
         raise InputError("a degenerate triangle has no parameter plane")
     cx = ((q1 - q0) * dy2 - (q2 - q0) * dy1) / det
     cy = ((q2 - q0) * dx1 - (q1 - q0) * dx2) / det
+    if isinstance(cx, float) and not (math.isfinite(cx) and math.isfinite(cy)):
+        # Products of huge values and coordinates leave the float range.
+        raise InputError("the parameter plane overflows floating point: use smaller attribute "
+                         "values or coordinates")
     return cx, cy
 
 

@@ -101,13 +101,20 @@ def _with_color(ramp, names):
 def bresenham_code(points, options):
     ties_to_e = _bresenham_ties_to_e(points, options)
     test = "d <= 0" if ties_to_e else "d < 0"
+    # Operation counts (CodeLine.ops): the first frame stands on line 1, so
+    # the octant mapping of line 0 (two subtractions, three tests) is
+    # counted there; doubling is an addition. The loop test of line 3 is
+    # counted on the E and NE lines, one of which every iteration runs.
     return (
         CodeLine("map P, Q into octant 1 (swap x and y if steep, mirror negative steps)"),
-        CodeLine("dx = x1 - x0;  dy = y1 - y0;  incrE = 2*dy;  incrNE = 2*(dy - dx)"),
-        CodeLine("d = 2*dy - dx;  x, y = x0, y0;  plot(x, y)", PLOT),
+        CodeLine("dx = x1 - x0;  dy = y1 - y0;  incrE = 2*dy;  incrNE = 2*(dy - dx)",
+                 ops={"int_add": 5, "compare": 3}),
+        CodeLine("d = 2*dy - dx;  x, y = x0, y0;  plot(x, y)", PLOT, ops={"int_add": 2}),
         CodeLine("while x < x1:        (the loop runs to x1, so Q is plotted)"),
-        CodeLine(f"    if {test}:  d += incrE;  x += 1;  plot(x, y)", PLOT, "E"),
-        CodeLine("    else:  d += incrNE;  x += 1;  y += 1;  plot(x, y)", PLOT, "NE"),
+        CodeLine(f"    if {test}:  d += incrE;  x += 1;  plot(x, y)", PLOT, "E",
+                 ops={"int_add": 2, "compare": 2}),
+        CodeLine("    else:  d += incrNE;  x += 1;  y += 1;  plot(x, y)", PLOT, "NE",
+                 ops={"int_add": 3, "compare": 2}),
         CodeLine("done"),
     )
 
@@ -223,12 +230,16 @@ register(AlgorithmSpec(
 
 # ---------------------------------------------------------------------- DDA
 def dda_code(points, options):
+    # Operation counts: line 0 runs before the first frame (on line 1) and
+    # is counted there; the loop counter and test of line 3 on line 4.
     return (
         CodeLine("dx = x1 - x0;  dy = y1 - y0;  steps = max(|dx|, |dy|)"),
-        CodeLine(f"x_inc = dx / steps;  y_inc = dy / steps   (one is +-1, the other m or 1/m; {options['dtype']})"),
-        CodeLine("x, y = x0, y0;  plot(round(x), round(y))", PLOT),
+        CodeLine(f"x_inc = dx / steps;  y_inc = dy / steps   (one is +-1, the other m or 1/m; {options['dtype']})",
+                 ops={"int_add": 2, "compare": 3, "div": 2}),
+        CodeLine("x, y = x0, y0;  plot(round(x), round(y))", PLOT, ops={"round": 2}),
         CodeLine("repeat steps times:"),
-        CodeLine("    x += x_inc;  y += y_inc;  plot(round(x), round(y))", PLOT),
+        CodeLine("    x += x_inc;  y += y_inc;  plot(round(x), round(y))", PLOT,
+                 ops={"float_add": 2, "round": 2, "int_add": 1, "compare": 1}),
         CodeLine("done"),
     )
 
@@ -319,13 +330,16 @@ def incremental_code(points, options):
     a, b = ("y", "x") if steep else ("x", "y")
     slope, ratio = ("1/m", "dx / dy") if steep else ("m", "dy / dx")
     rounding = options["rounding"]
+    # Operation counts: the loop's step and test (line 2) are counted on
+    # line 3, whose frame every iteration yields.
     return (
         CodeLine(f"dx = x1 - x0;  dy = y1 - y0;  {a} is the major axis "
-                 f"(|d{a}| {'>' if steep else '>='} |d{b}|)"),
-        CodeLine(f"{slope} = {ratio}  (a float);  s = sign(d{a})"),
+                 f"(|d{a}| {'>' if steep else '>='} |d{b}|)", ops={"int_add": 2, "compare": 3}),
+        CodeLine(f"{slope} = {ratio}  (a float);  s = sign(d{a})", ops={"div": 1, "compare": 1}),
         CodeLine(f"for {a} = {a}0, {a}0 + s, ... while {a} != {a}1:"),
         CodeLine(f"    {b}_real = {slope} * ({a} - {a}0) + {b}0;  "
-                 f"plot({rounding}({b}_real)) in {'row' if steep else 'column'} {a}", PLOT),
+                 f"plot({rounding}({b}_real)) in {'row' if steep else 'column'} {a}", PLOT,
+                 ops={"int_add": 2, "mul": 1, "float_add": 1, "round": 1, "compare": 1}),
         CodeLine("plot(x1, y1)   (the loop stops one short of Q, as in the notes; "
                  "Q is plotted as given)", PLOT),
         CodeLine("done"),
@@ -420,18 +434,27 @@ register(AlgorithmSpec(
 # ---------------------------------------------------------- explicit form
 def explicit_code(points, options):
     return (
-        CodeLine("run = x1 - x0;  rise = y1 - y0"),
-        CodeLine("if |run| >= |rise|:       (x is the major axis; also a point or a flat line)", branch="x major"),
-        CodeLine("    m = rise / run  (0 when run = 0);  c = y0 - m*x0"),
+        CodeLine("run = x1 - x0;  rise = y1 - y0", ops={"int_add": 2}),
+        CodeLine("if |run| >= |rise|:       (x is the major axis; also a point or a flat line)",
+                 branch="x major", ops={"compare": 3}),
+        CodeLine("    m = rise / run  (0 when run = 0);  c = y0 - m*x0",
+                 ops={"compare": 1, "div": 1, "mul": 1, "float_add": 1}),
         CodeLine("    if run >= 0:  for x = x0, x0 + 1, ..., x1   (up to x1 itself, so Q is plotted)",
-                 branch="ascending"),
-        CodeLine("    else:         for x = x0, x0 - 1, ..., x1   (descending loop)", branch="descending"),
-        CodeLine("        y = m*x + c;  setPixel(x, round(y))", PLOT),
-        CodeLine("else:                     (y is the major axis: x = n*y + d)", branch="y major"),
-        CodeLine("    n = run / rise;  d = x0 - n*y0"),
-        CodeLine("    if rise > 0:  for y = y0, y0 + 1, ..., y1   (up to y1 itself)", branch="ascending"),
-        CodeLine("    else:         for y = y0, y0 - 1, ..., y1   (descending loop)", branch="descending"),
-        CodeLine("        x = n*y + d;  setPixel(round(x), y)", PLOT),
+                 branch="ascending", ops={"compare": 1}),
+        CodeLine("    else:         for x = x0, x0 - 1, ..., x1   (descending loop)", branch="descending",
+                 ops={"compare": 1}),
+        # The loop's step and test are counted with the body's frame.
+        CodeLine("        y = m*x + c;  setPixel(x, round(y))", PLOT,
+                 ops={"mul": 1, "float_add": 1, "round": 1, "int_add": 1, "compare": 1}),
+        CodeLine("else:                     (y is the major axis: x = n*y + d)", branch="y major",
+                 ops={"compare": 3}),
+        CodeLine("    n = run / rise;  d = x0 - n*y0", ops={"div": 1, "mul": 1, "float_add": 1}),
+        CodeLine("    if rise > 0:  for y = y0, y0 + 1, ..., y1   (up to y1 itself)", branch="ascending",
+                 ops={"compare": 1}),
+        CodeLine("    else:         for y = y0, y0 - 1, ..., y1   (descending loop)", branch="descending",
+                 ops={"compare": 1}),
+        CodeLine("        x = n*y + d;  setPixel(round(x), y)", PLOT,
+                 ops={"mul": 1, "float_add": 1, "round": 1, "int_add": 1, "compare": 1}),
         CodeLine("done"),
     )
 
@@ -505,15 +528,22 @@ register(AlgorithmSpec(
 
 # ---------------------------------------------------------- implicit form
 def implicit_code(points, options):
+    # Operation counts: every pixel of the box yields one frame, on line 4
+    # or 5, so each of them carries the whole test: the inner loop's step
+    # and condition, and the distance of line 3 as the exact integer test
+    # does it (w = X - P; along = w.D; two range tests; cross = D x w;
+    # 4 cross^2 against |PQ|^2). No square root is needed for the verdict.
+    test = {"int_add": 5, "mul": 6, "compare": 4, "pixels_tested": 1}
     return (
         CodeLine("the bounding box of P and Q, edges included (a loop with '<' would miss "
-                 "Q's column and row); walk it from P's corner to Q's"),
+                 "Q's column and row); walk it from P's corner to Q's",
+                 ops={"int_add": 3, "mul": 2, "compare": 2}),
         CodeLine("for x = x0 .. x1:"),
         CodeLine("    for y = y0 .. y1:"),
         CodeLine("        dist = distance from (x, y) to the segment PQ  "
                  "(to P or Q where (x, y) lies beyond an end)"),
-        CodeLine("        if dist >= 1/2:  skip", VISIT),
-        CodeLine("        else:  setPixel(x, y)", PLOT),
+        CodeLine("        if dist >= 1/2:  skip", VISIT, ops=test),
+        CodeLine("        else:  setPixel(x, y)", PLOT, ops=test),
         CodeLine("done"),
     )
 
@@ -636,12 +666,19 @@ DT = Option("dt", "float", 0.001,
 
 def parametric_code(points, options):
     dt = "1 / max(|dx|, |dy|)" if options["dt"] == "auto" else f"{options['dt']:g}"
+    auto = options["dt"] == "auto"
+    # Operation counts: each step yields one frame, on line 3, which carries
+    # the step's whole work: k += 1 and its test, t = k*dt (k/n for auto),
+    # p = P + t*D and the two roundings.
+    step = {"int_add": 1, "compare": 1, "mul": 2 if auto else 3, "float_add": 2, "round": 2}
+    if auto:
+        step["div"] = 1
     return (
-        CodeLine(f"dt = {dt};  D = Q - P"),
+        CodeLine(f"dt = {dt};  D = Q - P", ops={"int_add": 2, **({"div": 1} if auto else {})}),
         CodeLine("for k = 0, 1, 2, ...:  t = min(k*dt, 1)   "
                  "(a whole counter k, so t does not drift; the last t is exactly 1)"),
         CodeLine("    p = P + t*D"),
-        CodeLine("    plot(round(p.x), round(p.y))", PLOT),
+        CodeLine("    plot(round(p.x), round(p.y))", PLOT, ops=step),
         CodeLine("    stop after t = 1   (so Q is always plotted)"),
         CodeLine("done"),
     )

@@ -22,7 +22,8 @@ from fractions import Fraction
 import numpy as np
 
 from .registry import AlgorithmSpec, InputError, Inputs, Option, register
-from .steps import NO_PIXEL, PLOT, VISIT, CodeLine, Note, Span, Start, Table, Vars
+from .steps import (NO_PIXEL, PER_PIXEL, PER_ROW, PLOT, VISIT, CodeLine, Note, Span, Start,
+                    Table, Vars)
 
 NAN = math.nan
 SUBPIXEL_BITS = 8
@@ -192,19 +193,34 @@ def scanline_code(points, options):
         fill = ("    for each pair (x_left, x_right) of the AET in turn: "
                 "fill pixels i with x_left <= i + 1/2 < x_right")
     number = "an exact fraction" if arithmetic == "exact" else f"a {arithmetic}"
+    # Operation counts. An exact x is kept as a whole part and a remainder
+    # over dy, as the integer edge walk does: x += 1/m is two integer
+    # additions and a carry test. Per edge (the Start constant "edges"),
+    # the ET line counts its setup and the one test that removes it from
+    # the AET later; line 5 counts the test of each edge that stays (the
+    # frame's "active"). The AET is nearly sorted from row to row, so the
+    # sort is an insertion pass: one comparison per row of its table. A
+    # span costs two roundings; each of its pixels a step and a test.
+    step = ({"int_add": 2, "compare": 2} if arithmetic == "exact"
+            else {"float_add": 1, "compare": 1})
+    setup = {"int_add": 4, "div": 1, "mul": 1, "round": 2, "compare": 2}
+    if arithmetic != "exact":
+        setup["float_add"] = 1
     return (
-        CodeLine("snap every vertex to the 1/256 px grid"),
+        CodeLine("snap every vertex to the 1/256 px grid",
+                 per={"vertices": {"mul": 2, "round": 2}}),
         CodeLine(f"ET: bucket each edge under the first row y whose centre line y + 1/2 it "
-                 f"meets, as {entry}; skip horizontal edges"),
+                 f"meets, as {entry}; skip horizontal edges", per={"edges": setup}),
         CodeLine("AET = empty;  y = the lowest bucket of the ET"),
         CodeLine("while the ET or the AET is not empty:"),
         CodeLine("    if the AET is empty: y = the lowest remaining bucket;  "
-                 "move the edges of bucket ET[y] into the AET"),
-        CodeLine("    remove from the AET the edges with ymax == y"),
-        CodeLine("    sort the AET on x"),
-        CodeLine(fill, PLOT),
-        CodeLine("    y += 1"),
-        CodeLine(f"    for each edge in the AET: x += 1/m   (x is {number})"),
+                 "move the edges of bucket ET[y] into the AET", ops={"compare": 3}),
+        CodeLine("    remove from the AET the edges with ymax == y", per={"active": {"compare": 1}}),
+        CodeLine("    sort the AET on x", per={PER_ROW: {"compare": 1}}),
+        CodeLine(fill, PLOT, ops={"round": 2, "compare": 1},
+                 per={PER_PIXEL: {"int_add": 1, "compare": 1}}),
+        CodeLine("    y += 1", ops={"int_add": 1}),
+        CodeLine(f"    for each edge in the AET: x += 1/m   (x is {number})", per={"active": step}),
         CodeLine("done"),
     )
 
@@ -499,16 +515,25 @@ class ChainWalker:
 
 
 def convex_code(points, options):
+    # Operation counts: per vertex, snapping and the turn test (a cross
+    # product); per chain edge (a row of the chains table) the search for
+    # B and T; x is exact, a whole part and a remainder (two additions and
+    # a carry test per step), as in polygon-scanline.
     return (
         CodeLine("snap the vertices; check convexity: all turns one way, and x and y "
-                 "each change direction at most twice"),
+                 "each change direction at most twice",
+                 per={"vertices": {"mul": 4, "round": 2, "int_add": 5, "compare": 4}}),
         CodeLine("B = lowest vertex, T = highest; the left and right chains of edges run "
-                 "from B up to T"),
-        CodeLine("for each row y whose centre line B.y <= y + 1/2 < T.y:"),
+                 "from B up to T", per={PER_ROW: {"compare": 2}}),
+        CodeLine("for each row y whose centre line B.y <= y + 1/2 < T.y:",
+                 ops={"int_add": 2, "div": 2}),
         CodeLine("    on each chain, while the edge's top is at or below y + 1/2: take the "
-                 "next edge, x = its x at y + 1/2"),
-        CodeLine("    fill pixels i with x_left <= i + 1/2 < x_right", PLOT),
-        CodeLine("    x_left += 1/m_left;  x_right += 1/m_right"),
+                 "next edge, x = its x at y + 1/2",
+                 ops={"compare": 2, "int_add": 4, "mul": 1, "div": 1}),
+        CodeLine("    fill pixels i with x_left <= i + 1/2 < x_right", PLOT,
+                 ops={"round": 2, "compare": 3}, per={PER_PIXEL: {"int_add": 1, "compare": 1}}),
+        CodeLine("    x_left += 1/m_left;  x_right += 1/m_right",
+                 ops={"int_add": 5, "compare": 3}),
         CodeLine("done"),
     )
 
@@ -679,21 +704,31 @@ def triangle_runs(triangle, ties: str = "left-bottom"):
 def tessellate_code(points, options):
     ties = {"left-bottom": "E > 0, or E = 0 on a left edge (a > 0) or a bottom edge (a = 0, b > 0)",
             "inclusive": "E >= 0 for every edge", "strict": "E > 0 for every edge"}[options["ties"]]
+    # Operation counts, with two lower bounds: the simplicity check of
+    # line 0 (every pair of edges) and the search of lines 5 and 6 (every
+    # other vertex against the candidate) are counted as one test each;
+    # and a row's fill counts its covered pixels, not the other centres of
+    # the bounding box row that were tested and left out.
+    cross = {"mul": 2, "int_add": 5}
+    inside = {"mul": 6, "int_add": 15, "compare": 3}
     return (
-        CodeLine("snap the vertices; check the polygon is simple (no two edges cross or touch)"),
+        CodeLine("snap the vertices; check the polygon is simple (no two edges cross or touch)",
+                 per={"vertices": {"mul": 2, "round": 2}}),
         CodeLine("drop every vertex that lies on the straight line between its neighbours"),
         CodeLine("while more than 3 vertices remain:"),
-        CodeLine("    candidate ear: the triangle (prev, v, next) at the next vertex v", VISIT),
+        CodeLine("    candidate ear: the triangle (prev, v, next) at the next vertex v", VISIT,
+                 ops={**cross, "compare": 2}),
         CodeLine("    if the turn prev -> v -> next is not convex: not an ear", branch="reflex"),
         CodeLine("    elif another vertex lies in the triangle (edges included): not an ear",
-                 VISIT, branch="blocked"),
-        CodeLine("    else: it is an ear: output the triangle, remove v", branch="ear"),
+                 VISIT, branch="blocked", ops=inside),
+        CodeLine("    else: it is an ear: output the triangle, remove v", branch="ear", ops=inside),
         CodeLine("    drop prev or next if it now lies on a straight line between its neighbours"),
         CodeLine("output the last 3 vertices as a triangle"),
         CodeLine("for each triangle: E_k(p) = a_k x + b_k y + c_k for its 3 edges, "
-                 "positive inside (1/256 px units)"),
+                 "positive inside (1/256 px units)", per={PER_ROW: {"mul": 2, "int_add": 3}}),
         CodeLine(f"    for each row of its bounding box: fill the pixels whose centre has {ties}",
-                 PLOT),
+                 PLOT, per={PER_PIXEL: {"mul": 6, "int_add": 8, "compare": 4,
+                                        "pixels_tested": 1}}),
         CodeLine("done"),
     )
 

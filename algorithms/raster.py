@@ -12,39 +12,49 @@ class Raster:
 
     ``counts`` says how often each pixel was written (duplicates show as
     counts above one); ``colors`` holds the last packed 0xRRGGBB value
-    written, and exists only when the run writes values.
+    written, and exists only when the run writes values. ``depth`` holds the
+    last depth written (NaN where none was), and exists only when the run
+    keeps a depth buffer (``Start.depth_value``).
     """
 
-    def __init__(self, width: int, height: int, with_colors: bool = False):
+    depth = None  # set by __init__; a class default keeps hand-made rasters valid
+
+    def __init__(self, width: int, height: int, with_colors: bool = False,
+                 with_depth: bool = False):
         check_grid(width, height)
         self.width = width
         self.height = height
         self.counts = np.zeros((height, width), dtype=np.int32)
         self.colors = np.full((height, width), NO_COLOR, np.int64) if with_colors else None
+        self.depth = np.full((height, width), np.nan) if with_depth else None
 
     def copy(self) -> "Raster":
         other = Raster.__new__(Raster)
         other.width, other.height = self.width, self.height
         other.counts = self.counts.copy()
         other.colors = None if self.colors is None else self.colors.copy()
+        other.depth = None if self.depth is None else self.depth.copy()
         return other
 
     def inside(self, x: int, y: int) -> bool:
         return 0 <= x < self.width and 0 <= y < self.height
 
-    def write(self, x: int, y: int, value=None) -> None:
+    def write(self, x: int, y: int, value=None, depth=None) -> None:
         """Write one pixel; pixels outside the grid are clipped."""
         if not self.inside(x, y):
             return
         self.counts[y, x] += 1
         if self.colors is not None and value is not None and value == value:  # NaN: no colour
             self.colors[y, x] = int(value)
+        if self.depth is not None and depth is not None and depth == depth:  # NaN: no depth
+            self.depth[y, x] = float(depth)
 
-    def write_many(self, flat: np.ndarray, values: np.ndarray | None = None) -> None:
+    def write_many(self, flat: np.ndarray, values: np.ndarray | None = None,
+                   depths: np.ndarray | None = None) -> None:
         """Write pixels given as flat indices y * W + x, in order.
 
         Negative indices stand for pixels outside the grid and are skipped;
-        a NaN value writes no colour.
+        a NaN value writes no colour, a NaN depth no depth.
         """
         keep = flat >= 0
         flat = flat[keep]
@@ -55,6 +65,10 @@ class Raster:
             values = values[keep]
             valued = ~np.isnan(values)
             _write_last(self.colors.reshape(-1), flat[valued], values[valued])
+        if self.depth is not None and depths is not None:
+            depths = depths[keep]
+            valued = ~np.isnan(depths)
+            _write_last(self.depth.reshape(-1), flat[valued], depths[valued])
 
     def written(self) -> np.ndarray:
         """Boolean mask of pixels written at least once."""
@@ -62,6 +76,7 @@ class Raster:
 
     def bytes(self) -> int:
         extra = 0 if self.colors is None else self.colors.nbytes
+        extra += 0 if self.depth is None else self.depth.nbytes
         return self.counts.nbytes + extra
 
 
@@ -70,7 +85,7 @@ def _write_last(target: np.ndarray, flat: np.ndarray, values: np.ndarray) -> Non
     # np.unique on the reversed order finds each pixel's last write.
     reversed_flat = flat[::-1]
     pixels, first = np.unique(reversed_flat, return_index=True)
-    target[pixels] = values[::-1][first].astype(np.int64)
+    target[pixels] = values[::-1][first].astype(target.dtype)
 
 
 def check_grid(width: int, height: int) -> None:

@@ -10,10 +10,11 @@ from .errors import InputError
 from .steps import CodeLine
 from .trace import DEFAULT_STEP_CAP, Trace
 
-FAMILIES = ("lines", "circles", "polygons", "fill", "triangles")
+FAMILIES = ("lines", "circles", "polygons", "fill", "triangles", "visibility", "antialias")
 # Modules that register specs when imported; add a family's module here.
 _FAMILY_MODULES = ("algorithms.lines", "algorithms.circles", "algorithms.polygons",
-                   "algorithms.fill", "algorithms.triangles")
+                   "algorithms.fill", "algorithms.triangles", "algorithms.visibility",
+                   "algorithms.antialias")
 
 
 @dataclass(frozen=True)
@@ -151,6 +152,26 @@ def parse_number(text: str, what: str, integer: bool = False):
     return value
 
 
+# Whole-number points (lines, circles, outlines) stay within +-2^30 px, so
+# that every pixel an algorithm reaches from them fits a frame's 32-bit x, y.
+MAX_INTEGER_COORDINATE = 1 << 30
+
+
+def _finite(value) -> bool:
+    try:
+        return math.isfinite(value)
+    except OverflowError:  # an int beyond any float
+        return False
+
+
+def _brief(value) -> str:
+    """A value for a one-line message, however long its digits."""
+    if isinstance(value, int) and not isinstance(value, bool) and value.bit_length() > 64:
+        return f"a whole number of {value.bit_length()} bits"
+    text = repr(value)
+    return text if len(text) <= 40 else text[:37] + "..."
+
+
 @dataclass(frozen=True)
 class Inputs:
     """What points an algorithm takes.
@@ -189,10 +210,13 @@ class Inputs:
         if len(point) != 2:
             raise InputError(f"{label} must have two coordinates")
         for value in point:
-            if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value):
-                raise InputError(f"{label}: {value!r} is not a finite number")
+            if isinstance(value, bool) or not isinstance(value, (int, float)) or not _finite(value):
+                raise InputError(f"{label}: {_brief(value)} is not a finite number")
             if self.integer and not float(value).is_integer():
                 raise InputError(f"{label}: {value} is not a whole pixel coordinate")
+            if self.integer and abs(value) > MAX_INTEGER_COORDINATE:
+                # Frames keep pixel coordinates as 32-bit integers.
+                raise InputError(f"{label}: {_brief(value)} is beyond +-{MAX_INTEGER_COORDINATE:,} px")
         return tuple(int(v) if self.integer else float(v) for v in point)
 
     def text(self) -> str:

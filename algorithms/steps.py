@@ -29,6 +29,18 @@ KINDS = (PLOT, VISIT, CALC)
 # Stored for x and y when a frame has no pixel.
 NO_PIXEL = -(2 ** 31)
 
+# Operations a pseudo-code line can be annotated with (CodeLine.ops), for
+# the counts the speed/error report makes. Additions include subtractions
+# and increments; round counts every float-to-integer conversion (floor,
+# round, a cast); compare counts every test and loop condition;
+# pixels_tested counts pixels whose inside/outside state is looked at;
+# samples counts sample points evaluated (antialiasing).
+OP_NAMES = ("int_add", "float_add", "mul", "div", "sqrt", "round", "compare",
+            "pixels_tested", "samples")
+# Quantities ``CodeLine.per`` may scale by, besides a value or constant name.
+PER_PIXEL = "pixel"  # each pixel of the frame's Span run
+PER_ROW = "row"      # each row of the frame's Table
+
 
 @dataclass(frozen=True, slots=True)
 class CodeLine:
@@ -40,10 +52,27 @@ class CodeLine:
     # Candidate offsets for frames on this line, where they differ from
     # Start.candidates (a two-region algorithm has two pairs of them).
     candidates: tuple[tuple[int, int], ...] = ()
+    # Operations one execution of the line performs ({"int_add": 2,
+    # "compare": 1}, names from OP_NAMES). Every frame on the line is one
+    # execution; Note records are commentary and execute nothing. Work of
+    # a loop header that yields no frame of its own is counted on the
+    # line of the loop body that does.
+    ops: Mapping[str, int] = field(default_factory=dict, compare=False)
+    # Work that grows with a quantity of the frame: {quantity: ops per
+    # unit}. The quantity is PER_PIXEL (the pixels of a Span run), PER_ROW
+    # (the rows of a Table), or the name of a value of the frame or of a
+    # Start constant (the number of active edges, of vertices, ...).
+    per: Mapping[str, Mapping[str, int]] = field(default_factory=dict, compare=False)
 
     def __post_init__(self):
         if self.kind not in KINDS:
             raise ValueError(f"unknown code-line kind {self.kind!r}")
+        for counts in (self.ops, *self.per.values()):
+            for name, count in counts.items():
+                if name not in OP_NAMES:
+                    raise ValueError(f"unknown operation {name!r}; use one of {', '.join(OP_NAMES)}")
+                if not isinstance(count, int) or count < 0:
+                    raise ValueError(f"operation {name}: {count!r} is not a count")
 
 
 @dataclass(frozen=True, slots=True)
@@ -61,6 +90,13 @@ class Start:
     candidates: tuple[tuple[int, int], ...] = ()
     # Name of the value whose sign or size decides the branch, if any.
     decision: str | None = None
+    # Name of the value holding the packed 0xRRGGBB colour for the colour
+    # buffer, where that is not pixel_value itself: an antialiasing run names
+    # its coverage (0..1) as pixel_value and a blended colour here.
+    color_value: str | None = None
+    # Name of the value a PLOT frame writes into the per-pixel depth buffer
+    # (Raster.depth), for runs that keep one (the z-buffer).
+    depth_value: str | None = None
 
 
 @dataclass(frozen=True, slots=True)

@@ -296,6 +296,7 @@ class Trace:
         """Step-by-step replay from step 0, one pixel at a time (for checks)."""
         raster = self._empty_raster()
         column = self._value_column()
+        depth_column = self._depth_column()
         for k in range(self._index(i) + 1):
             step = self.step(k)
             if isinstance(step.record, Span):
@@ -304,7 +305,8 @@ class Trace:
                         raster.write(x, step.record.y, step.record.value)
             elif step.writes:
                 value = None if column is None else self.values[k, column]
-                raster.write(*step.pixel, value)
+                depth = None if depth_column is None else self.values[k, depth_column]
+                raster.write(*step.pixel, value, depth)
         return raster
 
     # ---------------------------------------------------------- internals
@@ -315,11 +317,17 @@ class Trace:
         return i % n
 
     def _value_column(self):
-        name = self.start.pixel_value
+        """The column of packed colours for the colour buffer, if the run writes any."""
+        name = self.start.color_value or self.start.pixel_value
+        return None if name is None else self.value_names.index(name)
+
+    def _depth_column(self):
+        name = self.start.depth_value
         return None if name is None else self.value_names.index(name)
 
     def _empty_raster(self) -> Raster:
-        return Raster(self.width, self.height, self.start.pixel_value is not None)
+        with_colors = (self.start.color_value or self.start.pixel_value) is not None
+        return Raster(self.width, self.height, with_colors, self.start.depth_value is not None)
 
     def _apply(self, raster: Raster, lo: int, hi: int) -> None:
         """Apply steps lo..hi-1 to the raster, vectorised."""
@@ -327,6 +335,8 @@ class Trace:
             return
         column = self._value_column()
         values = None if column is None else self.values[lo:hi, column]
+        depth_column = self._depth_column()
+        depths = None if depth_column is None else self.values[lo:hi, depth_column]
         flat = self._flat_pixels()[lo:hi]
         orders, pixels, span_values = self._span_pixels(lo, hi) if self._spans else ((),) * 3
         if len(orders):
@@ -338,7 +348,9 @@ class Trace:
             flat = np.concatenate([flat, np.where(inside, y * self.width + x, -1)])[order]
             if values is not None:
                 values = np.concatenate([values, span_values])[order]
-        raster.write_many(flat, values)
+            if depths is not None:  # spans carry no depth
+                depths = np.concatenate([depths, np.full(len(orders), math.nan)])[order]
+        raster.write_many(flat, values, depths)
 
     def _flat_pixels(self) -> np.ndarray:
         """Per step, y * W + x of the pixel it writes, or -1 (no write, or clipped)."""

@@ -87,7 +87,7 @@ from .interpolate import (ATTRIBUTE_OPTIONS, COLORS as VERTEX_COLORS, PERSPECTIV
                           plane_coefficients, unpack, per_vertex)
 from . import registry as registry_module
 from .registry import AlgorithmSpec, InputError, Inputs, Option, register
-from .steps import CALC, NO_PIXEL, PLOT, VISIT, CodeLine, Note, Start, Table, Vars
+from .steps import CALC, NO_PIXEL, PER_ROW, PLOT, VISIT, CodeLine, Note, Start, Table, Vars
 
 NAN = math.nan
 RULES = ("top-left", "inclusive", "strict")
@@ -298,9 +298,76 @@ class Code:
         self.lines: list[CodeLine] = []
         self.at: dict[str, int] = {}
 
-    def add(self, key: str, text: str, kind: str = CALC, branch: str = "") -> None:
+    def add(self, key: str, text: str, kind: str = CALC, branch: str = "", ops=None,
+            per=None) -> None:
         self.at[key] = len(self.lines)
-        self.lines.append(CodeLine(text, kind, branch))
+        self.lines.append(CodeLine(text, kind, branch, ops=_ops(ops or {}),
+                                   per={k: _ops(v) for k, v in (per or {}).items()}))
+
+
+# ------------------------------------------------- operation counts
+# The operations each line performs (CodeLine.ops), for the report's
+# counts. Edge values are integers in fixed precision and floats otherwise,
+# so their additions count as int_add or float_add by the precision. Work
+# of a loop header or an update that yields no frame of its own (the
+# column loop, e += a after a pixel) is counted with the frame of the
+# pixel it belongs to; per-row work without a frame (the row loop, the
+# pixel walks' row steps) is not counted. The three sign tests of a
+# pixel are counted in full, as hardware does them side by side.
+def _ops(counts: dict) -> dict:
+    merged = {}
+    for name, count in counts.items():
+        if count:
+            merged[name] = merged.get(name, 0) + count
+    return merged
+
+
+def _sum(*parts) -> dict:
+    total = {}
+    for part in parts:
+        for name, count in part.items():
+            total[name] = total.get(name, 0) + count
+    return _ops(total)
+
+
+def _add(options) -> str:
+    return "int_add" if options["precision"] == "fixed" else "float_add"
+
+
+def _evaluate(options) -> dict:
+    """e_k = a_k x + b_k y + c_k for three edges, at a centre."""
+    centre = {} if options["precision"] == "fixed" else {"float_add": 2}
+    return _sum({"mul": 6, _add(options): 6}, centre)
+
+
+def _step(options) -> dict:
+    """e_k += a_k (or b_k) for three edges."""
+    return {_add(options): 3}
+
+
+TEST_OPS = {"compare": 3, "pixels_tested": 1}
+LOOP_OPS = {"int_add": 1, "compare": 1}
+
+
+def _shade(options, weighted: bool = False) -> dict:
+    """What a covered pixel adds for its vertex attributes (colour, z, s, w).
+
+    ``weighted``: the traversal has the weights alpha, beta, gamma already.
+    """
+    colors, z, s, w = (options.get(name) for name in ("colors", "z", "s", "w"))
+    if not (colors or z or s or w):
+        return {}
+    blend = {"mul": 3, "float_add": 2}  # alpha q0 + beta q1 + gamma q2
+    parts = [] if weighted else [{"mul": 3}]  # alpha, beta, gamma = e_k * (1 / 2A)
+    if w:  # perspective weights: e_k / w_k, their sum, a division, three products
+        parts += [{"mul": 6, "float_add": 2, "div": 1}, blend]
+    if colors:
+        parts += [blend, blend, blend, {"round": 3}]
+    if z:
+        parts.append(blend)
+    if s:
+        parts += [blend] * (2 if w else 1)
+    return _sum(*parts)
 
 
 INSIDE_TEXT = {
@@ -314,8 +381,11 @@ INSIDE_TEXT = {
 def header(code: Code, options, winding: str = "swap") -> None:
     scale = 1 << options["subpixel_bits"]
     code.add("triangle", "for each triangle P0 P1 P2, in input order:")
+    # Six snaps, 2A, and the tests of lines "degenerate" and "winding"
+    # (which have frames only as notes).
     code.add("snap", f"    snap the vertices to multiples of 1/{scale} px;  "
-                     "2A = (P1 - P0) x (P2 - P0)")
+                     "2A = (P1 - P0) x (P2 - P0)",
+             ops={"mul": 8, "round": 6, "int_add": 5, "compare": 2})
     code.add("degenerate", "    if 2A == 0: skip the triangle (no area, so no pixels)")
     if options["cull"]:
         code.add("winding", "    if 2A < 0: skip the triangle (clockwise: a back face, culled)")
@@ -325,7 +395,8 @@ def header(code: Code, options, winding: str = "swap") -> None:
     else:
         code.add("winding", "    if 2A < 0: swap P1 and P2   (clockwise becomes counter-clockwise)")
     code.add("edges", "    edge k joins the other two vertices, Pi -> Pj:  a = yi - yj,  "
-                      "b = xj - xi,  c = xi*yj - yi*xj;  e_k(x, y) = a x + b y + c")
+                      "b = xj - xi,  c = xi*yj - yi*xj;  e_k(x, y) = a x + b y + c",
+             per={PER_ROW: {"mul": 2, _add(options): 3}})
     code.add("inside", "    " + INSIDE_TEXT[options["fill_rule"]])
 
 
@@ -595,9 +666,10 @@ def box_code(points, options, whole: bool):
         code.add("rows", "    for y = ymin .. ymax:   (rows of the bounding box: centres "
                          "between the lowest and highest vertex)")
         code.add("cols", "        for x = xmin .. xmax:")
+    pixel = _sum(_evaluate(options), TEST_OPS, LOOP_OPS)
     code.add("test", "            e_k = e_k(x + 1/2, y + 1/2);  "
-                     "if not (inside(e0) and inside(e1) and inside(e2)): skip", VISIT)
-    code.add("plot", "            else: " + plot_text(options), PLOT)
+                     "if not (inside(e0) and inside(e1) and inside(e2)): skip", VISIT, ops=pixel)
+    code.add("plot", "            else: " + plot_text(options), PLOT, ops=_sum(pixel, _shade(options)))
     footer(code)
     return code
 
@@ -647,14 +719,19 @@ def incremental_code(points, options):
 def _incremental_code(options):
     code = Code()
     header(code, options)
-    code.add("first", "    e_row_k = e_k(xmin + 1/2, ymin + 1/2)   (the only full evaluation)")
+    code.add("first", "    e_row_k = e_k(xmin + 1/2, ymin + 1/2)   (the only full evaluation)",
+             ops=_evaluate(options))
     code.add("rows", "    for y = ymin .. ymax:")
     code.add("copy", "        e_k = e_row_k")
     code.add("cols", "        for x = xmin .. xmax:")
-    code.add("test", "            if not (inside(e0) and inside(e1) and inside(e2)): skip", VISIT)
-    code.add("plot", "            else: " + plot_text(options), PLOT)
+    # e_k += a_k (line step_x) follows every pixel's frame: counted with it.
+    pixel = _sum(TEST_OPS, LOOP_OPS, _step(options))
+    code.add("test", "            if not (inside(e0) and inside(e1) and inside(e2)): skip", VISIT,
+             ops=pixel)
+    code.add("plot", "            else: " + plot_text(options), PLOT, ops=_sum(pixel, _shade(options)))
     code.add("step_x", "            e_k += a_k   (one pixel right: e(x + 1, y) = e(x, y) + a)")
-    code.add("step_y", "        e_row_k += b_k   (one row up: e(x, y + 1) = e(x, y) + b)")
+    code.add("step_y", "        e_row_k += b_k   (one row up: e(x, y + 1) = e(x, y) + b)",
+             ops=_sum(_step(options), LOOP_OPS))
     footer(code)
     return code
 
@@ -695,14 +772,20 @@ def _backtrack_code(options):
     header(code, options)
     code.add("sides", "    outsideLeft = not inside(e_k) for an edge with a_k > 0;  outsideRight: "
                       "for one with a_k < 0   (the grid's edges count as outside)")
-    code.add("start", "    x, y = the pixel under the top vertex")
+    code.add("start", "    x, y = the pixel under the top vertex", ops=_evaluate(options))
     code.add("rows", "    while y >= ymin:")
-    code.add("back", "        while not outsideLeft(x, y): x -= 1   (backtrack, e_k -= a_k)", VISIT)
+    # A side test looks at up to two edges; each visit also steps x and the
+    # edge values, and tests the grid's edge.
+    visit = _sum({"compare": 3, "pixels_tested": 1}, LOOP_OPS, _step(options))
+    code.add("back", "        while not outsideLeft(x, y): x -= 1   (backtrack, e_k -= a_k)", VISIT,
+             ops=visit)
     code.add("right", "        x += 1;  while not outsideRight(x, y):   (e_k += a_k)")
-    code.add("test", "            if not (inside(e0) and inside(e1) and inside(e2)): skip", VISIT)
-    code.add("plot", "            else: " + plot_text(options), PLOT)
+    pixel = _sum(visit, {"compare": 3})
+    code.add("test", "            if not (inside(e0) and inside(e1) and inside(e2)): skip", VISIT,
+             ops=pixel)
+    code.add("plot", "            else: " + plot_text(options), PLOT, ops=_sum(pixel, _shade(options)))
     code.add("stop", "        outside to the right: y -= 1   (e_k -= b_k; the next row starts "
-                     "under this pixel)", VISIT)
+                     "under this pixel)", VISIT, ops=visit)
     footer(code)
     return code
 
@@ -763,14 +846,18 @@ def _pineda_code(options):
     header(code, options)
     code.add("sides", "    outside on the left: not inside(e_k) for an edge with a_k > 0; "
                       "on the right: for one with a_k < 0   (the grid's edges count as outside)")
-    code.add("start", "    x, y = the pixel under the top vertex;  dir = left")
+    code.add("start", "    x, y = the pixel under the top vertex;  dir = left",
+             ops=_evaluate(options))
     code.add("rows", "    for each row from the top down   (y -= 1: e_k -= b_k)")
+    # Every visit tests the pixel, the side it walks towards (up to two
+    # edges) and the grid's edge, then steps x and the edge values.
+    visit = _sum(TEST_OPS, {"compare": 2}, LOOP_OPS, _step(options))
     code.add("ahead", "        from x, walk on in dir until outside on that side   "
-                      "(e_k += dir * a_k)", VISIT)
+                      "(e_k += dir * a_k)", VISIT, ops=visit)
     code.add("turn", "        from the pixel beside x, walk against dir until outside on that "
-                     "side", VISIT)
+                     "side", VISIT, ops=visit)
     code.add("plot", "            a visited pixel with inside(e0), inside(e1), inside(e2): "
-             + plot_text(options), PLOT)
+             + plot_text(options), PLOT, ops=_sum(visit, _shade(options)))
     code.add("flip", "        dir = -dir; the next row starts under the last pixel visited   "
                      "(zig-zag: no pixel is visited twice)")
     footer(code)
@@ -841,13 +928,23 @@ def _linewise_code(options):
     code = Code()
     header(code, options)
     code.add("sort", "    sort the vertices by y: bottom B, middle M, top T  "
-                     "(B -> T is the long edge)")
+                     "(B -> T is the long edge)", ops={"compare": 3, "mul": 2, "int_add": 5})
     code.add("rows", "    for y = each row whose centre yc = y + 1/2 lies in [B.y, T.y]:")
+    # Per row: x on two edges, x = xp + (xq - xp)(yc - yp) / (yq - yp), the
+    # choice of the short edge, the horizontal-edge tests, and the first
+    # and last columns (exact: a floor division each; float: a rounding).
+    if options["precision"] == "fixed":
+        row = {"int_add": 8, "mul": 4, "div": 2, "compare": 3}
+    else:
+        row = {"float_add": 8, "mul": 2, "div": 2, "round": 2, "compare": 3}
     code.add("span", "        x_long = x on B -> T at yc;  x_short = x on B -> M (below M) or "
                      "M -> T;  x_left, x_right = the two in order;  "
-                     + ROW_TEXT[options["fill_rule"]])
+                     + ROW_TEXT[options["fill_rule"]], ops=_sum(row, LOOP_OPS))
     code.add("cols", "        for x with " + BOUNDS_TEXT[options["fill_rule"]] + ":")
-    code.add("plot", "            " + plot_text(options), PLOT)
+    # A pixel of the span is decided by the bounds alone: no test of its
+    # own (the run's counters still call it tested, as it is visited).
+    code.add("plot", "            " + plot_text(options), PLOT,
+             ops=_sum(LOOP_OPS, {"pixels_tested": 1}, _shade(options)))
     footer(code)
     return code
 
@@ -959,10 +1056,17 @@ def _halfplane_code(options):
     header(code, options, winding="keep")
     code.add("rows", "    for y = ymin .. ymax:")
     code.add("cols", "        for x = xmin .. xmax:")
+    # Three side products (V - U) x (P - U): five additions and two
+    # products each (exactly the expanded a x + b y + c in fixed precision).
+    if options["precision"] == "fixed":
+        sides = _evaluate(options)
+    else:
+        sides = {"float_add": 17, "mul": 6}
+    pixel = _sum(sides, TEST_OPS, LOOP_OPS)
     code.add("test", "            P = (x + 1/2, y + 1/2);  side(P, U, V) = (V - U) x (P - U);  "
                      "if not (P on the winding's side of A->B, B->C, C->A, or on a kept edge): skip",
-             VISIT)
-    code.add("plot", "            else: " + plot_text(options), PLOT)
+             VISIT, ops=pixel)
+    code.add("plot", "            else: " + plot_text(options), PLOT, ops=_sum(pixel, _shade(options)))
     footer(code)
     return code
 
@@ -1008,9 +1112,13 @@ def _barycentric_code(options):
     code.add("cols", "        for x = xmin .. xmax:")
     code.add("weights", "            alpha = e0 / 2A;  beta = e1 / 2A;  gamma = e2 / 2A   "
                         "(at the centre; they sum to 1)")
+    # The weights line has no frame of its own: the edge values and the
+    # three divisions are counted with the pixel's test.
+    pixel = _sum(_evaluate(options), {"div": 3}, TEST_OPS, LOOP_OPS)
     code.add("test", "            if not (alpha, beta, gamma >= 0, a zero one kept only by the "
-                     "fill rule on its edge): skip   (each is then <= 1 too)", VISIT)
-    code.add("plot", "            else: " + plot_text(options), PLOT)
+                     "fill rule on its edge): skip   (each is then <= 1 too)", VISIT, ops=pixel)
+    code.add("plot", "            else: " + plot_text(options), PLOT,
+             ops=_sum(pixel, _shade(options, weighted=True)))
     footer(code)
     return code
 
@@ -1350,16 +1458,25 @@ def make_kernel(name: str, generator, code, top_down=False, box=None):
 def _plane_code(options):
     code = Code()
     header(code, options)
+    # Operation counts per attribute q (colour channels, z, s). The row
+    # step (step_y) yields no frame and is not counted; the column step
+    # (step_x) follows every pixel's frame and is counted with it.
+    n = 3 * bool(options.get("colors")) + bool(options.get("z")) + bool(options.get("s"))
     code.add("setup", "    det = (x1-x0)(y2-y0) - (x2-x0)(y1-y0);  for each attribute q:  "
                       "c_x = ((q1-q0)(y2-y0) - (q2-q0)(y1-y0)) / det;  "
-                      "c_y = ((q2-q0)(x1-x0) - (q1-q0)(x2-x0)) / det   (Cramer's rule)")
+                      "c_y = ((q2-q0)(x1-x0) - (q1-q0)(x2-x0)) / det   (Cramer's rule)",
+             ops={"mul": 2 + 4 * n, "float_add": 5 + 6 * n, "div": 2 * n})
     code.add("first", "    q_row = q0 + c_x (xmin + 1/2 - x0) + c_y (ymin + 1/2 - y0);  "
-                      "e_row_k = e_k(xmin + 1/2, ymin + 1/2)")
+                      "e_row_k = e_k(xmin + 1/2, ymin + 1/2)",
+             ops=_sum(_evaluate(options), {"mul": 2 * n, "float_add": 4 * n}))
     code.add("rows", "    for y = ymin .. ymax:")
     code.add("copy", "        q = q_row;  e_k = e_row_k")
     code.add("cols", "        for x = xmin .. xmax:")
-    code.add("test", "            if not (inside(e0) and inside(e1) and inside(e2)): skip", VISIT)
-    code.add("plot", "            else: output(x, y, q)", PLOT)
+    pixel = _sum(TEST_OPS, LOOP_OPS, _step(options), {"float_add": n})
+    code.add("test", "            if not (inside(e0) and inside(e1) and inside(e2)): skip", VISIT,
+             ops=pixel)
+    code.add("plot", "            else: output(x, y, q)", PLOT,
+             ops=_sum(pixel, {"round": 3} if options.get("colors") else {}))
     code.add("step_x", "            q += c_x;  e_k += a_k")
     code.add("step_y", "        q_row += c_y;  e_row_k += b_k")
     footer(code)
@@ -1470,17 +1587,26 @@ PERSPECTIVE_COLUMNS = BASE + ("alpha", "beta", "gamma", "1/w", "s/w", "s_affine"
 def _perspective_code(options):
     code = Code()
     header(code, options)
-    code.add("setup", "    setup: a_k, b_k, c_k of the edges;  1 / 2A;  1 / w_k for each vertex")
+    code.add("setup", "    setup: a_k, b_k, c_k of the edges;  1 / 2A;  1 / w_k for each vertex",
+             ops={"div": 4})
     code.add("rows", "    for y = ymin .. ymax:")
     code.add("cols", "        for x = xmin .. xmax:")
+    pixel = _sum(_evaluate(options), TEST_OPS, LOOP_OPS)
+    # A covered pixel: weights (3 products by 1/2A), s_affine, f_k = e_k / w_k
+    # (3 products by 1/w_k), their sum and one division, the corrected
+    # weights (3 products) and s (a blend); z and a colour where given.
+    covered = _sum(pixel, {"mul": 15, "float_add": 6, "div": 1},
+                   {"mul": 3, "float_add": 2} if options.get("z") else {},
+                   {"mul": 9, "float_add": 6, "round": 3} if options.get("colors") else {})
     code.add("test", "            e_k at the centre;  if not (inside(e0), inside(e1), inside(e2)): "
-                     "skip", VISIT)
+                     "skip", VISIT, ops=pixel)
     code.add("plot", "            alpha, beta, gamma = e_k / 2A;  s_affine = alpha s0 + beta s1 + "
                      "gamma s2;  f_k = e_k / w_k;  alpha_p = f0 / (f0 + f1 + f2), ...;  "
                      "s = alpha_p s0 + beta_p s1 + gamma_p s2 = (s/w) / (1/w);  setPixel(x, y"
              + (", colour by the perspective-correct weights)" if options.get("colors")
                 and options.get("perspective", True) else
-                ", colour by alpha, beta, gamma)" if options.get("colors") else ")"), PLOT)
+                ", colour by alpha, beta, gamma)" if options.get("colors") else ")"), PLOT,
+             ops=covered)
     footer(code)
     return code
 

@@ -266,6 +266,9 @@ def _finite(value) -> bool:
         return False
 
 
+# A step number or a speed beyond this is no real setting (and would not fit
+# the integers the player and exporter use).
+MAX_VIEW_NUMBER = 10 ** 12
 _VIEW_FIELDS = {"step": int, "speed": (int, float), "show_grid": bool, "compare": bool}
 
 
@@ -280,8 +283,9 @@ def _view(view) -> dict:
         if isinstance(value, bool) != (kind is bool) or not isinstance(value, kind):
             raise SceneError(f"view.{name}: wrong type {type(value).__name__}")
         if isinstance(value, (int, float)) and not isinstance(value, bool) and (
-                not _finite(value) or value < 0):
-            raise SceneError(f"view.{name}: expected a finite number >= 0, got {show(value)}")
+                not _finite(value) or not 0 <= value <= MAX_VIEW_NUMBER):
+            raise SceneError(f"view.{name}: expected a number 0 .. {MAX_VIEW_NUMBER:,}, "
+                             f"got {show(value)}")
         checked[name] = value
     return checked
 
