@@ -1,6 +1,7 @@
 """What the shipped scenes' descriptions claim is true."""
 import numpy as np
 
+from algorithms import registry
 from app import scene as scenes
 from app.scene import RESOURCES
 
@@ -47,3 +48,51 @@ def test_reversed_scene_differs_until_symmetric():
         return set(map(tuple, trace.written_pixels().tolist()))
     assert drawn(reversed_scene.points, False) != drawn(forward, False)
     assert drawn(reversed_scene.points, True) == drawn(forward, True)
+
+
+def written(name, **options):
+    scene = load(name)
+    return [tuple(p) for p in pixels(scene, **options).tolist()]
+
+
+def test_radius_1_is_four_pixels_and_radius_2_has_no_repeats():
+    assert sorted(written("circle-radius-1")) == [(4, 5), (5, 4), (5, 6), (6, 5)]
+    ring = written("circle-radius-2")
+    assert len(ring) == len(set(ring)) == 12
+
+
+def test_sqrt4_scene_breaks_its_outline():
+    ring = set(written("circle-sqrt4-gaps"))
+    # A pixel of a closed 8-connected outline has at least two outline neighbours.
+    lonely = [p for p in ring
+              if sum((p[0] + dx, p[1] + dy) in ring
+                     for dx in (-1, 0, 1) for dy in (-1, 0, 1) if dx or dy) < 2]
+    assert lonely
+
+
+def test_star_centre_is_empty_even_odd_and_filled_non_zero():
+    assert (16, 12) not in set(written("polygon-star-evenodd"))
+    assert (16, 12) in set(written("polygon-star-nonzero"))
+
+
+def test_horizontal_edge_scene_keeps_bottom_centres_only():
+    filled = set(written("polygon-horizontal-edges"))
+    assert (5, 2) in filled and (5, 18) not in filled  # bottom edge y = 2.5 kept, top 18.5 not
+    assert (18, 8) in filled and (18, 7) not in filled  # the notch's edge y = 8.5 is a bottom edge
+
+
+def test_fan_covers_each_pixel_once_and_sliver_fills_little():
+    fan = written("triangle-fan-32")
+    assert len(fan) == len(set(fan)) > 300
+    assert len(written("triangle-sliver")) <= 3
+
+
+def test_painter_scenes_disagree_with_the_z_buffer():
+    for name in ("painter-intersecting", "painter-cyclic"):
+        scene = load(name)
+        grid = (scene.width, scene.height)
+        painter = scene.spec.record(scene.points, scene.options, grid=grid)
+        options = {k: v for k, v in scene.options.items() if k in ("z", "colors", "fill_rule")}
+        depth = registry.get("zbuffer").record(scene.points, options, grid=grid)
+        differ = painter.raster_at(-1).colors != depth.raster_at(-1).colors
+        assert differ.any(), name
