@@ -214,10 +214,19 @@ class Inputs:
                 raise InputError(f"{label}: {_brief(value)} is not a finite number")
             if self.integer and not float(value).is_integer():
                 raise InputError(f"{label}: {value} is not a whole pixel coordinate")
-            if self.integer and abs(value) > MAX_INTEGER_COORDINATE:
-                # Frames keep pixel coordinates as 32-bit integers.
-                raise InputError(f"{label}: {_brief(value)} is beyond +-{MAX_INTEGER_COORDINATE:,} px")
         return tuple(int(v) if self.integer else float(v) for v in point)
+
+    def check_range(self, points) -> None:
+        """Whole-number points must lie within +-MAX_INTEGER_COORDINATE: frames keep
+        pixel coordinates as 32-bit integers. (Checked when a run starts, so the
+        command line's own grid check speaks first.)"""
+        if not self.integer:
+            return
+        for n, (x, y) in enumerate(self.flat(points)):
+            for value in (x, y):
+                if abs(value) > MAX_INTEGER_COORDINATE:
+                    raise InputError(f"point {n + 1}: {_brief(value)} is beyond "
+                                     f"+-{MAX_INTEGER_COORDINATE:,} px")
 
     def text(self) -> str:
         """How many points, in words: "2 points", "3k points", ..."""
@@ -272,12 +281,15 @@ class AlgorithmSpec:
     def frames(self, points, options: dict | None = None, grid=(32, 24)):
         """Check the inputs and start the generator."""
         options = self.resolve(options)
-        return self._start(self.inputs.check(points), options, grid)
+        points = self.inputs.check(points)
+        self.inputs.check_range(points)
+        return self._start(points, options, grid)
 
     def record(self, points, options: dict | None = None, grid=(32, 24),
                step_cap: int = DEFAULT_STEP_CAP) -> Trace:
         options = self.resolve(options)
         points = self.inputs.check(points)
+        self.inputs.check_range(points)
         frames = self._start(points, options, grid)
         return Trace.record(frames, self.code(points, options), grid[0], grid[1], step_cap)
 

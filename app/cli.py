@@ -55,6 +55,7 @@ def build_parser() -> Parser:
     output.add_argument("--json", action="store_true", help="print one JSON object")
     output.add_argument("--ascii", action="store_true", help="print the grid as text")
     add_export_command(commands)
+    add_report_command(commands)
     return parser
 
 
@@ -382,6 +383,39 @@ class _ProgressBar:
             self.shown = False
 
 
+# ------------------------------------------------------------------- report
+def add_report_command(commands) -> None:
+    """`rasterlab report [--quick] [--out DIR]` (see app/report.py)."""
+    report = commands.add_parser(
+        "report", help="measure speed against error and write a report",
+        description="Measure every algorithm family (operation counts, errors against the "
+                    "exact oracles, times) and write report.md, measurements.csv/.json and "
+                    "one PNG of cost against error per family into DIR.")
+    report.add_argument("--quick", action="store_true",
+                        help="fewer and smaller cases: under a minute")
+    report.add_argument("--out", default="rasterlab-report", metavar="DIR",
+                        help="the folder to write into, made if needed (default %(default)s)")
+
+
+def command_report(args) -> int:
+    from app import report
+
+    bar = report.ProgressBar(sys.stderr)
+    try:
+        result = report.write_report(args.out, quick=args.quick, progress=bar)
+    except report.ReportError as error:
+        raise InputError(str(error)) from None
+    except KeyboardInterrupt:
+        bar.clear()
+        print("rasterlab: report interrupted", file=sys.stderr)
+        return 130
+    finally:
+        bar.clear()
+    print(f"{result['folder']}: {', '.join(result['files'])} ({result['rows']} measurements, "
+          f"{result['seconds']:.0f} s)")
+    return 0
+
+
 # --------------------------------------------------------------------- main
 def _shield_negative_points(argv: list[str]) -> list[str]:
     # argparse takes "-3,4" for an option flag; a leading space stops that
@@ -401,7 +435,7 @@ def main(argv: list[str] | None = None) -> int:
             from app.window import launch
             return launch()
         return {"list": command_list, "run": command_run,
-                "export": command_export}[args.command](args)
+                "export": command_export, "report": command_report}[args.command](args)
     except (CommandError, InputError) as error:
         print(f"rasterlab: {one_line(str(error))}", file=sys.stderr)
         return 2

@@ -1,0 +1,542 @@
+"""Numerical stability: every registered algorithm over a catalogue of hard cases.
+
+The catalogue: the shipped scenes (resources/scenes/*.json, read here as
+plain JSON) and families of hard inputs chosen by what an algorithm takes
+(segments, centres, polygons, outlines, triangles): zero-length and
+axis-aligned segments, exact ties, huge and tiny coordinates, radius 0 and
+1, degenerate ellipses, collinear and repeated vertices, slivers and
+near-degenerate triangles, vertices exactly on pixel centres and on scan
+lines, shared edges, w near 0, every precision and fill rule.
+
+Every run must either be refused with an InputError whose message is one
+clear line, or finish and give:
+
+* no infinite value in any frame, and no value that is NaN on one frame of
+  a code line and a number on another frame of the same line (NaN marks a
+  value a line does not set, so it must be NaN there always);
+* final variables that are finite numbers;
+* the same pixels from the fast kernel as from the generator, where the
+  family promises it;
+* the documented result where there is one: the exact oracles (exact.py,
+  exact_circles.py, exact_polygons.py, exact_triangles.py, a breadth-first
+  seed fill written here), or the documented bound (a nearest-pixel line
+  lies within 1/2 px of the ideal line; float precisions are exact below
+  their documented coordinate sizes; a perspective-correct value lies
+  between its vertex values).
+"""
+from __future__ import annotations
+
+import functools
+import json
+import math
+from collections import Counter, deque
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from algorithms import exact, exact_circles, exact_polygons, exact_triangles, registry
+from algorithms.errors import InputError
+from algorithms.fill import NEIGHBOURS, outline_pixels
+
+ROOT = Path(__file__).resolve().parents[2]
+GRID = (40, 32)
+
+
+@dataclass(frozen=True)
+class Case:
+    name: str
+    algorithm: str
+    points: object
+    options: dict = field(default_factory=dict)
+    grid: tuple = GRID
+    # True: must run; False: must be refused; None: either, as long as it is clean.
+    valid: bool | None = True
+
+    def __str__(self):
+        return f"{self.algorithm}:{self.name}"
+
+
+# ================================================================ catalogue
+def scene_cases() -> list[Case]:
+    """The shipped scenes, parsed from their JSON without the application."""
+    cases = []
+    for path in sorted((ROOT / "resources" / "scenes").glob("*.json")):
+        data = json.loads(path.read_text(encoding="utf-8"))
+        spec = registry.get(data["algorithm"])
+        groups = [[tuple(p) for p in primitive["points"]] for primitive in data["primitives"]]
+        points = groups if spec.inputs.contours else [p for group in groups for p in group]
+        grid = (data["grid"]["width"], data["grid"]["height"])
+        cases.append(Case(f"scene {path.stem}", spec.name, points, data.get("options", {}), grid))
+    return cases
+
+
+SEGMENTS = {
+    "point": ((5, 5), (5, 5)),
+    "point at origin": ((0, 0), (0, 0)),
+    "point negative": ((-3, -7), (-3, -7)),
+    "horizontal": ((2, 3), (30, 3)),
+    "horizontal back": ((30, 3), (2, 3)),
+    "vertical": ((4, 1), (4, 25)),
+    "vertical back": ((4, 25), (4, 1)),
+    "diagonal": ((1, 1), (25, 25)),
+    "antidiagonal": ((25, 1), (1, 25)),
+    "ties slope 1/2": ((0, 0), (28, 14)),
+    "ties slope -1/2 back": ((28, 0), (0, 14)),
+    "ties steep": ((3, 0), (9, 24)),
+    "one step": ((7, 7), (8, 8)),
+    "knight": ((7, 7), (9, 8)),
+    "negative quadrant": ((-20, -5), (-2, -17)),
+    "long shallow": ((0, 0), (4000, 3)),
+    "huge coordinates": ((1_000_000_000, -1_000_000_000), (1_000_000_021, -999_999_993)),
+    "beyond 32 bits": ((2 ** 40, 0), (2 ** 40 + 10, 3)),
+}
+LINE_OPTIONS = {
+    "line-bresenham": [{}, {"symmetric": True}],
+    "line-dda": [{}, {"dtype": "float32"}],
+    "line-incremental": [{}, {"rounding": "round"}],
+    "line-parametric": [{}, {"dt": "auto"}, {"dt": 0.5}, {"dt": 1.0}],
+    "line-wu": [{}],
+    "line-area": [{}],
+}
+
+
+def random_segments(count=12, seed=7):
+    rng = np.random.default_rng(seed)
+    return {f"random {k}": tuple((int(rng.integers(-40, 40)), int(rng.integers(-40, 40)))
+                                 for _ in range(2)) for k in range(count)}
+
+
+def line_cases(spec) -> list[Case]:
+    cases = []
+    for options in LINE_OPTIONS.get(spec.name, [{}]):
+        label = ",".join(f"{k}={v}" for k, v in options.items())
+        for name, segment in {**SEGMENTS, **random_segments()}.items():
+            valid = None if name in ("huge coordinates", "beyond 32 bits") else True
+            if spec.name == "line-implicit" and name == "long shallow":
+                valid = True  # 4001 x 4 box: small enough
+            cases.append(Case(f"{name} {label}".strip(), spec.name, segment, options, GRID, valid))
+    return cases
+
+
+def circle_cases(spec) -> list[Case]:
+    centres = {"centre": (12, 10), "centre at origin": (0, 0), "negative centre": (-30, -4),
+               "far centre": (1_000_000, -1_000_000)}
+    cases = []
+    if spec.name == "ellipse-midpoint":
+        sizes = [(0, 0), (0, 5), (5, 0), (1, 1), (1, 7), (7, 1), (30, 2), (2, 30), (9, 9),
+                 (100, 99), (1, 0), (0, 1)]
+        for centre_name, centre in centres.items():
+            for rx, ry in sizes:
+                cases.append(Case(f"{centre_name} rx={rx} ry={ry}", spec.name, (centre,),
+                                  {"rx": rx, "ry": ry}))
+        return cases
+    starts = [{}, {"start": "fraction"}] if spec.name == "circle-midpoint" else [{}]
+    for centre_name, centre in centres.items():
+        for r in (0, 1, 2, 3, 5, 7, 50, 4096):
+            for extra in starts:
+                cases.append(Case(f"{centre_name} r={r} {extra}", spec.name, (centre,),
+                                  {"radius": r, **extra}))
+    return cases
+
+
+POLYGONS = {
+    "triangle": [[(2.0, 2.0), (30.0, 5.0), (12.0, 25.0)]],
+    "square on centres": [[(2.5, 2.5), (20.5, 2.5), (20.5, 20.5), (2.5, 20.5)]],
+    "square on corners": [[(2.0, 2.0), (20.0, 2.0), (20.0, 20.0), (2.0, 20.0)]],
+    "vertices on scan lines": [[(3.25, 4.5), (25.75, 9.5), (14.0, 22.5)]],
+    "collinear": [[(1.0, 1.0), (10.0, 10.0), (20.0, 20.0)]],
+    "all one point": [[(5.0, 5.0), (5.0, 5.0), (5.0, 5.0)]],
+    "repeated vertices": [[(2.0, 2.0), (2.0, 2.0), (25.0, 4.0), (25.0, 4.0), (10.0, 20.0),
+                           (2.0, 2.0)]],
+    "sliver": [[(1.0, 1.0), (38.0, 30.0), (38.01, 30.004)]],
+    "thin horizontal": [[(1.0, 10.4), (35.0, 10.45), (35.0, 10.6)]],
+    "tiny": [[(1e-12, 1e-12), (3e-12, 1e-12), (1e-12, 4e-12)]],
+    "tiny far from 0": [[(10.1, 10.1), (10.1 + 1e-9, 10.1), (10.1, 10.1 + 1e-9)]],
+    "bowtie": [[(2.0, 2.0), (30.0, 25.0), (30.0, 2.0), (2.0, 25.0)]],
+    "with hole": [[(1.0, 1.0), (35.0, 1.0), (35.0, 28.0), (1.0, 28.0)],
+                  [(10.0, 10.0), (10.0, 20.0), (25.0, 20.0), (25.0, 10.0)]],
+    "concave": [[(2.0, 2.0), (30.0, 2.0), (16.0, 10.0), (30.0, 25.0), (2.0, 25.0)]],
+    "large coordinates": [[(1_000_000.25, 1_000_000.5), (1_000_030.0, 1_000_004.0),
+                           (1_000_012.0, 1_000_025.5)]],
+    "beyond the limit": [[(5e6, 5e6), (5e6 + 20, 5e6), (5e6, 5e6 + 20)]],
+    "huge": [[(1e300, 0.0), (0.0, 1e300), (-1e300, 0.0)]],
+}
+POLYGON_OPTIONS = {
+    "polygon-scanline": [{}, {"fill_rule": "nonzero"}, {"arithmetic": "float64"},
+                         {"arithmetic": "float32"}],
+    "polygon-tessellate": [{}, {"ties": "inclusive"}, {"ties": "strict"}],
+}
+
+
+def polygon_cases(spec) -> list[Case]:
+    cases = []
+    for options in POLYGON_OPTIONS.get(spec.name, [{}]):
+        label = ",".join(f"{k}={v}" for k, v in options.items())
+        for name, contours in POLYGONS.items():
+            valid = True
+            if name in ("beyond the limit", "huge"):
+                valid = False
+            elif spec.name != "polygon-scanline" and name in ("bowtie", "with hole"):
+                valid = False
+            elif spec.name == "polygon-convex" and name == "concave":
+                valid = False
+            elif spec.name == "polygon-tessellate" and name == "collinear":
+                valid = None  # three points along a line fold back on themselves
+            cases.append(Case(f"{name} {label}".strip(), spec.name, contours, options, GRID, valid))
+    return cases
+
+
+OUTLINES = {
+    "square": [[(2, 2), (20, 2), (20, 20), (2, 20)]],
+    "triangle": [[(1, 1), (30, 4), (10, 25)]],
+    "repeated vertices": [[(2, 2), (2, 2), (25, 3), (25, 3), (12, 22)]],
+    "off the grid": [[(-10, -10), (60, 5), (20, 50)]],
+    "two outlines": [[(1, 1), (15, 1), (15, 15), (1, 15)], [(20, 5), (35, 5), (28, 25)]],
+}
+FILL_OPTIONS = [{"order": order, "connectivity": c, "outline": outline}
+                for order in ("stack", "queue", "span") for c in ("4", "8")
+                for outline in ("8", "4")]
+
+
+def fill_cases(spec) -> list[Case]:
+    cases = []
+    for options in FILL_OPTIONS:
+        label = ",".join(f"{k}={v}" for k, v in options.items())
+        for name, contours in OUTLINES.items():
+            cases.append(Case(f"{name} {label}", spec.name, contours, options))
+        cases.append(Case(f"explicit seed {label}", spec.name, OUTLINES["square"],
+                          {**options, "seed": (5, 5)}))
+    cases += [
+        Case("seed on the boundary", spec.name, OUTLINES["square"], {"seed": (2, 2)}, GRID, False),
+        Case("seed off the grid", spec.name, OUTLINES["square"], {"seed": (100, 5)}, GRID, False),
+        Case("collinear outline", spec.name, [[(1, 1), (10, 10), (20, 20)]], {}, GRID, False),
+        Case("seed outside the outline", spec.name, OUTLINES["square"], {"seed": (30, 30)}),
+    ]
+    return cases
+
+
+def _tri(*coords):
+    return [(float(coords[k]), float(coords[k + 1])) for k in range(0, len(coords), 2)]
+
+
+TRIANGLES = {
+    "plain": _tri(2, 2, 30, 6, 12, 28),
+    "clockwise": _tri(2, 2, 12, 28, 30, 6),
+    "on pixel centres": _tri(2.5, 2.5, 30.5, 2.5, 2.5, 25.5),
+    "on scan lines": _tri(1.25, 3.5, 33.75, 10.5, 8.0, 27.5),
+    "collinear": _tri(1, 1, 10, 10, 20, 20),
+    "repeated vertex": _tri(4, 4, 4, 4, 20, 9),
+    "all one point": _tri(7, 7, 7, 7, 7, 7),
+    "near-degenerate": _tri(1, 1, 37, 29, 37.001, 29.0005),
+    "sliver": _tri(1, 1, 38, 30, 38.6, 29.2),
+    "tiny": _tri(1e-12, 1e-12, 3e-12, 1e-12, 1e-12, 4e-12),
+    "smaller than a snap step": _tri(10.5, 10.5, 10.501, 10.5, 10.5, 10.501),
+    "mesh, shared edges": _tri(2, 2, 20, 3, 10, 20, 20, 3, 30, 22, 10, 20, 10, 20, 30, 22, 5, 30),
+    "fan on a pixel centre": _tri(15.5, 12.5, 30, 12.5, 15.5, 28, 15.5, 12.5, 15.5, 28, 2, 12.5,
+                                  15.5, 12.5, 2, 12.5, 15.5, 1, 15.5, 12.5, 15.5, 1, 30, 12.5),
+    "outside the grid": _tri(-50, -50, -20, -45, -40, -10),
+    "straddling the grid": _tri(-20, -5, 60, 10, 15, 45),
+    "large coordinates": _tri(1e6, 1e6, 1e6 + 30, 1e6 + 4, 1e6 + 9, 1e6 + 25),
+    "huge coordinates": _tri(1e14, 1e14, -1e14, 1e14, 0, -1e14),
+    "beyond the limit": _tri(1e300, 0, 0, 1e300, -1e300, 0),
+}
+TRIANGLE_OPTIONS = [{}, {"fill_rule": "inclusive"}, {"fill_rule": "strict"},
+                    {"precision": "float64"}, {"precision": "float32"},
+                    {"subpixel_bits": 0}, {"subpixel_bits": 4}, {"cull": True},
+                    {"colors": ("#ff0000", "#00ff00", "#0000ff"), "z": (0.1, 0.5, 0.9),
+                     "s": (0.0, 1.0, 0.5), "w": (1.0, 1e-300, 2.0), "perspective": True},
+                    {"s": (0.0, 1.0, 0.5), "w": (1e-300, 1e300, 1.0)}]
+SPECIAL_TRIANGLE_OPTIONS = {
+    "triangle-plane": [{}, {"colors": ("#ff0000", "#00ff00", "#0000ff"), "z": (0.0, 1e300, -1e300)},
+                       {"precision": "float32", "s": (0.0, 1.0, 0.5)}, {"subpixel_bits": 0}],
+    "triangle-perspective": [{}, {"w": (1.0, 1e-300, 1.0)}, {"w": (1e-300, 1e300, 1.0)},
+                             {"w": (1e-6, 1.0, 1e6), "colors": ("#ff0000", "#00ff00", "#0000ff"),
+                              "perspective": False}, {"precision": "float32"},
+                             {"w": (5e-324, 1.0, 1.0)}, {"w": (0.0, 1.0, 1.0)}],
+    "zbuffer": [{}, {"z": (0.2, 0.5, 0.9)}, {"z": (1e300, -1e300, 0.0)},
+                {"depth_test": "less-equal", "clear_depth": -1e300}],
+    "painter": [{}, {"z": (0.2, 0.5, 0.9)}, {"sort": "min"}, {"sort": "max"}],
+    "aa-supersample": [{}, {"n": 1}, {"n": 8, "pattern": "jitter"},
+                       {"pattern": "rotated-grid", "filter": "gaussian"}],
+    "aa-adaptive": [{}, {"max_depth": 1}],
+}
+
+
+def triangle_cases(spec) -> list[Case]:
+    options_list = SPECIAL_TRIANGLE_OPTIONS.get(spec.name, TRIANGLE_OPTIONS)
+    cases = []
+    for options in options_list:
+        label = ",".join(f"{k}={v}" for k, v in options.items())
+        for name, points in TRIANGLES.items():
+            usable = dict(options)
+            if spec.name in ("zbuffer", "painter") and "z" not in usable:
+                usable["z"] = tuple(0.1 + 0.8 * (k % 3) / 2 for k in range(len(points)))
+            valid = None
+            if name == "beyond the limit":
+                valid = False
+            elif name in ("plain", "clockwise", "on pixel centres", "mesh, shared edges"):
+                valid = None if spec.family in ("visibility", "antialias") else True
+            if any(w in (0.0, 5e-324) for w in usable.get("w", ())):
+                valid = False
+            cases.append(Case(f"{name} {label}".strip(), spec.name, points, usable, GRID, valid))
+    return cases
+
+
+def cases_for(spec) -> list[Case]:
+    inputs = spec.inputs
+    if inputs.contours:
+        return fill_cases(spec) if spec.family == "fill" else polygon_cases(spec)
+    if inputs.count == 2 and inputs.integer:
+        return line_cases(spec)
+    if inputs.count == 1 and inputs.integer:
+        return circle_cases(spec)
+    if inputs.multiple:
+        return triangle_cases(spec)
+    return [Case("defaults", spec.name, (), {}, GRID, None)]
+
+
+def catalogue() -> list[Case]:
+    cases = scene_cases()
+    for spec in registry.all_specs():
+        if spec.name == "aa-temporal":
+            # Its inputs are a wheel's centre or a triangle, not shapes to fill.
+            cases += [Case("wheel", spec.name, [(20.0, 16.0)], {"frames": 4}),
+                      Case("triangle", spec.name, TRIANGLES["plain"], {"frames": 3}),
+                      Case("tiny triangle", spec.name, TRIANGLES["tiny"], {"frames": 3}, GRID, None),
+                      Case("degenerate", spec.name, TRIANGLES["collinear"], {"frames": 3}, GRID,
+                           None)]
+            continue
+        cases += cases_for(spec)
+    return cases
+
+
+CASES = catalogue()
+
+
+# ================================================================ checks
+def check_refusal(case: Case, error: InputError) -> None:
+    message = str(error)
+    assert message.strip(), f"{case}: an empty message"
+    assert "\n" not in message.strip(), f"{case}: a message of several lines: {message!r}"
+    assert len(message) <= 300, f"{case}: a message of {len(message)} characters"
+    assert "Traceback" not in message
+
+
+def check_values(case: Case, trace) -> None:
+    values = trace.values
+    assert not np.isinf(values).any(), f"{case}: an infinite value in a frame"
+    lean = np.ones(len(trace), bool)
+    lean[list(trace.records)] = False
+    for line in np.unique(trace.line[lean]):
+        rows = values[lean & (trace.line == line)]
+        missing = np.isnan(rows)
+        mixed = missing.any(axis=0) & ~missing.all(axis=0)
+        names = [trace.value_names[k] for k in np.flatnonzero(mixed)]
+        assert not names, (f"{case}: line {line} ({trace.code[line].text.strip()[:50]}) has "
+                           f"NaN on some frames and numbers on others in {names}")
+    for name, value in trace.final_variables().items():
+        if isinstance(value, (int, float)) and not isinstance(value, bool):
+            assert math.isfinite(value), f"{case}: final variable {name} = {value}"
+
+
+PIXEL_FAMILIES = ("lines", "circles", "polygons", "triangles")
+
+
+def check_kernel(case: Case, spec, trace) -> None:
+    if spec.kernel is None:
+        return
+    options = spec.resolve(case.options)
+    points = spec.inputs.check(case.points)
+    try:
+        pixels = (spec.kernel(points, options, case.grid) if spec.uses_grid
+                  else spec.kernel(points, options))
+    except InputError as error:
+        # A kernel may refuse what the generator walks (the implicit form's box).
+        check_refusal(case, error)
+        return
+    if spec.family not in PIXEL_FAMILIES:
+        return
+    kernel = Counter(map(tuple, np.asarray(pixels, np.int64).reshape(-1, 2).tolist()))
+    generator = Counter(map(tuple, trace.written_pixels().tolist()))
+    assert kernel == generator, f"{case}: kernel and generator differ"
+
+
+# ----------------------------------------------------------- oracles
+def _written(trace) -> list[tuple[int, int]]:
+    return [tuple(p) for p in trace.written_pixels().tolist()]
+
+
+NEAREST_LINES = {("line-bresenham", None), ("line-explicit", None), ("line-dda", "float64"),
+                 ("line-incremental", "round"), ("line-parametric", "auto")}
+
+
+def oracle_lines(case: Case, spec, trace) -> None:
+    p, q = case.points
+    pixels = _written(trace)
+    options = spec.resolve(case.options)
+    small = max(abs(c) for c in (*p, *q)) < 4096 and max(abs(q[0] - p[0]), abs(q[1] - p[1])) < 5000
+    if spec.name == "line-implicit":
+        assert set(pixels) == exact.implicit_pixels(p, q), f"{case}: unlike the exact implicit line"
+        return
+    if spec.family != "lines":
+        return
+    variant = {"line-dda": options.get("dtype"), "line-incremental": options.get("rounding"),
+               "line-parametric": options.get("dt")}.get(spec.name)
+    if (spec.name, variant) in NEAREST_LINES and small:
+        # The documented result: one pixel per major-axis column, the nearest
+        # to the ideal line (either one where it passes exactly midway).
+        major_x = exact.x_is_major(p, q)
+        columns = Counter(px if major_x else py for px, py in pixels)
+        assert all(n == 1 for n in columns.values()) or spec.name == "line-parametric", \
+            f"{case}: a column with two pixels"
+        for px, py in pixels:
+            a, b = (px, py) if major_x else (py, px)
+            value = exact.line_value(p, q, a)
+            allowed = {exact.nearest_minor(value, "down", 0), exact.nearest_minor(value, "up", 0)}
+            assert b in allowed, f"{case}: pixel {(px, py)} is not a nearest pixel"
+        length = max(abs(q[0] - p[0]), abs(q[1] - p[1]))
+        assert len(set(pixels)) == length + 1, f"{case}: not one pixel per column"
+    if spec.name == "line-dda" and options["dtype"] == "float32" and not small:
+        return  # float32 drifts on long or far segments: the point of the option
+    if small or spec.name != "line-dda":
+        assert pixels[0] == tuple(p) and pixels[-1] == tuple(q), f"{case}: an end pixel is missing"
+
+
+def oracle_circles(case: Case, spec, trace) -> None:
+    (xc, yc), = case.points
+    offsets = {(x - xc, y - yc) for x, y in _written(trace)}
+    options = spec.resolve(case.options)
+    if spec.name == "ellipse-midpoint":
+        rx, ry = options["rx"], options["ry"]
+        if rx == 0 or ry == 0:
+            expected = exact_circles.ellipse_segment(rx, ry)
+        elif rx == ry:
+            expected = exact_circles.midpoint_circle(rx)
+        else:
+            expected = exact_circles.four_way(offsets)  # symmetric, at least
+        assert offsets == expected, f"{case}: unlike the oracle"
+        return
+    r = options["radius"]
+    expected = {"circle-sqrt4": exact_circles.sqrt4_circle, "circle-sqrt8": exact_circles.sqrt8_circle,
+                "circle-midpoint": exact_circles.midpoint_circle}[spec.name](r)
+    assert offsets == expected, f"{case}: unlike the exact circle"
+
+
+def oracle_polygons(case: Case, spec, trace) -> None:
+    options = spec.resolve(case.options)
+    pixels = _written(trace)
+    if options.get("arithmetic", "exact") != "exact" or options.get("ties", "left-bottom") != \
+            "left-bottom":
+        return
+    rule = options.get("fill_rule", "evenodd")
+    expected = exact_polygons.covered_pixels(case.points, rule)
+    assert len(pixels) == len(set(pixels)), f"{case}: a pixel filled twice"
+    assert set(pixels) == expected, f"{case}: unlike the exact polygon"
+
+
+def oracle_fill(case: Case, spec, trace) -> None:
+    options = spec.resolve(case.options)
+    width, height = case.grid
+    boundary = set(outline_pixels(case.points, four=options["outline"] == "4"))
+    seed = trace.start.constants["seed"]
+    region, queue = {tuple(seed)}, deque([tuple(seed)])
+    while queue:
+        x, y = queue.popleft()
+        for dx, dy in NEIGHBOURS[options["connectivity"]]:
+            n = (x + dx, y + dy)
+            if 0 <= n[0] < width and 0 <= n[1] < height and n not in boundary and n not in region:
+                region.add(n)
+                queue.append(n)
+    filled = [p for p in _written(trace)]
+    inside = [p for p in filled if 0 <= p[0] < width and 0 <= p[1] < height]
+    drawn = Counter(inside)
+    assert set(drawn) == region | {b for b in boundary if 0 <= b[0] < width and 0 <= b[1] < height}
+    assert all(drawn[p] == 1 for p in region), f"{case}: a pixel filled twice"
+
+
+@functools.lru_cache(maxsize=None)
+def exact_coverage(points, bits, rule, grid, cull) -> dict:
+    """The exact oracle's counts, shared by every traversal of the same case."""
+    return exact_triangles.coverage(points, bits, rule, (0, 0, grid[0], grid[1]), cull)
+
+
+def oracle_triangles(case: Case, spec, trace) -> None:
+    options = spec.resolve(case.options)
+    bits = options["subpixel_bits"]
+    largest = max(abs(c) for point in case.points for c in point)
+    exact_run = (options["precision"] == "fixed"
+                 or (options["precision"] == "float64" and largest < 2 ** 16)
+                 or (options["precision"] == "float32" and largest < 8))
+    if exact_run and largest < 1e7:
+        expected = exact_coverage(tuple(case.points), bits, options["fill_rule"], case.grid,
+                                  options["cull"])
+        got = Counter(p for p in _written(trace))
+        assert got == Counter(expected), f"{case}: unlike the exact coverage"
+    final = trace.final_variables()
+    if options["fill_rule"] == "top-left" and options["precision"] == "fixed":
+        assert final["overlaps"] == 0 and final["cracks"] == 0, f"{case}: overlaps or cracks"
+    if spec.name == "triangle-perspective":
+        plotted = trace.writes()
+        s = [v for v in options["s"]]
+        values = trace.series("s_persp")[plotted]
+        assert np.all(values >= min(s) - 1e-9) and np.all(values <= max(s) + 1e-9), \
+            f"{case}: a perspective-correct value outside its vertex values"
+    if "alpha" in trace.value_names:
+        plotted = trace.writes()
+        total = (trace.series("alpha") + trace.series("beta") + trace.series("gamma"))[plotted]
+        assert np.allclose(total, 1.0, atol=1e-6), f"{case}: weights do not sum to 1"
+
+
+ORACLES = {"lines": oracle_lines, "circles": oracle_circles,
+           "polygons": oracle_polygons, "fill": oracle_fill, "triangles": oracle_triangles}
+
+
+# ================================================================ the test
+@pytest.mark.parametrize("case", CASES, ids=str)
+def test_hard_case(case: Case):
+    spec = registry.get(case.algorithm)
+    try:
+        trace = spec.record(case.points, case.options, case.grid)
+    except InputError as error:
+        check_refusal(case, error)
+        assert case.valid is not True, f"{case}: refused a valid input: {error}"
+        return
+    assert case.valid is not False, f"{case}: ran an input it should refuse"
+    assert not trace.truncated or len(trace) == trace.step_cap
+    check_values(case, trace)
+    check_kernel(case, spec, trace)
+    oracle = ORACLES.get(spec.family)
+    if oracle is not None:
+        oracle(case, spec, trace)
+
+
+def test_catalogue_covers_every_algorithm():
+    named = {case.algorithm for case in CASES}
+    assert named == {spec.name for spec in registry.all_specs()}
+    assert any(case.name.startswith("scene ") for case in CASES)
+
+
+# ============================================== fixes the catalogue led to
+def test_whole_number_points_beyond_32_bit_frames_are_refused():
+    spec = registry.get("line-bresenham")
+    for points, words in ((((2 ** 40, 0), (2 ** 40 + 3, 1)), "beyond"),
+                          (((10 ** 400, 0), (1, 1)), "not a finite number")):
+        with pytest.raises(InputError, match=words) as refused:
+            spec.record(points)
+        check_refusal(Case("huge", spec.name, points), refused.value)
+    # The largest accepted coordinate still records, pixels and all.
+    edge = registry.MAX_INTEGER_COORDINATE
+    trace = spec.record(((edge - 3, -edge), (edge, -edge + 2)))
+    assert trace.written_pixels()[-1].tolist() == [edge, -edge + 2]
+
+
+def test_a_parameter_plane_that_overflows_is_refused():
+    spec = registry.get("triangle-plane")
+    points = TRIANGLES["huge coordinates"]
+    with pytest.raises(InputError, match="overflows"):
+        spec.record(points, {"colors": (), "z": (0.0, 1e300, -1e300)}, GRID)
+    # The same values on a triangle of ordinary size have a plane.
+    trace = spec.record(TRIANGLES["plain"], {"colors": (), "z": (0.0, 1e300, -1e300)}, GRID)
+    assert np.isfinite(trace.series("z")[trace.writes()]).all()
