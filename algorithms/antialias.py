@@ -403,6 +403,66 @@ def _ink_blend(ink, coverage: float) -> int:
     return (channels[0] << 16) | (channels[1] << 8) | channels[2]
 
 
+# ------------------------------------------------- operation counts
+# CodeLine.ops of the antialiasing family. Inside tests are exact integer
+# arithmetic on the 1/512 px lattice, so their additions are int_add.
+# Conventions:
+# * One shape's inside test, in full as the vectorised kernel (Shape.hits)
+#   does it: a triangle evaluates three edges e = (xj - xi)(sy - yi) -
+#   (yj - yi)(sx - xi) (2 mul, 3 int_add each; the vertex differences are
+#   setup) with the sign and the tie test (2 compares each); a polygon or a
+#   thick line's rectangle takes, per edge, the band test (2 compares), the
+#   cross product and its sign (2 mul, 5 int_add, 1 compare) and the
+#   winding step (1 int_add), then the fill rule's test (1 compare).
+# * A sample that misses tests every shape. The generators look for the
+#   last shape containing a sample, from the last one back, and stop
+#   there: a hit counts that one shape's test only (exact with one shape, a
+#   lower bound with more).
+# * A sample's position x * 512 + offset, per axis: 1 mul, 1 int_add.
+# * Setup lines (snapping, weights tables) and loops that yield no frame
+#   of their own are not counted; a pixel loop's step and test (1 int_add,
+#   1 compare) and its bounding-box mask test (1 compare) go with the
+#   pixel's frame. The display colour (the ink blended over white for the
+#   colour buffer) is not counted where the pseudo-code writes a coverage.
+LOOP = {"int_add": 1, "compare": 1}
+POSITION = {"mul": 2, "int_add": 2}
+
+
+def _ops_sum(*parts, times: int = 1) -> dict:
+    total = {}
+    for part in parts:
+        for name, count in part.items():
+            total[name] = total.get(name, 0) + count * times
+    return {name: count for name, count in total.items() if count}
+
+
+def _shape_test_ops(shape: Shape) -> dict:
+    if shape.triangle:
+        return {"mul": 6, "int_add": 9, "compare": 6}
+    edges = len(shape.edges)
+    return {"mul": 2 * edges, "int_add": 6 * edges, "compare": 3 * edges + 1}
+
+
+def _test_ops(shapes: Shapes | None) -> tuple[dict, dict]:
+    """(one hit's test, one miss's test): the last shape's, and every shape's."""
+    if shapes is None or not shapes.items:
+        return {}, {}
+    every = _ops_sum(*(_shape_test_ops(s) for s in shapes.items))
+    return _shape_test_ops(shapes.items[-1]), every
+
+
+def _code_shapes(points, options) -> Shapes | None:
+    try:
+        return Shapes(points, options)
+    except (InputError, ValueError, TypeError):
+        return None
+
+
+def _sample_ops(hit: bool, test: dict, extra: dict | None = None) -> dict:
+    """One sample frame: the position, the test, the hit/miss compare, the loop."""
+    return _ops_sum({"samples": 1, "compare": 1}, POSITION, test, LOOP, extra or {})
+
+
 # ==================================================== supersampling
 def supersample_image(points, options, grid, colors: bool = True):
     """Vectorised supersampling: (coverage (H, W) float64, colour (H, W) int64 or None).
@@ -453,17 +513,30 @@ def supersample_image(points, options, grid, colors: bool = True):
 
 
 def supersample_code(points, options):
+    hit_test, miss_test = _test_ops(_code_shapes(points, options))
+    m = options.get("n", 4) ** 2
+    # Each sample adds w_s times the colour it takes (3 mul, 3 int_add); a
+    # hit also adds w_s to cover. The pixel's frame carries W = sum of w_s
+    # (m - 1 int_add), cover / W (1 div), colour / W rounded half up per
+    # channel ((2 c + W) // 2W: 2 mul, 1 int_add, 1 div), the cover > 0
+    # test, the pixel loop and its mask test; its samples' results are
+    # looked at: one pixel tested.
+    accumulate = {"mul": 3, "int_add": 3}
+    pixel = _ops_sum({"int_add": m - 1 + 3, "div": 4, "mul": 6, "compare": 1,
+                      "pixels_tested": 1}, LOOP, {"compare": 1})
     return (
         CodeLine("setup: snap the vertices to 1/256 px;  samples s of the pattern with filter "
                  "weights w_s (whole numbers);  W = sum of w_s"),
         CodeLine("for each pixel (x, y) the shapes' bounding boxes reach, row by row:"),
         CodeLine("    cover = 0;  colour = 0;  for each sample s at (x + u_s, y + v_s):"),
         CodeLine("        if s is inside a shape:  cover += w_s;  colour += w_s * colour of "
-                 "the last shape containing s", VISIT, "hit"),
-        CodeLine("        else:  colour += w_s * background", VISIT, "miss"),
+                 "the last shape containing s", VISIT, "hit",
+                 ops=_sample_ops(True, hit_test, _ops_sum(accumulate, {"int_add": 1}))),
+        CodeLine("        else:  colour += w_s * background", VISIT, "miss",
+                 ops=_sample_ops(False, miss_test, accumulate)),
         CodeLine("    coverage = cover / W;  if coverage > 0: write (x, y) with coverage and "
-                 "colour / W", PLOT),
-        CodeLine("    else: nothing covers the pixel's samples", VISIT),
+                 "colour / W", PLOT, ops=pixel),
+        CodeLine("    else: nothing covers the pixel's samples", VISIT, ops=pixel),
         CodeLine("done"),
     )
 
@@ -602,19 +675,40 @@ def explain_samples(trace, i):
 # ============================================================ adaptive
 def adaptive_code(points, options):
     depth = options.get("max_depth", 3)
+    hit_test, miss_test = _test_ops(_code_shapes(points, options))
+    # A new point: the cache lookup (1 compare), the test, the hit/miss
+    # compare, the position and the counter (1 int_add); a point already
+    # tested in the pixel yields no frame, its lookup is counted with the
+    # square's decision. Every square ends on line 5 or 6, which carries
+    # half the size (1 div), the four corner and centre coordinates (4
+    # int_add), the five lookups (5 compare), hits += hit (5 int_add) and
+    # the agree and level tests (3 compare). Line 5 adds hits / 5 (1 div);
+    # line 6 the quarters' origins (2 int_add), their levels (4 int_add)
+    # and the mean of four (4 float_add, 1 div).
+    square = {"div": 1, "int_add": 9, "compare": 8}
+    new = {"compare": 1, "int_add": 1}
+    # The pixel: float(value) (1 div), value > 0, the bookkeeping of
+    # samples spent (total, most, split: 2 int_add, 2 compare), the loop
+    # and the mask test; the pixel's samples are looked at: one pixel tested.
+    pixel = _ops_sum({"div": 1, "compare": 3, "int_add": 2, "pixels_tested": 1}, LOOP,
+                     {"compare": 1})
     return (
         CodeLine("setup: snap the vertices to 1/256 px"),
         CodeLine("for each pixel (x, y) the shapes' bounding boxes reach:  refine(the pixel "
                  "square, level 0)"),
         CodeLine("refine(square, level): test its four corners and its centre (a point "
                  "already tested in this pixel is not tested again):"),
-        CodeLine("    sample inside a shape", VISIT, "hit"),
-        CodeLine("    sample outside", VISIT, "miss"),
-        CodeLine(f"    if the five agree, or level == {depth}: value = (hits among the five) / 5"),
+        CodeLine("    sample inside a shape", VISIT, "hit",
+                 ops=_ops_sum({"samples": 1, "compare": 1}, POSITION, hit_test, new)),
+        CodeLine("    sample outside", VISIT, "miss",
+                 ops=_ops_sum({"samples": 1, "compare": 1}, POSITION, miss_test, new)),
+        CodeLine(f"    if the five agree, or level == {depth}: value = (hits among the five) / 5",
+                 ops=_ops_sum(square, {"div": 1})),
         CodeLine("    else: split the square into four;  value = mean of refine(quarter, "
-                 "level + 1)", CALC, "split"),
-        CodeLine("coverage = value;  if coverage > 0: write (x, y)", PLOT),
-        CodeLine("else: nothing to write", VISIT),
+                 "level + 1)", CALC, "split",
+                 ops=_ops_sum(square, {"int_add": 6, "float_add": 4, "div": 1})),
+        CodeLine("coverage = value;  if coverage > 0: write (x, y)", PLOT, ops=pixel),
+        CodeLine("else: nothing to write", VISIT, ops=pixel),
         CodeLine("done"),
     )
 
@@ -749,13 +843,34 @@ def filter_code(points, options):
             "seed": "K = 1/36 [1 4 1; 4 16 4; 1 4 1]",
             "gaussian": f"K = exp(-(u^2 + v^2) / 2 sigma^2), sigma = {options.get('sigma', 0.8):g},"
                         " as whole numbers, divided by their sum"}[kernel]
+    # Line 1: each covered centre is one frame of the aliased triangle
+    # rasterizer: e_k at the centre (6 mul, 6 int_add), three sign tests, one
+    # pixel tested. Counted per unit of the frame's coverage, which is 1 on
+    # every such frame, so the summary record on line 1 counts nothing;
+    # centres the triangles miss yield no frame and are not counted.
+    # Line 3: every tap of the kernel, (2r + 1)^2 of them, reads I: its
+    # position (2 int_add), the bounds tests in full (4 compares), the test
+    # of I (1 compare, one pixel tested) and the tap loop (1 int_add, 1
+    # compare); a covered tap adds its weight and counts itself (2 int_add,
+    # per value taps); then out = acc / sum (1 div). The kernel's weights
+    # and the reach mask are setup, not counted.
+    radius = 1
+    try:
+        radius = filter_kernel(kernel, options.get("sigma", 0.8)).shape[0] // 2
+    except InputError:
+        pass
+    taps = (2 * radius + 1) ** 2
+    tap = {"int_add": 3, "compare": 6, "pixels_tested": 1}
     return (
         CodeLine(f"setup: {text}"),
-        CodeLine("aliased image: I[x, y] = 1 where the triangles cover the pixel centre", PLOT),
+        CodeLine("aliased image: I[x, y] = 1 where the triangles cover the pixel centre", PLOT,
+                 per={"coverage": {"mul": 6, "int_add": 6, "compare": 3,
+                                   "pixels_tested": 1}}),
         CodeLine("for each pixel (x, y) that the kernel reaches from a covered pixel, row by "
                  "row:"),
         CodeLine("    out[x, y] = sum over (u, v) of K[u, v] * I[x + u, y + v];  write (x, y) "
-                 "with out[x, y]", PLOT),
+                 "with out[x, y]", PLOT, ops=_ops_sum(tap, times=taps) | {"div": 1},
+                 per={"taps": {"int_add": 2}}),
         CodeLine("done"),
     )
 
@@ -804,15 +919,29 @@ def _ink_grey(intensity: float) -> float:
 def wu_code(points, options):
     gap = options.get("endpoints", "full") == "gap"
     scale = "  (x 1/2 in the two end columns)" if gap else ""
+    # Line 0 maps into octant 1 as the line family does (2 int_add for the
+    # differences, 3 compares). It runs once, so the resets e -= dx; y += 1
+    # of line 5, which happen about dy times along the line, are counted
+    # there by its constant dy (2 int_add each). Each column's intensities
+    # are worked out once, with the near pixel's frame: f = e/dx and 1 -
+    # e/dx as (dx - e)/dx (1 int_add, 2 div), and in gap mode the end-column
+    # test (2 compares) and the scaling (2 mul). Every pixel frame maps
+    # (u, v) back to the grid (4 mul, 4 int_add) and tests intensity > 0.
+    # Line 5 carries e += dy, the test e >= dx and the column loop.
+    column = _ops_sum({"int_add": 1, "div": 2}, {"compare": 2, "mul": 2} if gap else {})
+    pixel = {"mul": 4, "int_add": 4, "compare": 1}
     return (
         CodeLine("map P, Q into octant 1:  dx = major extent, dy = minor extent;  e = 0;  "
-                 "y = y0   (the ideal line is at y + e/dx)"),
+                 "y = y0   (the ideal line is at y + e/dx)", ops={"int_add": 2, "compare": 3},
+                 per={"dy": {"int_add": 2}}),
         CodeLine("for x = x0 .. x1:"),
-        CodeLine(f"    plot(x, y, 1 - e/dx){scale}", PLOT, "near"),
-        CodeLine(f"    plot(x, y + 1, e/dx){scale}", PLOT, "far"),
+        CodeLine(f"    plot(x, y, 1 - e/dx){scale}", PLOT, "near", ops=_ops_sum(pixel, column)),
+        CodeLine(f"    plot(x, y + 1, e/dx){scale}", PLOT, "far", ops=pixel),
         CodeLine("    (intensity 0: the line passes exactly through this centre; nothing "
-                 "written)", VISIT),
-        CodeLine("    e += dy;  if e >= dx:  e -= dx;  y += 1"),
+                 "written)", VISIT, ops=pixel),
+        CodeLine("    e += dy;  if e >= dx:  e -= dx;  y += 1", ops=_ops_sum({"int_add": 1,
+                                                                                "compare": 1},
+                                                                               LOOP)),
         CodeLine("done"),
     )
 
@@ -863,15 +992,29 @@ def wu_image(points, options) -> dict:
 
 def area_code(points, options):
     caps = options.get("caps", "butt")
+    # The areas come from the exact coverage reference, vectorised over the
+    # rectangle's window: per pixel a running sum down its column (1
+    # float_add) and, where an edge of R crosses the pixel, the mean of a
+    # clamped linear function over the crossing (2 mul, 1 div, 6 float_add,
+    # 6 compares). One crossing per pixel is counted: R's two long edges
+    # cross the pixels along its border and none cross the inner ones, so
+    # this is an estimate. The near pixel's frame also tests a > 0 (1
+    # compare) and a written one adds a to the column total (1 float_add);
+    # line 4 closes a column (the loop step and test). The rectangle's
+    # corners (line 0: 4 mul, 1 sqrt, 1 div, 8 float_add for the unit
+    # direction and the offsets) are computed once, with the Start record.
+    area = {"float_add": 7, "mul": 2, "div": 1, "compare": 7, "pixels_tested": 1}
     return (
         CodeLine(f"R = the rectangle of the segment between the centres of P and Q, widened by "
-                 f"w/2 on each side{'' if caps == 'butt' else ' and at each end'}"),
+                 f"w/2 on each side{'' if caps == 'butt' else ' and at each end'}",
+                 ops={"mul": 4, "sqrt": 1, "div": 1, "float_add": 8}),
         CodeLine("for each column along the major axis, from P's side to Q's:"),
         CodeLine("    for each pixel of the column that R reaches:  a = area(R and the pixel "
-                 "square);  plot(x, y, a)", PLOT),
-        CodeLine("        (a = 0: R only touches the pixel; nothing written)", VISIT),
+                 "square);  plot(x, y, a)", PLOT, ops=_ops_sum(area, {"float_add": 1}, LOOP)),
+        CodeLine("        (a = 0: R only touches the pixel; nothing written)", VISIT,
+                 ops=_ops_sum(area, LOOP)),
         CodeLine("    column total = sum of a   (= w * length / dx where R crosses the "
-                 "whole column)"),
+                 "whole column)", ops=LOOP),
         CodeLine("done"),
     )
 
@@ -1029,11 +1172,31 @@ def temporal_code(points, options):
     blur = options.get("mode", "instant") == "motion-blur"
     sample = (f"average over {options.get('time_samples', 8)} instants t = k + shutter (s + 1/2) "
               f"/ {options.get('time_samples', 8)}" if blur else "one instant t = k")
+    # Every pixel frame of line 2 stands for the pixel's n^2 samples at each
+    # of the frame's instants, each tested against every shape (the images
+    # come from the vectorised kernel, which tests them all), at its
+    # position (POSITION) and summed (1 int_add); then one division. Pixels
+    # the primitive's window reaches but that show nothing in this frame or
+    # the last yield no frame and are not counted, nor is moving the
+    # primitive to each instant (line 1: per instant, not per pixel).
+    instants = options.get("time_samples", 8) if blur else 1
+    per_pixel = instants * options.get("n", 2) ** 2
+    shape_test = {}
+    try:
+        shape_test = _test_ops(_temporal_shapes(
+            [tuple(map(float, p)) for p in points],
+            {**{o.name: o.default for o in TEMPORAL_OPTIONS}, **options}, 0.0))[1]
+    except (InputError, ValueError, TypeError, KeyError):
+        pass
+    one = _ops_sum({"samples": 1, "int_add": 1}, POSITION, shape_test)
+    pixel = _ops_sum(one, times=per_pixel) | {"div": 1}
+    pixel = _ops_sum(pixel, {"compare": 2, "pixels_tested": 1})
     return (
         CodeLine("setup: the primitive, its motion per frame, the n x n samples of a pixel"),
         CodeLine(f"for each animation frame k:  {sample}"),
         CodeLine("    for each pixel (x, y) the primitive reaches in any frame:  coverage = "
-                 "(samples inside, over all instants) / (instants * n^2);  write it", PLOT),
+                 "(samples inside, over all instants) / (instants * n^2);  write it", PLOT,
+                 ops=pixel),
         CodeLine("done"),
     )
 

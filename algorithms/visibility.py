@@ -47,7 +47,7 @@ from . import registry as registry_module
 from . import triangles
 from .interpolate import mix, per_vertex, unpack
 from .registry import AlgorithmSpec, Inputs, Option, register
-from .steps import PLOT, VISIT, CodeLine, Note, Start, Table, Vars
+from .steps import PER_ROW, PLOT, VISIT, CodeLine, Note, Start, Table, Vars
 
 NAN = math.nan
 TESTS = ("less", "less-equal")
@@ -175,17 +175,56 @@ def _defaults(options):
 
 
 # ============================================================ z-buffer
+# ------------------------------------------------- operation counts
+# CodeLine.ops of the two visibility algorithms. Edge values are integers
+# (vertices snapped to 1/256 px), so their additions count as int_add; the
+# depth and the colour are interpolated from them. Conventions:
+# * Line 1 runs once per triangle (its Vars record): snapping and 2A as in
+#   the triangle family (8 mul, 6 round, 5 int_add, 2 compare), the three
+#   edges' a, b, c (6 mul, 9 int_add) and the clamped bounding box (4
+#   ceil/floor divisions with their 4 mul and 8 int_add, 8 + 4 compares).
+# * Every fragment is one frame and carries its whole walk: the loop step
+#   and test (1 int_add, 1 compare), e_k at the centre (6 mul, 6 int_add),
+#   the three sign tests in full (3 compare, 1 pixel tested). Box pixels
+#   the triangle does not cover yield no frame and are not counted, so
+#   pixels_tested counts fragments only.
+# * Gouraud colour (option colors): the weights e_k / 2A (3 div), per
+#   channel alpha c0 + beta c1 + gamma c2 (3 mul, 2 float_add) and a round.
+WALK_OPS = {"int_add": 7, "mul": 6, "compare": 4, "pixels_tested": 1}
+TRIANGLE_OPS = {"mul": 18, "round": 6, "int_add": 22, "compare": 14, "div": 4}
+# z = (e0 z0 + e1 z1 + e2 z2) / 2A, exactly, then one rounding to float64.
+DEPTH_OPS = {"mul": 3, "float_add": 2, "div": 1}
+
+
+def _ops_sum(*parts) -> dict:
+    total = {}
+    for part in parts:
+        for name, count in part.items():
+            total[name] = total.get(name, 0) + count
+    return {name: count for name, count in total.items() if count}
+
+
+def _shade_ops(options) -> dict:
+    if not options.get("colors"):
+        return {}  # the triangle's palette colour: nothing computed per fragment
+    return {"div": 3, "mul": 9, "float_add": 6, "round": 3}
+
+
 def zbuffer_code(points, options):
     test = "<" if options.get("depth_test", "less") == "less" else "<="
+    # A fragment interpolates its depth and tests it against ZB (1 compare),
+    # passing or not; only a passing one writes colour and depth.
+    fragment = _ops_sum(WALK_OPS, DEPTH_OPS, {"compare": 1}, _shade_ops(options))
     return (
         CodeLine(f"ZB[x, y] = {options.get('clear_depth', 1.0):g} for every pixel (far);  "
                  "CB[x, y] = background"),
-        CodeLine("for each triangle T, in input order:   (snap, make counter-clockwise)"),
+        CodeLine("for each triangle T, in input order:   (snap, make counter-clockwise)",
+                 ops=TRIANGLE_OPS),
         CodeLine("    for each fragment (x, y) of T   (pixel centres T covers, fill rule):"),
         CodeLine(f"        z = alpha z0 + beta z1 + gamma z2;  if z {test} ZB[x, y]:  "
-                 "CB[x, y] = colour;  ZB[x, y] = z", PLOT, "pass"),
+                 "CB[x, y] = colour;  ZB[x, y] = z", PLOT, "pass", ops=fragment),
         CodeLine(f"        else (z {'>=' if test == '<' else '>'} ZB[x, y]): hidden, keep "
-                 "CB and ZB", VISIT, "fail"),
+                 "CB and ZB", VISIT, "fail", ops=fragment),
         CodeLine("done"),
     )
 
@@ -257,12 +296,20 @@ def explain_depth(trace, i):
 # ============================================================ painter
 def painter_code(points, options):
     key = options.get("sort", "mean")
+    # Line 0: the key of every triangle, one row of its drawing-order table
+    # (mean: 2 float_add and a division; min or max: 2 compares); the sort's
+    # comparisons are not counted. Fragments carry the walk and the colour
+    # but no depth: the depth the shared fragment walk also yields is shown,
+    # not used. Line 3 checks the result against a z-buffer run: analysis,
+    # not part of the algorithm, so not counted.
+    key_ops = {"float_add": 2, "div": 1} if key == "mean" else {"compare": 2}
     return (
         CodeLine(f"key(T) = the {key} of T's vertex depths;  sort the triangles by key, "
-                 "largest (farthest) first"),
-        CodeLine("for each triangle T in that order (back to front):"),
+                 "largest (farthest) first", per={PER_ROW: key_ops}),
+        CodeLine("for each triangle T in that order (back to front):", ops=TRIANGLE_OPS),
         CodeLine("    for each fragment (x, y) of T:  CB[x, y] = colour   (no depth test: "
-                 "the last triangle drawn wins)", PLOT),
+                 "the last triangle drawn wins)", PLOT,
+                 ops=_ops_sum(WALK_OPS, _shade_ops(options))),
         CodeLine("compare with the z-buffer: disagree = pixels whose colours differ"),
         CodeLine("done"),
     )

@@ -113,3 +113,52 @@ def test_line_errors_against_the_exact_nearest_line():
 def test_pareto_front():
     points = [(1, 0.1, "a"), (4, 0.05, "b"), (4, 0.2, "c"), (16, 0.06, "d"), (64, 0.01, "e")]
     assert [label for _, _, label in measure.pareto_front(points)] == ["a", "b", "e"]
+
+
+# ------------------------------------- operation counts of antialiasing and visibility
+def test_every_algorithm_has_counted_operations():
+    for spec in registry.all_specs():
+        points = spec.inputs.example if hasattr(spec.inputs, "example") else None
+        code = None
+        for sample in (points, [(1, 1), (7, 1), (1, 6)], [(1, 1), (7, 3)], [(4.0, 4.0)]):
+            if sample is None:
+                continue
+            try:
+                code = spec.code(sample, spec.resolve({}))
+                break
+            except Exception:
+                continue
+        assert code is not None, spec.name
+        assert any(line.ops or line.per for line in code), spec.name
+        assert any(line.ops for line in code), spec.name
+
+
+def test_supersample_counts_n_squared_samples_per_pixel_of_the_box():
+    # The triangle's bounding box [1, 7] x [1, 6] reaches columns 1..7 and
+    # rows 1..6 (the pixels whose squares it touches, the far edges
+    # included): 7 * 6 pixels, each sampled n * n times.
+    n = 3
+    trace = registry.get("aa-supersample").record([(1, 1), (7, 1), (1, 6)], {"n": n}, (10, 10))
+    counts = measure.op_counts(trace)
+    pixels = 7 * 6
+    assert counts["pixels_tested"] == pixels
+    assert counts["samples"] == pixels * n * n
+
+
+def test_zbuffer_counts_one_test_and_one_depth_per_fragment():
+    grid = (12, 10)
+    tris = [[(1.0, 1.0), (10.0, 2.0), (3.0, 8.0)], [(2.0, 7.0), (11.0, 6.0), (6.0, 0.5)]]
+    points = tris[0] + tris[1]
+    z = (0.2, 0.4, 0.6, 0.5, 0.5, 0.1)
+    window = (0, 0, grid[0], grid[1])
+    fragments = sum(int(measure.exact_cover(t, window, "top-left").sum()) for t in tris)
+    assert fragments > 0
+    trace = registry.get("zbuffer").record(points, {"z": z}, grid)
+    counts = measure.op_counts(trace)
+    assert counts["pixels_tested"] == fragments
+    # Per fragment: three sign tests, the loop test and the depth test.
+    assert counts["compare"] == 5 * fragments + 14 * len(tris)
+    # Per fragment: e_k (6 mul) and the depth alpha z0 + beta z1 + gamma z2 (3 mul).
+    assert counts["mul"] == 9 * fragments + 18 * len(tris)
+    assert counts["float_add"] == 2 * fragments
+    assert counts["samples"] == 0
