@@ -767,20 +767,27 @@ def write_report(out=DEFAULT_OUT, quick: bool = False, progress=None) -> dict:
     """Measure and write the report into ``out``; returns what was written."""
     folder = check_folder(out)
     config = measure.settings(quick)
-    missing_aa = measure.antialias_available()
     started = time.perf_counter()
     rows, seconds = measure.run(config, progress)
-    view = View(rows.rows)
+    return write_files(folder, config, rows.rows, seconds, started)
+
+
+def write_files(out, config, rows: list, seconds: dict, started: float | None = None) -> dict:
+    """Write the files of a report from measurements already made."""
+    folder = check_folder(out)
+    started = time.perf_counter() if started is None else started
+    missing_aa = measure.antialias_available()
+    view = View(rows)
     images = charts(view)
     documents = {
         "report.md": markdown(view, config, seconds, missing_aa, images).encode("utf-8"),
-        "measurements.csv": csv_text(rows.rows).encode("utf-8"),
+        "measurements.csv": csv_text(rows).encode("utf-8"),
         "measurements.json": (json.dumps({
             "quick": config.quick, "seed": measure.SEED, "columns": list(measure.COLUMNS),
             "settings": {k: v for k, v in vars(config).items()},
             "seconds": seconds, "antialiasing": missing_aa or "measured",
             "findings": [{"topic": t, "finding": f, "measured": m} for t, f, m in findings(view)],
-            "rows": rows.rows}, indent=1, allow_nan=False) + "\n").encode("utf-8"),
+            "rows": rows}, indent=1, allow_nan=False) + "\n").encode("utf-8"),
     }
     for family, image in images.items():
         buffer = io.BytesIO()
@@ -788,7 +795,7 @@ def write_report(out=DEFAULT_OUT, quick: bool = False, progress=None) -> dict:
         documents[f"{family}.png"] = buffer.getvalue()
     for name, data in documents.items():
         write_atomically(folder / name, data)
-    return {"folder": str(folder), "files": sorted(documents), "rows": len(rows.rows),
+    return {"folder": str(folder), "files": sorted(documents), "rows": len(rows),
             "seconds": time.perf_counter() - started}
 
 
