@@ -61,6 +61,7 @@ from algorithms.registry import InputError
 from algorithms.steps import PLOT, Span
 from algorithms.trace import DEFAULT_STEP_CAP, FrameState
 
+from . import frame_view
 from .frame_view import (compose_frame, compose_region, frame_marks, key_values, primitive_mask,
                          scene_paths, step_caption)
 from .render import PALETTE, Palette
@@ -395,9 +396,9 @@ def build_palette(theme: Theme, trace=None) -> ColourIndex:
 
 def _run_colours(trace) -> list[tuple[int, int, int]]:
     """Colours a run writes, and their darker shade for pixels written twice."""
-    if trace is None or getattr(trace.start, "pixel_value", None) is None:
+    if trace is None:
         return []
-    values = trace.pixel_values()
+    values = frame_view.written_colours(trace)
     if values is None or not len(values):
         return []
     values = values[np.isfinite(values)]
@@ -511,8 +512,10 @@ class _States:
     def __init__(self, trace, incremental: bool = True):
         self.trace = trace
         self.incremental = incremental
-        name = trace.start.pixel_value
+        name = frame_view.colour_name(trace.start)
         self.values = trace.series(name) if name is not None else None
+        depth = trace.start.depth_value
+        self.depths = trace.series(depth) if depth is not None else None
         self.raster = None
         self.index: int | None = None
 
@@ -539,7 +542,8 @@ class _States:
             return cells
         if step.writes:
             value = None if self.values is None else self.values[index]
-            self.raster.write(*step.pixel, value)
+            depth = None if self.depths is None else self.depths[index]
+            self.raster.write(*step.pixel, value, depth)
             return [step.pixel]
         return []
 

@@ -303,16 +303,109 @@ def key_values(trace, state) -> list[tuple[str, str]]:
     if decision in names:
         names.remove(decision)
         names.insert(0, decision)
-    pixel_value = getattr(start, "pixel_value", None)
+    colour = colour_name(start)
     rows = []
     for name in names:
         if name not in state.variables:
             continue
         value = state.variables[name]
-        if name == pixel_value and isinstance(value, (int, float)) and value == value \
+        if name == colour and isinstance(value, (int, float)) and value == value \
                 and 0 <= value <= 0xFFFFFF and float(value).is_integer():
             text = f"#{int(value):06x}"
         else:
             text = registry.format_value(value)
         rows.append((name, text))
     return rows
+
+
+# ------------------------------------------------------------ values
+def colour_name(start) -> str | None:
+    """The value holding a run's packed 0xRRGGBB colours: ``color_value``,
+    else ``pixel_value``. (An antialiasing run's pixel value is a coverage
+    in 0..1, a number, never a colour.)"""
+    return getattr(start, "color_value", None) or getattr(start, "pixel_value", None)
+
+
+def written_colours(trace) -> np.ndarray | None:
+    """The packed colour written with each written pixel, in emission order."""
+    name = colour_name(trace.start)
+    if name is None:
+        return None
+    if name == trace.start.pixel_value:
+        return trace.pixel_values()
+    return trace.series(name)[trace.writes()]
+
+
+# ------------------------------------------------------------ samples
+@dataclass(frozen=True)
+class PixelSamples:
+    """The samples tested so far in the current step's pixel: positions
+    ``xs``, ``ys`` in grid units, ``hits`` (bool), and ``current`` the
+    index among them of the step's own sample (-1: the step is no sample)."""
+
+    pixel: tuple[int, int]
+    xs: np.ndarray
+    ys: np.ndarray
+    hits: np.ndarray
+    current: int = -1
+
+
+def pixel_samples(trace, index: int, limit: int = 4096) -> PixelSamples | None:
+    """The samples of the pixel of step ``index`` (a run whose frames name
+    values ``sx``, ``sy``), found by scanning back from the step while the
+    pixel stays the same; None when the step tests no sample and follows none."""
+    if trace is None:
+        return None
+    names = trace.value_names
+    if "sx" not in names or "sy" not in names:
+        return None
+    step = trace.step(index)
+    if step.pixel is None or step.record is not None:
+        return None
+    cx, cy = step.pixel
+    sx = trace.values[:, names.index("sx")]
+    sy = trace.values[:, names.index("sy")]
+    hit = trace.values[:, names.index("hit")] if "hit" in names else None
+    first = index
+    while first > 0 and index - first < limit and int(trace.x[first - 1]) == cx \
+            and int(trace.y[first - 1]) == cy:
+        first -= 1
+    rows = np.arange(first, index + 1)
+    rows = rows[np.isfinite(sx[rows]) & np.isfinite(sy[rows])]
+    if not len(rows):
+        return None
+    hits = np.ones(len(rows), bool) if hit is None else hit[rows] > 0
+    current = len(rows) - 1 if rows[-1] == index else -1
+    return PixelSamples((cx, cy), sx[rows].copy(), sy[rows].copy(), hits, current)
+
+
+# ------------------------------------------------------------ exact coverage
+def exact_reference(spec, points, options, grid) -> np.ndarray | None:
+    """(H, W) exact coverage of the primitive an antialiasing run draws, or
+    None where there is no single one (not antialiasing; a moving shape)."""
+    if spec is None or spec.family != "antialias" or not points:
+        return None
+    from algorithms import antialias, exact_coverage
+    width, height = int(grid[0]), int(grid[1])
+    if spec.name in ("line-wu", "line-area"):
+        if len(points) != 2:
+            return None
+        (px, py), (qx, qy) = points
+        return exact_coverage.segment_coverage(
+            (px + 0.5, py + 0.5), (qx + 0.5, qy + 0.5), float(options.get("width", 1.0)),
+            (width, height), options.get("caps", "butt"))
+    if spec.name == "aa-temporal":
+        return None
+    try:
+        return antialias.reference_coverage(points, options, (width, height))
+    except (ValueError, ArithmeticError):
+        return None
+
+
+def run_coverage(trace) -> np.ndarray | None:
+    """(H, W) coverage a run ends with (its ``pixel_value`` written last to
+    each pixel, 0 elsewhere), or None for a run that writes no values."""
+    if trace is None or trace.start.pixel_value is None:
+        return None
+    values = trace.pixel_values()
+    return render.final_coverage(trace.width, trace.height, trace.written_pixels(), values)

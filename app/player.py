@@ -426,7 +426,15 @@ def default_scene(spec, grid) -> tuple[list[tuple], tuple[int, ...], dict]:
         except Exception:  # noqa: BLE001 - any refusal: fall back to the convex shape
             points = default_points(spec, grid, vertices=6)
         return points, (), {}
-    return default_points(spec, grid), (), {}
+    points = default_points(spec, grid)
+    if spec.inputs.multiple and len(points) == 1:
+        # Inputs of any number of points (a shape of 3k points, say): one
+        # point may not be a shape; a triangle is (tried, not looked up).
+        try:
+            spec.record(runnable_input(spec, points, ()), spec.resolve(), grid, step_cap=100_000)
+        except Exception:  # noqa: BLE001 - any refusal: a triangle instead
+            points = default_points(spec, grid, vertices=3)
+    return points, (), {}
 
 
 def _grid_point(spec, x: float, y: float, grid):

@@ -30,7 +30,8 @@ import numpy as np
 _RGBA = np.dtype("<u4")
 
 __all__ = ["Palette", "PALETTE", "Overlay", "OUTLINE_STYLE", "compose", "top_down",
-           "packed_rgba", "differences", "coverage_counts", "COVERAGE_LEVELS"]
+           "packed_rgba", "differences", "coverage_counts", "COVERAGE_LEVELS", "depth_image",
+           "depth_range", "error_image", "error_stats", "final_coverage"]
 
 # What the coverage colours stand for, in Palette.coverage order.
 COVERAGE_LEVELS = ("not covered", "covered once", "covered twice", "covered 3+ times")
@@ -310,3 +311,75 @@ def _draw_primitive(image: np.ndarray, overlay: Overlay, palette: Palette, scale
                 rr = np.floor(ys + dy).astype(np.int64)
                 keep = (c >= 0) & (c < cols) & (rr >= 0) & (rr < rows)
                 image[rr[keep], c[keep]] = color
+
+
+# ------------------------------------------------------------ depth and error
+# Greys of the depth view: the nearest depth and the farthest (the clear value).
+DEPTH_NEAR = 40
+DEPTH_FAR = 250
+
+
+def depth_range(depths, clear: float) -> tuple[float, float]:
+    """(near, far) for ``depth_image``: the smallest and largest of the
+    finite ``depths`` and the clear value, so that one run keeps one scale
+    while it is stepped through."""
+    depths = np.asarray(depths, dtype=np.float64).ravel()
+    finite = depths[np.isfinite(depths)]
+    lo = min(float(clear), float(finite.min())) if finite.size else float(clear)
+    hi = max(float(clear), float(finite.max())) if finite.size else float(clear)
+    return lo, hi
+
+
+def depth_image(depth, clear: float, near: float, far: float) -> np.ndarray:
+    """A depth buffer as a grey uint8 RGBA image (H, W, 4), row 0 at y = 0:
+    ``near`` dark, ``far`` light; NaN (never written) takes ``clear``."""
+    depth = np.asarray(depth, dtype=np.float64)
+    depth = np.where(np.isnan(depth), float(clear), depth)
+    span = far - near
+    t = np.zeros(depth.shape) if not span > 0 else np.clip((depth - near) / span, 0.0, 1.0)
+    grey = np.rint(DEPTH_NEAR + t * (DEPTH_FAR - DEPTH_NEAR)).astype(np.uint8)
+    image = np.empty(depth.shape + (4,), np.uint8)
+    image[..., 0] = image[..., 1] = image[..., 2] = grey
+    image[..., 3] = 255
+    return image
+
+
+def final_coverage(width: int, height: int, pixels, values) -> np.ndarray:
+    """(H, W) coverage a run ends with: the value written last to each
+    pixel (``pixels`` (n, 2) cells x, y in emission order), 0 elsewhere."""
+    result = np.zeros((int(height), int(width)))
+    pixels = np.asarray(pixels, dtype=np.int64).reshape(-1, 2)
+    values = np.asarray(values, dtype=np.float64).ravel()
+    if not len(pixels):
+        return result
+    x, y = pixels[:, 0], pixels[:, 1]
+    keep = (x >= 0) & (x < width) & (y >= 0) & (y < height) & np.isfinite(values)
+    flat = (y * width + x)[keep][::-1]
+    flat, first = np.unique(flat, return_index=True)  # first of the reversed: the last write
+    result.ravel()[flat] = values[keep][::-1][first]
+    return result
+
+
+def error_stats(estimate, exact) -> tuple[float, float, np.ndarray]:
+    """(RMS, max, per-pixel error) of |estimate - exact|. The RMS is taken
+    over the pixels either one covers (the others are right trivially and
+    would only dilute it with the size of the grid)."""
+    error = np.abs(np.asarray(estimate, np.float64) - np.asarray(exact, np.float64))
+    touched = (np.asarray(estimate) != 0) | (np.asarray(exact) != 0)
+    if not touched.any():
+        return 0.0, 0.0, error
+    return (float(np.sqrt(np.mean(error[touched] ** 2))), float(error.max()), error)
+
+
+def error_image(error, top: float | None = None) -> np.ndarray:
+    """Per-pixel error as a uint8 RGBA image (H, W, 4): white for none,
+    to pure red for ``top`` (the largest error when not given) and above."""
+    error = np.asarray(error, dtype=np.float64)
+    if top is None:
+        top = float(error.max()) if error.size else 0.0
+    t = np.zeros(error.shape) if not top > 0 else np.clip(error / top, 0.0, 1.0)
+    image = np.empty(error.shape + (4,), np.uint8)
+    image[..., 0] = 255
+    image[..., 1] = image[..., 2] = np.rint(255 * (1 - t)).astype(np.uint8)
+    image[..., 3] = 255
+    return image

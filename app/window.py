@@ -23,6 +23,7 @@ from algorithms import registry
 from algorithms.raster import MAX_GRID, Raster
 from algorithms.registry import InputError
 from algorithms.steps import Note
+from widgets.depth_view import DepthView
 from widgets.drawing import CONTOURS, point_labels
 from widgets.editors import AlgorithmPicker, GridEditor, OptionsEditor, PointsEditor
 from widgets.grid_view import DRAW, MARKER, PixelGridView
@@ -33,7 +34,9 @@ from widgets.transport import TransportBar
 from .history import EditHistory, Snapshot
 from .insight import PixelTally, has_insight, inside_chips, row_tones
 from .player import Player, default_scene, open_ended, split_contours
-from .render import COVERAGE_LEVELS, OUTLINE_STYLE, PALETTE, compose, coverage_counts
+from . import frame_view
+from .render import (COVERAGE_LEVELS, OUTLINE_STYLE, PALETTE, compose, coverage_counts,
+                     depth_image, depth_range, error_image, error_stats)
 from .tables import TableIndex
 from .tools import (circle_kind, circle_options, clamp_option, drawing_mode, grid_option_names,
                     marker_option, placing_message, shape_paths, tool_hint)
@@ -195,6 +198,8 @@ class MainWindow(QMainWindow):
         self._tally = None
         self._notes: list[int] = []
         self._tables_for = None  # the algorithm the tables dock was last shown for
+        self._depth = None  # (clear, near, far) of a run that keeps a depth buffer
+        self._accuracy = None  # AccuracyCache of the antialiasing run on show
 
         self._build_centre()
         self._build_scene_dock()
@@ -331,6 +336,17 @@ class MainWindow(QMainWindow):
             lambda area: self.tables.set_side_by_side(area in across))
         self.tables.set_side_by_side(True)
         self.tables_dock.hide()
+        # The depth buffer beside the colour buffer, for runs that keep one.
+        self.depth_view = DepthView(PALETTE, self)
+        self.depth_dock = QDockWidget("Depth buffer", self)
+        self.depth_dock.setObjectName("depthDock")
+        self.depth_dock.setWidget(self.depth_view)
+        self.depth_dock.setFeatures(QDockWidget.DockWidgetFeature.DockWidgetMovable
+                                    | QDockWidget.DockWidgetFeature.DockWidgetClosable)
+        self.addDockWidget(Qt.DockWidgetArea.RightDockWidgetArea, self.depth_dock)
+        self.splitDockWidget(self.code_dock, self.depth_dock, Qt.Orientation.Vertical)
+        self.depth_dock.hide()
+        self.depth_dock.visibilityChanged.connect(self._depth_dock_shown)
 
     def _build_status(self) -> None:
         status = self.statusBar()
@@ -346,6 +362,9 @@ class MainWindow(QMainWindow):
         self.cursor_label.setMinimumWidth(210)
         status.addWidget(self.message, 1)
         status.addPermanentWidget(self.coverage_label)
+        self.error_label = QLabel(self)
+        self.error_label.setObjectName("coverageError")
+        status.addPermanentWidget(self.error_label)
         status.addPermanentWidget(self.difference_label)
         status.addPermanentWidget(self.cursor_label)
 
@@ -441,6 +460,19 @@ class MainWindow(QMainWindow):
             box.toggled.connect(act.setChecked)
             self.actions_[f"view-{text}"] = act
         self.coverage_action = self.actions_["view-Coverage counts"]
+        self.depth_action = view.addAction("Depth buffer")
+        self.depth_action.setCheckable(True)
+        self.depth_action.setChecked(True)
+        self.depth_action.setToolTip("Show the depth buffer (near dark, far light) of runs "
+                                     "that keep one")
+        self.depth_action.toggled.connect(self._depth_toggled)
+        self.actions_["view-Depth buffer"] = self.depth_action
+        self.error_action = view.addAction("Coverage error")
+        self.error_action.setCheckable(True)
+        self.error_action.setToolTip("Colour each pixel by |coverage - exact coverage| "
+                                     "(white: none, red: the run's largest)")
+        self.error_action.toggled.connect(lambda _on: self.show_frame())
+        self.actions_["view-Coverage error"] = self.error_action
         view.addSeparator()
         for dock in (self.scene_dock, self.code_dock, self.variables_dock, self.tables_dock):
             view.addAction(dock.toggleViewAction())
@@ -601,6 +633,7 @@ class MainWindow(QMainWindow):
     def set_y_down(self, y_down: bool) -> None:
         """Origin top-left with y down (True), or bottom-left with y up."""
         self.grid.set_y_down(y_down)
+        self.depth_view.set_y_down(y_down)
         self.grid_editor.set_y_down(y_down)
         self.y_down_action.blockSignals(True)
         self.y_down_action.setChecked(y_down)
@@ -696,6 +729,7 @@ class MainWindow(QMainWindow):
         self._notes = [] if trace is None else sorted(
             i for i, r in trace.records.items() if isinstance(r, Note))
         self._show_tables_dock()
+        self._prepare_depth_and_accuracy()
         if trace is None:
             self.transport.set_range(-1)
             self.variables.set_series(None)
@@ -748,8 +782,15 @@ class MainWindow(QMainWindow):
             self.coverage_label.setText("")
             self._update_message()
             return
-        self.grid.set_image(compose(state.raster, None, self.palette_,
-                                    coverage=self.coverage.isChecked()))
+        accuracy = self._accuracy if self.error_action.isChecked() else None
+        if accuracy is not None and not self.coverage.isChecked():
+            self.grid.set_image(error_image(accuracy.error, accuracy.max))
+        else:
+            self.grid.set_image(compose(state.raster, None, self.palette_,
+                                        coverage=self.coverage.isChecked()))
+        self._show_depth(state)
+        self._show_samples(state)
+        self._show_error_summary()
         cells, spans = _step_cells(state)
         self.grid.set_highlights(cells, state.candidates, spans)
         trace, index = player.trace, state.index
@@ -765,8 +806,10 @@ class MainWindow(QMainWindow):
 
     def _show_values(self, state) -> None:
         trace, index = self.player.trace, state.index
-        colors = (trace.start.pixel_value,) if trace.start.pixel_value else ()
+        colour = frame_view.colour_name(trace.start)
+        colors = (colour,) if colour else ()
         rows = self.player.spec.panel_rows(trace, index)
+        rows += self._accuracy_rows(state, rows)
         self.variables.set_rows(rows, colors, row_tones(rows) if self._tally else None)
         chips = []
         if self._tally is not None:
@@ -787,6 +830,85 @@ class MainWindow(QMainWindow):
             "No pixel covered twice" if not overlaps else
             f"{overlaps:,} pixel{'s' if overlaps != 1 else ''} covered twice or more"
             + (f" ({more:,} three times or more)" if more else ""))
+
+    # ------------------------------------------- depth, samples, accuracy
+    def _prepare_depth_and_accuracy(self) -> None:
+        """Per run: the depth view's scale, and the exact coverage of an
+        antialiasing run (worked out when first needed, then kept)."""
+        player, trace = self.player, self.player.trace
+        self._depth = None
+        self._accuracy = None
+        if trace is not None and trace.start.depth_value is not None:
+            clear = float(trace.start.constants.get("clear_depth",
+                                                    player.options.get("clear_depth", 1.0)))
+            self._depth = (clear, *depth_range(trace.series(trace.start.depth_value), clear))
+        if trace is not None and player.spec.family == "antialias" \
+                and trace.start.pixel_value is not None:
+            self._accuracy = AccuracyCache(player.spec, player.points, player.options,
+                                           player.grid, trace)
+            if not self._accuracy.available:
+                self._accuracy = None
+        self.error_action.setEnabled(self._accuracy is not None)
+        self.depth_action.setEnabled(self._depth is not None)
+        self._place_depth_dock()
+
+    def _place_depth_dock(self) -> None:
+        want = self._depth is not None and self.depth_action.isChecked()
+        if want != self.depth_dock.isVisibleTo(self):
+            self.depth_dock.setVisible(want)
+
+    def _depth_toggled(self, on: bool) -> None:
+        self._place_depth_dock()
+        self.show_frame()
+
+    def _depth_dock_shown(self, visible: bool) -> None:
+        # Closing the dock by its own button turns the View toggle off.
+        if not visible and self._depth is not None and not self.depth_dock.isVisibleTo(self):
+            self.depth_action.blockSignals(True)
+            self.depth_action.setChecked(False)
+            self.depth_action.blockSignals(False)
+
+    def _show_depth(self, state) -> None:
+        if self._depth is None or not self.depth_dock.isVisibleTo(self):
+            return
+        clear, near, far = self._depth
+        depth = state.raster.depth
+        if depth is None:
+            depth = np.full(state.raster.counts.shape, np.nan)
+        self.depth_view.set_y_down(self.grid.y_down)
+        self.depth_view.set_image(depth_image(depth, clear, near, far), near, far)
+
+    def _show_samples(self, state) -> None:
+        samples = frame_view.pixel_samples(self.player.trace, state.index)
+        if samples is None:
+            self.grid.set_samples()
+        else:
+            self.grid.set_samples(samples.xs, samples.ys, samples.hits, samples.current)
+
+    def _show_error_summary(self) -> None:
+        accuracy = self._accuracy if self.error_action.isChecked() else None
+        if accuracy is None:
+            self.error_label.setText("")
+            return
+        self.error_label.setText(f"Coverage error: RMS {accuracy.rms:.4f} \u00b7 "
+                                 f"max {accuracy.max:.4f}")
+        self.error_label.setToolTip("|coverage - exact coverage| per pixel; the RMS is taken "
+                                    "over the pixels the run or the exact shape covers")
+
+    def _accuracy_rows(self, state, rows) -> list:
+        """Exact coverage and error of the step's pixel, unless the
+        algorithm's own explanation already gives them."""
+        accuracy, pixel = self._accuracy, state.pixel
+        if accuracy is None or pixel is None or any(name == "exact coverage"
+                                                    for name, _ in rows):
+            return []
+        x, y = pixel
+        if not state.raster.inside(x, y):
+            return []
+        exact = float(accuracy.exact[y, x])
+        final = float(accuracy.estimate[y, x])
+        return [("exact coverage", f"{exact:.6f}"),
+                ("error (final)", f"{final - exact:+.6f}")]
 
     def _coverage_toggled(self, on: bool) -> None:
         self.legend.setVisible(not on)
@@ -912,14 +1034,44 @@ class ShortcutsDialog(QDialog):
         self.resize(640, 680)
 
 
+class AccuracyCache:
+    """How far an antialiasing run's coverages are from the exact ones:
+    worked out once per run, on first use."""
+
+    def __init__(self, spec, points, options, grid, trace):
+        self._args = (spec, points, options, grid)
+        self.trace = trace
+        self._done = False
+        self.available = spec.name != "aa-temporal" and len(points) > 0
+
+    def _compute(self) -> None:
+        if self._done:
+            return
+        self._done = True
+        exact = frame_view.exact_reference(*self._args)
+        estimate = frame_view.run_coverage(self.trace)
+        if exact is None or estimate is None or exact.shape != estimate.shape:
+            exact = np.zeros((self.trace.height, self.trace.width))
+            estimate = exact
+        self._exact, self._estimate = exact, estimate
+        self._rms, self._max, self._error = error_stats(estimate, exact)
+
+    def __getattr__(self, name):
+        if name in ("exact", "estimate", "rms", "max", "error"):
+            self._compute()
+            return object.__getattribute__(self, "_" + name)
+        raise AttributeError(name)
+
+
 def _series_name(trace) -> str | None:
     """The value to plot over the run: the decision variable, else the first
     named value that has finite values."""
     start = trace.start
     if start.decision is not None and start.decision in trace.value_names:
         return start.decision
+    colour = frame_view.colour_name(start)
     for name in trace.value_names:
-        if name == start.pixel_value:
+        if name == colour:
             continue  # packed colours are not worth a plot
         if np.isfinite(trace.series(name)).any():
             return name
@@ -937,6 +1089,8 @@ def launch(argv=None) -> int:
     window = MainWindow()
     # Hook: scene files and export (File menu) come from app/file_actions.py.
     from .file_actions import install_file_actions
+    from .report_window import install_report_action
     install_file_actions(window)
+    install_report_action(window)
     window.show()
     return app.exec()

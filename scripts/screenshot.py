@@ -14,6 +14,11 @@ them, saved as resources/screenshot-SCENE.png:
     fill      a flood fill mid-run, with its queue
     triangle  one triangle mid-traversal, with its edge values
     mesh      a small mesh with the coverage overlay
+    samples   supersampling a triangle on a small grid: the samples of an
+              edge pixel as dots (hit filled, miss hollow)
+    depth     the z-buffer on two piercing triangles, with the depth buffer
+    painter   the painter's algorithm on the same triangles, compared with
+              the z-buffer: the pixels where the two disagree
 
     python scripts/screenshot.py [OUT.png] [--size 1280x800] [--step N]
     python scripts/screenshot.py --scene polygon [OUT.png]
@@ -99,14 +104,52 @@ def mesh_scene(app, size, _step):
     return window
 
 
+def samples_scene(app, size, _step):
+    window = _window(app, "aa-supersample", [(1.3, 1.2), (10.6, 3.1), (4.2, 8.4)],
+                     grid=(12, 9), size=size)
+    trace = window.player.trace
+    # The last sample of an edge pixel some of whose samples hit and some miss.
+    index = None
+    for i in range(len(trace) // 3, len(trace) - 1):
+        step, after = trace.step(i), trace.step(i + 1)
+        if "sx" in step.values and "sx" not in after.values and 0.3 < step.values["coverage"] < 0.8:
+            index = i
+            break
+    window.player.seek(index if index is not None else len(trace) // 2)
+    return window
+
+
+def _visibility(app, algorithm, size):
+    from algorithms.visibility import intersecting_scene
+    scene = intersecting_scene()
+    options = {k: v for k, v in scene["options"].items() if k != "sort"}
+    return _window(app, algorithm, scene["points"], options, grid=scene["grid"], size=size)
+
+
+def depth_scene(app, size, _step):
+    window = _visibility(app, "zbuffer", size)
+    window.player.seek(len(window.player.trace) * 3 // 4)
+    return window
+
+
+def painter_scene(app, size, _step):
+    window = _visibility(app, "zbuffer", size)
+    window.set_algorithm("painter")
+    window.compare.setChecked(True)
+    window.player.to_last()
+    return window
+
+
 SCENES = {"line": line_scene, "circle": circle_scene, "polygon": polygon_scene,
-          "fill": fill_scene, "triangle": triangle_scene, "mesh": mesh_scene}
+          "fill": fill_scene, "triangle": triangle_scene, "mesh": mesh_scene,
+          "samples": samples_scene, "depth": depth_scene, "painter": painter_scene}
 # Scenes with the tables panel under the grid want a taller window.
-SIZES = {"polygon": (1280, 900)}
+SIZES = {"polygon": (1280, 900), "painter": (1280, 900)}
 
 
-def _window(app, algorithm, points, options=None, size=(1280, 800)):
-    window = MainWindow(algorithm, points, options)
+def _window(app, algorithm, points, options=None, size=(1280, 800), grid=None):
+    window = MainWindow(algorithm, points, options) if grid is None else \
+        MainWindow(algorithm, points, options, grid=tuple(grid))
     window.resize(*size)
     window.show()
     for _ in range(5):

@@ -337,8 +337,13 @@ class PixelGridView(pg.PlotWidget):
                                          brush=pg.mkBrush(palette.seed),
                                          pen=pg.mkPen(palette.handle, width=1.5))
         self.marker.setZValue(6)
+        # The samples tested in the current pixel: hit filled, miss hollow,
+        # sized in grid units so that they stay inside the magnified cell.
+        self.samples = pg.ScatterPlotItem(pxMode=False, symbol="o")
+        self.samples.setZValue(3.5)
+        self._sample_data = None
         for item in (self.image, self.grid_lines, self.outlines, self.primitive,
-                     self.preview, self.handles, self.rim, self.marker):
+                     self.preview, self.handles, self.rim, self.marker, self.samples):
             self._box.addItem(item)
         self._labels: list[pg.TextItem] = []
         self._marker_label = self._make_label(palette.seed)
@@ -526,6 +531,30 @@ class PixelGridView(pg.PlotWidget):
         self.outlines.set_layer("current", current)
         self.outlines.set_layer("candidate", candidates)
         self.outlines.set_spans(spans)
+
+    def set_samples(self, xs=(), ys=(), hits=(), current: int = -1) -> None:
+        """Dots at sample positions (grid units): a hit filled, a miss
+        hollow, sample ``current`` larger and in the current step's colour."""
+        xs, ys = np.asarray(xs, float).ravel(), np.asarray(ys, float).ravel()
+        hits = np.asarray(hits, bool).ravel()
+        if not len(xs):
+            if self._sample_data is not None:
+                self.samples.setData([], [])
+                self._sample_data = None
+            return
+        ink, now = self.palette.handle_edge, self.palette.current
+        brushes, pens, sizes = [], [], []
+        for k, hit in enumerate(hits):
+            colour = now if k == current else ink
+            brushes.append(pg.mkBrush(colour) if hit else pg.mkBrush(self.palette.handle))
+            pens.append(pg.mkPen(colour, width=2.5 if k == current else 1.5))
+            sizes.append(0.17 if k == current else 0.11)
+        self.samples.setData(x=xs, y=ys, brush=brushes, pen=pens, size=sizes)
+        self._sample_data = (xs, ys, hits, int(current))
+
+    def sample_data(self):
+        """(xs, ys, hits, current) of the sample dots on show, or None."""
+        return self._sample_data
 
     def set_differences(self, cells) -> None:
         self.outlines.set_layer("difference", cells)

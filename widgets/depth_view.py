@@ -1,0 +1,60 @@
+"""A second picture of the grid: the depth buffer of a run that keeps one.
+
+It shows an image composed elsewhere (``app.render.depth_image``: near
+dark, far light) cell for cell in the same frame as the pixel grid, with
+the same origin and direction of y, and says what the greys mean.
+"""
+from __future__ import annotations
+
+import numpy as np
+import pyqtgraph as pg
+from PySide6.QtWidgets import QLabel, QVBoxLayout, QWidget
+
+
+class DepthView(QWidget):
+    """The depth buffer beside the colour buffer."""
+
+    def __init__(self, palette, parent=None):
+        super().__init__(parent)
+        self.plot = pg.PlotWidget(self)
+        self.plot.setBackground(palette.outside)
+        item = self.plot.getPlotItem()
+        item.hideButtons()
+        item.setMenuEnabled(False)
+        item.hideAxis("bottom")
+        item.hideAxis("left")
+        box = self.plot.getViewBox()
+        box.setAspectLocked(True)
+        box.setMouseEnabled(False, False)
+        box.setDefaultPadding(0.02)
+        self.image = pg.ImageItem(axisOrder="row-major")
+        box.addItem(self.image)
+        self.legend = QLabel(self)
+        self.legend.setWordWrap(True)
+        self.legend.setObjectName("depthLegend")
+        layout = QVBoxLayout(self)
+        layout.setContentsMargins(6, 4, 6, 6)
+        layout.setSpacing(4)
+        layout.addWidget(self.plot, 1)
+        layout.addWidget(self.legend)
+        self._size = (0, 0)
+        self._rgba: np.ndarray | None = None
+
+    def set_image(self, rgba: np.ndarray, near: float, far: float) -> None:
+        """Show an (H, W, 4) uint8 image, row 0 at y = 0; ``near`` and
+        ``far`` are the depths of the darkest and the lightest grey."""
+        self._rgba = rgba
+        self.image.setImage(rgba, autoLevels=False)
+        height, width = rgba.shape[:2]
+        if (width, height) != self._size:
+            self._size = (width, height)
+            self.plot.getViewBox().setRange(xRange=(0, width), yRange=(0, height), padding=0.02)
+        self.legend.setText(f"near {near:.3g} = dark \u00b7 far {far:.3g} = light "
+                            "(never written: the clear depth)")
+
+    def set_y_down(self, y_down: bool) -> None:
+        self.plot.getViewBox().invertY(bool(y_down))
+
+    def image_data(self) -> np.ndarray | None:
+        """The image on show."""
+        return self._rgba
