@@ -14,6 +14,7 @@ from algorithms import registry
 from algorithms.raster import MAX_GRID
 from algorithms.registry import InputError, parse_number
 from algorithms.trace import DEFAULT_STEP_CAP, TraceError
+from app.progress import TerminalBar
 from app.scene import one_line
 
 DEFAULT_GRID = (32, 24)
@@ -355,32 +356,12 @@ def command_export(args) -> int:
     return 0
 
 
-class _ProgressBar:
-    """A one-line progress bar on a terminal; nothing when not a terminal."""
-
-    WIDTH = 30
-
-    def __init__(self, stream):
-        self.stream = stream
-        try:
-            self.active = stream.isatty()
-        except (AttributeError, ValueError):
-            self.active = False
-        self.shown = False
+class _ProgressBar(TerminalBar):
+    """The export's progress: frames drawn so far."""
 
     def show(self, done: int, total: int) -> None:
-        filled = done * self.WIDTH // max(1, total)
         tail = ", writing" if done == total else ""
-        self.stream.write(f"\rexporting [{'#' * filled}{'.' * (self.WIDTH - filled)}] "
-                          f"{done}/{total} frames{tail} ")
-        self.stream.flush()
-        self.shown = True
-
-    def clear(self) -> None:
-        if self.shown:
-            self.stream.write("\r\033[K")
-            self.stream.flush()
-            self.shown = False
+        self.draw("exporting", done, total, f"frames{tail} ")
 
 
 # ------------------------------------------------------------------- report

@@ -23,7 +23,6 @@ import json
 import math
 import os
 import platform
-import sys
 import tempfile
 import time
 from collections import defaultdict
@@ -32,6 +31,8 @@ from pathlib import Path
 import numpy as np
 
 from algorithms import measure
+
+from .progress import TerminalBar
 
 DEFAULT_OUT = "rasterlab-report"
 
@@ -799,30 +800,8 @@ def write_files(out, config, rows: list, seconds: dict, started: float | None = 
             "seconds": time.perf_counter() - started}
 
 
-class ProgressBar:
-    """A one-line progress bar on stderr, shown only on a terminal."""
-
-    WIDTH = 30
-
-    def __init__(self, stream=sys.stderr):
-        self.stream = stream
-        try:
-            self.active = stream.isatty()
-        except (AttributeError, ValueError):
-            self.active = False
-        self.shown = False
+class ProgressBar(TerminalBar):
+    """The report's progress: measurements done so far."""
 
     def __call__(self, done: int, total: int, label: str) -> None:
-        if not self.active:
-            return
-        filled = done * self.WIDTH // max(1, total)
-        self.stream.write(f"\rmeasuring [{'#' * filled}{'.' * (self.WIDTH - filled)}] "
-                          f"{done}/{total} {label[:30]:<30}")
-        self.stream.flush()
-        self.shown = True
-
-    def clear(self) -> None:
-        if self.shown:
-            self.stream.write("\r\033[K")
-            self.stream.flush()
-            self.shown = False
+        self.draw("measuring", done, total, f"{label[:30]:<30}")
