@@ -513,13 +513,17 @@ class Run:
         return (line, i, j, *extra, *shown, NAN, *pad, *self.attributes.nothing)
 
     def finish(self, line: int):
-        overlaps, cracks = mesh_flaws(self)
+        overlaps, crack_cells = mesh_flaws(self)
+        cracks = len(crack_cells)
         values = {"tested": self.tested, "filled": self.filled, "overlaps": overlaps,
                   "cracks": cracks,
                   "drawn": sum(1 for s in self.setups if s.tri is not None),
                   "degenerate": sum(1 for s in self.setups if s.status == "degenerate"),
                   "culled": sum(1 for s in self.setups if s.status == "culled")}
         yield Vars(line, values)
+        if crack_cells:
+            # The cracks themselves, so that a view can mark them on the grid.
+            yield Table(line, "cracks", ("x", "y"), tuple(crack_cells))
 
     def drawn(self):
         for setup in self.setups:
@@ -558,8 +562,9 @@ def edge_table(tri: Triangle, line: int) -> Table:
 
 
 # ================================================== overlaps and cracks
-def mesh_flaws(run: Run) -> tuple[int, int]:
-    """(pixels filled more than once, interior centres filled by none) in the window.
+def mesh_flaws(run: Run) -> tuple[int, list]:
+    """(how many pixels are filled more than once, the pixels (x, y) whose
+    centres are interior but filled by none) in the window.
 
     The interior is that of the union of the drawn triangles' closed areas,
     decided exactly: centres strictly inside some triangle are interior;
@@ -571,7 +576,7 @@ def mesh_flaws(run: Run) -> tuple[int, int]:
     overlaps = int((counts > 1).sum())
     tris = [tri.ccw() for tri in run.drawn()]
     if not tris or counts.size == 0:
-        return overlaps, 0
+        return overlaps, []
     x0, y0, x1, y1 = run.window
     strict = span_mask(tris, run.S, "strict", run.window)
     closed = span_mask(tris, run.S, "inclusive", run.window)
@@ -586,8 +591,8 @@ def mesh_flaws(run: Run) -> tuple[int, int]:
             near = [t for t, b in zip(scaled, boxes) if b[0] <= px <= b[1] and b[2] <= py <= b[3]]
             if exact_triangles.in_union_interior(near, (px, py)):
                 interior[r, c] = True
-    cracks = int((interior & (counts == 0)).sum())
-    return overlaps, cracks
+    rows, columns = np.nonzero(interior & (counts == 0))
+    return overlaps, [(int(c + x0), int(r + y0)) for r, c in zip(rows, columns)]
 
 
 # ======================================================== explanations

@@ -22,7 +22,7 @@ from PySide6.QtWidgets import (QApplication, QCheckBox, QDialog, QDialogButtonBo
 from algorithms import registry
 from algorithms.raster import MAX_GRID, Raster
 from algorithms.registry import InputError
-from algorithms.steps import Note
+from algorithms.steps import Note, Table
 from widgets.depth_view import DepthView
 from widgets.drawing import CONTOURS, point_labels
 from widgets.editors import AlgorithmPicker, GridEditor, OptionsEditor, PointsEditor
@@ -793,6 +793,7 @@ class MainWindow(QMainWindow):
         self._show_error_summary()
         cells, spans = _step_cells(state)
         self.grid.set_highlights(cells, state.candidates, spans)
+        self._show_cracks(player.trace, state.index)
         trace, index = player.trace, state.index
         self.transport.set_position(index)
         self.code.set_current(state.step.line)
@@ -826,10 +827,12 @@ class MainWindow(QMainWindow):
             return
         _none, _once, twice, more = coverage_counts(state.raster)
         overlaps = twice + more
+        cracks = len(crack_cells(self.player.trace, state.index))
         self.coverage_label.setText(
-            "No pixel covered twice" if not overlaps else
-            f"{overlaps:,} pixel{'s' if overlaps != 1 else ''} covered twice or more"
-            + (f" ({more:,} three times or more)" if more else ""))
+            ("No pixel covered twice" if not overlaps else
+             f"{overlaps:,} pixel{'s' if overlaps != 1 else ''} covered twice or more"
+             + (f" ({more:,} three times or more)" if more else ""))
+            + (f" · {cracks:,} crack{'s' if cracks != 1 else ''} outlined" if cracks else ""))
 
     # ------------------------------------------- depth, samples, accuracy
     def _prepare_depth_and_accuracy(self) -> None:
@@ -909,6 +912,14 @@ class MainWindow(QMainWindow):
         final = float(accuracy.estimate[y, x])
         return [("exact coverage", f"{exact:.6f}"),
                 ("error (final)", f"{final - exact:+.6f}")]
+
+    def _show_cracks(self, trace, index: int) -> None:
+        """With coverage counts on, outline the cracks a mesh run reports
+        (its "cracks" table) instead of the compared run's differences."""
+        if not self.coverage.isChecked():
+            self.grid.set_differences(self.player.differences)
+            return
+        self.grid.set_differences(crack_cells(trace, index))
 
     def _coverage_toggled(self, on: bool) -> None:
         self.legend.setVisible(not on)
@@ -1076,6 +1087,14 @@ def _series_name(trace) -> str | None:
         if np.isfinite(trace.series(name)).any():
             return name
     return None
+
+
+def crack_cells(trace, index: int) -> list:
+    """The pixels of the run's "cracks" table recorded at or before ``index``."""
+    for at, record in trace.records.items():
+        if at <= index and isinstance(record, Table) and record.name == "cracks":
+            return [tuple(row) for row in record.rows]
+    return []
 
 
 def launch(argv=None) -> int:

@@ -295,3 +295,20 @@ def test_every_algorithm_can_be_selected_and_stepped(open_window):
         assert w.tables_dock.isVisibleTo(w) == has_tables, spec.name
         assert w.transport.counter.text() == f"step {player.last:,} / {player.last:,}"
         assert w.grid.mode == expected_mode(spec), spec.name
+
+
+def test_cracks_of_a_strict_mesh_are_outlined_with_coverage_on(open_window):
+    # Two triangles sharing the edge (4, 4)-(12, 12): with the strict rule
+    # the centres exactly on that diagonal belong to neither.
+    w = open_window("triangle-bbox")
+    w.set_points([(4, 4), (12, 4), (12, 12), (4, 4), (12, 12), (4, 12)])
+    w.set_option("fill_rule", "strict")
+    w.player.to_last()
+    assert w.grid.outlines.layer("difference").size == 0 or not w.coverage.isChecked()
+    w.coverage.setChecked(True)
+    outlined = {tuple(c) for c in w.grid.outlines.layer("difference").tolist()}
+    # Centres (i + 1/2, i + 1/2) on the diagonal from 4.5 to 11.5, worked out by hand.
+    assert outlined == {(i, i) for i in range(4, 12)}
+    assert "8 cracks outlined" in w.coverage_label.text()
+    w.coverage.setChecked(False)
+    assert "crack" not in w.coverage_label.text()
