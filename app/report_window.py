@@ -262,7 +262,8 @@ class ReportDialog(QDialog):
 
 def install_report_action(window) -> QAction:
     """Add Run > Report… to the window's menu bar."""
-    menu = window.menuBar().addMenu("&Run")
+    menu = window.menus["run"]
+    menu.addSeparator()
     action = QAction("&Report: speed against error…", window)
     action.setShortcut(QKeySequence("Ctrl+R"))
     action.triggered.connect(lambda: open_report(window))

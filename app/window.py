@@ -371,16 +371,20 @@ class MainWindow(QMainWindow):
     def _build_actions(self) -> None:
         bar = self.menuBar()
         file_menu = bar.addMenu("&File")
+        # Other modules add their entries to these menus by name.
+        self.menus = {"file": file_menu}
         quit_action = file_menu.addAction("&Quit")
         quit_action.setShortcut(QKeySequence.StandardKey.Quit)
         quit_action.triggered.connect(self.close)
         self.actions_: dict[str, QAction] = {}
-        self._build_edit_menu(bar.addMenu("&Edit"))
-        self._build_playback_menu(bar.addMenu("&Playback"))
-        self._build_view_menu(bar.addMenu("&View"))
+        for key, title in (("edit", "&Edit"), ("view", "&View"), ("run", "&Run")):
+            self.menus[key] = bar.addMenu(title)
+        self._build_edit_menu(self.menus["edit"])
+        self._build_playback_menu(self.menus["run"])
+        self._build_view_menu(self.menus["view"])
         self._build_toolbar()
 
-        help_menu = bar.addMenu("&Help")
+        help_menu = self.menus["help"] = bar.addMenu("&Help")
         keys = help_menu.addAction("&Keyboard shortcuts")
         keys.setShortcut(QKeySequence("F1"))
         keys.triggered.connect(self.show_shortcuts)
