@@ -1231,6 +1231,22 @@ def temporal(points, options, grid):
     yield Vars(3, {"frames": len(images), "apparent speed": apparent})
 
 
+def animation_frame_steps(spec, trace) -> list[int]:
+    """The step at which each animation frame of an ``aa-temporal`` run is
+    complete (its image fully written), in order; [] for other runs.
+
+    Frame k starts with a Vars record naming ``frame`` k; the step before
+    the next frame's record (or before the closing record) shows image k
+    with frame k's variables.
+    """
+    if spec.name != "aa-temporal" or trace.start is None:
+        return []
+    starts = [index for index, record in sorted(trace.records.items())
+              if isinstance(record, Vars) and "frame" in record.values]
+    ends = [start - 1 for start in starts[1:]] + [len(trace) - 2]
+    return [max(end, start) for start, end in zip(starts, ends)]
+
+
 # ========================================================= registering
 registry_module.all_specs()
 

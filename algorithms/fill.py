@@ -1,9 +1,15 @@
 """The fill family: seed fill inside an outline drawn on the grid.
 
-The input is one or more closed outlines of integer points (the last point
-joins the first). Each segment is drawn with integer rounding, as Bresenham
-draws it, in the boundary colour; then the region around a seed pixel is
-filled in the fill colour, bounded by the outline and by the grid's edges.
+The outline is one or more closed polygons of integer points (the last
+point joins the first), each segment drawn with integer rounding as
+Bresenham draws it, or a midpoint circle around one centre
+(``flood-fill-circle``); it is drawn in the boundary colour. Then the region
+around a seed pixel is filled in the fill colour, bounded by the grid's
+edges and, by the ``mode`` option, either by the boundary colour (boundary
+fill: every pixel the seed reaches without crossing the outline) or by any
+change of colour (flood fill of a region of one colour: the pixels joined to
+the seed that have the seed's colour, so a seed on the outline recolours the
+outline).
 The seed pixel grows by 4- or 8-neighbours, in one of three orders: a stack
 (depth first, the order of the recursive textbook fill), a queue (breadth
 first) or spans (the scan-line seed fill, a run of a row at a time).
@@ -18,6 +24,7 @@ from array import array
 from collections import deque
 from fractions import Fraction
 
+from .circles import CENTRE, RADIUS, midpoint_circle_pixels
 from .registry import AlgorithmSpec, InputError, Inputs, Option, register
 from .steps import PER_PIXEL, PLOT, VISIT, CodeLine, Note, Span, Start, Vars
 
@@ -52,6 +59,11 @@ OUTLINE_STEPS = Option("outline", "choice", "8",
                        "8: outline segments as Bresenham draws them (8-connected); 4: a corner "
                        "pixel added at each diagonal step, which holds an 8-connected fill",
                        choices=("8", "4"))
+MODE = Option("mode", "choice", "boundary",
+              "boundary: fill everything the seed reaches without crossing the boundary "
+              "colour; region: recolour the pixels joined to the seed that have the seed's "
+              "colour (a seed on the outline recolours the outline)",
+              choices=("boundary", "region"))
 COLORS = Option("colors", "colors", ("#c0392b", "#2e86de"), "boundary colour, fill colour")
 
 
@@ -84,6 +96,23 @@ def outline_pixels(contours, four: bool = False) -> list[tuple[int, int]]:
                     # Step across first, then along: the corner closes the
                     # diagonal that an 8-connected fill would slip through.
                     pixels[(b[0], a[1])] = True
+    return list(pixels)
+
+
+def circle_outline(centre, radius: int, four: bool = False) -> list[tuple[int, int]]:
+    """The midpoint circle's pixels once each, in order around the centre.
+
+    Sorted by angle, consecutive pixels are 8-neighbours, so ``four`` can add
+    the corner pixel that closes each diagonal step, as for polygons.
+    """
+    xc, yc = centre
+    ring = [tuple(map(int, p)) for p in midpoint_circle_pixels([centre], {"radius": radius})]
+    ring.sort(key=lambda p: math.atan2(p[1] - yc, p[0] - xc))
+    pixels = dict.fromkeys(ring)
+    if four:
+        for a, b in zip(ring, ring[1:] + ring[:1]):
+            if abs(a[0] - b[0]) == 1 and abs(a[1] - b[1]) == 1:
+                pixels[(b[0], a[1])] = None
     return list(pixels)
 
 
@@ -167,22 +196,28 @@ def _colors(options) -> tuple[str, str]:
     return colors[0], colors[1]
 
 
-def _seed(options, contours, region) -> tuple[int, int]:
+def _seed(name, options, auto, region) -> tuple[int, int]:
+    """The seed pixel; ``auto()`` finds one inside the outline or None."""
     seed = options["seed"]
     if seed == "auto":
-        found = inside_pixel(contours, region.free)
+        found = auto()
         if found is None:
-            raise InputError("flood-fill: no free pixel lies inside the outline; "
+            raise InputError(f"{name}: no free pixel lies inside the outline; "
                              "give a seed with seed=X,Y")
         return found
     x, y = seed
     if not region.inside(x, y):
-        raise InputError(f"flood-fill: the seed ({x}, {y}) lies outside the "
+        raise InputError(f"{name}: the seed ({x}, {y}) lies outside the "
                          f"{region.width}x{region.height} grid")
-    if region.cells[region.index(x, y)] == BOUNDARY:
-        raise InputError(f"flood-fill: the seed ({x}, {y}) lies on the boundary; "
-                         "pick a pixel inside the outline")
+    if region.cells[region.index(x, y)] == BOUNDARY and options["mode"] == "boundary":
+        raise InputError(f"{name}: the seed ({x}, {y}) lies on the boundary; pick a pixel "
+                         "inside the outline, or set mode=region to recolour the outline")
     return x, y
+
+
+def _circle_seed(centre, region):
+    """The centre pixel, when the circle leaves it free."""
+    return tuple(centre) if region.free(*centre) else None
 
 
 def _neighbour_names(options) -> str:
@@ -195,6 +230,20 @@ def fill_code(points, options):
                if options["outline"] == "8" else
                "draw each outline segment, closing each outline, with a corner pixel at each "
                "diagonal step (4-connected)")
+    return _code(outline, options)
+
+
+def circle_fill_code(points, options):
+    outline = ("draw the midpoint circle of radius R around C (8-connected)"
+               if options["outline"] == "8" else
+               "draw the midpoint circle of radius R around C, with a corner pixel at each "
+               "diagonal step (4-connected)")
+    return _code(outline, options)
+
+
+def _code(outline, options):
+    free = ("free: inside the grid, not boundary, not filled" if options["mode"] == "boundary"
+            else "free: inside the grid and still the seed's colour")
     names = _neighbour_names(options)
     # Operation counts. An outline pixel costs what a Bresenham step does.
     # Every pixel pushed is popped once, so a push (one addition to the
@@ -212,7 +261,8 @@ def fill_code(points, options):
             CodeLine("    (x, y) = pop()", VISIT,
                      ops={"int_add": 2, "compare": 2, "pixels_tested": 1}),
             CodeLine("    if (x, y) is filled already:  continue", VISIT),
-            CodeLine("    widen x to the run xl .. xr of free pixels on row y;  fill xl .. xr", PLOT,
+            CodeLine(f"    widen x to the run xl .. xr of free pixels on row y;  fill xl .. xr   "
+                     f"({free})", PLOT,
                      ops={"compare": 2, "pixels_tested": 2},
                      per={PER_PIXEL: {"int_add": 1, "compare": 1, "pixels_tested": 1}}),
             CodeLine("    for the rows y + 1 and y - 1, over " +
@@ -240,7 +290,7 @@ def fill_code(points, options):
         CodeLine("    if p is filled already:  continue   (pushed twice before it was filled)", VISIT,
                  ops={"int_add": pop["int_add"], "compare": pop["compare"] + 1,
                       "pixels_tested": 1}),
-        CodeLine(f"    fill p;  {push}   (free: inside the grid, not boundary, not filled)", PLOT,
+        CodeLine(f"    fill p;  {push}   ({free})", PLOT,
                  ops={"int_add": pop["int_add"] + k, "compare": pop["compare"] + 1 + k,
                       "pixels_tested": 1 + k}),
         CodeLine("done"),
@@ -254,18 +304,54 @@ def flood_fill(points, options, grid):
     The checks run here, before the first frame, so a bad seed is an
     InputError at once.
     """
-    width, height = grid
-    boundary_color, fill_color = _colors(options)
     outline = outline_pixels(points, four=options["outline"] == "4")
-    region = Region(width, height, outline)
-    seed = _seed(options, points, region)
+    region = Region(*grid, outline)
+    seed = _seed("flood-fill", options, lambda: inside_pixel(points, region.free), region)
+    return _fill(outline, region, seed, options, {})
+
+
+def circle_fill(points, options, grid):
+    """Seed fill inside a midpoint circle around the one point given."""
+    (centre,) = points
+    radius = options["radius"]
+    outline = circle_outline(centre, radius, four=options["outline"] == "4")
+    region = Region(*grid, outline)
+    shape = {"C": tuple(centre), "R": radius}
+    if options["seed"] == "auto" and not region.free(*centre):
+        return _outline_only(outline, options, shape)
+    seed = _seed("flood-fill-circle", options, lambda: _circle_seed(centre, region), region)
+    return _fill(outline, region, seed, options, shape)
+
+
+def _outline_only(outline, options, shape):
+    """A circle with no free pixel inside (radius 0, or its centre off the
+    grid): the outline is drawn and nothing is filled."""
+    boundary_color, fill_color = _colors(options)
+    yield Start(0, ("rgb", "size"), {**shape, "seed": "none", "mode": options["mode"],
+                                     "boundary colour": boundary_color,
+                                     "fill colour": fill_color}, pixel_value="rgb")
+    yield from _outline_frames(outline, _packed(boundary_color), 0)
+    yield Note(0, "The circle has no free pixel inside it to start from, so nothing is "
+                  "filled; give a seed outside it to fill the rest of the grid.")
+    done = 7 if options["order"] == "span" else 6
+    yield Vars(done, {"filled": 0, "boundary": len(outline), "pops": 0})
+
+
+def _fill(outline, region, seed, options, shape: dict):
+    boundary_color, fill_color = _colors(options)
+    # The fill spreads over the pixels in the seed's state: free ones, or
+    # the outline's when a region fill starts on it.
+    target = region.cells[region.index(*seed)]
     start = Start(0, ("rgb", "size"),
-                  {"seed": seed, "connectivity": int(options["connectivity"]),
-                   "order": options["order"], "grid": f"{width}x{height}",
+                  {**shape, "seed": seed, "connectivity": int(options["connectivity"]),
+                   "order": options["order"], "mode": options["mode"],
+                   "spreads over": "the outline" if target == BOUNDARY else "free pixels",
+                   "grid": f"{region.width}x{region.height}",
                    "boundary colour": boundary_color, "fill colour": fill_color},
                   pixel_value="rgb")
     run = _span_frames if options["order"] == "span" else _pixel_frames
-    return run(start, outline, region, seed, options, _packed(boundary_color), _packed(fill_color))
+    return run(start, outline, region, seed, options, target,
+               _packed(boundary_color), _packed(fill_color))
 
 
 def _outline_frames(outline, boundary_rgb, *size):
@@ -273,7 +359,7 @@ def _outline_frames(outline, boundary_rgb, *size):
         yield (0, x, y, boundary_rgb, *size)
 
 
-def _pixel_frames(start, outline, region, seed, options, boundary_rgb, fill_rgb):
+def _pixel_frames(start, outline, region, seed, options, target, boundary_rgb, fill_rgb):
     """Stack or queue order: one pixel per pop."""
     yield start
     yield from _outline_frames(outline, boundary_rgb, 0)
@@ -299,14 +385,14 @@ def _pixel_frames(start, outline, region, seed, options, boundary_rgb, fill_rgb)
         p = take()
         x, y = region.pixel(p)
         yield Vars(3, {"size": len(pending), "next": _entries(pending, stack, region)}, (x, y))
-        if cells[p] != FREE:
+        if cells[p] != target:
             skipped += 1
             yield (4, x, y, NAN, len(pending))
             continue
         cells[p] = FILLED
         filled += 1
         for offset in offsets:
-            if cells[p + offset] == FREE:
+            if cells[p + offset] == target:
                 push(p + offset)
         largest = max(largest, len(pending))
         yield (5, x, y, fill_rgb, len(pending))
@@ -320,14 +406,14 @@ def _pixel_frames(start, outline, region, seed, options, boundary_rgb, fill_rgb)
     while pending:
         p = take()
         y, x = divmod(p, stride)
-        if cells[p]:  # not FREE (0)
+        if cells[p] != target:
             skipped += 1
             yield (4, x - 1, y - 1, NAN, len(pending))
             continue
         cells[p] = FILLED
         filled += 1
         for offset in offsets:
-            if not cells[p + offset]:
+            if cells[p + offset] == target:
                 push(p + offset)
         size = len(pending)
         if size > largest:
@@ -338,7 +424,7 @@ def _pixel_frames(start, outline, region, seed, options, boundary_rgb, fill_rgb)
                    "skipped": skipped, "largest": largest, "next": "(empty)"})
 
 
-def _span_frames(start, outline, region, seed, options, boundary_rgb, fill_rgb):
+def _span_frames(start, outline, region, seed, options, target, boundary_rgb, fill_rgb):
     """Scan-line seed fill: a run of free pixels per pop.
 
     Frames are few here (one per run), so the stack's size goes into a Vars
@@ -360,14 +446,14 @@ def _span_frames(start, outline, region, seed, options, boundary_rgb, fill_rgb):
         if pops <= DETAIL_POPS:
             values["next"] = _entries(pending, True, region)
         yield Vars(3, values, (x, y))
-        if cells[p] != FREE:
+        if cells[p] != target:
             skipped += 1
             yield (4, x, y, NAN)
             continue
         left = right = p
-        while cells[left - 1] == FREE:
+        while cells[left - 1] == target:
             left -= 1
-        while cells[right + 1] == FREE:
+        while cells[right + 1] == target:
             right += 1
         cells[left:right + 1] = bytes([FILLED]) * (right - left + 1)
         filled += right - left + 1
@@ -381,7 +467,7 @@ def _span_frames(start, outline, region, seed, options, boundary_rgb, fill_rgb):
             base = region.index(0, row)
             # The leftmost pixel of each run of free pixels in lo .. hi.
             seeds = [base + k for k in range(lo, hi + 1)
-                     if cells[base + k] == FREE and (k == lo or cells[base + k - 1] != FREE)]
+                     if cells[base + k] == target and (k == lo or cells[base + k - 1] != target)]
             # Pushed right to left, so the leftmost run is popped first.
             pending.extend(reversed(seeds))
             largest = max(largest, len(pending))
@@ -411,24 +497,33 @@ def fill_explain(trace, i):
         return []
     x, y = step.pixel
     if kind.startswith("fill p"):
-        raster = trace.raster_at(i)
+        unfilled = _unfilled(trace, i)
         pushed = [(x + dx, y + dy) for dx, dy in
                   NEIGHBOURS[str(trace.start.constants["connectivity"])]
                   if 0 <= x + dx < trace.width and 0 <= y + dy < trace.height
-                  and raster.counts[y + dy, x + dx] == 0]
+                  and unfilled[y + dy, x + dx]]
         return [("pushed", " ".join(f"({a}, {b})" for a, b in pushed) or "none: no free neighbour")]
     if kind.startswith("if"):
         return [("skipped", f"({x}, {y}) was filled after it was pushed")]
     return []
 
 
+def _unfilled(trace, i):
+    """Where the fill may still spread at step ``i``: unwritten pixels, or
+    the outline's pixels not yet recoloured when a region fill started on it."""
+    raster = trace.raster_at(i)
+    if trace.start.constants.get("spreads over") != "the outline":
+        return raster.counts == 0
+    boundary = _packed(trace.start.constants["boundary colour"])
+    return (raster.counts == 1) & (raster.colors == boundary)
+
+
 def _span_explain(trace, i, span, kind):
     if kind.startswith("widen"):
         return [("run", f"row {span.y}: x = {span.x_start} .. {span.x_end - 1}")]
-    raster = trace.raster_at(i)
-    row = raster.counts[span.y]
+    row = _unfilled(trace, i)[span.y]
     seeds = [x for x in range(span.x_start, span.x_end)
-             if row[x] == 0 and (x == span.x_start or row[x - 1] != 0)]
+             if row[x] and (x == span.x_start or not row[x - 1])]
     return [("pushed", " ".join(f"({x}, {span.y})" for x in seeds) or "none: no free pixel")]
 
 
@@ -438,7 +533,7 @@ register(AlgorithmSpec(
     family="fill",
     summary="draw the outline, then grow a region from a seed pixel: stack, queue or spans",
     inputs=OUTLINE,
-    options=(SEED, CONNECTIVITY, ORDER, OUTLINE_STEPS, COLORS),
+    options=(SEED, CONNECTIVITY, ORDER, MODE, OUTLINE_STEPS, COLORS),
     code=fill_code,
     generator=flood_fill,
     explain=fill_explain,
@@ -452,5 +547,30 @@ register(AlgorithmSpec(
            "An 8-connected fill slips through the diagonal steps of an 8-connected "
            "outline; draw the outline 4-connected (outline=4) to hold it.",
            "All three orders fill the same pixels: those joined to the seed by a path "
-           "of free pixels."),
+           "of free pixels.",
+           "mode=region fills the pixels joined to the seed that have the seed's colour. "
+           "With one boundary colour that is the boundary fill's region when the seed is "
+           "inside; a seed on the outline recolours the outline's connected pixels instead."),
+))
+
+
+register(AlgorithmSpec(
+    name="flood-fill-circle",
+    title="Seed fill in a circle",
+    family="fill",
+    summary="draw a midpoint circle, then grow a region from a seed pixel: stack, queue or spans",
+    inputs=CENTRE,
+    options=(RADIUS, SEED, CONNECTIVITY, ORDER, MODE, OUTLINE_STEPS, COLORS),
+    code=circle_fill_code,
+    generator=circle_fill,
+    explain=fill_explain,
+    uses_grid=True,
+    notes=("The outline is the midpoint circle of radius R around C. Its pixels step "
+           "diagonally, so an 8-connected fill leaks out of it unless outline=4 adds a "
+           "corner pixel at each diagonal step.",
+           "seed=auto starts at the centre. A circle of radius 0 is its centre alone and "
+           "has no inside: with seed=auto only that pixel is drawn.",
+           "mode=region fills the pixels joined to the seed that have the seed's colour: "
+           "inside the circle that is the same as mode=boundary, but a seed on the circle "
+           "recolours the circle itself."),
 ))

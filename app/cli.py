@@ -300,6 +300,10 @@ def add_export_command(commands) -> None:
     export.add_argument("--theme", choices=("light", "dark"), default="light",
                         help="colours (default %(default)s)")
     export.add_argument("--once", action="store_true", help="play once instead of looping")
+    export.add_argument("--per", choices=("auto", "step", "animation"), default="auto",
+                        help="one frame per step, or per animation frame of a run that has "
+                             "them (aa-temporal); auto: animation frames where there are "
+                             "some (default)")
     export.add_argument("--no-grid", action="store_true", help="no grid lines")
     export.add_argument("--no-primitive", action="store_true", help="no ideal primitive")
     export.add_argument("--no-highlight", action="store_true",
@@ -332,7 +336,7 @@ def command_export(args) -> int:
         first=args.first, last=args.last, fps=fps, hold=hold, scale=scale,
         grid_lines=not args.no_grid, primitive=not args.no_primitive,
         highlight=not args.no_highlight, caption=args.caption, panel=args.panel,
-        theme=args.theme, loop=not args.once)
+        theme=args.theme, loop=not args.once, per=args.per)
     # Headless by default: the export draws text with Qt, and needs no window.
     os.environ.setdefault("QT_QPA_PLATFORM", "offscreen")
     bar = _ProgressBar(sys.stderr)

@@ -57,6 +57,7 @@ from PySide6.QtGui import (QColor, QFont, QFontDatabase, QFontMetrics, QGuiAppli
                            QPainter)
 
 from algorithms import registry
+from algorithms.antialias import animation_frame_steps
 from algorithms.registry import InputError
 from algorithms.steps import PLOT, Span
 from algorithms.trace import DEFAULT_STEP_CAP, FrameState
@@ -76,6 +77,9 @@ AUTO_EXTENT = 640  # pixels the grid's longer side takes at the automatic scale
 # Pillow holds every frame of a GIF in memory until it writes the file.
 MAX_GIF_PIXELS = 2 ** 30
 PANELS = ("code", "variables", "both", "none")
+# One exported frame per step, or per animation frame of a run that has
+# them (aa-temporal); auto picks animation frames where there are some.
+PER = ("auto", "step", "animation")
 FRAME_NAME = "frame_{:0{width}d}.png"
 _FRAME_FILE = re.compile(r"^frame_\d{4,}\.png$")
 # A palette index meaning "not looked up yet", so never a colour: drawn
@@ -152,6 +156,7 @@ class ExportSettings:
     panel: str = "code"
     theme: str = "light"
     loop: bool = True        # False: play once
+    per: str = "auto"        # one of PER
 
     def checked(self) -> "ExportSettings":
         fps = _real(self.fps, "frames per second")
@@ -171,6 +176,8 @@ class ExportSettings:
             raise ExportError(f"panel must be one of {', '.join(PANELS)}, got {self.panel!r}")
         if self.theme not in THEMES:
             raise ExportError(f"theme must be one of {', '.join(THEMES)}, got {self.theme!r}")
+        if self.per not in PER:
+            raise ExportError(f"frames per must be one of {', '.join(PER)}, got {self.per!r}")
         return replace(self, fps=fps, hold=hold, scale=None if scale is None else int(scale))
 
     def for_grid(self, width: int, height: int) -> "ExportSettings":
@@ -280,6 +287,25 @@ class Run:
         if end < start:
             raise ExportError(f"the range ends (step {end}) before it starts (step {start})")
         return range(start, end + 1)
+
+    def frame_steps(self, settings: "ExportSettings",
+                    names: tuple[str, str] = ("the first step", "the last step")):
+        """The steps drawn as frames: every step of the range, or the step
+        that completes each animation frame inside it."""
+        steps = self.frame_range(settings.first, settings.last, names)
+        if settings.per == "step":
+            return steps
+        ends = animation_frame_steps(self.spec, self.trace)
+        if not ends:
+            if settings.per == "animation":
+                raise ExportError(f"{self.spec.name} has no animation frames: export one frame "
+                                  "per step instead")
+            return steps
+        chosen = [end for end in ends if steps.start <= end < steps.stop]
+        if not chosen:
+            raise ExportError(f"no animation frame ends between steps {steps.start} and "
+                              f"{steps.stop - 1}: widen the range")
+        return chosen
 
 
 # --------------------------------------------------------------- Qt set-up
@@ -994,7 +1020,7 @@ def export(run: Run, settings: ExportSettings = ExportSettings(), gif=None, fram
     if gif is None and frames_dir is None:
         raise ExportError("nothing to write: give a GIF file, a folder for frames, or both")
     settings = settings.for_grid(run.trace.width, run.trace.height)
-    steps = run.frame_range(settings.first, settings.last, names)
+    steps = run.frame_steps(settings, names)
     renderer = FrameRenderer(run, settings)
     width, height = renderer.size
     if gif is not None and len(steps) * width * height > MAX_GIF_PIXELS:

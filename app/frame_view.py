@@ -29,6 +29,15 @@ from .render import PALETTE, Overlay, Palette, compose
 
 
 # ------------------------------------------------------------ ideal primitive
+def takes_circle(spec) -> bool:
+    """One centre and a radius (or radii): a circle, an ellipse, a seed fill
+    inside a circle."""
+    names = {option.name for option in spec.options}
+    inputs = spec.inputs
+    return (inputs.count == 1 and not inputs.contours and not inputs.multiple
+            and bool(names & {"radius", "rx"}))
+
+
 def ideal_paths(spec, points, options) -> list:
     """The ideal primitive as [(points, closed), ...] in grid units.
 
@@ -45,7 +54,7 @@ def ideal_paths(spec, points, options) -> list:
         centres = [(float(x), float(y)) for x, y in points]
     if not centres:
         return []
-    if spec.family == "circles":
+    if takes_circle(spec):
         rx = options.get("rx", options.get("radius"))
         ry = options.get("ry", options.get("radius"))
         if len(centres) != 1 or not all(isinstance(r, (int, float)) and not isinstance(r, bool)

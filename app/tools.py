@@ -10,7 +10,7 @@ from __future__ import annotations
 
 from widgets.drawing import CIRCLE, CONTOURS, FIXED, GROUPS
 
-from .frame_view import ideal_paths, scene_paths
+from .frame_view import ideal_paths, scene_paths, takes_circle
 from .player import contour_sizes, runnable_input
 
 
@@ -20,7 +20,7 @@ def drawing_mode(spec) -> str:
         return CONTOURS
     if inputs.multiple:
         return GROUPS
-    if spec.family == "circles" and inputs.count == 1:
+    if takes_circle(spec):
         return CIRCLE
     return FIXED
 

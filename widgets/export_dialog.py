@@ -17,6 +17,7 @@ RANGES = ("all", "current", "custom")
 PANELS = (("code", "Pseudo-code"), ("variables", "Variables"), ("both", "Pseudo-code and variables"),
           ("none", "None"))
 THEMES = (("light", "Light"), ("dark", "Dark"))
+PER = (("auto", "Automatic"), ("step", "Step"), ("animation", "Animation frame"))
 
 
 class ExportDialog(QDialog):
@@ -65,6 +66,17 @@ class ExportDialog(QDialog):
         layout.addWidget(self.range_all)
         layout.addWidget(self.range_current)
         layout.addLayout(custom)
+        self.per = QComboBox(steps)
+        for key, text in PER:
+            self.per.addItem(text, key)
+        self.per.setToolTip("Step: one frame per step of the run. Animation frame: one frame "
+                            "per frame of an animated run (aa-temporal), each fully drawn. "
+                            "Automatic: animation frames where the run has them.")
+        per_row = QHBoxLayout()
+        per_row.addWidget(QLabel("One frame per", steps))
+        per_row.addWidget(self.per)
+        per_row.addStretch(1)
+        layout.addLayout(per_row)
 
         # Timing and size.
         timing = QGroupBox("Timing and size", self)
@@ -181,7 +193,7 @@ class ExportDialog(QDialog):
         for button in (self.range_all, self.range_current, self.range_custom, self.loop,
                        self.grid_lines, self.primitive, self.highlight, self.caption):
             button.toggled.connect(changed)
-        for combo in (self.panel, self.theme):
+        for combo in (self.panel, self.theme, self.per):
             combo.currentIndexChanged.connect(changed)
 
     # ------------------------------------------------------------ set-up
@@ -221,7 +233,7 @@ class ExportDialog(QDialog):
             "primitive": self.primitive.isChecked(), "highlight": self.highlight.isChecked(),
             "caption": self.caption.isChecked(), "panel": self.panel.currentData(),
             "theme": self.theme.currentData(), "gif": self.path.text().strip(),
-            "frames_dir": self.frames_dir.text().strip(),
+            "frames_dir": self.frames_dir.text().strip(), "per": self.per.currentData(),
         }
 
     def set_values(self, values: dict) -> None:
@@ -234,7 +246,7 @@ class ExportDialog(QDialog):
                           ("caption", self.caption)):
             if name in values:
                 box.setChecked(bool(values[name]))
-        for name, combo in (("panel", self.panel), ("theme", self.theme)):
+        for name, combo in (("panel", self.panel), ("theme", self.theme), ("per", self.per)):
             if name in values:
                 index = combo.findData(values[name])
                 if index >= 0:

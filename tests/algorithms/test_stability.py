@@ -141,6 +141,27 @@ def circle_cases(spec) -> list[Case]:
     return cases
 
 
+def circle_fill_cases(spec) -> list[Case]:
+    """The circle cases, then other fill options and seeds on a radius-5 circle
+    around (12, 10), whose ring passes through (12, 15)."""
+    cases = circle_cases(spec)
+    for options in FILL_OPTIONS:
+        if options["outline"] == "8":
+            label = ",".join(f"{k}={v}" for k, v in options.items())
+            cases.append(Case(f"r=5 {label}", spec.name, ((12, 10),), {"radius": 5, **options}))
+    ring = {"radius": 5, "seed": (12, 15)}
+    cases += [
+        Case("seed outside the circle", spec.name, ((12, 10),), {"radius": 5, "seed": (0, 0)}),
+        Case("region fill of the ring", spec.name, ((12, 10),), {**ring, "mode": "region"}),
+        Case("region fill of the ring, 4-connected", spec.name, ((12, 10),),
+             {**ring, "mode": "region", "connectivity": "4"}),
+        Case("seed on the ring", spec.name, ((12, 10),), ring, GRID, False),
+        Case("seed off the grid", spec.name, ((12, 10),), {"radius": 5, "seed": (99, 5)},
+             GRID, False),
+    ]
+    return cases
+
+
 POLYGONS = {
     "triangle": [[(2.0, 2.0), (30.0, 5.0), (12.0, 25.0)]],
     "square on centres": [[(2.5, 2.5), (20.5, 2.5), (20.5, 20.5), (2.5, 20.5)]],
@@ -290,6 +311,8 @@ def cases_for(spec) -> list[Case]:
         return fill_cases(spec) if spec.family == "fill" else polygon_cases(spec)
     if inputs.count == 2 and inputs.integer:
         return line_cases(spec)
+    if inputs.count == 1 and inputs.integer and spec.family == "fill":
+        return circle_fill_cases(spec)
     if inputs.count == 1 and inputs.integer:
         return circle_cases(spec)
     if inputs.multiple:
@@ -439,21 +462,31 @@ def oracle_polygons(case: Case, spec, trace) -> None:
 def oracle_fill(case: Case, spec, trace) -> None:
     options = spec.resolve(case.options)
     width, height = case.grid
-    boundary = set(outline_pixels(case.points, four=options["outline"] == "4"))
+    if spec.inputs.contours:
+        boundary = set(outline_pixels(case.points, four=options["outline"] == "4"))
+    else:
+        (cx, cy), = case.points
+        boundary = {(cx + x, cy + y) for x, y in exact_circles.midpoint_circle(options["radius"])}
+    boundary = {b for b in boundary if 0 <= b[0] < width and 0 <= b[1] < height}
     seed = trace.start.constants["seed"]
-    region, queue = {tuple(seed)}, deque([tuple(seed)])
+    # The seed's component among the pixels of its own kind: free, or outline.
+    same = (lambda n: n in boundary) if tuple(seed) in boundary else (
+        lambda n: n not in boundary)
+    region, queue = ({tuple(seed)}, deque([tuple(seed)])) if seed != "none" else (set(), [])
     while queue:
         x, y = queue.popleft()
         for dx, dy in NEIGHBOURS[options["connectivity"]]:
             n = (x + dx, y + dy)
-            if 0 <= n[0] < width and 0 <= n[1] < height and n not in boundary and n not in region:
+            if 0 <= n[0] < width and 0 <= n[1] < height and same(n) and n not in region:
                 region.add(n)
                 queue.append(n)
     filled = [p for p in _written(trace)]
     inside = [p for p in filled if 0 <= p[0] < width and 0 <= p[1] < height]
     drawn = Counter(inside)
-    assert set(drawn) == region | {b for b in boundary if 0 <= b[0] < width and 0 <= b[1] < height}
-    assert all(drawn[p] == 1 for p in region), f"{case}: a pixel filled twice"
+    assert set(drawn) == region | boundary
+    once_more = boundary & region  # outline pixels a region fill recolours
+    assert all(drawn[p] == 1 + (p in once_more) for p in region | boundary), \
+        f"{case}: a pixel filled twice"
 
 
 @functools.lru_cache(maxsize=None)

@@ -274,8 +274,11 @@ def test_degenerate_triangle_note_in_the_status_bar(open_window):
 def test_every_algorithm_can_be_selected_and_stepped(open_window):
     w = open_window("line-bresenham")
     def expected_mode(spec):
-        # The drawing tool follows the shape of the inputs (circles by family).
-        if spec.family == "circles":
+        # The drawing tool follows the shape of the inputs: one centre with
+        # a radius is dragged out as a circle.
+        names = {option.name for option in spec.options}
+        if (spec.inputs.count == 1 and not spec.inputs.multiple
+                and names & {"radius", "rx"}):
             return "circle"
         if spec.inputs.contours:
             return "contours"
