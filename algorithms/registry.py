@@ -4,7 +4,7 @@ from __future__ import annotations
 import math
 import re
 from dataclasses import dataclass, field
-from typing import Callable, Sequence
+from typing import Callable
 
 from .errors import InputError
 from .steps import CodeLine
@@ -120,6 +120,10 @@ def _check_point(option: Option, value):
             raise InputError(f"option {option.name}: {item!r} is not a finite number")
         if not float(item).is_integer():
             raise InputError(f"option {option.name}: {item} is not a whole pixel coordinate")
+        if option.minimum is not None and item < option.minimum:
+            raise InputError(f"option {option.name}: {item:,.0f} is below {option.minimum:,.0f}")
+        if option.maximum is not None and item > option.maximum:
+            raise InputError(f"option {option.name}: {item:,.0f} is above {option.maximum:,.0f}")
     return (int(value[0]), int(value[1]))
 
 
@@ -286,12 +290,14 @@ class AlgorithmSpec:
         return self._start(points, options, grid)
 
     def record(self, points, options: dict | None = None, grid=(32, 24),
-               step_cap: int = DEFAULT_STEP_CAP) -> Trace:
+               step_cap: int = DEFAULT_STEP_CAP, monitor=None) -> Trace:
+        """Record a run; ``monitor`` (trace.RecordMonitor) hears progress and may cancel."""
         options = self.resolve(options)
         points = self.inputs.check(points)
         self.inputs.check_range(points)
         frames = self._start(points, options, grid)
-        return Trace.record(frames, self.code(points, options), grid[0], grid[1], step_cap)
+        return Trace.record(frames, self.code(points, options), grid[0], grid[1], step_cap,
+                            monitor)
 
     def _start(self, points, options, grid):
         if self.uses_grid:

@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import bisect
 import math
+import threading
 from dataclasses import dataclass
 from itertools import groupby, islice
 from typing import Iterable, Sequence
@@ -29,6 +30,38 @@ MIN_KEYFRAME_GAP = 1024
 
 class TraceError(ValueError):
     """A generator broke the frame protocol of steps.py."""
+
+
+class Cancelled(Exception):
+    """A recording was stopped through its monitor before the run ended."""
+
+
+class RecordMonitor:
+    """Progress and cancellation of one recording, safe to share between threads.
+
+    ``Trace.record`` calls ``report(steps)`` about every ``every`` steps (at
+    the end of a bulk chunk, so the check costs nothing per frame);
+    ``report`` raises ``Cancelled`` once ``cancel()`` has been called, from
+    any thread, and otherwise passes the count to ``progress``.
+    """
+
+    def __init__(self, progress=None, every: int = CHUNK):
+        self.progress = progress
+        self.every = max(1, int(every))
+        self._cancelled = threading.Event()
+
+    def cancel(self) -> None:
+        self._cancelled.set()
+
+    @property
+    def cancelled(self) -> bool:
+        return self._cancelled.is_set()
+
+    def report(self, steps: int) -> None:
+        if self._cancelled.is_set():
+            raise Cancelled(f"recording cancelled after {steps:,} steps")
+        if self.progress is not None:
+            self.progress(steps)
 
 
 @dataclass
@@ -66,16 +99,32 @@ class Trace:
         self._keyframes: list[Raster] | None = None
         self._gap = 0
         self._flat: np.ndarray | None = None
+        self._monitor: RecordMonitor | None = None
+        self._next_report = math.inf
+        self._chunk = CHUNK
         kinds = np.array([line.kind == PLOT for line in self.code], dtype=bool)
         self._line_plots = kinds
 
     # ----------------------------------------------------------- recording
     @classmethod
     def record(cls, frames: Iterable, code: Sequence[CodeLine], width: int,
-               height: int, step_cap: int = DEFAULT_STEP_CAP) -> "Trace":
+               height: int, step_cap: int = DEFAULT_STEP_CAP,
+               monitor: RecordMonitor | None = None) -> "Trace":
+        """Record the frames; a ``monitor`` hears the progress and may cancel
+        (``Cancelled`` is raised then)."""
         trace = cls(code, width, height, step_cap)
+        trace._monitor = monitor
+        trace._next_report = monitor.every if monitor is not None else math.inf
+        # Bulk chunks no longer than the report interval, so reports keep time.
+        trace._chunk = CHUNK if monitor is None else min(CHUNK, monitor.every)
         trace._record(iter(frames))
+        trace._monitor = None
         return trace
+
+    def _report(self) -> None:
+        """Called when the count passes the next report mark (rarely)."""
+        self._monitor.report(self._count)
+        self._next_report = self._count + self._monitor.every
 
     def _record(self, frames) -> None:
         start = next(frames, None)
@@ -96,6 +145,8 @@ class Trace:
             else:
                 for record in group:
                     self._record_rich(record)
+            if self._count >= self._next_report:
+                self._report()
         if self._count >= self.step_cap and next(frames, None) is not None:
             self.truncated = True
             self.message = (f"Recording stopped at the step cap of {self.step_cap:,} steps; "
@@ -106,7 +157,7 @@ class Trace:
         while True:
             first = self._count
             try:
-                rows = np.fromiter(islice(group, CHUNK), self._dtype)
+                rows = np.fromiter(islice(group, self._chunk), self._dtype)
             except InputError:
                 raise  # the generator refused its input: not a protocol fault
             except (ValueError, TypeError, OverflowError) as error:
@@ -117,6 +168,8 @@ class Trace:
             self._check_rows(rows, first)
             self._chunks.append(rows)
             self._count += len(rows)
+            if self._count >= self._next_report:
+                self._report()
 
     def _record_rich(self, record) -> None:
         index = self._count
@@ -151,15 +204,24 @@ class Trace:
             self._spans.append(index)
 
     def _finish(self) -> None:
-        frames = np.concatenate(self._chunks)
-        self._chunks = []
-        self.line = frames["line"].copy()
-        self.x = frames["x"].copy()
-        self.y = frames["y"].copy()
+        # Chunk by chunk into the columns rather than one concatenate: each
+        # copy is short, so a recording in a worker thread hands the
+        # interpreter lock back often (and one copy of the frames is saved).
+        count = sum(len(chunk) for chunk in self._chunks)
         names = self._dtype.names[3:]
-        self.values = np.empty((len(frames), len(names)))
-        for column, name in enumerate(names):
-            self.values[:, column] = frames[name]
+        self.line = np.empty(count, "u2")
+        self.x = np.empty(count, "i4")
+        self.y = np.empty(count, "i4")
+        self.values = np.empty((count, len(names)))
+        at = 0
+        for block in _blocks(self._chunks):
+            end = at + len(block)
+            self.line[at:end], self.x[at:end], self.y[at:end] = \
+                block["line"], block["x"], block["y"]
+            for column, name in enumerate(names):
+                self.values[at:end, column] = block[name]
+            at = end
+        self._chunks = []
 
     # ------------------------------------------------------------ queries
     def __len__(self) -> int:
@@ -376,6 +438,20 @@ class Trace:
             keyframes.append(raster)
         self._keyframes = keyframes
         return keyframes
+
+
+def _blocks(chunks):
+    """The chunks joined into blocks of about CHUNK rows: one-row chunks
+    (rich records) are not copied one by one, long ones are not joined."""
+    batch, rows = [], 0
+    for chunk in chunks:
+        batch.append(chunk)
+        rows += len(chunk)
+        if rows >= CHUNK:
+            yield batch[0] if len(batch) == 1 else np.concatenate(batch)
+            batch, rows = [], 0
+    if batch:
+        yield batch[0] if len(batch) == 1 else np.concatenate(batch)
 
 
 def _plain_number(value: float):

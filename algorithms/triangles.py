@@ -71,6 +71,20 @@ filled, decided exactly), drawn, degenerate, culled.
 The generators take the grid (``uses_grid``) and never leave it; a
 4-tuple (x0, y0, x1, y1) instead of (W, H) is a window anywhere in the
 plane, which the tests use for coordinates up to 1e6 px.
+
+Offset. The option offset = (X, Y), whole pixels, adds (X S, Y S) to the
+snapped vertices and moves the window by (X, Y), so every edge function
+is evaluated a long way from the origin while the frames name pixels of
+the grid (moved back; Vars show the vertices where the run put them, and
+Start's constants the offset). Exact arithmetic does not care: the pixels
+equal those at offset 0. The float precisions do, which is what the option
+shows. |X|, |Y| <= 2^21 px keeps every fixed-point term within int64.
+
+Near-plane clipping (triangle-perspective, option near > 0). A vertex with
+w <= 0 lies behind the eye, and the screen triangle of the projected
+corners is not what it shows. Each triangle is first cut by w >= near in
+homogeneous space (see clip_near); the 3 or 4 corners left are drawn as a
+fan of triangles, with a Note and a Table "near clip" after Start.
 """
 from __future__ import annotations
 
@@ -107,7 +121,17 @@ SUBPIXEL_BITS = Option("subpixel_bits", "int", 8,
                        minimum=0, maximum=8)
 CULL = Option("cull", "bool", False,
               "drop clockwise triangles (back faces) instead of swapping P1 and P2")
-BASE_OPTIONS = (FILL_RULE, PRECISION, SUBPIXEL_BITS, CULL)
+# Whole pixels, so that the exact run is a pure integer translation. The
+# bound keeps every fixed-point edge term within 64-bit integers, as
+# hardware would hold them: at 2^21 px and S = 256 the products
+# x_i * y_j reach 2^58 and c stays below 2^60.
+MAX_OFFSET = 1 << 21
+OFFSET = Option("offset", "point", (0, 0),
+                "whole pixels X,Y added to the vertices and the pixel centres before the edge "
+                "functions are evaluated: the grid shows the window at (X, Y), so the arithmetic "
+                f"runs far from the origin (at most +-{MAX_OFFSET:,} px)",
+                minimum=-MAX_OFFSET, maximum=MAX_OFFSET)
+BASE_OPTIONS = (FILL_RULE, PRECISION, SUBPIXEL_BITS, CULL, OFFSET)
 OPTIONS = BASE_OPTIONS + ATTRIBUTE_OPTIONS
 TRIANGLES = Inputs(3, integer=False, names=("P0", "P1", "P2"), multiple=True)
 
@@ -197,12 +221,25 @@ class Setup:
         self.number, self.status, self.tri, self.snapped = number, status, tri, snapped
 
 
+def offset_of(options) -> tuple[int, int]:
+    """The run's offset in whole pixels, checked against MAX_OFFSET."""
+    ox, oy = (int(v) for v in options.get("offset", (0, 0)))
+    if max(abs(ox), abs(oy)) > MAX_OFFSET:
+        raise InputError(f"option offset: ({ox}, {oy}) is beyond +-{MAX_OFFSET:,} px, where "
+                         "the edge values would no longer fit 64-bit integers")
+    return ox, oy
+
+
 def prepare(points, options, keep_winding: bool = False) -> list[Setup]:
     scale = 1 << options["subpixel_bits"]
     rule = options["fill_rule"]
+    # Snap first, then translate in integers: the offset run is then exactly
+    # the same triangles moved by whole pixels.
+    ox, oy = offset_of(options)
     setups = []
     for n in range(len(points) // 3):
-        snapped = [(snap_fixed(x, scale), snap_fixed(y, scale)) for x, y in points[3 * n:3 * n + 3]]
+        snapped = [(snap_fixed(x, scale) + ox * scale, snap_fixed(y, scale) + oy * scale)
+                   for x, y in points[3 * n:3 * n + 3]]
         (x0, y0), (x1, y1), (x2, y2) = snapped
         area2 = (x1 - x0) * (y2 - y0) - (x2 - x0) * (y1 - y0)
         indices = (3 * n, 3 * n + 1, 3 * n + 2)
@@ -412,17 +449,19 @@ def plot_text(options, what: str = "setPixel(x, y)") -> str:
 
 
 # ============================================================ the run
-def window_of(grid, setups):
+def window_of(grid, setups, offset=(0, 0)):
     """The pixels a run may touch: (x0, y0, x1, y1), x1 and y1 excluded.
 
     ``grid`` is (W, H) for the grid [0, W) x [0, H), or a window
-    (x0, y0, x1, y1) of pixel indices. Without one, the bounding boxes of
-    the drawn triangles.
+    (x0, y0, x1, y1) of pixel indices, either moved by ``offset``. Without
+    one, the bounding boxes of the drawn triangles.
     """
     if grid is not None:
+        ox, oy = offset
         if len(grid) == 2:
-            return (0, 0, int(grid[0]), int(grid[1]))
-        return tuple(int(v) for v in grid)
+            return (ox, oy, ox + int(grid[0]), oy + int(grid[1]))
+        x0, y0, x1, y1 = (int(v) for v in grid)
+        return (x0 + ox, y0 + oy, x1 + ox, y1 + oy)
     boxes = [s.tri.box() for s in setups if s.tri is not None]
     if not boxes:
         return (0, 0, 1, 1)
@@ -446,7 +485,8 @@ class Run:
         self.S = 1 << options["subpixel_bits"]
         self.attributes = attributes or VertexAttributes(options, len(points), weights_always)
         self.setups = prepare(points, options, keep_winding)
-        self.window = window_of(grid, self.setups)
+        self.offset = offset_of(options)
+        self.window = window_of(grid, self.setups, self.offset)
         x0, y0, x1, y1 = self.window
         self.base = tuple(base_columns)
         self.columns = self.base + self.attributes.names
@@ -458,6 +498,8 @@ class Run:
     def start(self, line: int) -> Start:
         constants = {"S": self.S, "fill_rule": self.rule, "precision": self.precision,
                      "triangles": len(self.setups)}
+        if any(self.offset):
+            constants["offset"] = self.offset
         return Start(line, self.columns, constants, self.attributes.pixel_value)
 
     def setup_frames(self, setup: Setup, at: dict):
@@ -609,7 +651,8 @@ def explain(trace, i):
     tri = Triangle(0, vertices, (0, 1, 2), scale, var["fill_rule"])
     if tri.area2 == 0:
         return []
-    es = tri.at(*step.pixel)
+    ox, oy = var.get("offset", (0, 0))  # the vertices are shown where the run put them
+    es = tri.at(step.pixel[0] + ox, step.pixel[1] + oy)
     unit = 2 * scale * scale
     rows = []
     if "rgb" in step.values:
@@ -640,7 +683,25 @@ BASE = ("e0", "e1", "e2", "tie")
 
 
 def _drive(run: Run, code: Code, traverse):
-    """Start, each triangle's setup and traversal, then the totals."""
+    """Start, each triangle's setup and traversal, then the totals; with an
+    offset, pixels moved back onto the grid the trace shows."""
+    frames = _frames(run, code, traverse)
+    return _moved_back(frames, run.offset) if any(run.offset) else frames
+
+
+def _moved_back(frames, offset):
+    ox, oy = offset
+    for frame in frames:
+        if type(frame) is tuple:
+            if frame[1] != NO_PIXEL:
+                frame = (frame[0], frame[1] - ox, frame[2] - oy, *frame[3:])
+        elif isinstance(frame, Table) and frame.name == "cracks":
+            frame = Table(frame.line, frame.name, frame.columns,
+                          tuple((x - ox, y - oy) for x, y in frame.rows))
+        yield frame
+
+
+def _frames(run: Run, code: Code, traverse):
     at = code.at
     yield run.start(at["triangle"])
     for setup in run.setups:
@@ -1171,7 +1232,8 @@ def oriented(points, options):
     Returns (vertices (T, 3, 2) int64, input triangle numbers).
     """
     scale = 1 << options.get("subpixel_bits", 8)
-    tris = snap_array(points, scale).reshape(-1, 3, 2)
+    ox, oy = offset_of(options)
+    tris = snap_array(points, scale).reshape(-1, 3, 2) + np.array([ox, oy], np.int64) * scale
     d1 = tris[:, 1] - tris[:, 0]
     d2 = tris[:, 2] - tris[:, 0]
     if tris.size and np.abs(tris).max() >= 1 << 30:
@@ -1401,19 +1463,21 @@ def fill(points, grid, rule: str = "top-left", subpixel_bits: int = 8, cull: boo
 
 def kernel_pixels(points, options, grid=None, top_down=False) -> np.ndarray:
     """Fast kernel (precision fixed): covered pixels, per triangle, row by row, left to right."""
-    window = None if grid is None else window_of(grid, ())
+    offset = offset_of(options)
+    window = None if grid is None else window_of(grid, (), offset)
     scale = 1 << options.get("subpixel_bits", 8)
     rule = options.get("fill_rule", "top-left")
     tris, _ = oriented(points, options)
     _, y, s, e = span_arrays(tris, scale, rule, window, top_down)
-    return pixels_from_spans(y, s, e)
+    return pixels_from_spans(y, s, e) - np.array(offset, np.int64)
 
 
 def _float_box_pixels(points, options, grid, whole):
     """Dense float evaluation of a*x + b*y + c, as triangle-scan / triangle-bbox do it."""
     full = dict(options)
     setups = prepare(points, full)
-    window = window_of(grid, setups)
+    offset = offset_of(full)
+    window = window_of(grid, setups, offset)
     t = np.float64 if options["precision"] == "float64" else np.float32
     out = []
     for setup in setups:
@@ -1437,7 +1501,7 @@ def _float_box_pixels(points, options, grid, whole):
             e = edges.sign * e
             ok &= (e > 0) | ((e == 0) & edges.include[k])
         rows, cols = np.nonzero(ok)
-        out.append(np.stack([cols + i_lo, rows + j_lo], axis=1))
+        out.append(np.stack([cols + i_lo - offset[0], rows + j_lo - offset[1]], axis=1))
     return np.concatenate(out).astype(np.int64) if out else np.zeros((0, 2), np.int64)
 
 
@@ -1445,6 +1509,9 @@ def make_kernel(name: str, generator, code, top_down=False, box=None):
     """The spec's kernel: exact spans for fixed precision; floats as the generator does them."""
     def kernel(points, options, grid=None):
         options = {**{o.name: o.default for o in OPTIONS}, **options}
+        if options.get("near", 0) > 0:  # the pieces left by the near plane are drawn
+            points, _ = clip_near(points, PerspectiveColumns(options, len(points)),
+                                  options["near"])
         if options["precision"] == "fixed":
             return kernel_pixels(points, options, grid, top_down)
         if box is not None:
@@ -1591,6 +1658,12 @@ PERSPECTIVE_COLUMNS = BASE + ("alpha", "beta", "gamma", "1/w", "s/w", "s_affine"
 
 def _perspective_code(options):
     code = Code()
+    if options.get("near", 0) > 0:
+        # Runs once, before the triangles: the pieces are what is drawn.
+        code.add("clip", "cut each triangle by the near plane w >= near in (x w, y w, w) space: "
+                         "an edge crossing it gets the corner H_a + t (H_b - H_a), "
+                         "t = (w_a - near) / (w_a - w_b); draw the 3 or 4 corners left as a fan "
+                         "of triangles")
     header(code, options)
     code.add("setup", "    setup: a_k, b_k, c_k of the edges;  1 / 2A;  1 / w_k for each vertex",
              ops={"div": 4})
@@ -1629,7 +1702,12 @@ class PerspectiveColumns(_NoAttributes):
         self.colors = [unpack(c) for c in colors] if colors else None
         if self.s is None or self.w is None:
             raise InputError("triangle-perspective needs s and w, one per vertex (or three)")
-        check_w(self.w)
+        if not options.get("near", 0) > 0:
+            try:
+                check_w(self.w)
+            except InputError as error:
+                raise InputError(f"{error}; or set near (e.g. near=0.05) to clip triangles "
+                                 "that cross w = 0") from None
         self.perspective = options.get("perspective", True)
         names = ["z"] if self.z is not None else []
         if self.colors is not None:
@@ -1673,9 +1751,120 @@ def _perspective_traversal(run, tri, edges, attrs, at):
 
 def perspective(points, options, grid=None):
     cols = PerspectiveColumns(options, len(points))
+    near = options.get("near", 0)
+    report = None
+    if near > 0:
+        points, report = clip_near(points, cols, near)
     run = Run(points, options, grid, PERSPECTIVE_COLUMNS, attributes=cols)
     run.perspective = cols
-    return _drive(run, _perspective_code(options), _perspective_traversal)
+    code = _perspective_code(options)
+    frames = _drive(run, code, _perspective_traversal)
+    return frames if report is None else _with_clip_frames(frames, report, code.at["clip"], near)
+
+
+# ------------------------------------------------------ near-plane clipping
+# A vertex (x, y) with clip-space w is the homogeneous point (x w, y w, w):
+# its screen position is that point divided by w. A triangle with some w
+# below 0 is not the screen triangle of its projected corners: the part
+# behind the eye projects through infinity to the far side. Cutting the
+# triangle by the plane w = near in homogeneous space first (Sutherland-
+# Hodgman against one plane) leaves a polygon whose corners all have
+# w >= near, so its projection is the visible part. Attributes that are
+# perspective-correct (s, colours) are linear in homogeneous space and are
+# cut with the same t; z is a screen-space depth z = Z / w, so Z = z w is.
+def clip_near(points, cols, near):
+    """The triangles cut by w >= near, fanned into triangles.
+
+    Replaces cols' per-vertex lists (w, s, z, colours) by the pieces' and
+    returns (the pieces' points, one (triangle, w's, kept corners, pieces)
+    entry per input triangle).
+    """
+    out_points, report = [], []
+    lists = {"w": [], "s": [], "z": [] if cols.z is not None else None,
+             "colors": [] if cols.colors is not None else None}
+    for n in range(len(points) // 3):
+        corners = [_homogeneous(points[k], cols, k) for k in range(3 * n, 3 * n + 3)]
+        polygon = _cut(corners, near)
+        first = len(out_points) // 3
+        for k in range(1, len(polygon) - 1):
+            for corner in (polygon[0], polygon[k], polygon[k + 1]):
+                _append(corner, out_points, lists)
+        report.append((n + 1, [c["w"] for c in corners], polygon,
+                       list(range(first + 1, len(out_points) // 3 + 1))))
+    cols.w, cols.s, cols.z, cols.colors = lists["w"], lists["s"], lists["z"], lists["colors"]
+    return out_points, report
+
+
+def _homogeneous(point, cols, k):
+    w = cols.w[k]
+    corner = {"X": point[0] * w, "Y": point[1] * w, "w": w, "s": cols.s[k]}
+    if cols.z is not None:
+        corner["Z"] = cols.z[k] * w
+    if cols.colors is not None:
+        corner["rgb"] = tuple(float(c) for c in cols.colors[k])
+    return corner
+
+
+def _cut(corners, near):
+    """Sutherland-Hodgman against w >= near: 0, 3 or 4 corners, in order."""
+    kept = []
+    for a, b in zip(corners, corners[1:] + corners[:1]):
+        if a["w"] >= near:
+            kept.append(a)
+        if (a["w"] >= near) != (b["w"] >= near):
+            corner = _between(a, b, (a["w"] - near) / (a["w"] - b["w"]))
+            corner["w"] = near  # on the plane by construction, whatever the rounding
+            kept.append(corner)
+    return kept
+
+
+def _between(a, b, t):
+    corner = {}
+    for key, value in a.items():
+        if key == "rgb":
+            corner[key] = tuple(p + t * (q - p) for p, q in zip(value, b[key]))
+        else:
+            corner[key] = value + t * (b[key] - value)
+    return corner
+
+
+def _append(corner, out_points, lists):
+    w = corner["w"]
+    x, y = corner["X"] / w, corner["Y"] / w
+    if not max(abs(x), abs(y)) <= MAX_COORDINATE:
+        raise InputError(f"option near: a cut corner lands beyond +-{MAX_COORDINATE:g} px; "
+                         "use a larger near")
+    out_points.append((x, y))
+    lists["w"].append(w)
+    lists["s"].append(corner["s"])
+    if lists["z"] is not None:
+        lists["z"].append(corner["Z"] / w)
+    if lists["colors"] is not None:
+        lists["colors"].append(corner["rgb"])
+
+
+def _with_clip_frames(frames, report, line, near):
+    """The run's frames with what the clipping did, right after Start."""
+    yield next(frames)
+    rows = []
+    for number, ws, polygon, pieces in report:
+        shown = ", ".join(f"{w:g}" for w in ws)
+        names = " and ".join(str(p) for p in pieces)
+        if not pieces:
+            text = f"Triangle {number} (w = {shown}) lies wholly behind w = {near:g}: nothing drawn."
+        elif min(ws) >= near:
+            text = f"Triangle {number} (w = {shown}) lies in front of w = {near:g}: drawn as {names}."
+        else:
+            text = (f"Triangle {number} (w = {shown}) crosses w = {near:g}: cut to "
+                    f"{len(polygon)} corners, drawn as triangle{'s' if len(pieces) > 1 else ''} "
+                    f"{names}.")
+        yield Note(line, text)
+        for corner in polygon:
+            w = corner["w"]
+            rows.append((number, round(corner["X"] / w, 6), round(corner["Y"] / w, 6),
+                         round(w, 6), round(corner["s"], 6)))
+    yield Table(line, "near clip", ("triangle", "x", "y", "w", "s"), tuple(rows))
+    yield from frames
 
 
 # ========================================================= registering
@@ -1756,6 +1945,10 @@ _spec("triangle-perspective", "Perspective-correct interpolation", "interpolate 
       options=BASE_OPTIONS + (VERTEX_COLORS, Z_OPTION,
                               Option("w", "numbers", (1.0, 3.0, 3.0), W_OPTION.help),
                               Option("s", "numbers", (4.0, 6.0, 6.0), S_OPTION.help),
-                              Option("perspective", "bool", True, PERSPECTIVE.help)),
+                              Option("perspective", "bool", True, PERSPECTIVE.help),
+                              Option("near", "float", 0.0, "clip each triangle against the "
+                                     "plane w = near before the divide, so triangles crossing "
+                                     "w = 0 draw only their visible part (0: no clipping; "
+                                     "every w must then be > 0)", minimum=0.0, maximum=1e6)),
       notes=("Defaults follow the classic example: s = 4 at w = 1 and s = 6 at w = 3; half way "
              "along P0 -> P1 the affine value is 5, the perspective-correct one 4.5.",))

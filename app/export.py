@@ -242,6 +242,9 @@ class Run:
         """The player's run as it stands (the window's scene)."""
         if player.trace is None:
             raise ExportError("there is no run to export: place the points first")
+        if player.recording:
+            raise ExportError("the new run is still recording: export when it has finished, "
+                              "or cancel it to export the run on show")
         # Build the replay caches now, so that a export running beside the
         # window never builds them at the same time as the window does.
         player.trace.raster_at(len(player.trace) - 1)

@@ -49,16 +49,27 @@ def install_file_actions(window, settings: QSettings | None = None) -> "FileActi
 class FileActions(QObject):
     """The File menu's scene and export actions for one window."""
 
+    # The scene on show is now the one in a file (or an example): its path,
+    # or None for an example.
+    saved = Signal(object)
+    opened = Signal(object)
+    # A scene put in new bookmarks (the list object is replaced).
+    bookmarksChanged = Signal()
+
     def __init__(self, window, settings: QSettings | None = None):
         super().__init__(window)
         self.window = window
-        self.settings = settings if settings is not None else QSettings(ORGANIZATION, APPLICATION)
+        if settings is None:
+            from .preferences import open_settings  # honours $RASTERLAB_SETTINGS
+            settings = open_settings()
+        self.settings = settings
         self.path: Path | None = None
         # What a scene file holds beyond what the window edits; kept from
         # the file opened last and written back on save.
         self.title = ""
         self.description = ""
-        self.bookmarks: list = []
+        # Bookmarks made before the file actions came keep their place.
+        self.bookmarks: list = [dict(b) for b in getattr(window, "bookmarks", [])]
         self.export_controller: ExportController | None = None
         self._build_menu()
 
@@ -166,9 +177,11 @@ class FileActions(QObject):
         if "speed" in view:
             window.transport.set_speed(view["speed"])
         if "step" in view:
-            window.player.seek(int(view["step"]))
+            from .recording import seek_when_recorded  # a long run may still be recording
+            seek_when_recorded(window.player, int(view["step"]))
         self.title, self.description = scene.title, scene.description
         self.bookmarks = [dict(b) for b in scene.bookmarks]
+        self.bookmarksChanged.emit()
 
     def open_dialog(self) -> bool:
         start = str(self.path.parent) if self.path else str(Path.home())
@@ -189,6 +202,7 @@ class FileActions(QObject):
         if remember:
             self._remember(path)
         self._status(f"Opened {path.name}")
+        self.opened.emit(self.path)
         return True
 
     def save(self) -> bool:
@@ -222,6 +236,7 @@ class FileActions(QObject):
         self.path = path
         self._remember(path)
         self._status(f"Saved {path.name}")
+        self.saved.emit(path)
         return True
 
     # ------------------------------------------------------------ export
@@ -308,6 +323,7 @@ class ExportController(QObject):
         self.dialog.setWindowModality(Qt.WindowModality.WindowModal)
         trace = run.trace
         self.dialog.set_steps(window.player.index, len(trace) - 1)
+        self.dialog.set_bookmarks(run.bookmarks)
         self.dialog.set_values({"scale": exporting.auto_scale(trace.width, trace.height),
                                 "gif": default_path})
         self.dialog.exportRequested.connect(self.start)
@@ -323,12 +339,15 @@ class ExportController(QObject):
             scale=values["scale"], grid_lines=values["grid_lines"],
             primitive=values["primitive"], highlight=values["highlight"],
             caption=values["caption"], panel=values["panel"], theme=values["theme"],
-            loop=values["loop"])
+            loop=values["loop"], per=values["per"])
         return settings, values["gif"] or None, values["frames_dir"] or None
 
     def _summarise(self) -> None:
         values = self.dialog.values()
-        count = max(0, values["last"] - values["first"] + 1)
+        try:
+            count = len(self.run.frame_steps(self.export_settings()[0]))
+        except exporting.ExportError:
+            count = 0
         trace = self.run.trace
         seconds = sum(exporting.frame_durations(count, values["fps"], values["hold"])) / 1000
         self.dialog.set_size_text(

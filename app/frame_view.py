@@ -391,22 +391,23 @@ def pixel_samples(trace, index: int, limit: int = 4096) -> PixelSamples | None:
 # ------------------------------------------------------------ exact coverage
 def exact_reference(spec, points, options, grid) -> np.ndarray | None:
     """(H, W) exact coverage of the primitive an antialiasing run draws, or
-    None where there is no single one (not antialiasing; a moving shape)."""
+    None where there is no single one (not antialiasing; a moving shape).
+    ``grid`` is (W, H), or a window (x0, y0, x1, y1) of the grid's cells."""
     if spec is None or spec.family != "antialias" or not points:
         return None
     from algorithms import antialias, exact_coverage
-    width, height = int(grid[0]), int(grid[1])
+    window = tuple(int(v) for v in grid)
     if spec.name in ("line-wu", "line-area"):
         if len(points) != 2:
             return None
         (px, py), (qx, qy) = points
         return exact_coverage.segment_coverage(
             (px + 0.5, py + 0.5), (qx + 0.5, qy + 0.5), float(options.get("width", 1.0)),
-            (width, height), options.get("caps", "butt"))
+            window, options.get("caps", "butt"))
     if spec.name == "aa-temporal":
         return None
     try:
-        return antialias.reference_coverage(points, options, (width, height))
+        return antialias.reference_coverage(points, options, window)
     except (ValueError, ArithmeticError):
         return None
 

@@ -1,60 +1,127 @@
-"""Undo and redo of what the person drew: points, contours and the options
-a gesture on the grid sets (a radius, a seed).
+"""Undo and redo of every scene edit: points (drawn, dragged, typed),
+contours, the algorithm, every option, the grid size and the origin.
 
-The window remembers the scene as it was when a gesture starts; a gesture
-that changed nothing leaves an entry equal to the scene, which undo skips.
+An entry holds the whole scene as it was before an edit (a ``Snapshot``),
+and the name of the edit for the Edit menu ("Undo move point"). Edits that
+share a merge key while the entry is still open (one drag of a handle, one
+spin box stepped by its arrows) collapse into one entry, so one undo takes
+back the whole gesture. An entry equal to the scene it would restore is
+skipped by undo and redo.
 """
 from __future__ import annotations
 
+import time
 from dataclasses import dataclass
 
 LIMIT = 200  # entries kept; the oldest go first
+MERGE_SECONDS = 1.5  # typed or stepped edits of one field this close together merge
 
 
 @dataclass(frozen=True)
 class Snapshot:
+    """The whole scene: what a saved scene file holds, minus the view."""
+
+    algorithm: str
     points: tuple
     breaks: tuple
-    options: tuple  # (name, value) pairs of the options a gesture sets
+    options: tuple  # (name, value) pairs of every option, sorted by name
+    grid: tuple
+    y_down: bool
 
     @classmethod
-    def of(cls, points, breaks, options: dict) -> "Snapshot":
-        return cls(tuple(tuple(p) for p in points), tuple(breaks),
-                   tuple(sorted(options.items())))
+    def of(cls, algorithm: str, points, breaks, options: dict, grid, y_down: bool) -> "Snapshot":
+        return cls(algorithm, tuple(tuple(p) for p in points), tuple(breaks),
+                   tuple(sorted(options.items())), tuple(grid), bool(y_down))
+
+
+def describe(before: Snapshot, after: Snapshot) -> str:
+    """What changed from ``before`` to ``after``, in a few words."""
+    if before.algorithm != after.algorithm:
+        return "algorithm switch"
+    if before.grid != after.grid:
+        return "grid size"
+    if before.y_down != after.y_down:
+        return "origin"
+    if before.points != after.points:
+        return _describe_points(len(before.points), len(after.points))
+    if before.breaks != after.breaks:
+        return "contours"
+    old, new = dict(before.options), dict(after.options)
+    names = [name for name in new if old.get(name) != new[name]]
+    if names:
+        return "change " + ", ".join("colours" if name == "colors" else name for name in names)
+    return "edit"
+
+
+def _describe_points(before: int, after: int) -> str:
+    if after == 0:
+        return "clear points"
+    if after > before:
+        return "add point" + ("s" if after - before > 1 else "")
+    if after < before:
+        return "remove point" + ("s" if before - after > 1 else "")
+    return "move point"
+
+
+@dataclass
+class Entry:
+    snapshot: Snapshot
+    label: str
+    key: object = None
+    until: float | None = None  # merging with this entry is open until then (None: always)
 
 
 class EditHistory:
-    def __init__(self):
-        self._undo: list[Snapshot] = []
-        self._redo: list[Snapshot] = []
+    def __init__(self, clock=time.monotonic):
+        self.clock = clock
+        self._undo: list[Entry] = []
+        self._redo: list[Entry] = []
+        self._open = False  # may the next edit merge with the top entry?
 
-    def remember(self, snapshot: Snapshot) -> None:
-        """The scene before an edit: it becomes the one undo returns to."""
-        if self._undo and self._undo[-1] == snapshot:
+    def push(self, before: Snapshot, after: Snapshot, key=None, seconds: float | None = None):
+        """Record an edit from ``before`` to ``after``. With a ``key`` equal to
+        the top entry's, and within its time (``seconds`` after the last
+        merged edit; None: no limit), the edit merges into that entry."""
+        if before == after:
             return
-        self._undo.append(snapshot)
+        now = self.clock()
+        top = self._undo[-1] if self._undo else None
+        if (self._open and top is not None and key is not None and top.key == key
+                and (top.until is None or now <= top.until)):
+            top.label = describe(top.snapshot, after)
+            top.until = None if seconds is None else now + seconds
+            self._redo.clear()
+            return
+        self._undo.append(Entry(before, describe(before, after), key,
+                                None if seconds is None else now + seconds))
         del self._undo[:-LIMIT]
         self._redo.clear()
+        self._open = True
+
+    def seal(self) -> None:
+        """The next edit starts a new entry, whatever its key."""
+        self._open = False
 
     def undo(self, current: Snapshot) -> Snapshot | None:
-        while self._undo and self._undo[-1] == current:
-            self._undo.pop()
-        if not self._undo:
-            return None
-        self._redo.append(current)
-        return self._undo.pop()
+        return self._move(self._undo, self._redo, current)
 
     def redo(self, current: Snapshot) -> Snapshot | None:
-        while self._redo and self._redo[-1] == current:
-            self._redo.pop()
-        if not self._redo:
+        return self._move(self._redo, self._undo, current)
+
+    def _move(self, source: list, target: list, current: Snapshot) -> Snapshot | None:
+        self._open = False
+        while source and source[-1].snapshot == current:
+            source.pop()
+        if not source:
             return None
-        self._undo.append(current)
-        return self._redo.pop()
+        entry = source.pop()
+        target.append(Entry(current, entry.label))
+        return entry.snapshot
 
     def clear(self) -> None:
         self._undo.clear()
         self._redo.clear()
+        self._open = False
 
     @property
     def can_undo(self) -> bool:
@@ -63,3 +130,14 @@ class EditHistory:
     @property
     def can_redo(self) -> bool:
         return bool(self._redo)
+
+    @property
+    def undo_text(self) -> str:
+        return self._undo[-1].label if self._undo else ""
+
+    @property
+    def redo_text(self) -> str:
+        return self._redo[-1].label if self._redo else ""
+
+    def __len__(self) -> int:
+        return len(self._undo)

@@ -36,17 +36,26 @@ behind.
 from __future__ import annotations
 
 import math
+import os
+from dataclasses import dataclass, replace
 
 import numpy as np
 from PySide6.QtCore import QElapsedTimer, QObject, Qt, QTimer, Signal
 
 from algorithms import registry
 from algorithms.registry import InputError
-from algorithms.raster import Raster, check_grid
-from algorithms.trace import DEFAULT_STEP_CAP, FrameState, Trace
+from algorithms.raster import MAX_GRID, Raster, check_grid
+from algorithms.trace import DEFAULT_STEP_CAP, Cancelled, FrameState, Trace
 
 
+from .recording import Job
 from .render import differences
+
+# How long an edit waits for its recording before it goes on in the
+# background (seconds); RASTERLAB_RECORD_WAIT overrides it ("inf": always
+# wait, as the tests do).
+SYNC_WAIT = 0.02
+CANCELLED_MESSAGE = "Recording cancelled: the previous scene and run are kept."
 
 MIN_SPEED = 1.0
 MAX_SPEED = 2000.0
@@ -66,10 +75,30 @@ class Player(QObject):
     playingChanged = Signal(bool)
     #: The comparison result changed.
     comparisonChanged = Signal()
+    #: A recording went on in the background (the previous trace stays on show).
+    recordingStarted = Signal()
+    #: Steps recorded so far by the background recording.
+    recordingProgress = Signal(int)
+    #: The background recording ended: "" when its trace was installed as
+    #: asked, else why the scene is not the one asked for (cancelled,
+    #: refused, an example shape instead).
+    recordingFinished = Signal(str)
+    # From the worker thread (queued to this object's thread).
+    _jobProgress = Signal(object, int)
+    _jobDone = Signal(object)
 
     def __init__(self, parent=None, step_cap: int = DEFAULT_STEP_CAP):
         super().__init__(parent)
+        self.sync_wait = _sync_wait()
+        self._job: Job | None = None  # the background recording, if one runs
+        self._job_at_end = None
+        self._shown = None  # the scene the trace on show belongs to, while a job runs
+        self.trace_spec = None  # the algorithm of the trace on show
+        self._jobProgress.connect(self._job_progressed)
+        self._jobDone.connect(self._job_done)
         self.step_cap = step_cap
+        # The largest grid side accepted (a preference, at most MAX_GRID).
+        self.max_grid = MAX_GRID
         self.spec = None
         self.options: dict = {}
         self.points: list[tuple] = []
@@ -91,6 +120,12 @@ class Player(QObject):
         self._timer.timeout.connect(self._tick)
         self._clock = QElapsedTimer()
         self._owed = 0.0  # fractional steps carried over between ticks
+        # Optional hooks (app/breakpoint_actions.py): stepper(index, delta)
+        # gives where a step of delta units goes (None: nowhere);
+        # stop_finder(index, target) gives a frame in index+1 .. target
+        # where play must stop, or None.
+        self.stepper = None
+        self.stop_finder = None
 
     # ------------------------------------------------------------- scene
     def set_scene(self, algorithm: str, points, options: dict | None = None,
@@ -100,14 +135,11 @@ class Player(QObject):
         Nothing changes when the scene is rejected.
         """
         spec = registry.get(algorithm)
-        width, height = _checked_grid(grid)
+        width, height = _checked_grid(grid, self.max_grid)
         resolved = spec.resolve(options)
         points, breaks = flatten(spec, points)
-        trace = self._record(spec, points, resolved, (width, height), breaks)
-        self.spec, self.options, self.grid = spec, resolved, (width, height)
-        self.points, self.breaks = points, breaks
-        self.previous = None
-        self._install(trace, at_end=True)
+        self._change(_Scene(spec, resolved, points, breaks, (width, height), None),
+                     at_end=True, always=True)
 
     def set_algorithm(self, name: str) -> None:
         """Switch algorithm on the same points. Options the person changed
@@ -128,23 +160,30 @@ class Player(QObject):
                     pass
         options = spec.resolve(carried)
         points, breaks = self._fit_points(spec)
-        self.refusal = ""
-        trace = None
-        if complete(spec, points, breaks):
-            try:
-                trace = self._record(spec, points, options, self.grid, breaks)
-            except InputError as error:
-                # The algorithm refuses this shape (a concave polygon for the
-                # convex fill, say): show its own example and say why.
-                self.refusal = str(error)
-        if trace is None:
-            points, breaks, defaults = default_scene(spec, self.grid)
-            options = spec.resolve({**carried, **defaults})
-            trace = self._record(spec, points, options, self.grid, breaks)
+        self.refusal = ""  # set again when the run ends (here or in the background)
         previous = (self.spec, dict(self.options)) if self.spec is not None else None
-        self.spec, self.options, self.points, self.breaks = spec, options, points, breaks
-        self.previous = previous
-        self._install(trace, at_end=self._at_end())
+        scene = _Scene(spec, options, points, breaks, self.grid, previous)
+
+        def work(monitor):
+            refusal = ""
+            if complete(spec, points, breaks):
+                try:
+                    return self._outcome(scene, monitor, refusal="")
+                except InputError as error:
+                    # The algorithm refuses this shape (a concave polygon for
+                    # the convex fill, say): show its own example and say why.
+                    refusal = str(error)
+            shape, shape_breaks, defaults = default_scene(spec, scene.grid)
+            example = replace(scene, points=shape, breaks=shape_breaks,
+                              options=spec.resolve({**carried, **defaults}))
+            try:
+                return self._outcome(example, monitor, refusal=refusal)
+            except InputError as error:
+                # A carried option this run refuses (one colour set while the
+                # points were being placed, say) must not block the switch.
+                example = replace(example, options=spec.resolve(defaults))
+                return self._outcome(example, monitor, refusal=refusal or str(error))
+        self._change(scene, work=work, always=True)
 
     def set_option(self, name: str, value) -> None:
         """Set one option; raises InputError (and keeps the last good value)
@@ -157,12 +196,7 @@ class Player(QObject):
         checked = {name: self.spec.option(name).check(value) for name, value in values.items()}
         if all(self.options.get(name) == value for name, value in checked.items()):
             return
-        options = dict(self.options, **checked)
-        trace = None
-        if self._complete(self.points, self.breaks):
-            trace = self._record(self.spec, self.points, options, self.grid, self.breaks)
-        self.options = options
-        self._install(trace, at_end=self._at_end())
+        self._change(replace(self._scene(), options=dict(self.options, **checked)))
 
     def set_points(self, points, breaks=None) -> None:
         """Set the points (and, for contour inputs, where each contour
@@ -176,25 +210,20 @@ class Player(QObject):
         breaks = clean_breaks(self.spec, len(points), self.breaks if breaks is None else breaks)
         if points == self.points and breaks == self.breaks and self.trace is not None:
             return
-        trace = None
-        if self._complete(points, breaks):
-            trace = self._record(self.spec, points, self.options, self.grid, breaks)
-        at_end = self._at_end()
-        self.points, self.breaks = points, breaks
-        self._install(trace, at_end=at_end)
+        self._change(replace(self._scene(), points=points, breaks=breaks))
 
-    def restore(self, points, breaks, options: dict) -> None:
-        """Put back points, breaks and options together (undo); raises
-        InputError and changes nothing when the run refuses them."""
+    def restore(self, points, breaks, options: dict, algorithm: str | None = None,
+                grid=None) -> None:
+        """Put back points, breaks and options together (undo), and the
+        algorithm and grid when given; raises InputError and changes
+        nothing when the run refuses them. The step keeps its place."""
+        spec = self.spec if algorithm is None else registry.get(algorithm)
+        grid = self.grid if grid is None else _checked_grid(grid, self.max_grid)
         points = [tuple(p) for p in points]
-        options = self.spec.resolve(options)
-        breaks = clean_breaks(self.spec, len(points), breaks)
-        trace = None
-        if self._complete(points, breaks):
-            trace = self._record(self.spec, points, options, self.grid, breaks)
-        at_end = self._at_end()
-        self.points, self.breaks, self.options = points, breaks, options
-        self._install(trace, at_end=at_end)
+        options = spec.resolve(options)
+        breaks = clean_breaks(spec, len(points), breaks)
+        previous = self.previous if spec is self.spec else (self.spec, dict(self.options))
+        self._change(_Scene(spec, options, points, breaks, grid, previous))
 
     def input_points(self):
         """The points as the algorithm takes them (a list of contours for
@@ -203,16 +232,11 @@ class Player(QObject):
 
     def set_grid(self, width: int, height: int) -> None:
         """Resize the grid; points outside it are moved to its edge."""
-        width, height = _checked_grid((width, height))
+        width, height = _checked_grid((width, height), self.max_grid)
         if (width, height) == self.grid:
             return
         points = [_clamp(p, width, height, self.spec.inputs.integer) for p in self.points]
-        trace = None
-        if self._complete(points, self.breaks):
-            trace = self._record(self.spec, points, self.options, (width, height), self.breaks)
-        at_end = self._at_end()
-        self.grid, self.points = (width, height), points
-        self._install(trace, at_end=at_end)
+        self._change(replace(self._scene(), points=points, grid=(width, height)))
 
     def set_compare(self, enabled: bool) -> None:
         self.compare_enabled = bool(enabled)
@@ -237,6 +261,11 @@ class Player(QObject):
 
     def step(self, delta: int) -> None:
         self.pause()
+        if self.stepper is not None and self.trace is not None:
+            target = self.stepper(self.index, delta)
+            if target is not None:
+                self.seek(target)
+            return
         self.seek(self.index + delta)
 
     def forward(self) -> None:
@@ -317,28 +346,168 @@ class Player(QObject):
         steps = max(1, int(self._owed))
         self._owed = max(0.0, self._owed - steps)
         target = min(self.index + steps, self.last)
+        stop = None if self.stop_finder is None else self.stop_finder(self.index, target)
+        if stop is not None:
+            self.seek(stop)
+            self.pause()
+            return
         self.seek(target)
         if target >= self.last:
             self.pause()
 
     # --------------------------------------------------------- internals
-    def _record(self, spec, points, options, grid, breaks=()) -> Trace:
+    def _record(self, spec, points, options, grid, breaks=(), monitor=None) -> Trace:
         try:
-            return spec.record(runnable_input(spec, points, breaks), options, grid,
-                               step_cap=self.step_cap)
-        except InputError:
+            trace = spec.record(runnable_input(spec, points, breaks), options, grid,
+                                step_cap=self.step_cap, monitor=monitor)
+        except (InputError, Cancelled):
             raise
         except Exception as error:  # noqa: BLE001 - a failing run must not end the program
             # A run that fails on this input is reported like a bad input:
             # the scene keeps its last good state and the program goes on.
             raise InputError(f"{spec.title} cannot run on this input "
                              f"({type(error).__name__}: {error})") from None
+        if trace.truncated:
+            # In the window the cap is a preference: name where to raise it.
+            trace.message = (f"Recording stopped at the step cap of {self.step_cap:,} steps; "
+                             "the run goes on beyond it. Raise \"Step cap\" in "
+                             "Edit > Preferences or use a smaller input.")
+        return trace
 
-    def _install(self, trace: Trace | None, at_end: bool) -> None:
+    # The scene as one value, so that a recording can run on a copy of it
+    # and the scene on show can be put back when the recording is cancelled.
+    def _scene(self) -> "_Scene":
+        return _Scene(self.spec, self.options, self.points, self.breaks, self.grid,
+                      self.previous)
+
+    def _put_scene(self, scene: "_Scene") -> None:
+        self.spec, self.options, self.points = scene.spec, scene.options, scene.points
+        self.breaks, self.grid, self.previous = scene.breaks, scene.grid, scene.previous
+
+    def _change(self, scene: "_Scene", at_end=None, work=None, always=False) -> None:
+        """Make ``scene`` the scene, recorded by ``work(monitor)`` (default:
+        record it when complete). The recording runs in a worker: when it
+        ends within ``sync_wait`` its outcome is installed before this
+        returns (an InputError is raised then and nothing changes);
+        otherwise the scene changes now, the trace on show stays until the
+        recording ends, and an earlier background recording is cancelled.
+        ``at_end`` None: the step goes to the end if it is there when the
+        new trace comes."""
+        if work is None and not always and not complete(scene.spec, scene.points, scene.breaks):
+            self._drop_job()
+            self._put_scene(scene)
+            self._take(_Outcome(scene, None, None), at_end)
+            return
+        job = Job(work or (lambda monitor: self._outcome(scene, monitor)),
+                  self._jobProgress.emit, self._jobDone.emit).start()
+        # The first scene has no run on show to fall back on: it is waited for.
+        if job.wait(None if self.spec is None else self.sync_wait):
+            if job.error is not None:
+                raise job.error  # nothing has changed
+            self._drop_job()
+            self._put_scene(job.result.scene)
+            self._take(job.result, at_end)
+            return
+        if self._job is None:
+            self._shown = self._scene()
+        else:
+            self._job.cancel()  # only the newest recording is ever installed
+        self._job, self._job_at_end = job, at_end
+        self._put_scene(scene)
+        self.recordingStarted.emit()
+
+    def _outcome(self, scene: "_Scene", monitor=None, refusal=None) -> "_Outcome":
+        """Record ``scene`` and what goes with it (runs in the worker)."""
+        trace = self._record(scene.spec, scene.points, scene.options, scene.grid,
+                             scene.breaks, monitor)
+        # Replay caches and the comparison are made here too, so that
+        # installing the trace does not hold up the window.
+        end = len(trace) - 1
+        final = trace.raster_at(end)
+        # The last step's state shares the final raster (nothing writes to
+        # either): one framebuffer, not two, on a 4096 x 4096 grid.
+        last = FrameState(end, trace.step(end), final, trace.variables_at(end),
+                          trace.candidates_at(end))
+        enabled = self.compare_enabled
+        found = self._comparison(scene, final, monitor) if enabled else None
+        return _Outcome(scene, trace, final, found, enabled, refusal, last)
+
+    def _take(self, outcome: "_Outcome", at_end) -> None:
+        if outcome.refusal is not None:
+            self.refusal = outcome.refusal
+        self.trace_spec = outcome.scene.spec
+        self._install(outcome.trace, self._at_end() if at_end is None else at_end, outcome)
+
+    def _job_progressed(self, job, steps: int) -> None:
+        if job is self._job:
+            self.recordingProgress.emit(steps)
+
+    def _job_done(self, job) -> None:
+        if job is not self._job:
+            return  # replaced or cancelled meanwhile
+        self._job = None
+        if job.error is not None or job.cancelled:
+            self._put_scene(self._shown)
+            self._shown = None
+            self.recordingFinished.emit(CANCELLED_MESSAGE if job.error is None
+                                        else str(job.error))
+            return
+        self._shown = None
+        outcome = job.result
+        self._put_scene(outcome.scene)
+        self._take(outcome, self._job_at_end)
+        self.recordingFinished.emit(self._finish_note(outcome))
+
+    def _finish_note(self, outcome) -> str:
+        if not outcome.refusal:
+            return ""
+        return (f"{outcome.scene.spec.title} refused the points drawn before "
+                f"({outcome.refusal}); showing an example shape instead.")
+
+    @property
+    def shown_scene(self) -> "_Scene":
+        """The scene the trace on show was recorded from: while a recording
+        runs in the background, the one before the edit."""
+        return self._shown if self._shown is not None else self._scene()
+
+    @property
+    def recording(self) -> bool:
+        """Is a recording running in the background?"""
+        return self._job is not None
+
+    def cancel_recording(self) -> None:
+        """Stop the background recording: the scene and trace on show stay."""
+        if self._job is None:
+            return
+        self._job.cancel()
+        self._job = None
+        self._put_scene(self._shown)
+        self._shown = None
+        self.recordingFinished.emit(CANCELLED_MESSAGE)
+
+    def stop_recording(self, timeout: float = 2.0) -> None:
+        """Cancel the background recording and wait for its thread to end
+        (the window is closing)."""
+        job = self._job
+        self.cancel_recording()
+        if job is not None:
+            job.wait(timeout)
+
+    def _drop_job(self) -> None:
+        """A newer scene was installed: a background recording is void."""
+        if self._job is not None:
+            self._job.cancel()
+            self._job = None
+            self._shown = None
+            self.recordingFinished.emit("")
+
+    def _install(self, trace: Trace | None, at_end: bool, outcome=None) -> None:
         old_len, old_index = len(self), self.index
         self.trace = trace
         self._state = None
-        self._final = None
+        self._final = None if outcome is None else outcome.final
+        if outcome is not None:
+            self._state = outcome.last_state  # used when the step goes to the end
         if trace is None:
             self.pause()
             self.index = 0
@@ -349,7 +518,11 @@ class Player(QObject):
             self.index = min(len(trace) - 1, round(fraction * (len(trace) - 1)))
         if trace is not None and self.index >= len(trace) - 1:
             self.pause()
-        self._compare(emit=False)
+        if outcome is not None and outcome.compare_enabled == self.compare_enabled:
+            found = outcome.comparison
+            self.differences, self.compared = found if found else (_NO_CELLS, False)
+        else:
+            self._compare(emit=False)
         self.traceChanged.emit()
         self.comparisonChanged.emit()
         self.frameChanged.emit(self.index)
@@ -387,24 +560,70 @@ class Player(QObject):
         return False
 
     def _compare(self, emit: bool = True) -> None:
-        result = np.zeros((0, 2), dtype=np.int64)
-        self.compared = False
-        if self.compare_enabled and self.previous is not None and self.trace is not None:
-            spec, options = self.previous
-            if complete(spec, self.points, self.breaks):
-                try:
-                    other = self._record(spec, self.points, options, self.grid, self.breaks)
-                    result = differences(other.raster_at(len(other) - 1), self.final_raster())
-                    self.compared = True
-                except InputError:
-                    pass  # the other algorithm does not take this input
-        self.differences = result
+        found = None
+        if self.compare_enabled and self.trace is not None:
+            found = self._comparison(self._scene(), self.final_raster())
+        self.differences, self.compared = found if found else (_NO_CELLS, False)
         if emit:
             self.comparisonChanged.emit()
+
+    def _comparison(self, scene: "_Scene", final: Raster, monitor=None):
+        """(differing cells, True) against the remembered algorithm, or None
+        when there is none or it does not take this input."""
+        if scene.previous is None:
+            return None
+        spec, options = scene.previous
+        if not complete(spec, scene.points, scene.breaks):
+            return None
+        try:
+            other = self._record(spec, scene.points, options, scene.grid, scene.breaks, monitor)
+        except InputError:
+            return None  # the other algorithm does not take this input
+        return differences(other.raster_at(len(other) - 1), final), True
 
     @property
     def previous_title(self) -> str:
         return "" if self.previous is None else self.previous[0].title
+
+
+_NO_CELLS = np.zeros((0, 2), dtype=np.int64)
+
+
+@dataclass(frozen=True)
+class _Scene:
+    """What a recording is made of: algorithm, options, points, grid and the
+    algorithm compared against."""
+
+    spec: object
+    options: dict
+    points: list
+    breaks: tuple
+    grid: tuple
+    previous: tuple | None
+
+
+@dataclass
+class _Outcome:
+    """A finished recording: the scene it was made of (an example shape
+    when the algorithm refused the points), its trace and replay cache."""
+
+    scene: _Scene
+    trace: Trace | None
+    final: Raster | None
+    comparison: tuple | None = None
+    compare_enabled: bool = False
+    refusal: str | None = None  # None: not an algorithm switch
+    last_state: FrameState | None = None
+
+
+def _sync_wait() -> float | None:
+    """Seconds an edit waits for its recording (None: until it ends)."""
+    text = os.environ.get("RASTERLAB_RECORD_WAIT", "")
+    try:
+        value = float(text) if text else SYNC_WAIT
+    except ValueError:
+        value = SYNC_WAIT
+    return None if not math.isfinite(value) else max(0.0, value)
 
 
 # A concave hexagon with a notch on its right (fractions of the grid): the
@@ -533,12 +752,16 @@ def _is_contour(item) -> bool:
     return isinstance(item, (list, tuple)) and bool(item) and isinstance(item[0], (list, tuple))
 
 
-def _checked_grid(grid) -> tuple[int, int]:
+def _checked_grid(grid, limit: int = MAX_GRID) -> tuple[int, int]:
     try:
         width, height = (int(v) for v in grid)
         check_grid(width, height)
     except (TypeError, ValueError) as error:
         raise InputError(str(error)) from None
+    if width > limit or height > limit:
+        raise InputError(f"grid {width}x{height} is larger than the maximum grid size of "
+                         f"{limit}x{limit}; raise \"Maximum grid size\" in "
+                         f"Edit > Preferences (up to {MAX_GRID})")
     return width, height
 
 

@@ -97,7 +97,8 @@ def _primitives(inputs, points) -> list:
     """Group the points into primitives: contours, triangles or one primitive."""
     if inputs.contours:
         return [{"points": [list(p) for p in contour]} for contour in points]
-    size = inputs.count if inputs.multiple else len(points)
+    # max(1, ...): no points at all make one empty primitive, not a zero step.
+    size = max(1, inputs.count if inputs.multiple else len(points))
     groups = [points[k:k + size] for k in range(0, len(points), size)] or [[]]
     return [{"points": [list(p) for p in group]} for group in groups]
 

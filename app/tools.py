@@ -42,9 +42,15 @@ def circle_kind(spec) -> str | None:
     return {1: "radius", 2: "radii"}.get(len(circle_options(spec)))
 
 
+# Point options that are no place on the grid: a triangle run's offset moves
+# the whole scene far from the origin, so it is typed, never clicked.
+NOT_MARKERS = ("offset",)
+
+
 def marker_option(spec):
     """The option placed by clicking a pixel (a fill's seed), or None."""
-    return next((option for option in spec.options if option.kind == "point"), None)
+    return next((option for option in spec.options
+                 if option.kind == "point" and option.name not in NOT_MARKERS), None)
 
 
 def grid_option_names(spec) -> tuple[str, ...]:

@@ -25,7 +25,8 @@ from algorithms.registry import InputError
 from algorithms.steps import Note, Table
 from widgets.depth_view import DepthView
 from widgets.drawing import CONTOURS, point_labels
-from widgets.editors import AlgorithmPicker, GridEditor, OptionsEditor, PointsEditor
+from widgets.editors import AlgorithmPicker, GridEditor, OptionsEditor
+from widgets.vertex_table import VertexTable
 from widgets.grid_view import DRAW, MARKER, PixelGridView
 from widgets.panels import CodePanel, VariablesPanel
 from widgets.tables import TablesPanel
@@ -38,7 +39,7 @@ from . import frame_view
 from .render import (COVERAGE_LEVELS, OUTLINE_STYLE, PALETTE, compose, coverage_counts,
                      depth_image, depth_range, error_image, error_stats)
 from .tables import TableIndex
-from .tools import (circle_kind, circle_options, clamp_option, drawing_mode, grid_option_names,
+from .tools import (circle_kind, circle_options, clamp_option, drawing_mode,
                     marker_option, placing_message, shape_paths, tool_hint)
 # What a frame shows is worked out in app/frame_view.py, shared with export.
 from .frame_view import step_cells as _step_cells
@@ -60,6 +61,8 @@ SHORTCUTS = (
     ("Shift+Left", "Ten steps back"),
     ("Home", "First step"),
     ("End", "Last step"),
+    ("F5, Shift+F5", "Run to the next (previous) breakpoint"),
+    ("Ctrl+B", "Bookmark the step on show"),
     ("F", "Fit the grid to the view"),
     ("C", "Coverage counts on or off"),
     ("Mouse wheel", "Zoom the grid"),
@@ -76,8 +79,12 @@ SHORTCUTS = (
     ("Shift+drag (ellipses)", "Keep rx and ry equal"),
     ("S", "Flood fill: the seed tool (a click places the seed); drag the star to move it"),
     ("Right-click", "Menu: place the seed, close the contour, remove or clear points"),
-    ("Ctrl+Z", "Undo a drawing step (points, contours, radius, seed)"),
+    ("Alt+click", "Pin the pixel for the pixel inspector (Ctrl+I); Esc lets go"),
+    ("Ctrl+Z", "Undo the last scene edit (points, contours, algorithm, options, grid, origin)"),
     ("Ctrl+Shift+Z, Ctrl+Y", "Redo it"),
+    ("Tab, Enter (vertex table)", "Next cell; typing replaces the value"),
+    ("Insert, Delete (vertex table)", "Add a vertex after the selected one, remove it"),
+    ("Ctrl+K", "Compare algorithms side by side on the same points (View > Compare…)"),
     ("F1", "This list"),
     ("Ctrl+Q", "Quit"),
 )
@@ -224,6 +231,19 @@ class MainWindow(QMainWindow):
         self.resizeDocks([self.code_dock, self.variables_dock], [330, 430], Qt.Orientation.Vertical)
         if self._tables:
             self._make_room_for_tables()
+        # Hook: stored preferences, Edit > Preferences (app/preferences.py).
+        from .preferences import install_preferences
+        install_preferences(self)
+        from .compare_window import install_compare  # View > Compare… (Ctrl+K)
+        install_compare(self)
+        from .gallery import install_gallery  # Help > Hard cases… (app/gallery.py)
+        install_gallery(self)
+        from .breakpoint_actions import install_breakpoints  # step units, breakpoints, bookmarks
+        install_breakpoints(self)
+        from .inspector_dock import install_inspector  # View > Pixel inspector (Ctrl+I)
+        install_inspector(self)
+        from .recording import install_recording  # long runs: progress bar and Cancel (Esc)
+        install_recording(self)
 
     # ----------------------------------------------------------- building
     def _build_centre(self) -> None:
@@ -255,7 +275,7 @@ class MainWindow(QMainWindow):
         layout.addWidget(self.options)
 
         layout.addWidget(_section("Points"))
-        self.points = PointsEditor(panel)
+        self.points = VertexTable(panel)  # one row per vertex: x, y, colour, z, w
         layout.addWidget(self.points)
         self.hint = QLabel(panel)
         self.hint.setObjectName("summary")
@@ -266,6 +286,7 @@ class MainWindow(QMainWindow):
         self.grid_editor = GridEditor(MAX_GRID, panel)
         layout.addWidget(self.grid_editor)
         fit = QPushButton("Fit grid to view", panel)
+        fit.setToolTip("Zoom and pan so that the whole grid is in view (F)")
         fit.setFocusPolicy(Qt.FocusPolicy.NoFocus)
         fit.clicked.connect(self.grid.fit)
         layout.addWidget(fit)
@@ -408,8 +429,8 @@ class MainWindow(QMainWindow):
         return act
 
     def _build_edit_menu(self, menu) -> None:
-        self._action(menu, "undo", "&Undo drawing", "Ctrl+Z", self.undo)
-        redo = self._action(menu, "redo", "&Redo drawing", "Ctrl+Shift+Z", self.redo)
+        self._action(menu, "undo", "&Undo", "Ctrl+Z", self.undo)
+        redo = self._action(menu, "redo", "&Redo", "Ctrl+Shift+Z", self.redo)
         redo.setShortcuts([QKeySequence("Ctrl+Shift+Z"), QKeySequence("Ctrl+Y")])
         menu.addSeparator()
         # Enter and Backspace belong to the grid only: elsewhere they confirm
@@ -419,7 +440,8 @@ class MainWindow(QMainWindow):
                      grid_only, self.grid)
         self._action(menu, "remove", "Remove the &last point", "Backspace",
                      self.grid.remove_last_point, grid_only, self.grid)
-        self._action(menu, "clear", "C&lear points", None, self.clear_points)
+        self._action(menu, "clear", "C&lear points", None, self.clear_points).setToolTip(
+            "Remove every point (Ctrl+Z brings them back)")
         menu.addSeparator()
         group = QActionGroup(self)
         draw = self._action(menu, "draw", "&Draw points", None,
@@ -430,6 +452,7 @@ class MainWindow(QMainWindow):
             act.setCheckable(True)
             group.addAction(act)
         draw.setChecked(True)
+        draw.setToolTip("Clicks on the grid place points; drag a handle to move one")
 
     def _build_playback_menu(self, play) -> None:
         self._action(play, "play", "Play / Pause", "Space", self.player.toggle)
@@ -450,7 +473,9 @@ class MainWindow(QMainWindow):
         self.addAction(fit)
         self.y_down_action = view.addAction("Origin top-left, y down")
         self.y_down_action.setCheckable(True)
-        self.y_down_action.toggled.connect(self.set_y_down)
+        self.y_down_action.setToolTip("Pixel (0, 0) at the top-left, y growing downwards "
+                                      "(Ctrl+Z takes it back)")
+        # Connected to set_y_down through the undo history (app/edits.py).
         for box, text, key in ((self.show_primitive, "Ideal primitive", ""),
                                (self.compare, "Compare with previous algorithm", ""),
                                (self.coverage, "Coverage counts", "C")):
@@ -464,6 +489,7 @@ class MainWindow(QMainWindow):
             box.toggled.connect(act.setChecked)
             self.actions_[f"view-{text}"] = act
         self.coverage_action = self.actions_["view-Coverage counts"]
+        self.coverage_action.setToolTip(self.coverage.toolTip() + " (C)")
         self.depth_action = view.addAction("Depth buffer")
         self.depth_action.setCheckable(True)
         self.depth_action.setChecked(True)
@@ -520,17 +546,11 @@ class MainWindow(QMainWindow):
         p.set_speed(t.speed)
 
         g = self.grid
-        g.pointsEdited.connect(lambda points: self.set_points(points, g.breaks))
-        g.editStarted.connect(self._remember)
-        g.radiusDragged.connect(self._radius_dragged)
-        g.markerPlaced.connect(self._marker_placed)
         g.hoverChanged.connect(self._hover)
-        g.clearRequested.connect(self.clear_points)
-        self.points.pointsEdited.connect(self._typed_points)
-        self.picker.algorithmChosen.connect(self.set_algorithm)
-        self.options.valueEdited.connect(self.set_option)
-        self.grid_editor.gridChanged.connect(self.set_grid)
-        self.grid_editor.originChanged.connect(self.set_y_down)
+        # Scene edits (grid gestures, the vertex table, the algorithm, options,
+        # grid size, origin) go through the undo history: app/edits.py.
+        from .edits import install_edits
+        install_edits(self)
         self.show_primitive.toggled.connect(g.set_show_primitive)
         self.compare.toggled.connect(p.set_compare)
         self.coverage.toggled.connect(self._coverage_toggled)
@@ -543,6 +563,7 @@ class MainWindow(QMainWindow):
             points = split_contours(points, breaks)
         self.player.set_scene(algorithm, points, options, grid)
         self.history.clear()
+        self.edits.refresh()
         self._scene_changed()
 
     def set_algorithm(self, name: str) -> None:
@@ -552,7 +573,6 @@ class MainWindow(QMainWindow):
             self._say_error(str(error))
             self.picker.set_current(self.player.spec.name)
             return
-        self.history.clear()
         self._scene_changed()
         if self.player.refusal:
             self._say_error(f"{self.player.spec.title} refused the points drawn before "
@@ -588,18 +608,14 @@ class MainWindow(QMainWindow):
             self._say_error(str(error))
         self._sync_points(keep_open=True)
 
-    def _typed_points(self, points) -> None:
-        self._remember()
-        self.set_points(points)
-
     def clear_points(self) -> None:
-        self._remember()
-        self.set_points([], ())
+        self.edits.once(lambda: self.set_points([], ()))
 
     def _sync_points(self, keep_open: bool = False) -> None:
         player = self.player
         self.grid.set_points(player.points, player.breaks, keep_open)
-        self.points.set_points(player.points, self._labels())
+        self.points.set_points(player.points, self._labels(), player.breaks)
+        self.edits.sync_table()
 
     def _labels(self) -> list[str]:
         spec, player = self.player.spec, self.player
@@ -645,31 +661,15 @@ class MainWindow(QMainWindow):
         self._hover(self._last_hover)
 
     # -------------------------------------------------------------- undo
+    # The whole scene is remembered before each edit: app/edits.py.
     def _snapshot(self) -> Snapshot:
-        player = self.player
-        names = grid_option_names(player.spec)
-        return Snapshot.of(player.points, player.breaks,
-                           {name: player.options[name] for name in names})
-
-    def _remember(self) -> None:
-        self.history.remember(self._snapshot())
+        return self.edits.snapshot()
 
     def undo(self) -> None:
-        self._go_to(self.history.undo(self._snapshot()))
+        self.edits.undo()
 
     def redo(self) -> None:
-        self._go_to(self.history.redo(self._snapshot()))
-
-    def _go_to(self, snapshot: Snapshot | None) -> None:
-        if snapshot is None:
-            return
-        try:
-            self.player.restore(snapshot.points, snapshot.breaks,
-                                {**self.player.options, **dict(snapshot.options)})
-        except InputError as error:
-            self._say_error(str(error))
-        self._sync_points()
-        self.options.set_values(self.player.options)
+        self.edits.redo()
 
     def _scene_changed(self) -> None:
         """Editors follow the player's scene (after an algorithm switch, say)."""
@@ -680,7 +680,7 @@ class MainWindow(QMainWindow):
         self.options.set_options(spec.options, player.options, spec.inputs.count,
                                  spec.inputs.names)
         self.points.set_input(spec.inputs.count, spec.inputs.names, spec.inputs.integer,
-                              open_ended(spec))
+                              open_ended(spec), spec.inputs.count if spec.inputs.multiple else 0)
         self.points.set_grid(*player.grid)
         self.grid_editor.set_grid(*player.grid)
         self.grid.set_grid(*player.grid)
@@ -813,7 +813,8 @@ class MainWindow(QMainWindow):
         trace, index = self.player.trace, state.index
         colour = frame_view.colour_name(trace.start)
         colors = (colour,) if colour else ()
-        rows = self.player.spec.panel_rows(trace, index)
+        # The trace's own algorithm: a switch may still be recording.
+        rows = (self.player.trace_spec or self.player.spec).panel_rows(trace, index)
         rows += self._accuracy_rows(state, rows)
         self.variables.set_rows(rows, colors, row_tones(rows) if self._tally else None)
         chips = []
@@ -996,10 +997,12 @@ class MainWindow(QMainWindow):
 
     # ------------------------------------------------------------ dialogs
     def show_shortcuts(self) -> None:
-        dialog = ShortcutsDialog(self)
+        from .about import shortcut_rows
+        dialog = ShortcutsDialog(self, shortcut_rows(self, SHORTCUTS))
         dialog.exec()
 
     def show_about(self) -> None:
+        from .about import app_version, runtime_versions
         count = len(registry.all_specs())
         QMessageBox.about(
             self, f"About {APP_NAME}",
@@ -1010,25 +1013,28 @@ class MainWindow(QMainWindow):
             f"<p>{count} algorithm{'s' if count != 1 else ''} available. "
             "Pixel (i, j) is the square [i, i+1) \u00d7 [j, j+1) with its centre at "
             "(i + \u00bd, j + \u00bd).</p>"
-            "<p>Built with Python, Qt (PySide6), pyqtgraph and numpy.</p>")
+            "<p>Built with Python, Qt (PySide6), pyqtgraph and numpy.</p>"
+            f"<p>Version {app_version()} · {runtime_versions()}</p>")
 
     def closeEvent(self, event):  # noqa: N802
         self.player.pause()
+        self.player.stop_recording()  # a background recording ends with the window
         super().closeEvent(event)
 
 
 class ShortcutsDialog(QDialog):
-    def __init__(self, parent=None):
+    def __init__(self, parent=None, rows=SHORTCUTS):
         super().__init__(parent)
         self.setWindowTitle("Keyboard shortcuts")
-        table = QTableWidget(len(SHORTCUTS), 2, self)
+        self.rows = list(rows)
+        table = QTableWidget(len(self.rows), 2, self)
         table.setHorizontalHeaderLabels(["Key", "Action"])
         table.verticalHeader().setVisible(False)
         table.setEditTriggers(QTableWidget.EditTrigger.NoEditTriggers)
         table.setSelectionMode(QTableWidget.SelectionMode.NoSelection)
         table.setShowGrid(False)
         table.setAlternatingRowColors(True)
-        for row, (key, text) in enumerate(SHORTCUTS):
+        for row, (key, text) in enumerate(self.rows):
             item = QTableWidgetItem(key)
             font = item.font()
             font.setBold(True)
@@ -1115,5 +1121,14 @@ def launch(argv=None) -> int:
     from .report_window import install_report_action
     install_file_actions(window)
     install_report_action(window)
+    from .preferences import reopen_last_scene
+    reopen_last_scene(window)
+    # Hook: uncaught errors are logged and shown (app/crash.py); unsaved
+    # work is kept and offered back after a crash (app/recovery.py).
+    from .crash import install_crash_handler
+    from .recovery import install_recovery
+    install_crash_handler(window)
+    recovery = install_recovery(window)
     window.show()
+    recovery.offer()
     return app.exec()

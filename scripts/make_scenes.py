@@ -8,6 +8,7 @@ tests/app/test_shipped_scenes.py checks what the descriptions claim.
 from __future__ import annotations
 
 import math
+import random
 import sys
 from pathlib import Path
 
@@ -33,6 +34,35 @@ def fan(cx, cy, radius, count):
     points = []
     for k in range(count):
         points += [[cx, cy], ring[k], ring[(k + 1) % count]]
+    return points
+
+
+def mesh(columns, rows, width, height, seed=7, margin=1.5):
+    """A jittered grid of columns x rows cells, two triangles each, sharing edges."""
+    rnd = random.Random(seed)
+    corners = {}
+    for r in range(rows + 1):
+        for c in range(columns + 1):
+            x = margin + c * (width - 2 * margin) / columns
+            y = margin + r * (height - 2 * margin) / rows
+            x += rnd.uniform(-1.2, 1.2) if 0 < c < columns else 0
+            y += rnd.uniform(-1.2, 1.2) if 0 < r < rows else 0
+            corners[c, r] = [round(x * 256) / 256, round(y * 256) / 256]
+    points = []
+    for r in range(rows):
+        for c in range(columns):
+            a, b, d, e = corners[c, r], corners[c + 1, r], corners[c + 1, r + 1], corners[c, r + 1]
+            points += [a, b, d, a, d, e]
+    return points
+
+
+def siemens_star(cx, cy, radius, spokes):
+    """spokes thin wedges around (cx, cy), each half of its angular period."""
+    points = []
+    for k in range(spokes):
+        a0, a1 = 2 * math.pi * k / spokes, 2 * math.pi * (k + 0.5) / spokes
+        points += [[cx, cy]] + [[round((cx + radius * math.cos(a)) * 256) / 256,
+                                 round((cy + radius * math.sin(a)) * 256) / 256] for a in (a0, a1)]
     return points
 
 
@@ -80,6 +110,23 @@ SCENES = {
                              title="A fan of 32 triangles",
                              description="32 triangles share one vertex and their edges; with "
                                          "the top-left rule each pixel is covered once."),
+    "triangle-mesh-1e6": Scene(
+        "triangle-bbox", mesh(6, 4, 32, 24), {"precision": "float32", "offset": [1000000, 1000000]},
+        32, 24, title="A mesh near x, y = 1,000,000",
+        description="Edge functions evaluated a million pixels from the origin: float32 keeps "
+                    "1/16 px of a coordinate and far less of a*x + b*y + c, so the mesh falls "
+                    "apart into cracks; with precision fixed it stays watertight."),
+    "triangle-behind-eye": Scene(
+        "triangle-perspective", [[3, 12], [29, 12], [16, 21]],
+        {"w": [1, 1, -0.5], "s": [0, 10, 5], "colors": ["#ff0000", "#00ff00", "#0000ff"],
+         "near": 0.05}, 32, 24, title="A triangle straddling w = 0",
+        description="The top vertex is behind the eye (w < 0): cut at w = near, the visible part "
+                    "is the wedge below the front edge, not the triangle the corners outline."),
+    "aa-siemens-star": Scene(
+        "aa-supersample", siemens_star(24, 24, 23.5, 36), {"n": 1}, 48, 48,
+        title="Aliasing: a Siemens star",
+        description="Spokes narrower than a pixel near the centre alias into moire with one "
+                    "sample per pixel; compare n = 1 with n = 4."),
     "painter-intersecting": visibility_scene(
         "painter-intersecting", "Painter's algorithm: intersecting triangles",
         "Two triangles pass through each other, so no drawing order is right everywhere."),

@@ -1,7 +1,29 @@
+import atexit
 import os
+import shutil
 import sys
+import tempfile
 from pathlib import Path
 
 # Qt tests never need a display.
 os.environ.setdefault("QT_QPA_PLATFORM", "offscreen")
+# Edits wait for their recording however long it takes, so a test sees the
+# new trace at once; tests/app/test_recording.py sets the wait to 0.
+os.environ["RASTERLAB_RECORD_WAIT"] = "inf"
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
+
+# No test reads or writes the person's real settings: for the whole session
+# QSettings (every format and scope) lives in a temporary folder, set before
+# Qt starts. Tests that need a clean file of their own set RASTERLAB_SETTINGS.
+_SETTINGS_DIR = tempfile.mkdtemp(prefix="rasterlab-test-settings-")
+atexit.register(shutil.rmtree, _SETTINGS_DIR, ignore_errors=True)
+os.environ["XDG_CONFIG_HOME"] = _SETTINGS_DIR
+os.environ.pop("RASTERLAB_SETTINGS", None)
+# Recovery copies and the error log (app/appdata.py) go there too; tests
+# that look at them point RASTERLAB_DATA_DIR at a folder of their own.
+os.environ["RASTERLAB_DATA_DIR"] = os.path.join(_SETTINGS_DIR, "data")
+from PySide6.QtCore import QSettings  # noqa: E402 (after the environment is set)
+
+for _format in (QSettings.Format.NativeFormat, QSettings.Format.IniFormat):
+    for _scope in (QSettings.Scope.UserScope, QSettings.Scope.SystemScope):
+        QSettings.setPath(_format, _scope, _SETTINGS_DIR)

@@ -8,10 +8,9 @@ import math
 from PySide6.QtCore import QRect, QSize, Qt, Signal
 from PySide6.QtGui import QColor, QFont, QIcon, QPainter, QPalette, QPixmap
 from PySide6.QtWidgets import (QAbstractItemView, QCheckBox, QColorDialog, QComboBox,
-                               QDoubleSpinBox, QFormLayout, QFrame, QGridLayout, QHBoxLayout,
-                               QLabel, QLineEdit, QScrollArea, QSpinBox, QStyle,
+                               QFormLayout, QHBoxLayout, QLabel, QLineEdit, QSpinBox, QStyle,
                                QStyledItemDelegate, QToolButton, QTreeWidget, QTreeWidgetItem,
-                               QVBoxLayout, QWidget)
+                               QWidget)
 
 from algorithms.registry import InputError
 
@@ -443,174 +442,6 @@ class PointOptionEditor(QWidget):
         self.changed.emit(self.value())
 
 
-# ------------------------------------------------------------------ points
-class RealSpinBox(QDoubleSpinBox):
-    """A real coordinate kept exactly to 1/256 px (8 decimals), shown
-    without trailing zeros: 12, 12.5, 3.00390625."""
-
-    def __init__(self, parent=None):
-        super().__init__(parent)
-        self.setDecimals(8)
-        self.setSingleStep(0.125)
-        # The digits need the room more than the arrows do; Up and Down
-        # still step by 1/8 px.
-        self.setButtonSymbols(QDoubleSpinBox.ButtonSymbols.NoButtons)
-
-    def textFromValue(self, value: float) -> str:  # noqa: N802
-        text = f"{value:.8f}".rstrip("0").rstrip(".")
-        return text if text not in ("", "-0") else "0"
-
-
-class PointsEditor(QWidget):
-    """The points as numbers, one row per point.
-
-    A fixed set (a segment's P and Q) shows a row for every point, blank
-    until placed. Polygons and triangles list every point placed so far,
-    named as the grid names them (C2.P1: contour 2, vertex 1; T2.P0:
-    triangle 2, vertex 0), in a list that scrolls when it grows long.
-    """
-
-    pointsEdited = Signal(list)
-
-    MAX_VISIBLE_ROWS = 9
-
-    def __init__(self, parent=None):
-        super().__init__(parent)
-        self._body = QWidget()
-        self._grid = QGridLayout(self._body)
-        self._grid.setContentsMargins(0, 0, 0, 0)
-        self._grid.setHorizontalSpacing(6)
-        self._grid.setVerticalSpacing(4)
-        self._scroll = QScrollArea(self)
-        self._scroll.setWidget(self._body)
-        self._scroll.setWidgetResizable(True)
-        self._scroll.setFrameShape(QFrame.Shape.NoFrame)
-        self._scroll.setHorizontalScrollBarPolicy(Qt.ScrollBarPolicy.ScrollBarAlwaysOff)
-        self.empty = QLabel("No points yet.", self)
-        self.empty.setStyleSheet("color: #66707c;")
-        layout = QVBoxLayout(self)
-        layout.setContentsMargins(0, 0, 0, 0)
-        layout.addWidget(self._scroll)
-        layout.addWidget(self.empty)
-        self._rows: list[tuple[QLabel, QWidget, QWidget]] = []
-        self._points: list[tuple] = []
-        self._labels: list[str] = []
-        self._names: tuple[str, ...] = ()
-        self._count = 0
-        self._integer = True
-        self._open_ended = False
-        self._size = (32, 24)
-
-    def set_input(self, count: int, names, integer: bool, open_ended: bool = False) -> None:
-        names = tuple(names)
-        if (count, names, integer, open_ended) == (self._count, self._names, self._integer,
-                                                   self._open_ended):
-            return
-        if integer != self._integer:
-            self._resize_rows(0)  # spin boxes of the other kind
-        self._count, self._names, self._integer = count, names, integer
-        self._open_ended = bool(open_ended)
-        self._apply()
-
-    def set_grid(self, width: int, height: int) -> None:
-        self._size = (width, height)
-        self._apply()
-
-    def set_points(self, points, labels=None) -> None:
-        """The points, and optionally the name of each (as the grid shows them)."""
-        self._points = [tuple(p) for p in points]
-        self._labels = list(labels) if labels is not None else []
-        self._apply()
-
-    def boxes(self, k: int):
-        return self._rows[k][1], self._rows[k][2]
-
-    def row_count(self) -> int:
-        return len(self._rows)
-
-    def label_text(self, k: int) -> str:
-        return self._rows[k][0].text()
-
-    # ---------------------------------------------------------- internals
-    def _row_name(self, k: int) -> str:
-        if k < len(self._labels):
-            return self._labels[k]
-        return _name(self._names, k)
-
-    def _resize_rows(self, n: int) -> None:
-        while len(self._rows) > n:
-            for widget in self._rows.pop():
-                # Out of the layout and out of sight now; deleted later.
-                self._grid.removeWidget(widget)
-                widget.hide()
-                widget.setParent(None)
-                widget.deleteLater()
-        while len(self._rows) < n:
-            k = len(self._rows)
-            label = QLabel(self._body)
-            font = label.font()
-            font.setBold(True)
-            label.setFont(font)
-            boxes = []
-            for axis in ("x", "y"):
-                box = QSpinBox(self._body) if self._integer else RealSpinBox(self._body)
-                box.setPrefix(f"{axis} ")
-                box.setKeyboardTracking(False)
-                box.setObjectName(f"point-{k}-{axis}")
-                box.valueChanged.connect(self._edited)
-                boxes.append(box)
-            self._grid.addWidget(label, k, 0)
-            self._grid.addWidget(boxes[0], k, 1)
-            self._grid.addWidget(boxes[1], k, 2)
-            self._rows.append((label, boxes[0], boxes[1]))
-
-    def _apply(self) -> None:
-        n = len(self._points) if self._open_ended else self._count
-        self._resize_rows(n)
-        width, height = self._size
-        for k, (label, bx, by) in enumerate(self._rows):
-            placed = k < len(self._points)
-            label.setText(self._row_name(k))
-            for box, limit, value in ((bx, width, 0), (by, height, 1)):
-                box.blockSignals(True)
-                top = limit - 1 if self._integer else float(limit)
-                box.setRange(0, top)
-                if placed:
-                    box.setValue(self._points[k][value])
-                    box.setSpecialValueText("")
-                else:
-                    box.setSpecialValueText("\u2013")  # an en dash: not placed yet
-                    box.setValue(box.minimum())
-                box.setEnabled(placed)
-                box.blockSignals(False)
-            label.setEnabled(placed)
-        self.empty.setVisible(n == 0)
-        self._scroll.setVisible(n > 0)
-        self._fit_height(n)
-
-    def _fit_height(self, n: int) -> None:
-        """As tall as the rows, up to MAX_VISIBLE_ROWS; then it scrolls."""
-        if not self._rows:
-            return
-        row = max(self._rows[0][1].sizeHint().height(), 20) + self._grid.verticalSpacing()
-        self._scroll.setFixedHeight(min(n, self.MAX_VISIBLE_ROWS) * row + 2)
-
-    def _edited(self, _value) -> None:
-        points = []
-        for k, (_label, bx, by) in enumerate(self._rows[:len(self._points)]):
-            if self._integer:
-                points.append((int(bx.value()), int(by.value())))
-            else:
-                points.append((float(bx.value()), float(by.value())))
-        if points != self._points:
-            self._points = points
-            self.pointsEdited.emit(points)
-
-
-def _name(names, k: int) -> str:
-    return names[k] if k < len(names) else f"P{k + 1}"
-
-
 # -------------------------------------------------------------------- grid
 class GridEditor(QWidget):
     """Grid width and height, and where the origin is."""
@@ -625,11 +456,10 @@ class GridEditor(QWidget):
         self.width_box = QSpinBox(self)
         self.height_box = QSpinBox(self)
         for box, name in ((self.width_box, "width"), (self.height_box, "height")):
-            box.setRange(1, maximum)
             box.setKeyboardTracking(False)
             box.setObjectName(f"grid-{name}")
-            box.setToolTip(f"Grid {name} in pixels (1 to {maximum})")
             box.valueChanged.connect(self._resized)
+        self.set_maximum(maximum)
         self.origin = QComboBox(self)
         self.origin.addItems(list(self.ORIGINS))
         self.origin.setToolTip("Where pixel (0, 0) is and which way y grows. The algorithms "
@@ -646,6 +476,16 @@ class GridEditor(QWidget):
         form.addRow("Size", size)
         form.addRow("Origin", self.origin)
 
+    def set_maximum(self, maximum: int) -> None:
+        """The largest width and height the boxes accept (no signal)."""
+        self.maximum = int(maximum)
+        for box, name in ((self.width_box, "width"), (self.height_box, "height")):
+            box.blockSignals(True)
+            box.setRange(1, self.maximum)
+            box.blockSignals(False)
+            box.setToolTip(f"Grid {name} in pixels (1 to {self.maximum}; the maximum is "
+                           "\"Maximum grid size\" in Edit > Preferences)")
+
     def set_grid(self, width: int, height: int) -> None:
         for box, value in ((self.width_box, width), (self.height_box, height)):
             box.blockSignals(True)
@@ -661,4 +501,4 @@ class GridEditor(QWidget):
         self.gridChanged.emit(self.width_box.value(), self.height_box.value())
 
 
-__all__ = ["AlgorithmPicker", "ColorListEditor", "OptionsEditor", "PointsEditor", "GridEditor"]
+__all__ = ["AlgorithmPicker", "ColorListEditor", "OptionsEditor", "GridEditor"]

@@ -66,6 +66,23 @@ class ExportDialog(QDialog):
         layout.addWidget(self.range_all)
         layout.addWidget(self.range_current)
         layout.addLayout(custom)
+        # The scene's bookmarks as ends of the range (shown when it has any).
+        self.mark_first = QComboBox(steps)
+        self.mark_last = QComboBox(steps)
+        self.mark_first.setToolTip("Start the range at a bookmark of the scene")
+        self.mark_last.setToolTip("End the range at a bookmark of the scene (included)")
+        self.mark_first.activated.connect(lambda _i: self._mark_chosen(self.mark_first, self.first))
+        self.mark_last.activated.connect(lambda _i: self._mark_chosen(self.mark_last, self.last))
+        self.marks_row = QWidget(steps)
+        marks = QHBoxLayout(self.marks_row)
+        marks.setContentsMargins(0, 0, 0, 0)
+        marks.addWidget(QLabel("Bookmarks", self.marks_row))
+        marks.addWidget(self.mark_first)
+        marks.addWidget(QLabel("to", self.marks_row))
+        marks.addWidget(self.mark_last)
+        marks.addStretch(1)
+        layout.addWidget(self.marks_row)
+        self.marks_row.hide()
         self.per = QComboBox(steps)
         for key, text in PER:
             self.per.addItem(text, key)
@@ -213,6 +230,24 @@ class ExportDialog(QDialog):
         self.range_current.setText(f"From the current step ({self._current}) to the end "
                                    f"({self._last})")
         self.range_all.setText(f"All steps (0 to {self._last})")
+
+    def set_bookmarks(self, bookmarks) -> None:
+        """The scene's bookmarks ({"name", "step"}), offered as range ends;
+        those past the last step are left out."""
+        marks = [(str(m["name"]), int(m["step"])) for m in bookmarks
+                 if 0 <= int(m["step"]) <= self._last]
+        for combo in (self.mark_first, self.mark_last):
+            combo.clear()
+            combo.addItem("(choose)", None)
+            for name, step in marks:
+                combo.addItem(f"{name} (step {step})", step)
+        self.marks_row.setVisible(bool(marks))
+
+    def _mark_chosen(self, combo: QComboBox, box: QSpinBox) -> None:
+        step = combo.currentData()
+        if step is not None:
+            box.setValue(step)
+            self.range_custom.setChecked(True)
 
     def set_size_text(self, text: str) -> None:
         self.size_label.setText(text)

@@ -57,6 +57,7 @@ FINE_SNAP = 256
 FINE = Qt.KeyboardModifier.ControlModifier
 NEW_CONTOUR = Qt.KeyboardModifier.ShiftModifier
 EQUAL_RADII = Qt.KeyboardModifier.ShiftModifier
+INSPECT = Qt.KeyboardModifier.AltModifier  # Alt+click asks to inspect a pixel
 DRAW, MARKER = "draw", "marker"  # the tools
 
 
@@ -104,8 +105,12 @@ class GridLinesItem(pg.GraphicsObject):
     def __init__(self, color: str):
         super().__init__()
         self._size = (1, 1)
+        self.set_color(color)
+
+    def set_color(self, color: str) -> None:
         self._color = QColor(color)
         self._border = QColor(color).darker(125)
+        self.update()
 
     def set_size(self, width: int, height: int) -> None:
         self.prepareGeometryChange()
@@ -156,8 +161,13 @@ class CellOutlines(pg.GraphicsObject):
         self._size = (1, 1)
         self._styles = styles
         self._pens = {}
+        self.set_palette(palette)
+        self._layers = {name: np.zeros((0, 2), dtype=np.int64) for name in OUTLINE_ORDER}
+        self._spans = np.zeros((0, 3), dtype=np.int64)
+
+    def set_palette(self, palette) -> None:
         for name in OUTLINE_ORDER + ("span",):
-            style = styles[name]
+            style = self._styles[name]
             pen = QPen(QColor(getattr(palette, "current" if name == "span" else name)))
             pen.setCosmetic(True)
             pen.setWidthF(style.width)
@@ -166,8 +176,7 @@ class CellOutlines(pg.GraphicsObject):
                 pen.setStyle(Qt.PenStyle.DashLine)
                 pen.setDashPattern([2.0, 1.5])
             self._pens[name] = pen
-        self._layers = {name: np.zeros((0, 2), dtype=np.int64) for name in OUTLINE_ORDER}
-        self._spans = np.zeros((0, 3), dtype=np.int64)
+        self.update()
 
     def set_size(self, width: int, height: int) -> None:
         self.prepareGeometryChange()
@@ -295,6 +304,8 @@ class PixelGridView(pg.PlotWidget):
     #: A click, drag or key is about to edit the points, the radius or the
     #: marker: one gesture, one step to undo.
     editStarted = Signal()
+    #: The person asked to inspect pixel (x, y) (Alt+click, or the menu).
+    inspectRequested = Signal(object)
 
     def __init__(self, palette, outline_styles, parent=None):
         self._box = _GridViewBox(self)
@@ -490,6 +501,32 @@ class PixelGridView(pg.PlotWidget):
         self._show_primitive = bool(show)
         self._refresh_points()
 
+    def set_palette(self, palette) -> None:
+        """Recolour everything drawn over the image (a theme or colour
+        preference changed); the image itself is composed by the caller."""
+        self.palette = palette
+        self.setBackground(palette.outside)
+        self._box.setBackgroundColor(palette.outside)
+        dark = QColor(palette.outside).lightness() < 128
+        for name in ("bottom", "left"):
+            axis = self.getPlotItem().getAxis(name)
+            axis.setPen(pg.mkPen("#8a94a1" if dark else "#6b7785"))
+            axis.setTextPen(pg.mkPen("#c9d1d9" if dark else "#3d4754"))
+        self.grid_lines.set_color(palette.grid)
+        self.outlines.set_palette(palette)
+        self.primitive.setPen(pg.mkPen(palette.primitive, width=2.5))
+        self.preview.setPen(pg.mkPen(palette.primitive, width=1.5, style=Qt.PenStyle.DashLine))
+        self.handles.setBrush(pg.mkBrush(_translucent(palette.handle, 70)))
+        self.handles.setPen(pg.mkPen(palette.handle_edge, width=2.5))
+        self.rim.setBrush(pg.mkBrush(palette.handle))
+        self.rim.setPen(pg.mkPen(palette.primitive, width=2.5))
+        self.marker.setBrush(pg.mkBrush(palette.seed))
+        self.marker.setPen(pg.mkPen(palette.handle, width=1.5))
+        self.update()
+
+    def set_grid_lines_visible(self, visible: bool) -> None:
+        self.grid_lines.setVisible(bool(visible))
+
     def set_points(self, points, breaks=None, keep_open: bool = False) -> None:
         """Points set from outside; ``breaks`` (contour starts) stay as they
         are when not given. A contour being drawn stays open when the points
@@ -655,6 +692,9 @@ class PixelGridView(pg.PlotWidget):
     def _clicked(self, scene_pos, modifiers=Qt.KeyboardModifier.NoModifier,
                  double: bool = False) -> None:
         self.setFocus(Qt.FocusReason.MouseFocusReason)
+        if modifiers & INSPECT:
+            self.inspectRequested.emit(self.pixel_at(scene_pos))
+            return
         if self._tool == MARKER and self._marker_name:
             self.editStarted.emit()
             self.markerPlaced.emit(self.pixel_at(scene_pos))
@@ -752,6 +792,9 @@ class PixelGridView(pg.PlotWidget):
 
     def _context_menu(self, scene_pos, screen_pos) -> None:
         menu = QMenu(self)
+        where = self.pixel_at(scene_pos)
+        menu.addAction(f"Inspect pixel ({where[0]}, {where[1]})",
+                       lambda: self.inspectRequested.emit(where))
         if self._marker_name:
             pixel = self.pixel_at(scene_pos)
             menu.addAction(f"Place the {self._marker_name} at ({pixel[0]}, {pixel[1]})",

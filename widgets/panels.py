@@ -10,7 +10,10 @@ from PySide6.QtGui import QBrush, QColor, QFont, QFontDatabase, QFontMetrics
 from PySide6.QtWidgets import (QAbstractItemView, QFrame, QHeaderView, QLabel, QScrollArea,
                                QTableWidget, QTableWidgetItem, QVBoxLayout, QWidget)
 
+from .series_points import plot_points
+
 CURRENT_LINE = QColor("#ffe8b3")
+CURRENT_TEXT = QColor("#1d2733")
 CURRENT_EDGE = QColor("#f08c00")
 CHANGED_VALUE = QColor("#b35900")
 LINE_NUMBER = QColor("#8a94a1")
@@ -147,6 +150,8 @@ class CodePanel(QWidget):
 
     def _paint(self, row: int, current: bool) -> None:
         number, code = self.lines.item(row, 0), self.lines.item(row, 1)
+        # The highlight is light in either theme: its text stays dark.
+        code.setForeground(QBrush(CURRENT_TEXT) if current else QBrush())
         for item in (number, code):
             item.setBackground(QBrush(CURRENT_LINE) if current else QBrush())
             font = item.font()
@@ -341,15 +346,15 @@ class VariablesPanel(QWidget):
             self.point.setData([], [])
             return
         self._series = values
-        steps = np.arange(len(values), dtype=np.float64)
         # Only the steps that carry the value, joined: a value set every
-        # other step (a fill's stack size) still reads as one curve.
-        known = np.isfinite(values)
+        # other step (a fill's stack size) still reads as one curve. A long
+        # run is thinned to each stretch's extremes (widgets/series_points.py).
+        steps, known = plot_points(values)
         # Markers on every step only while there are few enough to see.
-        self.curve.setSymbol("o" if known.sum() <= 300 else None)
-        self.curve.setData(steps[known], values[known])
+        self.curve.setSymbol("o" if len(known) <= 300 else None)
+        self.curve.setData(steps, known)
         self.plot_title.setText(f"{name} over the run" + (" (its sign decides)" if decision else ""))
-        low, high = float(np.nanmin(values)), float(np.nanmax(values))
+        low, high = float(known.min()), float(known.max())
         self.zero.setVisible(decision)
         if decision:
             low, high = min(low, 0.0), max(high, 0.0)

@@ -73,6 +73,8 @@ def test_every_line_of_every_algorithm_names_known_operations():
                   "polygons": (((1.0, 1.0), (9.0, 2.0), (4.0, 8.0)),),
                   "fill": (((1, 1), (9, 2), (4, 8)),),
                   "triangles": ((1.0, 1.0), (9.0, 2.0), (4.0, 8.0))}[spec.family]
+        if spec.inputs.count == 1:
+            points = ((6, 6),)  # a circle's centre (a seed fill inside a circle too)
         trace = spec.record(points, {}, (12, 12))
         counts = measure.op_counts(trace)
         assert measure.total_ops(counts) > 0, spec.name

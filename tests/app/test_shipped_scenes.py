@@ -1,7 +1,11 @@
 """What the shipped scenes' descriptions claim is true."""
-import numpy as np
+from fractions import Fraction
 
-from algorithms import registry
+import numpy as np
+import pytest
+
+from algorithms import exact_coverage, exact_triangles, registry
+from algorithms.registry import InputError
 from app import scene as scenes
 from app.scene import RESOURCES
 
@@ -96,3 +100,75 @@ def test_painter_scenes_disagree_with_the_z_buffer():
         depth = registry.get("zbuffer").record(scene.points, options, grid=grid)
         differ = painter.raster_at(-1).colors != depth.raster_at(-1).colors
         assert differ.any(), name
+
+
+# ------------------------------------------------ far, behind the eye, aliasing
+def exact_mesh_counts(scene):
+    """Independent exact coverage of the mesh moved by the scene's offset, moved back."""
+    ox, oy = scene.options["offset"]
+    moved = [(Fraction(x) + ox, Fraction(y) + oy) for x, y in scene.points]
+    window = (ox, oy, ox + scene.width, oy + scene.height)
+    counts = exact_triangles.coverage(moved, 8, "top-left", window)
+    interior = exact_triangles.union_interior(moved, 8, window)
+    back = {(x - ox, y - oy): c for (x, y), c in counts.items()}
+    return back, {(x - ox, y - oy) for x, y in interior}
+
+
+def run_counts(trace):
+    counts = {}
+    for p in map(tuple, trace.written_pixels().tolist()):
+        counts[p] = counts.get(p, 0) + 1
+    return counts
+
+
+def test_far_mesh_is_watertight_exactly_and_torn_in_float32():
+    scene = load("triangle-mesh-1e6")
+    assert min(scene.options["offset"]) >= 1_000_000 and scene.options["precision"] == "float32"
+    truth, interior = exact_mesh_counts(scene)
+    assert len(scene.points) >= 30 and set(truth.values()) == {1}  # no overlap
+    assert interior <= set(truth)  # no crack
+    grid = (scene.width, scene.height)
+    fixed = scene.spec.record(scene.points, {**scene.options, "precision": "fixed"}, grid=grid)
+    assert run_counts(fixed) == truth
+    single = scene.spec.record(scene.points, scene.options, grid=grid)
+    drawn = run_counts(single)
+    cracks = interior - set(drawn)
+    assert len(cracks) > 50
+    final = single.final_variables()
+    assert final["cracks"] == len(cracks)
+    assert final["overlaps"] == sum(1 for c in drawn.values() if c > 1)
+
+
+def test_behind_eye_scene_draws_the_wedge_below_the_front_edge():
+    scene = load("triangle-behind-eye")
+    w = scene.options["w"]
+    assert min(w) < 0 < max(w) and scene.options["near"] > 0
+    front = [p for p, wk in zip(scene.points, w) if wk > 0]
+    edge_y = front[0][1]
+    assert all(p[1] == edge_y for p in front)  # the front edge is horizontal
+    drawn = set(written("triangle-behind-eye"))
+    # The visible part lies below the front edge and reaches the grid's bottom row;
+    # the triangle the projected corners outline (above it) is left empty.
+    assert drawn and all(y + 0.5 < edge_y for _, y in drawn)
+    assert any(y == 0 for _, y in drawn) and len(drawn) > 200
+    with pytest.raises(InputError, match="near"):
+        pixels(scene, near=0.0)
+
+
+def test_siemens_star_aliases_with_one_sample_and_less_with_sixteen():
+    scene = load("aa-siemens-star")
+    assert scene.options["n"] == 1
+    grid = (scene.width, scene.height)
+    exact = exact_coverage.triangle_coverage(scene.points, grid)
+
+    def error(n):
+        trace = scene.spec.record(scene.points, {**scene.options, "n": n}, grid=grid)
+        image = np.zeros((scene.height, scene.width))
+        for (x, y), v in zip(trace.written_pixels().tolist(), trace.pixel_values().tolist()):
+            image[y, x] = v
+        return float(np.abs(image - exact).mean())
+    one, four = error(1), error(4)
+    assert one > 3 * four
+    # One sample per pixel can only say 0 or 1: near the centre, where the spokes are
+    # thinner than a pixel, that is far from the true coverage.
+    assert one > 0.1

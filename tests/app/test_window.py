@@ -56,7 +56,7 @@ def test_placing_two_points_by_clicking(window):
     trace = record(points=((2, 20), (30, 1)))
     assert np.array_equal(window.player.trace.written_pixels(), trace.written_pixels())
     # The numbers in the points editor follow.
-    assert [b.value() for b in window.points.boxes(1)] == [30, 1]
+    assert [window.points.cell_text(1, axis) for axis in ("x", "y")] == ["30", "1"]
 
 
 def test_dragging_a_handle(window):

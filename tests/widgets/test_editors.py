@@ -3,7 +3,7 @@ from PySide6.QtWidgets import QCheckBox, QComboBox, QLineEdit, QSpinBox
 
 from algorithms import registry
 from algorithms.registry import Option
-from widgets.editors import AlgorithmPicker, ColorListEditor, GridEditor, OptionsEditor, PointsEditor
+from widgets.editors import AlgorithmPicker, ColorListEditor, GridEditor, OptionsEditor
 
 OPTIONS = (
     Option("symmetric", "bool", False, "ties the same both ways"),
@@ -114,21 +114,6 @@ def test_picker_groups_by_family_and_emits_names(qtbot):
     with qtbot.assertNotEmitted(picker.algorithmChosen):
         picker.set_current(specs[0].name)
     assert picker.current_name() == specs[0].name
-
-
-def test_points_editor(qtbot):
-    points = PointsEditor()
-    qtbot.addWidget(points)
-    points.set_input(2, ("P", "Q"), True)
-    points.set_grid(32, 24)
-    points.set_points([(4, 5), (28, 15)])
-    x, y = points.boxes(1)
-    assert (x.value(), y.value()) == (28, 15) and x.maximum() == 31 and y.maximum() == 23
-    with qtbot.waitSignal(points.pointsEdited, timeout=500) as blocker:
-        x.setValue(30)
-    assert blocker.args == [[(4, 5), (30, 15)]]
-    points.set_points([(4, 5)])
-    assert not points.boxes(1)[0].isEnabled()
 
 
 def test_grid_editor(qtbot):

@@ -1,0 +1,36 @@
+"""Where RasterLab keeps its own files: the recovery copy of the scene
+being edited and the error log.
+
+The folder is ``$RASTERLAB_DATA_DIR`` when that is set (tests and portable
+set-ups point it at a folder of their own), else Qt's per-user application
+data folder (``QStandardPaths.AppLocalDataLocation``, for example
+``~/.local/share/RasterLab`` on Linux).
+"""
+from __future__ import annotations
+
+import os
+from pathlib import Path
+
+from PySide6.QtCore import QStandardPaths
+
+ENV_VAR = "RASTERLAB_DATA_DIR"
+FALLBACK = Path.home() / ".rasterlab"
+
+
+def data_dir() -> Path:
+    """The folder, not yet created (see ``ensure``)."""
+    chosen = os.environ.get(ENV_VAR, "").strip()
+    if chosen:
+        return Path(chosen).expanduser()
+    location = QStandardPaths.writableLocation(
+        QStandardPaths.StandardLocation.AppLocalDataLocation)
+    # Without an application name Qt answers with a shared folder; use ours.
+    if not location or Path(location).name.lower() != "rasterlab":
+        return FALLBACK
+    return Path(location)
+
+
+def ensure(folder: Path) -> Path:
+    """Create ``folder`` (and its parents) if needed; raises OSError."""
+    folder.mkdir(parents=True, exist_ok=True)
+    return folder

@@ -1,0 +1,606 @@
+"""Compare mode: several algorithms on the same primitives, stepped together.
+
+A *pane* is an algorithm with the options it sets; it runs on shared
+``Primitives`` (points, contour breaks, grid, and the options of the scene
+they came from). Options the scene changed from their defaults carry over
+to panes whose algorithm has an option of the same name and kind (a
+circle's radius, a triangle's colours and depths), as they do when the
+main window switches algorithm; the pane's own options win.
+
+Besides the registered algorithms a pane may be ``EXACT``: the exact
+coverage of the shapes an antialiasing run draws (``frame_view.
+exact_reference``), a run of one frame that the estimates aim at.
+
+``diff`` sorts the cells of two rasters into only in A, only in B and in
+both; cells in both whose values differ are counted apart. The values are
+the coverage where both runs write coverages (antialiasing), the colour
+where both write colours, and otherwise how often the cell was written (so
+that a pixel two triangles of a mesh both fill shows up).
+
+``linked_indices`` turns one position on the shared timeline into a step
+per pane: by frame (step k everywhere, held at the end of shorter runs) or
+by progress (the same fraction of every run).
+
+Nothing here imports Qt (so not app.player either, which is a QObject).
+"""
+from __future__ import annotations
+
+import math
+import re
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+
+from algorithms import registry
+from algorithms.errors import InputError
+from algorithms.raster import Raster, check_grid
+from algorithms.steps import PLOT, Span
+
+from . import frame_view, render
+
+EXACT = "exact-coverage"
+EXACT_TITLE = "Exact coverage"
+# The exact pane takes the inputs and shape options of this algorithm.
+EXACT_BASE = "aa-supersample"
+FRAME, PROGRESS = "frame", "progress"
+LINKS = (FRAME, PROGRESS)
+MIN_PANES, MAX_PANES = 2, 4
+# Coverages closer than this count as the same value (float round-off of
+# two ways to the same area).
+COVERAGE_TOLERANCE = 1e-9
+STEP_CAP = 2_000_000
+SCENES = Path(__file__).resolve().parents[1] / "resources" / "scenes"
+
+
+# ------------------------------------------------------------------ panes
+@dataclass(frozen=True)
+class Pane:
+    """An algorithm and the options this pane sets (name, value) pairs."""
+
+    algorithm: str
+    options: tuple = ()
+
+    @classmethod
+    def of(cls, algorithm: str, **options) -> "Pane":
+        return cls(algorithm, tuple(sorted(options.items())))
+
+    def settings(self) -> dict:
+        return dict(self.options)
+
+
+def spec_of(algorithm: str):
+    """The spec whose inputs and options a pane takes (the exact pane
+    borrows those of EXACT_BASE); raises InputError for an unknown name."""
+    return registry.get(EXACT_BASE if algorithm == EXACT else algorithm)
+
+
+def algorithm_names() -> list[str]:
+    """Every algorithm a pane can run, the exact coverage last."""
+    return [spec.name for spec in registry.all_specs()] + [EXACT]
+
+
+def algorithm_title(algorithm: str) -> str:
+    if algorithm == EXACT:
+        return EXACT_TITLE
+    try:
+        return registry.get(algorithm).title
+    except InputError:
+        return algorithm
+
+
+def parse_options(algorithm: str, text: str) -> tuple:
+    """Options typed as ``key=value`` pairs, separated by spaces or ';'
+    (a value may hold commas: ``colors=#ff0000,#00ff00``). Raises
+    InputError naming the first bad pair."""
+    spec = spec_of(algorithm)
+    result = {}
+    for part in re.split(r"[;\s]+", text.strip()):
+        if not part:
+            continue
+        name, equals, value = part.partition("=")
+        if not equals or not name:
+            raise InputError(f"{part!r} is not key=value (options: "
+                             f"{', '.join(o.name for o in spec.options) or 'none'})")
+        result[name] = spec.option(name).parse(value)
+    return tuple(sorted(result.items()))
+
+
+def format_options(options) -> str:
+    """The inverse of parse_options: ``key=value`` pairs for a text field."""
+    return " ".join(f"{name}={value_text(value)}" for name, value in dict(options).items())
+
+
+def value_text(value) -> str:
+    if isinstance(value, bool):
+        return "true" if value else "false"
+    if isinstance(value, float):
+        return f"{value:g}"
+    if isinstance(value, (tuple, list)):
+        return ",".join(value_text(v) for v in value)
+    return str(value)
+
+
+# -------------------------------------------------------------- primitives
+@dataclass(frozen=True)
+class Primitives:
+    """What panes run on: points in the shape ``source`` takes them (flat,
+    with ``breaks`` where contours start), the grid, and the options of the
+    scene they came from."""
+
+    source: str
+    points: tuple
+    breaks: tuple = ()
+    grid: tuple = (32, 24)
+    options: tuple = ()
+    title: str = ""
+
+    @classmethod
+    def of_player(cls, player) -> "Primitives":
+        """The main window's complete primitives (not a contour or a
+        triangle still being drawn)."""
+        spec = player.spec
+        points, breaks = _flat(spec, player.input_points())
+        return cls(spec.name, points, breaks, tuple(player.grid),
+                   tuple(sorted(_changed_options(spec, player.options).items())),
+                   "the main window's scene")
+
+    @classmethod
+    def of_scene(cls, scene) -> "Primitives":
+        """From an ``app.scene.Scene`` (a shipped or saved scene file)."""
+        spec = scene.spec
+        points, breaks = _flat(spec, scene.points)
+        options = spec.resolve(scene.options)
+        return cls(spec.name, points, breaks, (scene.width, scene.height),
+                   tuple(sorted(_changed_options(spec, options).items())), scene.title)
+
+
+def _flat(spec, points) -> tuple[tuple, tuple]:
+    """Points as the algorithm takes them (contours, for polygons) as one
+    flat tuple and the indices where contours 2, 3, ... start."""
+    if not spec.inputs.contours:
+        return tuple(tuple(p) for p in points), ()
+    flat, breaks = [], []
+    for contour in points:
+        if flat:
+            breaks.append(len(flat))
+        flat += [tuple(p) for p in contour]
+    return tuple(flat), tuple(breaks)
+
+
+def _changed_options(spec, options: dict) -> dict:
+    return {o.name: options[o.name] for o in spec.options
+            if o.name in options and options[o.name] != o.default}
+
+
+def fit_points(source, points, breaks, target):
+    """The points as ``target`` (a spec) takes them: contours, k triangles
+    or a fixed number of points. Raises InputError saying why they do not
+    fit. Whole-pixel inputs take the pixel a real point lies in."""
+    src, dst = source.inputs, target.inputs
+    points = [_convert(p, dst.integer) for p in points]
+    if src.multiple:
+        groups = [points[k:k + src.count] for k in range(0, len(points), src.count)]
+    elif src.contours:
+        edges = [0, *breaks, len(points)]
+        groups = [points[a:b] for a, b in zip(edges, edges[1:])]
+    else:
+        groups = [points]
+    if dst.contours:
+        contours = [g for g in groups if len(g) >= dst.count]
+        if not contours:
+            raise InputError(f"{target.title} takes polygons of at least {dst.count} points; "
+                             f"the scene has {len(points)} point{'s' * (len(points) != 1)}")
+        return contours
+    if dst.multiple:
+        # A contour stands for a triangle only when it has three points.
+        sizes = [len(g) for g in groups] if src.contours else [len(points)]
+        wrong = [size != dst.count for size in sizes] if src.contours and dst.count > 1 else \
+            [size % dst.count for size in sizes]
+        if not points or any(wrong):
+            raise InputError(f"{target.title} takes {dst.text()}; the scene has "
+                             + " + ".join(str(s) for s in sizes) + " points")
+        return points
+    if len(points) != dst.count:
+        raise InputError(f"{target.title} takes {dst.text()}; the scene has "
+                         f"{len(points)} point{'s' * (len(points) != 1)}")
+    return points
+
+
+def _convert(point, integer: bool):
+    x, y = point
+    if integer:
+        return (math.floor(x), math.floor(y))
+    return (float(x), float(y))
+
+
+def pane_options(pane: Pane, primitives: Primitives) -> dict:
+    """The options a pane runs with: the scene's changed options where the
+    pane's algorithm has them (same name and kind), then the pane's own."""
+    spec, source = spec_of(pane.algorithm), registry.get(primitives.source)
+    kinds = {o.name: o.kind for o in source.options}
+    carried = {}
+    for option in spec.options:
+        value = dict(primitives.options).get(option.name)
+        if value is not None and kinds.get(option.name) == option.kind:
+            try:
+                carried[option.name] = option.check(value)
+            except InputError:
+                pass  # the value means something else here: keep the default
+    return spec.resolve({**carried, **pane.settings()})
+
+
+# ------------------------------------------------------------------ runs
+class Run:
+    """One pane recorded on the primitives, or the reason it could not be."""
+
+    def __init__(self, pane: Pane, primitives: Primitives, step_cap: int = STEP_CAP):
+        self.pane = pane
+        self.grid = tuple(primitives.grid)
+        self.spec = None
+        self.options: dict = {}
+        self.points = None
+        self.trace = None
+        self.exact = None
+        self.error = ""
+        self._order = None
+        try:
+            self.spec = spec_of(pane.algorithm)
+            self.options = pane_options(pane, primitives)
+            self.points = fit_points(registry.get(primitives.source), primitives.points,
+                                     primitives.breaks, self.spec)
+            self._record(step_cap)
+        except InputError as error:
+            self.error = str(error)
+        except Exception as error:  # noqa: BLE001 - a failing run must not end the program
+            self.error = f"{algorithm_title(pane.algorithm)} cannot run on this input " \
+                         f"({type(error).__name__}: {error})"
+
+    def _record(self, step_cap: int) -> None:
+        width, height = self.grid
+        check_grid(width, height)
+        if self.pane.algorithm != EXACT:
+            self.trace = self.spec.record(self.points, self.options, self.grid, step_cap)
+            return
+        self.spec.inputs.check(self.points)
+        exact = frame_view.exact_reference(self.spec, self.points, self.options, self.grid)
+        if exact is None or exact.shape != (height, width):
+            raise InputError("no exact coverage for this input")
+        self.exact = np.asarray(exact, dtype=np.float64)
+
+    @property
+    def ok(self) -> bool:
+        return not self.error
+
+    @property
+    def title(self) -> str:
+        text = algorithm_title(self.pane.algorithm)
+        shown = format_options(self.pane.options)
+        return f"{text} \u00b7 {shown}" if shown else text
+
+    def __len__(self) -> int:
+        if self.error:
+            return 0
+        return 1 if self.trace is None else len(self.trace)
+
+    @property
+    def last(self) -> int:
+        return max(0, len(self) - 1)
+
+    def paths(self) -> list:
+        """The ideal primitive, as the main grid draws it."""
+        if self.points is None:
+            return []
+        shape = self.options.get("shape")
+        if self.spec.family == "antialias" and shape in ("triangles", "polygon", "thick-line"):
+            # A shape option says how the points group: in threes, one
+            # closed polygon, or a segment.
+            points = [(float(x), float(y)) for x, y in self.points]
+            if shape == "triangles":
+                return [(points[k:k + 3], True) for k in range(0, len(points) - 2, 3)]
+            return [(points, shape == "polygon")]
+        return frame_view.scene_paths(self.spec, self.points, self.options)
+
+    def state_at(self, i: int):
+        """The replayed FrameState at step i (None for the exact pane or a failed run)."""
+        if self.trace is None:
+            return None
+        return self.trace.state_at(min(max(int(i), 0), self.last))
+
+    def raster_at(self, i: int) -> Raster | None:
+        if self.error:
+            return None
+        if self.trace is not None:
+            return self.trace.raster_at(min(max(int(i), 0), self.last))
+        return exact_raster(self.exact)
+
+    @property
+    def value_kind(self) -> str:
+        """"coverage", "colour" or "" (the run writes no values)."""
+        if self.exact is not None:
+            return "coverage"
+        start = None if self.trace is None else self.trace.start
+        if start is None or start.pixel_value is None:
+            return ""
+        return "coverage" if start.color_value is not None else "colour"
+
+    def values_at(self, i: int, raster: Raster | None = None) -> np.ndarray | None:
+        """(H, W) value of each written cell at step i (NaN elsewhere): the
+        coverage or colour; the write count for runs that write no values."""
+        raster = raster if raster is not None else self.raster_at(i)
+        if raster is None:
+            return None
+        written = raster.counts > 0
+        kind = self.value_kind
+        if kind == "coverage" and self.exact is not None:
+            values = self.exact
+        elif kind == "coverage":
+            values = self._coverage_at(min(max(int(i), 0), self.last))
+        elif kind == "colour":
+            values = raster.colors.astype(np.float64)
+        else:
+            values = raster.counts.astype(np.float64)
+        return np.where(written, values, np.nan)
+
+    def _coverage_at(self, i: int) -> np.ndarray:
+        order, pixels, values = self._writes()
+        n = int(np.searchsorted(order, i, side="right"))
+        return render.final_coverage(self.trace.width, self.trace.height, pixels[:n], values[:n])
+
+    def _writes(self):
+        """Step index, pixel and value of every write, in emission order."""
+        if self._order is None:
+            trace = self.trace
+            steps = [np.flatnonzero(trace.writes())]
+            for index, record in sorted(trace.records.items()):
+                if isinstance(record, Span) and trace.code[record.line].kind == PLOT:
+                    steps.append(np.full(max(0, record.x_end - record.x_start), index))
+            order = np.concatenate(steps)
+            # The same stable sort written_pixels uses, so the three line up.
+            order = order[np.argsort(order, kind="stable")]
+            self._order = (order, trace.written_pixels(), trace.pixel_values())
+        return self._order
+
+
+def exact_raster(coverage: np.ndarray) -> Raster:
+    """The exact coverage as a raster: cells with any coverage written
+    once, in black ink over white by their coverage (as the antialiasing
+    runs blend their default ink)."""
+    height, width = coverage.shape
+    raster = Raster(width, height, with_colors=True)
+    covered = coverage > 0
+    raster.counts[covered] = 1
+    grey = np.clip(np.floor(255.0 * (1.0 - coverage) + 0.5), 0, 255).astype(np.int64)
+    raster.colors[covered] = ((grey << 16) | (grey << 8) | grey)[covered]
+    return raster
+
+
+def run_panes(panes, primitives: Primitives, step_cap: int = STEP_CAP) -> list[Run]:
+    return [Run(pane, primitives, step_cap) for pane in panes]
+
+
+# ------------------------------------------------------------------ diff
+DIFF_CLASSES = ("only A", "only B", "both, same value", "both, different value")
+
+
+@dataclass(frozen=True)
+class Diff:
+    """Cells of two rasters by where they were written. ``kind`` names
+    the value compared in cells both wrote ("coverage", "colour", "write
+    count"), or "" where the two runs write different kinds of value."""
+
+    only_a: np.ndarray
+    only_b: np.ndarray
+    both_same: np.ndarray
+    both_different: np.ndarray
+    kind: str = ""
+
+    @property
+    def counts(self) -> dict:
+        return {"only A": int(self.only_a.sum()), "only B": int(self.only_b.sum()),
+                "both": int(self.both_same.sum() + self.both_different.sum()),
+                "both, different value": int(self.both_different.sum())}
+
+    def cells(self) -> np.ndarray:
+        """(n, 2) cells (x, y) that differ: in one run only, or valued differently."""
+        ys, xs = np.nonzero(self.only_a | self.only_b | self.both_different)
+        return np.stack([xs, ys], axis=1).astype(np.int64)
+
+    def classes(self) -> np.ndarray:
+        """(H, W) int8: 0 neither, 1 only A, 2 only B, 3 both same, 4 both different."""
+        result = np.zeros(self.only_a.shape, np.int8)
+        for code, mask in enumerate((self.only_a, self.only_b, self.both_same,
+                                     self.both_different), start=1):
+            result[mask] = code
+        return result
+
+
+def diff(a: Raster, b: Raster, values_a=None, values_b=None, kind_a: str = "",
+         kind_b: str = "") -> Diff:
+    """Compare two rasters of one grid (``values_*`` from ``Run.values_at``
+    and ``kind_*`` from ``Run.value_kind``; without values the write
+    counts are compared)."""
+    if a.counts.shape != b.counts.shape:
+        raise ValueError(f"rasters of different grids: {a.counts.shape} and {b.counts.shape}")
+    in_a, in_b = a.counts > 0, b.counts > 0
+    both = in_a & in_b
+    kind = kind_a if kind_a == kind_b else None
+    if kind is None:
+        different = np.zeros_like(both)
+        kind = ""
+    else:
+        if values_a is None or values_b is None:
+            values_a, values_b = a.counts, b.counts
+        values_a, values_b = np.asarray(values_a, float), np.asarray(values_b, float)
+        if kind == "coverage":
+            different = both & ~np.isclose(values_a, values_b, rtol=0.0,
+                                           atol=COVERAGE_TOLERANCE)
+        else:
+            different = both & (values_a != values_b)
+        kind = kind or "write count"
+    return Diff(in_a & ~in_b, in_b & ~in_a, both & ~different, different, kind)
+
+
+def diff_runs(a: Run, b: Run, index_a: int, index_b: int) -> Diff | None:
+    """The diff of two panes at their steps, or None if either has no run
+    or the two grids differ."""
+    raster_a, raster_b = a.raster_at(index_a), b.raster_at(index_b)
+    if raster_a is None or raster_b is None or raster_a.counts.shape != raster_b.counts.shape:
+        return None
+    return diff(raster_a, raster_b, a.values_at(index_a, raster_a), b.values_at(index_b, raster_b),
+                a.value_kind, b.value_kind)
+
+
+# Colours of the diff view, in DIFF_CLASSES order: two hues far apart for
+# the two runs, a quiet grey for agreement, a strong magenta for a value
+# that differs.
+DIFF_COLOURS = ("#f08c00", "#1c7ed6", "#adb5bd", "#c2255c")
+
+
+def diff_image(d: Diff, palette=render.PALETTE) -> np.ndarray:
+    """The diff as a uint8 RGBA image (H, W, 4), row 0 at y = 0."""
+    lut = np.array([render.packed_rgba(palette.background)]
+                   + [render.packed_rgba(c) for c in DIFF_COLOURS], dtype="<u4")
+    cells = lut[d.classes()]
+    return cells.view(np.uint8).reshape(cells.shape[0], cells.shape[1], 4)
+
+
+# --------------------------------------------------------------- stepping
+def timeline_last(runs) -> int:
+    """The last position of the shared timeline: the longest run's last step."""
+    return max([run.last for run in runs if run.ok] or [0])
+
+
+def linked_indices(position: int, lasts, link: str = FRAME) -> list[int]:
+    """The step each pane shows at ``position`` of the shared timeline
+    (0 .. max(lasts)). By frame: that step, held at the end of a shorter
+    run. By progress: the same fraction of each run, rounded half up."""
+    if link not in LINKS:
+        raise ValueError(f"link by {link!r}: use one of {', '.join(LINKS)}")
+    top = max(list(lasts) or [0])
+    position = min(max(int(position), 0), top)
+    if link == FRAME:
+        return [min(position, last) for last in lasts]
+    if top == 0:
+        return [0 for _ in lasts]
+    # round(position * last / top) in integers: halves round up.
+    return [(2 * position * last + top) // (2 * top) for last in lasts]
+
+
+# ---------------------------------------------------------------- presets
+@dataclass(frozen=True)
+class Preset:
+    """A comparison worth showing: its panes and the primitives it brings.
+
+    The panes run on the main window's primitives when its algorithm is
+    one of ``follows`` (names or families), else on ``example``.
+    """
+
+    key: str
+    title: str
+    description: str
+    panes: tuple
+    example: object = None  # a Primitives, or a callable making one
+    follows: tuple = ()
+    diff: tuple = (0, 1)  # the two panes the diff shows
+
+    def primitives(self, window_primitives: Primitives | None = None) -> Primitives:
+        if window_primitives is not None and self.uses_window(window_primitives):
+            return window_primitives
+        example = self.example
+        return example() if callable(example) else example
+
+    def uses_window(self, window_primitives: Primitives) -> bool:
+        spec = registry.get(window_primitives.source)
+        return spec.name in self.follows or spec.family in self.follows
+
+
+def _mesh() -> Primitives:
+    """A 4 x 3 block of squares, each cut along a diagonal: every vertex
+    on a pixel centre, so that many centres lie exactly on shared edges."""
+    points = []
+    xs, ys = [3.5 + 6 * i for i in range(5)], [2.5 + 6 * j for j in range(4)]
+    for j in range(3):
+        for i in range(4):
+            a, b = (xs[i], ys[j]), (xs[i + 1], ys[j])
+            c, d = (xs[i + 1], ys[j + 1]), (xs[i], ys[j + 1])
+            points += [a, b, c, a, c, d]
+    return Primitives("triangle-bbox", tuple(points), (), (32, 24), (),
+                      "a mesh of 24 triangles, vertices on pixel centres")
+
+
+def _painter_scene() -> Primitives:
+    from . import scene
+    return Primitives.of_scene(scene.load(SCENES / "painter-cyclic.json"))
+
+
+PRESETS = (
+    Preset("dda-bresenham", "DDA vs Bresenham",
+           "Slope 5/12 passes exactly half-way between two pixels twice: the rounding DDA "
+           "goes up there, Bresenham's d <= 0 goes east.",
+           (Pane.of("line-dda"), Pane.of("line-bresenham")),
+           Primitives("line-bresenham", ((4, 5), (28, 15)), (), (32, 24), (),
+                      "a segment of slope 5/12"),
+           follows=("lines",)),
+    Preset("dda-precision", "DDA float32 vs float64 on a long line",
+           "Adding a float32 slope 4095 times drifts: some pixels land one row off the "
+           "float64 result.",
+           (Pane.of("line-dda", dtype="float32"), Pane.of("line-dda", dtype="float64")),
+           Primitives("line-dda", ((0, 0), (4095, 192)), (), (4096, 200), (),
+                      "a long shallow segment")),
+    Preset("circles", "Midpoint vs square-root circles",
+           "The midpoint circle against y = sqrt(r^2 - x^2) with 8-way and 4-way symmetry "
+           "(the 4-way one leaves gaps where the circle is steep).",
+           (Pane.of("circle-midpoint"), Pane.of("circle-sqrt8"), Pane.of("circle-sqrt4")),
+           Primitives("circle-midpoint", ((16, 12),), (), (32, 24), (("radius", 10),),
+                      "a circle of radius 10"),
+           follows=("circles",)),
+    Preset("scanline-edge", "Scan-line fill vs edge-function fill",
+           "The ET/AET scan line on two contours against the bounding-box edge-function "
+           "fill on the same two triangles. Both follow the top-left rule, so they agree; "
+           "set arithmetic=float32 or fill_rule=inclusive on a pane to see them part.",
+           (Pane.of("polygon-scanline"), Pane.of("triangle-bbox")),
+           Primitives("triangle-bbox", ((3.5, 2.5), (27.5, 5.5), (12.5, 21.5),
+                                        (27.5, 5.5), (29.5, 19.5), (12.5, 21.5)), (), (32, 24),
+                      (), "two triangles sharing an edge"),
+           follows=("polygons", "triangles")),
+    Preset("fill-rule", "Top-left vs inclusive fill rule on a mesh",
+           "With the top-left rule every pixel centre on a shared edge goes to exactly one "
+           "triangle; the inclusive rule gives it to both (written twice).",
+           (Pane.of("triangle-bbox", fill_rule="top-left"),
+            Pane.of("triangle-bbox", fill_rule="inclusive")),
+           _mesh, follows=("triangles",)),
+    Preset("painter-zbuffer", "Painter's algorithm vs z-buffer",
+           "Three triangles overlapping in a cycle: any back-to-front order gets one overlap "
+           "wrong, the z-buffer decides per pixel.",
+           (Pane.of("painter"), Pane.of("zbuffer")),
+           _painter_scene, follows=("visibility",)),
+    Preset("supersample", "Supersampling n = 1 vs 4 vs exact",
+           "One sample per pixel, 4 x 4 samples, and the exact area each pixel covers.",
+           (Pane.of("aa-supersample", n=1), Pane.of("aa-supersample", n=4), Pane.of(EXACT)),
+           Primitives("aa-supersample", ((3.3, 2.6), (28.7, 8.2), (11.4, 21.1)), (), (32, 24),
+                      (), "a triangle"),
+           follows=("aa-supersample", "aa-adaptive"), diff=(1, 2)),
+)
+
+
+def preset(key: str) -> Preset:
+    for item in PRESETS:
+        if item.key == key:
+            return item
+    raise InputError(f"unknown comparison {key!r}; known: {', '.join(p.key for p in PRESETS)}")
+
+
+def window_panes(player) -> tuple:
+    """The main window's algorithm and the one shown before it (the one
+    its own comparison outlines), or a neighbour in the same family."""
+    spec = player.spec
+    options = _changed_options(spec, player.options)
+    mine = Pane(spec.name, tuple(sorted(options.items())))
+    if player.previous is not None:
+        other, other_options = player.previous
+        return (mine, Pane(other.name, tuple(sorted(_changed_options(other, other_options)
+                                                    .items()))))
+    family = [s.name for s in registry.all_specs() if s.family == spec.family]
+    others = [name for name in family if name != spec.name]
+    return (mine, Pane(others[0] if others else spec.name))

@@ -1,0 +1,175 @@
+"""Every scene edit the person makes goes through here on its way to the
+window, so that undo and redo cover them all: points drawn, dragged or
+typed, contours, the algorithm, each option (per-vertex colour, z and w
+among them), the grid size and the origin.
+
+``install_edits(window)`` connects the scene editors to the window's
+setters, each wrapped in ``SceneEdits.recording``: the scene before the
+edit is kept in ``window.history`` under the name of what changed, and the
+Edit menu's Undo and Redo say that name.
+"""
+from __future__ import annotations
+
+from contextlib import contextmanager
+
+from PySide6.QtCore import QObject
+
+from algorithms.registry import InputError
+
+from .history import MERGE_SECONDS, Snapshot
+
+# Per-vertex options shown as columns of the vertex table. Lines take a
+# colour per endpoint; triangles and the visibility runs take a colour,
+# depth, w and s per vertex. (Fills and antialiasing have a "colors"
+# option too, but per region or per shape, not per vertex.)
+VERTEX_OPTIONS = ("colors", "z", "w", "s")
+VERTEX_FAMILIES = ("lines", "triangles", "visibility")
+
+
+def vertex_options(spec) -> list[str]:
+    if spec.family not in VERTEX_FAMILIES:
+        return []
+    names = {option.name: option.kind for option in spec.options}
+    return [name for name in VERTEX_OPTIONS if names.get(name) in ("colors", "numbers")]
+
+
+class SceneEdits(QObject):
+    """Records scene edits in the window's history and takes them back."""
+
+    def __init__(self, window):
+        super().__init__(window)
+        self.window = window
+        self.history = window.history
+        self._gesture = 0  # one drag or click on the grid: its edits merge
+        self._depth = 0  # nested recordings count as the outer one
+
+    # --------------------------------------------------------- snapshot
+    def snapshot(self) -> Snapshot:
+        w, player = self.window, self.window.player
+        return Snapshot.of(player.spec.name, player.points, player.breaks, player.options,
+                           player.grid, w.grid.y_down)
+
+    @contextmanager
+    def recording(self, key=None, seconds: float | None = None):
+        """Run an edit; if it changed the scene, remember the scene before it.
+        Edits with the same ``key`` merge while the entry is open (for
+        ``seconds`` after the last one; None: until another edit)."""
+        if self._depth:
+            yield
+            return
+        before = self.snapshot()
+        self._depth += 1
+        try:
+            yield
+        finally:
+            self._depth -= 1
+            self.history.push(before, self.snapshot(), key, seconds)
+            self.refresh()
+
+    def start_gesture(self) -> None:
+        self._gesture += 1
+        self.history.seal()
+
+    def gesture(self, edit) -> None:
+        with self.recording(("gesture", self._gesture)):
+            edit()
+
+    def field(self, key, edit) -> None:
+        """An edit from a typed or stepped field: merges for a moment."""
+        with self.recording(key, MERGE_SECONDS):
+            edit()
+
+    def once(self, edit) -> None:
+        with self.recording():
+            edit()
+
+    # ------------------------------------------------------- undo, redo
+    def undo(self) -> None:
+        self.go_to(self.history.undo(self.snapshot()))
+
+    def redo(self) -> None:
+        self.go_to(self.history.redo(self.snapshot()))
+
+    def go_to(self, snapshot: Snapshot | None) -> None:
+        """Put back the scene of ``snapshot``: the trace is recorded again
+        and the step stays where it was, as a fraction of the run."""
+        if snapshot is not None:
+            w, player = self.window, self.window.player
+            switched = snapshot.algorithm != player.spec.name
+            try:
+                player.restore(snapshot.points, snapshot.breaks, dict(snapshot.options),
+                               snapshot.algorithm, snapshot.grid)
+            except InputError as error:
+                w._say_error(str(error))
+            if switched:
+                w._scene_changed()
+            else:
+                w.options.set_values(player.options)
+                w.grid_editor.set_grid(*player.grid)
+                w.points.set_grid(*player.grid)
+                w.grid.set_grid(*player.grid)
+                w._sync_points()
+            if snapshot.y_down != w.grid.y_down:
+                w.set_y_down(snapshot.y_down)
+        self.refresh()
+
+    def refresh(self) -> None:
+        """The Edit menu names the edit that Undo and Redo would take back."""
+        actions = self.window.actions_
+        for key, text, able in (("undo", self.history.undo_text, self.history.can_undo),
+                                ("redo", self.history.redo_text, self.history.can_redo)):
+            act = actions[key]
+            title = "&Undo" if key == "undo" else "&Redo"
+            act.setText(f"{title} {text}" if text else title)
+            keys = act.shortcut().toString()
+            act.setToolTip(f"{title[1:]} {text} ({keys})" if text else
+                           f"Nothing to {key} ({keys})")
+            act.setEnabled(able)
+
+    # ------------------------------------------------------ vertex table
+    def table_edited(self, points, breaks, attributes: dict) -> None:
+        """Points, contours and per-vertex options typed into the table."""
+        w, player = self.window, self.window.player
+        options = dict(player.options, **attributes)
+        with self.recording():
+            try:
+                player.restore(points, breaks, options)
+            except InputError as error:
+                w._say_error(str(error))
+            w.options.set_values(player.options)
+            w._sync_points()
+
+    def sync_table(self) -> None:
+        """The table's attribute columns follow the algorithm and options."""
+        player = self.window.player
+        if player.spec is not None:
+            self.window.points.set_attributes(vertex_options(player.spec), player.options)
+
+
+def install_edits(window) -> SceneEdits:
+    """Route the scene editors through the history (called by the window)."""
+    edits = SceneEdits(window)
+    window.edits = edits
+    g = window.grid
+    g.editStarted.connect(edits.start_gesture)
+    g.pointsEdited.connect(lambda points: edits.gesture(
+        lambda: window.set_points(points, g.breaks)))
+    g.radiusDragged.connect(lambda rx, ry: edits.gesture(
+        lambda: window._radius_dragged(rx, ry)))
+    g.markerPlaced.connect(lambda pixel: edits.gesture(lambda: window._marker_placed(pixel)))
+    g.clearRequested.connect(window.clear_points)
+    window.points.edited.connect(edits.table_edited)
+    window.points.refused.connect(window._say_error)
+    window.picker.algorithmChosen.connect(lambda name: edits.once(
+        lambda: window.set_algorithm(name)))
+    window.options.valueEdited.connect(lambda name, value: edits.field(
+        ("option", name), lambda: window.set_option(name, value)))
+    window.grid_editor.gridChanged.connect(lambda width, height: edits.field(
+        ("grid",), lambda: window.set_grid(width, height)))
+    window.grid_editor.originChanged.connect(lambda down: edits.once(
+        lambda: window.set_y_down(down)))
+    window.y_down_action.toggled.connect(lambda down: edits.once(
+        lambda: window.set_y_down(down)))
+    window.player.traceChanged.connect(edits.sync_table)
+    edits.refresh()
+    return edits

@@ -1,0 +1,212 @@
+"""Help > Hard cases…: the shipped scenes that make algorithms stumble.
+
+``install_gallery(window)`` adds the entry to the window's Help menu. The
+dialog lists every hard-case scene in resources/scenes with its title, the
+one line that says what makes it hard, and its algorithm; a small picture
+of each run's last frame follows once it is drawn (one scene at a time, so
+the dialog opens at once). Open (or a double-click) loads the scene into
+the window, through the File menu's actions when they are installed.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+from html import escape
+from pathlib import Path
+
+from PySide6.QtCore import QSize, Qt, QTimer
+from PySide6.QtGui import QAction, QImage, QPixmap
+from PySide6.QtWidgets import (QDialog, QDialogButtonBox, QHBoxLayout, QLabel, QListWidget,
+                               QListWidgetItem, QMessageBox, QVBoxLayout, QWidget)
+
+from algorithms.registry import InputError
+
+from . import render
+from . import scene as scenes
+from .scene import SceneError, one_line
+
+FOLDER = scenes.RESOURCES / "scenes"
+# Scenes that are examples, not hard cases.
+NOT_HARD = ("demo-bresenham",)
+# The order a lecture meets them in; scenes not named here follow, by name.
+ORDER = ("line-float32-drift", "line-centre-ties", "line-reversed", "circle-radius-1",
+         "circle-radius-2", "circle-sqrt4-gaps", "polygon-horizontal-edges",
+         "polygon-star-evenodd", "polygon-star-nonzero", "triangle-sliver", "triangle-fan-32",
+         "triangle-mesh-1e6", "triangle-behind-eye", "painter-intersecting", "painter-cyclic",
+         "aa-siemens-star")
+THUMBNAIL = QSize(112, 84)
+MAX_THUMBNAIL_CELLS = 4096 * 512  # a bigger grid is shown without a picture
+
+
+@dataclass(frozen=True)
+class HardCase:
+    path: Path
+    scene: scenes.Scene
+
+    @property
+    def name(self) -> str:
+        return self.path.stem
+
+    def text(self) -> str:
+        spec = self.scene.spec
+        return (f"{self.scene.title or self.name}\n{self.scene.description}\n"
+                f"{spec.title} ({spec.name}), {self.scene.width} x {self.scene.height} grid")
+
+
+def hard_cases(folder: Path = FOLDER) -> list[HardCase]:
+    """Every readable hard-case scene of ``folder``, in lecture order."""
+    paths = [p for p in folder.glob("*.json") if p.stem not in NOT_HARD]
+    rank = {name: n for n, name in enumerate(ORDER)}
+    paths.sort(key=lambda p: (rank.get(p.stem, len(ORDER)), p.stem))
+    cases = []
+    for path in paths:
+        try:
+            cases.append(HardCase(path, scenes.load(path)))
+        except SceneError:
+            continue  # a broken shipped scene is a test failure, not a gallery entry
+    return cases
+
+
+def thumbnail(scene: scenes.Scene) -> QImage | None:
+    """The run's last frame as a small picture, or None when it cannot be drawn cheaply."""
+    if scene.width * scene.height > MAX_THUMBNAIL_CELLS:
+        return None
+    try:
+        trace = scene.spec.record(scene.points, scene.options, grid=(scene.width, scene.height))
+        raster = trace.raster_at(len(trace) - 1)
+    except InputError:
+        return None
+    scale = max(1, min(8, THUMBNAIL.width() // scene.width, THUMBNAIL.height() // scene.height))
+    image = render.top_down(render.compose(raster, scale=scale, grid_lines=False),
+                            scene.origin == "top-left")
+    image = image.copy()  # QImage keeps a pointer: the array must stay contiguous and alive
+    height, width = image.shape[:2]
+    picture = QImage(image.data, width, height, 4 * width, QImage.Format.Format_RGBA8888)
+    return picture.scaled(THUMBNAIL, Qt.AspectRatioMode.KeepAspectRatio,
+                          Qt.TransformationMode.SmoothTransformation).copy()
+
+
+class GalleryDialog(QDialog):
+    """A non-modal list of the hard cases; Open loads one into the window."""
+
+    def __init__(self, window, folder: Path = FOLDER):
+        super().__init__(window)
+        self.window_ = window
+        self.setWindowTitle("Hard cases")
+        self.setModal(False)
+        self.resize(720, 640)
+        intro = QLabel("Scenes where the algorithms meet their hard cases: what makes each one "
+                       "hard, and what to look for. Open one to step through it.")
+        intro.setWordWrap(True)
+        self.list = QListWidget()
+        self.list.setSpacing(2)
+        self.list.setAlternatingRowColors(True)
+        self.list.setToolTip("Double-click a scene to open it in the window")
+        # Selected rows stay light, so that the dark text on them stays readable.
+        self.list.setStyleSheet("QListWidget::item:selected { background: #d3e4f6; }")
+        self.cases = hard_cases(folder)
+        self.pictures: list[QLabel] = []
+        for case in self.cases:
+            self._add_row(case)
+        self.list.itemDoubleClicked.connect(lambda item: self.open_row(self.list.row(item)))
+        buttons = QDialogButtonBox(QDialogButtonBox.StandardButton.Close)
+        self.open_button = buttons.addButton("Open", QDialogButtonBox.ButtonRole.AcceptRole)
+        self.open_button.setToolTip("Load the selected scene into the window")
+        buttons.button(QDialogButtonBox.StandardButton.Close).setToolTip("Close this list")
+        self.open_button.setEnabled(False)
+        self.list.currentRowChanged.connect(lambda row: self.open_button.setEnabled(row >= 0))
+        buttons.accepted.connect(lambda: self.open_row(self.list.currentRow()))
+        buttons.rejected.connect(self.close)
+        layout = QVBoxLayout(self)
+        layout.addWidget(intro)
+        layout.addWidget(self.list, 1)
+        layout.addWidget(buttons)
+        self._pending = list(range(len(self.cases)))
+        self.thumbnails_done = not self._pending
+        QTimer.singleShot(0, self._next_thumbnail)
+
+    def _add_row(self, case: HardCase) -> None:
+        """One row: the picture (drawn later) beside the title, the explanation and the
+        algorithm. The labels let mouse clicks through, so the row selects and opens."""
+        item = QListWidgetItem()
+        item.setData(Qt.ItemDataRole.AccessibleTextRole, case.text())
+        item.setToolTip(f"{case.scene.description}\n{case.path.name}")
+        row = QWidget()
+        picture = QLabel()
+        picture.setFixedSize(THUMBNAIL)
+        picture.setAlignment(Qt.AlignmentFlag.AlignCenter)
+        spec, scene = case.scene.spec, case.scene
+        text = QLabel(f"<b>{escape(scene.title or case.name)}</b><br>{escape(scene.description)}"
+                      f"<br><span style='color:#5b6675'>{escape(spec.title)} ({spec.name}), "
+                      f"{scene.width} x {scene.height} grid</span>")
+        text.setWordWrap(True)
+        text.setTextFormat(Qt.TextFormat.RichText)
+        for label in (picture, text):
+            label.setAttribute(Qt.WidgetAttribute.WA_TransparentForMouseEvents)
+        layout = QHBoxLayout(row)
+        layout.setContentsMargins(4, 4, 4, 4)
+        layout.addWidget(picture)
+        layout.addWidget(text, 1)
+        row.setAttribute(Qt.WidgetAttribute.WA_TransparentForMouseEvents)
+        item.setSizeHint(QSize(0, THUMBNAIL.height() + 12))
+        self.list.addItem(item)
+        self.list.setItemWidget(item, row)
+        self.pictures.append(picture)
+
+    def _next_thumbnail(self) -> None:
+        """Draw one scene's picture, then let the event loop breathe before the next."""
+        if not self._pending:
+            self.thumbnails_done = True
+            return
+        row = self._pending.pop(0)
+        picture = thumbnail(self.cases[row].scene)
+        if picture is not None:
+            self.pictures[row].setPixmap(QPixmap.fromImage(picture))
+        else:
+            self.pictures[row].setText("(large grid)")
+        QTimer.singleShot(0, self._next_thumbnail)
+
+    def open_row(self, row: int) -> bool:
+        if not 0 <= row < len(self.cases):
+            return False
+        path = self.cases[row].path
+        actions = getattr(self.window_, "file_actions", None)
+        if actions is not None:
+            return actions.open_path(path, remember=False)
+        return _open_directly(self.window_, path)
+
+
+def _open_directly(window, path: Path) -> bool:
+    """Without the File menu's actions: show the scene through the window's own methods."""
+    try:
+        scene = scenes.load(path)
+        window.set_scene(scene.algorithm, scene.points, scene.options, (scene.width, scene.height))
+        window.set_y_down(scene.origin == "top-left")
+    except (SceneError, InputError) as error:
+        QMessageBox.warning(window, "Hard cases", f"Cannot open {path.name}:\n{one_line(str(error))}")
+        return False
+    return True
+
+
+def show_gallery(window) -> GalleryDialog:
+    """Show the window's gallery, made on first use and kept."""
+    dialog = getattr(window, "gallery", None)
+    if dialog is None:
+        dialog = window.gallery = GalleryDialog(window)
+    dialog.show()
+    dialog.raise_()
+    dialog.activateWindow()
+    return dialog
+
+
+def install_gallery(window) -> QAction:
+    """Add Help > Hard cases… to ``window``."""
+    menu = window.menus["help"]
+    action = QAction("&Hard cases…", window)
+    action.setToolTip("Shipped scenes that make the algorithms stumble, each with what to "
+                      "look for")
+    action.setStatusTip(action.toolTip())
+    action.triggered.connect(lambda: show_gallery(window))
+    first = menu.actions()[0] if menu.actions() else None
+    menu.insertAction(first, action)
+    window.gallery = None
+    return action

@@ -1,0 +1,49 @@
+"""A recording's monitor: progress every so many steps, cancellation."""
+import numpy as np
+import pytest
+
+from algorithms import registry
+from algorithms.trace import Cancelled, RecordMonitor
+
+STEPS = 100_000
+P, Q = (0, 0), (STEPS - 1, 3 * (STEPS - 1) // 10)
+GRID = (4096, 4096)
+
+
+def record(monitor=None):
+    return registry.get("line-bresenham").record([P, Q], {}, GRID, monitor=monitor)
+
+
+def test_progress_comes_every_so_many_steps_and_changes_nothing():
+    heard = []
+    every = 10_000
+    trace = record(RecordMonitor(heard.append, every))
+    plain = record()
+    assert len(trace) == len(plain)
+    # An x-major segment writes one pixel per column, in order.
+    assert np.array_equal(trace.written_pixels()[:, 0], np.arange(STEPS))
+    assert np.array_equal(trace.x, plain.x) and np.array_equal(trace.y, plain.y)
+    assert heard == sorted(heard) and heard[-1] <= len(trace)
+    # At least one report per ``every`` steps recorded, none closer than that.
+    assert len(heard) >= STEPS // every - 1
+    assert all(b - a >= every for a, b in zip(heard, heard[1:]))
+
+
+def test_cancel_stops_the_recording_at_the_next_report():
+    heard = []
+    monitor = RecordMonitor(None, every=5_000)
+
+    def progress(steps):
+        heard.append(steps)
+        monitor.cancel()
+    monitor.progress = progress
+    with pytest.raises(Cancelled):
+        record(monitor)
+    assert len(heard) == 1 and monitor.cancelled
+
+
+def test_a_monitor_cancelled_before_the_start_records_nothing_long():
+    monitor = RecordMonitor(every=1_000)
+    monitor.cancel()
+    with pytest.raises(Cancelled, match=r"after 1,\d{3} steps"):
+        record(monitor)
