@@ -1209,7 +1209,7 @@ def temporal(points, options, grid):
                  "frames": options["frames"], "speed": options["speed"], "apparent speed":
                  apparent}
     yield Start(0, ("frame", "coverage", "rgb"), constants, pixel_value="coverage",
-                color_value="rgb")
+                color_value="rgb", replaces=True)
     reach = np.zeros(images[0].shape, bool) if images else np.zeros((0, 0), bool)
     for image in images:
         reach |= image > 0

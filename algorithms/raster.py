@@ -18,6 +18,7 @@ class Raster:
     """
 
     depth = None  # set by __init__; a class default keeps hand-made rasters valid
+    replaces = False  # Start.replaces of the run: writing again is not overdraw
 
     def __init__(self, width: int, height: int, with_colors: bool = False,
                  with_depth: bool = False):
@@ -34,6 +35,7 @@ class Raster:
         other.counts = self.counts.copy()
         other.colors = None if self.colors is None else self.colors.copy()
         other.depth = None if self.depth is None else self.depth.copy()
+        other.replaces = self.replaces
         return other
 
     def inside(self, x: int, y: int) -> bool:

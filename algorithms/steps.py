@@ -97,6 +97,9 @@ class Start:
     # Name of the value a PLOT frame writes into the per-pixel depth buffer
     # (Raster.depth), for runs that keep one (the z-buffer).
     depth_value: str | None = None
+    # True when a write replaces the pixel's picture, as the frames of an
+    # animation do: a pixel written again is then not overdraw.
+    replaces: bool = False
 
 
 @dataclass(frozen=True, slots=True)

@@ -389,7 +389,9 @@ class Trace:
 
     def _empty_raster(self) -> Raster:
         with_colors = (self.start.color_value or self.start.pixel_value) is not None
-        return Raster(self.width, self.height, with_colors, self.start.depth_value is not None)
+        raster = Raster(self.width, self.height, with_colors, self.start.depth_value is not None)
+        raster.replaces = self.start.replaces
+        return raster
 
     def _apply(self, raster: Raster, lo: int, hi: int) -> None:
         """Apply steps lo..hi-1 to the raster, vectorised."""

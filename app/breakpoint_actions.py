@@ -96,19 +96,19 @@ class Breakpoints(QObject):
         self.marks = BookmarksPanel(window)
         self.breakpoints_dock = self._dock("Breakpoints", "breakpointsDock", self.panel)
         self.bookmarks_dock = self._dock("Bookmarks", "bookmarksDock", self.marks)
-        # Under the scene panel, which scrolls and can spare the height.
+        # Tabs beside the scene panel: at 1280 x 800 there is no height to
+        # spare under it, and the scene's editors matter more while drawing.
         left = Qt.DockWidgetArea.LeftDockWidgetArea
         window.addDockWidget(left, self.breakpoints_dock)
         window.addDockWidget(left, self.bookmarks_dock)
         scene = getattr(window, "scene_dock", None)
         if scene is not None:
-            window.splitDockWidget(scene, self.breakpoints_dock, Qt.Orientation.Vertical)
-        window.splitDockWidget(self.breakpoints_dock, self.bookmarks_dock, Qt.Orientation.Vertical)
-        docks = [self.breakpoints_dock, self.bookmarks_dock]
-        heights = [self.panel.sizeHint().height(), 170]
-        if scene is not None:
-            docks, heights = [scene, *docks], [window.height(), *heights]
-        window.resizeDocks(docks, heights, Qt.Orientation.Vertical)
+            window.tabifyDockWidget(scene, self.breakpoints_dock)
+            window.tabifyDockWidget(self.breakpoints_dock, self.bookmarks_dock)
+            scene.raise_()
+        else:
+            window.splitDockWidget(self.breakpoints_dock, self.bookmarks_dock,
+                                   Qt.Orientation.Vertical)
         view = getattr(window, "menus", {}).get("view")
         if view is not None:
             for dock in (self.breakpoints_dock, self.bookmarks_dock):
@@ -238,6 +238,7 @@ class Breakpoints(QObject):
             return None
         conditions = self.conditions()
         if not conditions:
+            self.breakpoints_dock.raise_()
             self._say("No breakpoint is set: tick a condition in the Breakpoints panel")
             return None
         usable = [c for c in conditions if not bp.unavailable(trace, c)]
@@ -342,6 +343,7 @@ class Breakpoints(QObject):
         marks.sort(key=lambda m: m["step"])
         self._edited()
         self.marks.select(marks.index(mark))
+        self.bookmarks_dock.raise_()  # its tab comes to the front to show the new mark
         self._say(f"Bookmarked step {step:,} as \u201c{name}\u201d")
         return mark
 

@@ -17,7 +17,7 @@ import sys
 import threading
 import time
 
-from PySide6.QtCore import QTimer
+from PySide6.QtCore import Qt, QTimer
 from PySide6.QtGui import QKeySequence, QShortcut
 from PySide6.QtWidgets import QLabel, QProgressBar, QPushButton
 
@@ -224,3 +224,37 @@ def seek_when_recorded(player, index: int) -> None:
         if not message:
             player.seek(index)
     player.recordingFinished.connect(go)
+
+
+class GapMeter:
+    """How long the event loop goes between ticks of a fast timer: each
+    tick adds (seconds since the last tick, when). What the responsiveness
+    test asserts and the recording benchmark prints."""
+
+    def __init__(self, interval_ms: int = 10):
+        self.ticks: list[tuple[float, float]] = []
+        self._last = time.perf_counter()
+        self._timer = QTimer()
+        self._timer.setTimerType(Qt.TimerType.PreciseTimer)
+        self._timer.timeout.connect(self._tick)
+        self._timer.start(interval_ms)
+
+    def _tick(self) -> None:
+        now = time.perf_counter()
+        self.ticks.append((now - self._last, now))
+        self._last = now
+
+    def restart(self) -> float:
+        """Forget the ticks so far; the next gap counts from now (returned)."""
+        self.ticks.clear()
+        self._last = time.perf_counter()
+        return self._last
+
+    def stop(self) -> None:
+        self._timer.stop()
+
+    def split(self, at: float) -> tuple[list[float], list[float]]:
+        """The gaps that ended by ``at``, and those after it."""
+        return ([gap for gap, when in self.ticks if when <= at],
+                [gap for gap, when in self.ticks if when > at])
+

@@ -190,7 +190,9 @@ def _cells(raster, palette: Palette) -> np.ndarray:
                     packed_rgba(palette.overdraw)], dtype=_RGBA)
     # take(mode="clip") maps every count of 2 or more to the overdraw entry
     # in one pass over the buffer.
-    cells = lut.take(raster.counts, mode="clip")
+    replaces = getattr(raster, "replaces", False)
+    counts = np.minimum(raster.counts, 1) if replaces else raster.counts
+    cells = lut.take(counts, mode="clip")
     colors = raster.colors
     if colors is not None:
         valued = colors >= 0
@@ -198,7 +200,7 @@ def _cells(raster, palette: Palette) -> np.ndarray:
             values = colors[valued]
             packed = (((values >> 16) & 255) | (values & 0xFF00) | ((values & 255) << 16)
                       | 0xFF000000).astype(_RGBA)
-            again = raster.counts[valued] > 1
+            again = counts[valued] > 1
             if again.any():
                 packed[again] = _darken(packed[again], 0.6)
             cells[valued] = packed

@@ -56,7 +56,7 @@ def overhead(steps: int, repeats: int) -> None:
 
 
 def latency() -> None:
-    from PySide6.QtCore import Qt, QTimer
+    from app.recording import GapMeter
     from PySide6.QtWidgets import QApplication
     app = QApplication.instance() or QApplication([])
     from app.window import MainWindow
@@ -64,17 +64,8 @@ def latency() -> None:
     window.show()  # the player keeps the program's own wait (app.player.SYNC_WAIT)
     for _ in range(20):
         app.processEvents()
-    ticks, last = [], [time.perf_counter()]
-
-    def tick():
-        now = time.perf_counter()
-        ticks.append((now - last[0], now))
-        last[0] = now
-    timer = QTimer()
-    timer.setTimerType(Qt.TimerType.PreciseTimer)
-    timer.timeout.connect(tick)
-    timer.start(10)
-    last[0] = started = time.perf_counter()
+    meter = GapMeter(10)
+    started = meter.restart()
     window.set_points(SQUARE)
     returned = time.perf_counter()
     job = window.player._job
@@ -85,16 +76,15 @@ def latency() -> None:
     while time.perf_counter() < settled:
         app.processEvents()
         time.sleep(0.001)
-    timer.stop()
-    during = [gap for gap, at in ticks if at <= job.finished_at]
-    after = [gap for gap, at in ticks if at > job.finished_at]
+    meter.stop()
+    during, after = meter.split(job.finished_at)
     print(f"flood fill of a 1024 x 1024 region: {len(window.player.trace):,} steps recorded "
           f"in the worker in {job.finished_at - started:.2f} s (the edit waited "
           f"{window.player.sync_wait * 1000:.0f} ms for it first)")
     print(f"  event-loop gaps while recording ({len(during)} ticks of 10 ms): "
           f"max {max(during) * 1000:.1f} ms, p99 {np.percentile(during, 99) * 1000:.1f} ms"
           "  (target < 100 ms)")
-    gap, at = max((gap, at) for gap, at in ticks if at <= job.finished_at)
+    gap, at = max((gap, at) for gap, at in meter.ticks if at <= job.finished_at)
     print(f"  the longest ended {(at - started) * 1000:.0f} ms after the edit began; "
           f"the edit itself took {(returned - started) * 1000:.1f} ms")
     print(f"  installing and showing the trace: longest gap {max(after) * 1000:.1f} ms")

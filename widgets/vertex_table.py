@@ -12,13 +12,15 @@ from __future__ import annotations
 
 import bisect
 import colorsys
-import math
 
 from PySide6.QtCore import QAbstractTableModel, QEvent, QModelIndex, Qt, Signal
 from PySide6.QtGui import QColor
 from PySide6.QtWidgets import (QAbstractItemDelegate, QAbstractItemView, QColorDialog,
                                QHBoxLayout, QHeaderView, QLabel, QStyledItemDelegate, QTableView,
                                QToolButton, QVBoxLayout, QWidget)
+
+from algorithms import registry
+from algorithms.errors import InputError
 
 ERROR_STYLE = "color: #c92a2a;"
 GROUP_TINT = QColor("#eef2f7")  # every other contour or triangle
@@ -48,18 +50,11 @@ def number_text(value) -> str:
 
 
 def parse_number(text: str, what: str, integer: bool = False):
-    text = text.strip()
+    """A typed finite number (whole when ``integer``); Refused says why not."""
     try:
-        value = float(text)
-    except ValueError:
-        raise Refused(f"{what}: {text!r} is not a number") from None
-    if not math.isfinite(value):
-        raise Refused(f"{what}: {text!r} is not a finite number")
-    if integer:
-        if not value.is_integer():
-            raise Refused(f"{what}: {text} is not a whole pixel coordinate")
-        return int(value)
-    return value
+        return registry.parse_number(text.strip(), what, integer=integer)
+    except InputError as error:
+        raise Refused(str(error)) from None
 
 
 def default_color(k: int, count: int) -> str:

@@ -10,3 +10,16 @@ def settle(qtbot, window):
         where.append(window.grid.widget_pos_of((0.0, 0.0)))
         return len(where) > 2 and where[-1] == where[-2] == where[-3]
     qtbot.waitUntil(still, timeout=2000)
+
+
+def shown_window(qtbot, *args, settled: bool = False, **kwargs):
+    """A MainWindow(*args, **kwargs) on screen, closed after the test; with
+    ``settled`` its grid view has taken its final place too."""
+    from app.window import MainWindow
+    window = MainWindow(*args, **kwargs)
+    qtbot.addWidget(window)
+    window.show()
+    qtbot.waitExposed(window)
+    if settled:
+        settle(qtbot, window)
+    return window

@@ -7,8 +7,8 @@ from PySide6.QtWidgets import QApplication, QInputDialog
 from app import scene as scenes
 from app.file_actions import install_file_actions
 from app.recovery import install_recovery
-from app.window import MainWindow
-from gui_support import settle
+
+from gui_support import settle, shown_window
 from test_breakpoints import (POLYGON, ZBUFFER, depth_fail_events, first_after,
                               scanline_events, sign_events)
 
@@ -17,11 +17,7 @@ SHIFT = Qt.KeyboardModifier.ShiftModifier
 
 @pytest.fixture
 def window(qtbot):
-    w = MainWindow()
-    qtbot.addWidget(w)
-    w.show()
-    qtbot.waitExposed(w)
-    return w
+    return shown_window(qtbot)
 
 
 def press(window, key, modifier=Qt.KeyboardModifier.NoModifier):

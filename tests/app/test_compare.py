@@ -8,18 +8,15 @@ from PySide6.QtWidgets import QApplication
 
 from app import compare
 from app.compare_window import WINDOW_KEY
-from app.window import DEMO_POINTS, MainWindow
+from app.window import DEMO_POINTS
+from gui_support import shown_window
 from compare_oracles import (FLOAT32_BITS, FLOAT64_BITS, bresenham_pixels, dda_pixels,
                              diff_counts)
 
 
 @pytest.fixture
 def window(qtbot):
-    w = MainWindow()
-    qtbot.addWidget(w)
-    w.show()
-    qtbot.waitExposed(w)
-    return w
+    return shown_window(qtbot)
 
 
 @pytest.fixture

@@ -125,3 +125,21 @@ def test_command_line_exports_animation_frames_and_refuses_them_for_a_line(tmp_p
     assert "no animation frames" in refused.stderr and "Traceback" not in refused.stderr
     assert not (tmp_path / "line.gif").exists()
     json.loads(cli("run", "--scene", scene, "--json").stdout)  # the scene itself runs
+
+
+def test_a_pixel_left_by_the_moving_triangle_shows_white_not_overdraw():
+    """Writing a pixel again in a later animation frame replaces it: a cell
+    the triangle has left is drawn white (coverage 0 blended over white),
+    a covered one in full ink, never darkened as overdraw."""
+    from app.render import compose
+    spec, trace = registry.get("aa-temporal"), moving_trace()
+    last = animation_frame_steps(spec, trace)[-1]
+    image = compose(trace.raster_at(last), scale=1)  # row 0 is y = 0
+    raster = trace.raster_at(last)
+    covered = expected_image(MOVING["frames"] - 1)
+    left = {(x, y) for y, x in zip(*(raster.counts > 1).nonzero())} - covered
+    assert left, "the triangle moved off some pixels"
+    for x, y in left:
+        assert tuple(image[y, x, :3]) == (255, 255, 255), (x, y)
+    ink = tuple(image[y, x, :3] for x, y in covered)
+    assert len(set(map(tuple, ink))) == 1 and max(ink[0]) < 128

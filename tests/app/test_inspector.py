@@ -11,8 +11,8 @@ from shapely.geometry import Polygon, box
 from algorithms import registry
 from algorithms.steps import PLOT, VISIT, Span, Vars
 from app.inspector import PixelInspector, inspect, rows_by_label
-from app.window import MainWindow
-from tests.app.gui_support import settle
+
+from tests.app.gui_support import shown_window
 
 GRID = (16, 14)
 # Not on the 1/256 grid: the run snaps them (DESIGN.md: nearest multiple of
@@ -225,12 +225,7 @@ def test_samples_follow_the_step():
 # ------------------------------------------------------------ the dock
 @pytest.fixture
 def window(qtbot):
-    w = MainWindow("triangle-bbox", TRIANGLE, grid=GRID)
-    qtbot.addWidget(w)
-    w.show()
-    qtbot.waitExposed(w)
-    settle(qtbot, w)
-    return w
+    return shown_window(qtbot, "triangle-bbox", TRIANGLE, grid=GRID, settled=True)
 
 
 def test_hovering_and_pinning_fill_the_dock(window, qtbot):

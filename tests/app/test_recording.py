@@ -6,17 +6,17 @@ the moment it starts goes on in the worker (tests/conftest.py makes every
 other test wait for its recording).
 """
 import threading
-import time
 
 import numpy as np
 import pytest
-from PySide6.QtCore import Qt, QTimer
+from PySide6.QtCore import Qt
 from PySide6.QtTest import QTest
 
 from algorithms import registry
 from app.player import CANCELLED_MESSAGE, Player
-from app.recording import seek_when_recorded
+from app.recording import GapMeter, seek_when_recorded
 from app.window import MainWindow
+from gui_support import shown_window
 
 # A square outline whose inside is a 1024 x 1024 region of free pixels.
 BIG = 1025
@@ -62,10 +62,7 @@ def player(qtbot):
 
 @pytest.fixture
 def window(qtbot):
-    w = MainWindow("flood-fill", [SMALL_SQUARE], grid=FILL_GRID)
-    qtbot.addWidget(w)
-    w.show()
-    qtbot.waitExposed(w)
+    w = shown_window(qtbot, "flood-fill", [SMALL_SQUARE], grid=FILL_GRID)
     w.player.sync_wait = 0.0
     yield w
     w.player.stop_recording()
@@ -213,27 +210,16 @@ def test_the_event_loop_stays_responsive_while_recording(qtbot, window):
     """A 10 ms timer measures the event loop's gaps from the edit until the
     recording ends (asserted), then while the new trace is installed and
     shown (reported)."""
-    ticks, last = [], [time.perf_counter()]
-
-    def tick():
-        now = time.perf_counter()
-        ticks.append((now - last[0], now))
-        last[0] = now
-    timer = QTimer()
-    timer.setTimerType(Qt.TimerType.PreciseTimer)
-    timer.timeout.connect(tick)
-    timer.start(10)
+    meter = GapMeter(10)
     qtbot.wait(30)
-    ticks.clear()
-    last[0] = started = time.perf_counter()
+    started = meter.restart()
     window.set_points(SQUARE)
     job = window.player._job
     qtbot.waitUntil(lambda: not window.player.recording, timeout=60_000)
     qtbot.wait(30)  # the installed trace is shown within these ticks
-    timer.stop()
+    meter.stop()
     assert same(written(window.player.trace), block(BIG, BIG))
-    recording = [gap for gap, at in ticks if at <= job.finished_at]
-    after = [gap for gap, at in ticks if at > job.finished_at]
+    recording, after = meter.split(job.finished_at)
     worst, p99 = max(recording), float(np.percentile(recording, 99))
     print(f"\nevent-loop gaps while recording {len(window.player.trace):,} steps "
           f"({job.finished_at - started:.2f} s, {len(recording)} ticks): max "

@@ -7,7 +7,7 @@ from PySide6.QtWidgets import QApplication
 
 from algorithms import registry
 from algorithms.registry import format_value
-from gui_support import settle
+from gui_support import shown_window
 from app.window import DEMO_POINTS, MainWindow
 
 LEFT = Qt.MouseButton.LeftButton
@@ -16,12 +16,7 @@ NONE = Qt.KeyboardModifier.NoModifier
 
 @pytest.fixture
 def window(qtbot):
-    w = MainWindow()
-    qtbot.addWidget(w)
-    w.show()
-    qtbot.waitExposed(w)
-    settle(qtbot, w)
-    return w
+    return shown_window(qtbot, settled=True)
 
 
 def record(name="line-bresenham", points=DEMO_POINTS, options=None, grid=(32, 24)):

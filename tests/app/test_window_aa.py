@@ -10,18 +10,15 @@ from PySide6.QtCore import Qt
 from algorithms import exact_coverage
 from app import frame_view
 from app.render import depth_image, error_image, error_stats, final_coverage
-from app.window import MainWindow
+
+from gui_support import shown_window
 
 TRIANGLE = [(3.25, 2.5), (20.5, 6.75), (9.125, 17.25)]
 
 
 @pytest.fixture
 def window(qtbot):
-    w = MainWindow("line-bresenham")
-    qtbot.addWidget(w)
-    w.show()
-    qtbot.waitExposed(w)
-    return w
+    return shown_window(qtbot, "line-bresenham")
 
 
 def _chip_rows(w):
