@@ -116,6 +116,7 @@ class Breakpoints(QObject):
 
     def _dock(self, title: str, name: str, widget) -> QDockWidget:
         dock = QDockWidget(title, self.window)
+        dock.visibilityChanged.connect(lambda shown: shown and self._refresh_panel())
         dock.setObjectName(name)
         dock.setWidget(widget)
         dock.setFeatures(QDockWidget.DockWidgetFeature.DockWidgetMovable
@@ -172,14 +173,25 @@ class Breakpoints(QObject):
 
     def _trace_changed(self) -> None:
         self._follow_files()
+        self._show_bookmarks()
+        self.panel.set_grid(*self.player.grid)
+        self._panel_stale = True
+        # Which conditions a run offers takes a pass over a long trace: it
+        # waits until the Breakpoints tab is on show, or a step asks for it.
+        # (A dock in a tab behind another counts as visible: ask what shows.)
+        if not self.breakpoints_dock.visibleRegion().isEmpty():
+            self._refresh_panel()
+
+    def _refresh_panel(self) -> None:
+        if not getattr(self, "_panel_stale", True):
+            return
+        self._panel_stale = False
         trace = self.trace
         reasons = {}
         if trace is not None:
             reasons = {key: bp.unavailable(trace, key) for key in (*bp.CONDITIONS, *bp.UNITS)}
         self.panel.set_available(reasons)
-        self.panel.set_grid(*self.player.grid)
         self._unit_changed()
-        self._show_bookmarks()
 
     def _unit_changed(self, _unit=None) -> None:
         """The step buttons and the Run menu name the unit they move by."""
@@ -219,6 +231,7 @@ class Breakpoints(QObject):
     # ----------------------------------------------------------- stepping
     def step_target(self, index: int, delta: int) -> int | None:
         """Where a step of ``delta`` units goes (the player's stepper)."""
+        self._refresh_panel()
         trace, unit = self.trace, self.unit()
         if trace is None:
             return None
@@ -231,6 +244,7 @@ class Breakpoints(QObject):
     def run_to(self, direction: int = +1) -> int | None:
         """Go to the nearest frame (after or before the one on show) where a
         ticked condition holds; the frame, or None with the reason said."""
+        self._refresh_panel()
         self.player.pause()
         trace = self.trace
         if trace is None:
@@ -256,6 +270,7 @@ class Breakpoints(QObject):
     def play_stop(self, index: int, target: int) -> int | None:
         """The first frame in index+1 .. target where play must stop (the
         player's stop finder)."""
+        self._refresh_panel()
         trace = self.trace
         if trace is None or not self.panel.enabled():
             return None
