@@ -226,19 +226,18 @@ def _neighbour_names(options) -> str:
 
 # ------------------------------------------------------------ pseudo-code
 def fill_code(points, options):
-    outline = ("draw each outline segment, closing each outline (8-connected, as Bresenham)"
-               if options["outline"] == "8" else
-               "draw each outline segment, closing each outline, with a corner pixel at each "
-               "diagonal step (4-connected)")
-    return _code(outline, options)
+    return _code(_outline_line("draw each outline segment as Bresenham does, closing each "
+                               "outline", options), options)
 
 
 def circle_fill_code(points, options):
-    outline = ("draw the midpoint circle of radius R around C (8-connected)"
-               if options["outline"] == "8" else
-               "draw the midpoint circle of radius R around C, with a corner pixel at each "
-               "diagonal step (4-connected)")
-    return _code(outline, options)
+    return _code(_outline_line("draw the midpoint circle of radius R around C", options), options)
+
+
+def _outline_line(what: str, options) -> str:
+    if options["outline"] == "8":
+        return f"{what} (8-connected)"
+    return f"{what}, with a corner pixel at each diagonal step (4-connected)"
 
 
 def _code(outline, options):

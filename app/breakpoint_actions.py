@@ -20,6 +20,7 @@ from PySide6.QtCore import QEvent, QObject, Qt
 from PySide6.QtGui import QAction, QKeySequence
 from PySide6.QtWidgets import QDockWidget, QInputDialog, QLineEdit
 
+from widgets.docks import panel_dock
 from widgets.breakpoints_panel import BookmarksPanel, BreakpointsPanel
 
 from . import breakpoints as bp
@@ -115,12 +116,8 @@ class Breakpoints(QObject):
                 view.addAction(dock.toggleViewAction())
 
     def _dock(self, title: str, name: str, widget) -> QDockWidget:
-        dock = QDockWidget(title, self.window)
+        dock = panel_dock(title, name, widget, self.window)
         dock.visibilityChanged.connect(lambda shown: shown and self._refresh_panel())
-        dock.setObjectName(name)
-        dock.setWidget(widget)
-        dock.setFeatures(QDockWidget.DockWidgetFeature.DockWidgetMovable
-                         | QDockWidget.DockWidgetFeature.DockWidgetClosable)
         return dock
 
     def _build_actions(self) -> None:

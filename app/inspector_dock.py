@@ -17,8 +17,8 @@ from __future__ import annotations
 import pyqtgraph as pg
 from PySide6.QtCore import Qt
 from PySide6.QtGui import QAction, QKeySequence, QShortcut
-from PySide6.QtWidgets import QDockWidget
 
+from widgets.docks import panel_dock
 from widgets.inspector_panel import InspectorPanel
 
 from .inspector import PixelInspector
@@ -35,11 +35,7 @@ class InspectorDock:
         self.hovered = None
         self._inspector = None
         self.panel = InspectorPanel(window)
-        self.dock = QDockWidget("Pixel inspector", window)
-        self.dock.setObjectName("inspectorDock")
-        self.dock.setWidget(self.panel)
-        self.dock.setFeatures(QDockWidget.DockWidgetFeature.DockWidgetMovable
-                              | QDockWidget.DockWidgetFeature.DockWidgetClosable)
+        self.dock = panel_dock("Pixel inspector", "inspectorDock", self.panel, window)
         window.addDockWidget(Qt.DockWidgetArea.RightDockWidgetArea, self.dock)
         self.dock.hide()
         self.action = self.dock.toggleViewAction()

@@ -14,7 +14,7 @@ import numpy as np
 from PySide6.QtCore import QRect, Qt
 from PySide6.QtGui import (QAction, QActionGroup, QColor, QIcon, QKeySequence, QPainter,
                            QPixmap)
-from PySide6.QtWidgets import (QApplication, QCheckBox, QDialog, QDialogButtonBox, QDockWidget,
+from PySide6.QtWidgets import (QApplication, QCheckBox, QDialog, QDialogButtonBox,
                                QFrame, QHBoxLayout, QHeaderView, QLabel, QMainWindow, QMessageBox,
                                QPushButton, QScrollArea, QSizePolicy, QTableWidget,
                                QTableWidgetItem, QToolBar, QVBoxLayout, QWidget)
@@ -23,6 +23,7 @@ from algorithms import registry
 from algorithms.raster import MAX_GRID, Raster
 from algorithms.registry import InputError
 from algorithms.steps import Note, Table
+from widgets.docks import panel_dock
 from widgets.depth_view import DepthView
 from widgets.drawing import CONTOURS, point_labels
 from widgets.editors import AlgorithmPicker, GridEditor, OptionsEditor
@@ -320,30 +321,17 @@ class MainWindow(QMainWindow):
         scroll.setWidgetResizable(True)
         scroll.setFrameShape(QFrame.Shape.NoFrame)
         scroll.setHorizontalScrollBarPolicy(Qt.ScrollBarPolicy.ScrollBarAlwaysOff)
-        self.scene_dock = QDockWidget("Scene", self)
-        self.scene_dock.setObjectName("sceneDock")
-        self.scene_dock.setWidget(scroll)
-        self.scene_dock.setFeatures(QDockWidget.DockWidgetFeature.DockWidgetMovable
-                                    | QDockWidget.DockWidgetFeature.DockWidgetClosable)
+        self.scene_dock = panel_dock("Scene", "sceneDock", scroll, self)
         self.addDockWidget(Qt.DockWidgetArea.LeftDockWidgetArea, self.scene_dock)
         panel.setMinimumWidth(240)
 
     def _build_code_dock(self) -> None:
         self.code = CodePanel(self)
-        self.code_dock = QDockWidget("Pseudo-code", self)
-        self.code_dock.setObjectName("codeDock")
-        self.code_dock.setWidget(self.code)
+        self.code_dock = panel_dock("Pseudo-code", "codeDock", self.code, self)
         self.variables = VariablesPanel(self)
-        self.variables_dock = QDockWidget("Variables", self)
-        self.variables_dock.setObjectName("variablesDock")
-        self.variables_dock.setWidget(self.variables)
+        self.variables_dock = panel_dock("Variables", "variablesDock", self.variables, self)
         self.tables = TablesPanel(self)
-        self.tables_dock = QDockWidget("Tables", self)
-        self.tables_dock.setObjectName("tablesDock")
-        self.tables_dock.setWidget(self.tables)
-        for dock in (self.code_dock, self.variables_dock, self.tables_dock):
-            dock.setFeatures(QDockWidget.DockWidgetFeature.DockWidgetMovable
-                             | QDockWidget.DockWidgetFeature.DockWidgetClosable)
+        self.tables_dock = panel_dock("Tables", "tablesDock", self.tables, self)
         for dock in (self.code_dock, self.variables_dock):
             self.addDockWidget(Qt.DockWidgetArea.RightDockWidgetArea, dock)
         self.splitDockWidget(self.code_dock, self.variables_dock, Qt.Orientation.Vertical)
@@ -359,11 +347,7 @@ class MainWindow(QMainWindow):
         self.tables_dock.hide()
         # The depth buffer beside the colour buffer, for runs that keep one.
         self.depth_view = DepthView(PALETTE, self)
-        self.depth_dock = QDockWidget("Depth buffer", self)
-        self.depth_dock.setObjectName("depthDock")
-        self.depth_dock.setWidget(self.depth_view)
-        self.depth_dock.setFeatures(QDockWidget.DockWidgetFeature.DockWidgetMovable
-                                    | QDockWidget.DockWidgetFeature.DockWidgetClosable)
+        self.depth_dock = panel_dock("Depth buffer", "depthDock", self.depth_view, self)
         self.addDockWidget(Qt.DockWidgetArea.RightDockWidgetArea, self.depth_dock)
         self.splitDockWidget(self.code_dock, self.depth_dock, Qt.Orientation.Vertical)
         self.depth_dock.hide()

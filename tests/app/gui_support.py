@@ -23,3 +23,18 @@ def shown_window(qtbot, *args, settled: bool = False, **kwargs):
     if settled:
         settle(qtbot, window)
     return window
+
+
+def drag(qtbot, window, start, end, modifier=None, steps=4):
+    """Press at grid point ``start``, move in ``steps``, release at ``end``."""
+    from PySide6.QtCore import Qt
+    from PySide6.QtTest import QTest
+    modifier = Qt.KeyboardModifier.NoModifier if modifier is None else modifier
+    left = Qt.MouseButton.LeftButton
+    viewport = window.grid.viewport()
+    a, b = window.grid.widget_pos_of(start), window.grid.widget_pos_of(end)
+    QTest.mousePress(viewport, left, modifier, a)
+    for k in range(1, steps + 1):
+        QTest.mouseMove(viewport, a + (b - a) * (k / steps))
+        qtbot.wait(15)  # pyqtgraph drops mouse moves that come too fast
+    QTest.mouseRelease(viewport, left, modifier, b)

@@ -11,7 +11,7 @@ from algorithms import registry
 from app.file_actions import install_file_actions
 from app.history import MERGE_SECONDS
 from app.window import MainWindow
-from gui_support import settle
+from gui_support import drag, settle
 
 LEFT = Qt.MouseButton.LeftButton
 NONE = Qt.KeyboardModifier.NoModifier
@@ -62,16 +62,6 @@ def fresh_pixels(w):
         return None
     trace = player.spec.record(player.input_points(), dict(player.options), player.grid)
     return sorted(map(tuple, trace.written_pixels().tolist()))
-
-
-def drag(qtbot, w, start, end, steps=4):
-    viewport = w.grid.viewport()
-    a, b = w.grid.widget_pos_of(start), w.grid.widget_pos_of(end)
-    QTest.mousePress(viewport, LEFT, NONE, a)
-    for k in range(1, steps + 1):
-        QTest.mouseMove(viewport, a + (b - a) * (k / steps))
-        qtbot.wait(15)  # pyqtgraph drops mouse moves that come too fast
-    QTest.mouseRelease(viewport, LEFT, NONE, b)
 
 
 # --------------------------------------------------------------- the edits

@@ -11,7 +11,7 @@ from algorithms.registry import format_value
 from algorithms.steps import Table
 from app.render import PALETTE, coverage_counts
 from app.tables import cell_text
-from gui_support import settle
+from gui_support import drag, settle
 from app.window import MainWindow
 
 LEFT = Qt.MouseButton.LeftButton
@@ -43,16 +43,6 @@ def double_click(window, pos):
     QTest.mouseClick(viewport, LEFT, NONE, at)
     QTest.mouseDClick(viewport, LEFT, NONE, at)
     QTest.mouseRelease(viewport, LEFT, NONE, at)
-
-
-def drag(qtbot, window, start, end, modifier=NONE, steps=4):
-    viewport = window.grid.viewport()
-    a, b = window.grid.widget_pos_of(start), window.grid.widget_pos_of(end)
-    QTest.mousePress(viewport, LEFT, modifier, a)
-    for k in range(1, steps + 1):
-        QTest.mouseMove(viewport, a + (b - a) * (k / steps))
-        qtbot.wait(15)  # pyqtgraph drops mouse moves that come too fast
-    QTest.mouseRelease(viewport, LEFT, modifier, b)
 
 
 def key(window, which):
