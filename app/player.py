@@ -93,7 +93,6 @@ class Player(QObject):
         self._job: Job | None = None  # the background recording, if one runs
         self._job_at_end = None
         self._shown = None  # the scene the trace on show belongs to, while a job runs
-        self.trace_spec = None  # the algorithm of the trace on show
         self._jobProgress.connect(self._job_progressed)
         self._jobDone.connect(self._job_done)
         self.step_cap = step_cap
@@ -435,7 +434,6 @@ class Player(QObject):
     def _take(self, outcome: "_Outcome", at_end) -> None:
         if outcome.refusal is not None:
             self.refusal = outcome.refusal
-        self.trace_spec = outcome.scene.spec
         self._install(outcome.trace, self._at_end() if at_end is None else at_end, outcome)
 
     def _job_progressed(self, job, steps: int) -> None:
@@ -447,10 +445,7 @@ class Player(QObject):
             return  # replaced or cancelled meanwhile
         self._job = None
         if job.error is not None or job.cancelled:
-            self._put_scene(self._shown)
-            self._shown = None
-            self.recordingFinished.emit(CANCELLED_MESSAGE if job.error is None
-                                        else str(job.error))
+            self._put_back_shown(CANCELLED_MESSAGE if job.error is None else str(job.error))
             return
         self._shown = None
         outcome = job.result
@@ -471,6 +466,11 @@ class Player(QObject):
         return self._shown if self._shown is not None else self._scene()
 
     @property
+    def trace_spec(self):
+        """The algorithm of the trace on show."""
+        return self.shown_scene.spec
+
+    @property
     def recording(self) -> bool:
         """Is a recording running in the background?"""
         return self._job is not None
@@ -481,9 +481,13 @@ class Player(QObject):
             return
         self._job.cancel()
         self._job = None
+        self._put_back_shown(CANCELLED_MESSAGE)
+
+    def _put_back_shown(self, message: str) -> None:
+        """The recording ended without a trace: the scene on show is the scene again."""
         self._put_scene(self._shown)
         self._shown = None
-        self.recordingFinished.emit(CANCELLED_MESSAGE)
+        self.recordingFinished.emit(message)
 
     def stop_recording(self, timeout: float = 2.0) -> None:
         """Cancel the background recording and wait for its thread to end

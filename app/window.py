@@ -798,7 +798,7 @@ class MainWindow(QMainWindow):
         colour = frame_view.colour_name(trace.start)
         colors = (colour,) if colour else ()
         # The trace's own algorithm: a switch may still be recording.
-        rows = (self.player.trace_spec or self.player.spec).panel_rows(trace, index)
+        rows = self.player.trace_spec.panel_rows(trace, index)
         rows += self._accuracy_rows(state, rows)
         self.variables.set_rows(rows, colors, row_tones(rows) if self._tally else None)
         chips = []
