@@ -340,24 +340,36 @@ def command_export(args) -> int:
     # Headless by default: the export draws text with Qt, and needs no window.
     os.environ.setdefault("QT_QPA_PLATFORM", "offscreen")
     bar = _ProgressBar(sys.stderr)
-    try:
-        run = exporting.Run.from_scene(scene)
-        result = exporting.export(run, settings, gif=args.gif, frames_dir=args.frames_dir,
-                                  progress=bar.show if bar.active else None,
-                                  names=("--from", "--to"))
-    except exporting.ExportError as error:
-        raise InputError(str(error)) from None
-    except KeyboardInterrupt:
-        bar.clear()
-        print("rasterlab: export interrupted; nothing was written", file=sys.stderr)
+
+    def work():
+        return exporting.export(exporting.Run.from_scene(scene), settings, gif=args.gif,
+                                frames_dir=args.frames_dir,
+                                progress=bar.show if bar.active else None,
+                                names=("--from", "--to"))
+    result = _with_progress(bar, work, exporting.ExportError,
+                            "export interrupted; nothing was written")
+    if result is None:
         return 130
-    finally:
-        bar.clear()
     width, height = result.size
     written = [str(path) for path in (result.gif, result.frames_dir) if path is not None]
     print(f"{' and '.join(written)}: {result.frames} frame{'s' if result.frames != 1 else ''} "
           f"of {width}x{height} pixels, {sum(result.durations) / 1000:g} s")
     return 0
+
+
+def _with_progress(bar, work, error_type, interrupted: str):
+    """``work()`` under a terminal progress bar: its ``error_type`` becomes a
+    one-line refusal; Ctrl+C says ``interrupted`` and gives None."""
+    try:
+        return work()
+    except error_type as error:
+        raise InputError(str(error)) from None
+    except KeyboardInterrupt:
+        bar.clear()  # the message goes on a clean line
+        print(f"rasterlab: {interrupted}", file=sys.stderr)
+        return None
+    finally:
+        bar.clear()
 
 
 class _ProgressBar(TerminalBar):
@@ -386,16 +398,11 @@ def command_report(args) -> int:
     from app import report
 
     bar = report.ProgressBar(sys.stderr)
-    try:
-        result = report.write_report(args.out, quick=args.quick, progress=bar)
-    except report.ReportError as error:
-        raise InputError(str(error)) from None
-    except KeyboardInterrupt:
-        bar.clear()
-        print("rasterlab: report interrupted", file=sys.stderr)
+    result = _with_progress(bar, lambda: report.write_report(args.out, quick=args.quick,
+                                                             progress=bar),
+                            report.ReportError, "report interrupted")
+    if result is None:
         return 130
-    finally:
-        bar.clear()
     print(f"{result['folder']}: {', '.join(result['files'])} ({result['rows']} measurements, "
           f"{result['seconds']:.0f} s)")
     return 0

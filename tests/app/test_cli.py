@@ -130,3 +130,21 @@ def test_entry_point_in_a_subprocess():
                           timeout=60)
     assert good.returncode == 0, good.stderr
     assert json.loads(good.stdout)["pixels"][0] == [2, 3]
+
+
+def test_ctrl_c_during_a_report_or_export_ends_with_130_and_one_line(capsys, monkeypatch, tmp_path):
+    from app import export, report
+
+    def interrupted(*_args, **_kwargs):
+        raise KeyboardInterrupt
+    monkeypatch.setattr(report, "write_report", interrupted)
+    assert main(["report", "--quick", "--out", str(tmp_path / "out")]) == 130
+    assert capsys.readouterr().err.strip() == "rasterlab: report interrupted"
+    scene = tmp_path / "scene.json"
+    scene.write_text(json.dumps({"version": 1, "grid": {"width": 8, "height": 8},
+                                 "algorithm": "line-bresenham",
+                                 "primitives": [{"points": [[0, 0], [5, 2]]}]}))
+    monkeypatch.setattr(export, "export", interrupted)
+    assert main(["export", str(scene), "--gif", str(tmp_path / "a.gif")]) == 130
+    assert "export interrupted; nothing was written" in capsys.readouterr().err
+    assert not (tmp_path / "a.gif").exists()
