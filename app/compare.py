@@ -21,7 +21,8 @@ that a pixel two triangles of a mesh both fill shows up).
 per pane: by frame (step k everywhere, held at the end of shorter runs) or
 by progress (the same fraction of every run).
 
-Nothing here imports Qt (so not app.player either, which is a QObject).
+Nothing here imports Qt (so not app.player either, which is a QObject;
+the point helpers come from app.inputs, which the player uses too).
 """
 from __future__ import annotations
 
@@ -38,6 +39,7 @@ from algorithms.raster import Raster, check_grid
 from algorithms.steps import PLOT, Span
 
 from . import frame_view, render
+from .inputs import flatten, split_contours
 
 EXACT = "exact-coverage"
 EXACT_TITLE = "Exact coverage"
@@ -156,16 +158,9 @@ class Primitives:
 
 
 def _flat(spec, points) -> tuple[tuple, tuple]:
-    """Points as the algorithm takes them (contours, for polygons) as one
-    flat tuple and the indices where contours 2, 3, ... start."""
-    if not spec.inputs.contours:
-        return tuple(tuple(p) for p in points), ()
-    flat, breaks = [], []
-    for contour in points:
-        if flat:
-            breaks.append(len(flat))
-        flat += [tuple(p) for p in contour]
-    return tuple(flat), tuple(breaks)
+    """``inputs.flatten`` with the points as a tuple (Primitives is frozen)."""
+    flat, breaks = flatten(spec, points)
+    return tuple(flat), breaks
 
 
 def _changed_options(spec, options: dict) -> dict:
@@ -182,8 +177,7 @@ def fit_points(source, points, breaks, target):
     if src.multiple:
         groups = [points[k:k + src.count] for k in range(0, len(points), src.count)]
     elif src.contours:
-        edges = [0, *breaks, len(points)]
-        groups = [points[a:b] for a, b in zip(edges, edges[1:])]
+        groups = split_contours(points, breaks)
     else:
         groups = [points]
     if dst.contours:

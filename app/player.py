@@ -48,6 +48,7 @@ from algorithms.raster import MAX_GRID, Raster, check_grid
 from algorithms.trace import DEFAULT_STEP_CAP, Cancelled, FrameState, Trace
 
 
+from .inputs import clean_breaks, complete, contour_sizes, flatten, runnable_input
 from .recording import Job
 from .render import differences
 
@@ -693,67 +694,6 @@ def open_ended(spec) -> bool:
     k triangles) rather than exactly ``inputs.count``?"""
     inputs = spec.inputs
     return bool(getattr(inputs, "contours", False) or getattr(inputs, "multiple", False))
-
-
-def complete(spec, points, breaks=()) -> bool:
-    """Is there enough to run: at least one whole contour, one whole
-    triangle, or exactly the points a fixed-count algorithm takes?"""
-    inputs = spec.inputs
-    if inputs.contours:
-        return any(size >= inputs.count for size in contour_sizes(len(points), breaks))
-    if inputs.multiple:
-        return len(points) >= inputs.count
-    return len(points) == inputs.count
-
-
-def runnable_input(spec, points, breaks=()):
-    """The points in the shape the algorithm takes, leaving out what is
-    still being drawn: contours with too few vertices, a last incomplete
-    triangle."""
-    inputs = spec.inputs
-    points = list(points)
-    if inputs.contours:
-        contours = split_contours(points, breaks)
-        return [contour for contour in contours if len(contour) >= inputs.count]
-    if inputs.multiple:
-        return points[:len(points) - len(points) % inputs.count]
-    return points
-
-
-def split_contours(points, breaks) -> list[list]:
-    """The flat points cut at the break indices."""
-    edges = [0, *breaks, len(points)]
-    return [list(points[a:b]) for a, b in zip(edges, edges[1:])]
-
-
-def contour_sizes(count: int, breaks) -> list[int]:
-    edges = [0, *breaks, count]
-    return [b - a for a, b in zip(edges, edges[1:])]
-
-
-def clean_breaks(spec, count: int, breaks) -> tuple[int, ...]:
-    """Breaks sorted, inside 1 .. count - 1; none unless the algorithm takes contours."""
-    if not spec.inputs.contours:
-        return ()
-    return tuple(sorted({int(b) for b in breaks if 0 < int(b) < count}))
-
-
-def flatten(spec, points) -> tuple[list[tuple], tuple[int, ...]]:
-    """Points given flat or as contours (as scene files hold them) as one
-    flat list and its breaks."""
-    points = list(points)
-    if spec.inputs.contours and points and _is_contour(points[0]):
-        flat, breaks = [], []
-        for contour in points:
-            if flat:
-                breaks.append(len(flat))
-            flat += [tuple(p) for p in contour]
-        return flat, tuple(breaks)
-    return [tuple(p) for p in points], ()
-
-
-def _is_contour(item) -> bool:
-    return isinstance(item, (list, tuple)) and bool(item) and isinstance(item[0], (list, tuple))
 
 
 def _checked_grid(grid, limit: int = MAX_GRID) -> tuple[int, int]:

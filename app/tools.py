@@ -11,7 +11,7 @@ from __future__ import annotations
 from widgets.drawing import CIRCLE, CONTOURS, FIXED, GROUPS
 
 from .frame_view import ideal_paths, scene_paths, takes_circle
-from .player import contour_sizes, runnable_input
+from .inputs import contour_sizes, runnable_input
 
 
 def drawing_mode(spec) -> str:

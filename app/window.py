@@ -35,7 +35,8 @@ from widgets.transport import TransportBar
 
 from .history import EditHistory, Snapshot
 from .insight import PixelTally, has_insight, inside_chips, row_tones
-from .player import Player, default_scene, open_ended, split_contours
+from .inputs import split_contours
+from .player import Player, default_scene, open_ended
 from . import frame_view
 from .render import (COVERAGE_LEVELS, OUTLINE_STYLE, PALETTE, compose, coverage_counts,
                      depth_image, depth_range, error_image, error_stats)
