@@ -8,7 +8,6 @@ keys that really work, then the pointer gestures, which no action holds.
 from __future__ import annotations
 
 import platform
-import re
 import tomllib
 from importlib import metadata
 from pathlib import Path
@@ -19,8 +18,6 @@ from PySide6.QtGui import QKeySequence
 
 PACKAGE = "rasterlab"
 PYPROJECT = Path(__file__).resolve().parents[1] / "pyproject.toml"
-# Rows of the hand-written list that are pointer gestures, not keys.
-_GESTURE = re.compile(r"click|drag|wheel", re.IGNORECASE)
 
 
 def app_version() -> str:
@@ -52,7 +49,7 @@ def shortcut_rows(window, gestures=()) -> list[tuple[str, str]]:
                          for key in action.shortcuts())
         text = action.text().replace("&", "").replace("\u2026", "").strip()
         rows.append((keys, text))
-    rows += [(key, text) for key, text in gestures if _GESTURE.search(key)]
+    rows += list(gestures)
     return rows
 
 

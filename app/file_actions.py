@@ -26,8 +26,6 @@ from . import export as exporting
 from . import scene as scenes
 from .scene import Scene, SceneError, one_line
 
-ORGANIZATION = "RasterLab"
-APPLICATION = "RasterLab"
 RECENT_KEY = "scenes/recent"
 EXPORT_FOLDER_KEY = "export/folder"
 MAX_RECENT = 8

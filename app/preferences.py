@@ -34,7 +34,7 @@ from widgets.transport import SPEED_MAX, SPEED_MIN
 from .render import PALETTE, Palette
 
 SETTINGS_ENV = "RASTERLAB_SETTINGS"
-ORGANIZATION = "RasterLab"  # the same names as app/file_actions.py
+ORGANIZATION = "RasterLab"
 APPLICATION = "RasterLab"
 THEMES = ("light", "dark")
 STEP_CAP_RANGE = (1_000, 50_000_000)
@@ -159,11 +159,6 @@ class Preferences:
             raise ValueError(f"no colour {name!r} in the {theme!r} theme")
         self.settings.setValue(f"colors/{theme}/{name}", _color(value))
 
-    def palette(self, theme: str | None = None) -> Palette:
-        theme = theme or self.get("theme")
-        return dataclasses.replace(BASE_PALETTES[theme],
-                                   **{name: self.color(theme, name) for name in COLOR_NAMES})
-
     def values(self) -> dict:
         """Everything the dialog edits, as one dict."""
         values = {name: self.get(name) for name in SETTINGS}
@@ -238,12 +233,6 @@ def apply_theme(theme: str) -> None:
         if app.style().name() != style:
             app.setStyle(style)
         app.setPalette(palette)
-
-
-def current_theme() -> str:
-    app = QApplication.instance()
-    return "dark" if app is not None and app.palette().color(
-        QPalette.ColorRole.Window).lightness() < 128 else "light"
 
 
 # ----------------------------------------------------------- the window side

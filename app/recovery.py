@@ -94,7 +94,6 @@ class Recovery(QObject):
     """Unsaved-change tracking, autosave and the question on close for one
     window (with its ``file_actions``)."""
 
-    dirtyChanged = Signal(bool)
     autosaved = Signal(str)  # the recovery file's path
 
     def __init__(self, window, folder: Path | None = None, delay_ms: int = AUTOSAVE_DELAY_MS,
@@ -163,7 +162,6 @@ class Recovery(QObject):
         if dirty != self.dirty:
             self.dirty = dirty
             self.window.setWindowModified(dirty)
-            self.dirtyChanged.emit(dirty)
 
     def mark_clean(self, *_args) -> None:
         """The scene on show is the saved one (just opened or saved)."""

@@ -53,12 +53,6 @@ def marker_option(spec):
                  if option.kind == "point" and option.name not in NOT_MARKERS), None)
 
 
-def grid_option_names(spec) -> tuple[str, ...]:
-    """Options that a gesture on the grid changes (and undo puts back)."""
-    marker = marker_option(spec)
-    return circle_options(spec) + ((marker.name,) if marker else ())
-
-
 def clamp_option(option, value: float):
     """A dragged value rounded and kept inside the option's range."""
     if option.kind == "int":

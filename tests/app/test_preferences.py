@@ -19,7 +19,7 @@ from app import about, preferences
 from app.file_actions import install_file_actions
 from app.preferences import Preferences, apply_theme, default_values
 from app.report_window import install_report_action
-from app.window import SHORTCUTS, MainWindow, ShortcutsDialog
+from app.window import GESTURES, MainWindow, ShortcutsDialog
 
 ROOT = Path(__file__).resolve().parents[2]
 CTRL = Qt.KeyboardModifier.ControlModifier
@@ -218,7 +218,7 @@ def test_the_shortcut_sheet_lists_the_keys_that_work(qtbot, settings_file):
         assert action is not None, f"no action has {key}"
         assert sheet[key] == action.text().replace("&", "").replace("\u2026", ""), key
     # The pointer gestures of the hand-written list are there too.
-    assert sheet["Mouse wheel"] == dict(SHORTCUTS)["Mouse wheel"]
+    assert sheet["Mouse wheel"] == dict(GESTURES)["Mouse wheel"]
 
 
 def test_the_issue_shortcuts_work(qtbot, settings_file, monkeypatch):
