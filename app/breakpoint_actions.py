@@ -228,7 +228,6 @@ class Breakpoints(QObject):
     # ----------------------------------------------------------- stepping
     def step_target(self, index: int, delta: int) -> int | None:
         """Where a step of ``delta`` units goes (the player's stepper)."""
-        self._refresh_panel()
         trace, unit = self.trace, self.unit()
         if trace is None:
             return None
@@ -267,7 +266,6 @@ class Breakpoints(QObject):
     def play_stop(self, index: int, target: int) -> int | None:
         """The first frame in index+1 .. target where play must stop (the
         player's stop finder)."""
-        self._refresh_panel()
         trace = self.trace
         if trace is None or not self.panel.enabled():
             return None

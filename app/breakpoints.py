@@ -111,8 +111,16 @@ def as_condition(condition) -> Condition:
 
 # ------------------------------------------------------------ availability
 def unavailable(trace, what) -> str:
-    """Why a condition or unit cannot be used on this run; "" when it can."""
+    """Why a condition or unit cannot be used on this run; "" when it can.
+    Worked out once per run: stepping and playback ask at every step."""
     key = what if isinstance(what, str) else as_condition(what).kind
+    known = _cache(trace).setdefault("unavailable", {})
+    if key not in known:
+        known[key] = _why_unavailable(trace, key)
+    return known[key]
+
+
+def _why_unavailable(trace, key: str) -> str:
     if key in (FRAME, PIXEL):
         return ""
     if key == SIGN:
@@ -132,7 +140,7 @@ def unavailable(trace, what) -> str:
         return ""
     if key == PRIMITIVE:
         return "" if len(_primitive_starts(trace)) else "the run draws a single primitive"
-    raise ValueError(f"unknown condition or step unit {what!r}")
+    raise ValueError(f"unknown condition or step unit {key!r}")
 
 
 # ----------------------------------------------------------------- search

@@ -419,8 +419,11 @@ class VertexTable(QWidget):
 
     def set_attributes(self, names, options: dict) -> None:
         """Columns for these per-vertex options, showing their values."""
-        self.model.attributes = list(names)
-        self.model.values = {name: tuple(options.get(name) or ()) for name in names}
+        names = list(names)
+        values = {name: tuple(options.get(name) or ()) for name in names}
+        if names == self.model.attributes and values == self.model.values:
+            return  # asked again after every run and drag: nothing to redraw
+        self.model.attributes, self.model.values = names, values
         self._apply()
 
     def _apply(self) -> None:
