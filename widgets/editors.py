@@ -165,7 +165,7 @@ class ColorListEditor(QWidget):
         self.check.setToolTip("One colour per vertex, interpolated along the primitive")
         self.check.toggled.connect(self._toggled)
         self.buttons: list[QToolButton] = []
-        self._colors = [_default_color(k, count) for k in range(count)]
+        self._colors = [default_color(k, count) for k in range(count)]
         layout = QHBoxLayout(self)
         layout.setContentsMargins(0, 0, 0, 0)
         layout.setSpacing(4)
@@ -218,7 +218,8 @@ class ColorListEditor(QWidget):
             button.setEnabled(self.check.isChecked())
 
 
-def _default_color(k: int, count: int) -> str:
+def default_color(k: int, count: int) -> str:
+    """The colour vertex ``k`` of ``count`` starts with (red, green, blue for a triangle)."""
     if count == 3:
         return ("#e8452c", "#23a55a", "#2563a8")[k]
     if count <= len(DEFAULT_COLORS):

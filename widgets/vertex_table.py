@@ -11,7 +11,6 @@ The table never changes its own rows: it shows what ``set_points`` and
 from __future__ import annotations
 
 import bisect
-import colorsys
 
 from PySide6.QtCore import QAbstractTableModel, QEvent, QModelIndex, Qt, Signal
 from PySide6.QtGui import QColor
@@ -20,11 +19,13 @@ from PySide6.QtWidgets import (QAbstractItemDelegate, QAbstractItemView, QColorD
                                QToolButton, QVBoxLayout, QWidget)
 
 from algorithms import registry
+from algorithms.registry import format_value
 from algorithms.errors import InputError
+
+from .editors import DEFAULT_COLORS, default_color
 
 ERROR_STYLE = "color: #c92a2a;"
 GROUP_TINT = QColor("#eef2f7")  # every other contour or triangle
-COLORS = ("#e8452c", "#23a55a", "#2563a8", "#f08c00", "#7048e8", "#0c8599")
 
 # Column titles and tooltips of the attribute columns, by option name.
 ATTRIBUTES = {
@@ -41,27 +42,12 @@ class Refused(ValueError):
     """A typed value the table does not take; the text says why."""
 
 
-def number_text(value) -> str:
-    """Shortest text that reads back as exactly this number."""
-    if isinstance(value, int) or (isinstance(value, float) and value.is_integer()
-                                  and abs(value) < 2 ** 53):
-        return str(int(value))
-    return repr(float(value))
-
-
 def parse_number(text: str, what: str, integer: bool = False):
     """A typed finite number (whole when ``integer``); Refused says why not."""
     try:
         return registry.parse_number(text.strip(), what, integer=integer)
     except InputError as error:
         raise Refused(str(error)) from None
-
-
-def default_color(k: int, count: int) -> str:
-    if count <= len(COLORS):
-        return COLORS[k]
-    r, g, b = colorsys.hsv_to_rgb(k / count, 0.75, 0.85)
-    return QColor.fromRgbF(r, g, b).name()
 
 
 def per_vertex(values, name: str, count: int) -> list:
@@ -181,11 +167,11 @@ class VertexModel(QAbstractTableModel):
 
     def text(self, row: int, name: str) -> str:
         if name in ("x", "y"):
-            return number_text(self.points[row][0 if name == "x" else 1])
+            return format_value(self.points[row][0 if name == "x" else 1])
         if not self.values.get(name):
             return ""  # not given: the run goes without it
         value = self.entries(name)[row]
-        return value if name == "colors" else number_text(value)
+        return value if name == "colors" else format_value(value)
 
     def entries(self, name: str) -> list:
         """One value per point (worked out once per change: tables can be long)."""
@@ -279,7 +265,7 @@ class VertexModel(QAbstractTableModel):
         for name, entries in self.values.items():
             if entries and len(entries) == n and n != 3:
                 entries = list(entries)
-                fill = default_color(n % len(COLORS), n + 1) if name == "colors" \
+                fill = default_color(n % len(DEFAULT_COLORS), n + 1) if name == "colors" \
                     else DEFAULTS.get(name, 0.0)
                 change(entries, fill)
                 values[name] = tuple(entries)
@@ -491,4 +477,4 @@ class VertexTable(QWidget):
         self.edited.emit(points, breaks, values)
 
 
-__all__ = ["VertexTable", "VertexModel", "per_vertex", "number_text"]
+__all__ = ["VertexTable", "VertexModel", "per_vertex"]
