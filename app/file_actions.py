@@ -30,7 +30,6 @@ RECENT_KEY = "scenes/recent"
 EXPORT_FOLDER_KEY = "export/folder"
 MAX_RECENT = 8
 SCENE_FILTER = "RasterLab scenes (*.json);;All files (*)"
-EXAMPLES = scenes.RESOURCES / "scenes"
 
 
 def install_file_actions(window, settings: QSettings | None = None) -> "FileActions":
@@ -105,12 +104,8 @@ class FileActions(QObject):
 
     def _fill_examples(self) -> None:
         self.examples_menu.clear()
-        for path in sorted(EXAMPLES.glob("*.json")):
-            try:
-                title = scenes.load(path).title
-            except SceneError:
-                continue  # a broken shipped scene is a test failure, not a menu entry
-            text = f"{title} ({path.stem})" if title else path.stem
+        for path, scene in scenes.shipped():
+            text = f"{scene.title} ({path.stem})" if scene.title else path.stem
             act = self.examples_menu.addAction(text)
             act.setData(str(path))
             act.triggered.connect(lambda checked=False, p=path: self.open_path(p, remember=False))

@@ -24,7 +24,7 @@ from . import render
 from . import scene as scenes
 from .scene import SceneError, one_line
 
-FOLDER = scenes.RESOURCES / "scenes"
+FOLDER = scenes.SHIPPED
 # Scenes that are examples, not hard cases.
 NOT_HARD = ("demo-bresenham",)
 # The order a lecture meets them in; scenes not named here follow, by name.
@@ -54,16 +54,10 @@ class HardCase:
 
 def hard_cases(folder: Path = FOLDER) -> list[HardCase]:
     """Every readable hard-case scene of ``folder``, in lecture order."""
-    paths = [p for p in folder.glob("*.json") if p.stem not in NOT_HARD]
     rank = {name: n for n, name in enumerate(ORDER)}
-    paths.sort(key=lambda p: (rank.get(p.stem, len(ORDER)), p.stem))
-    cases = []
-    for path in paths:
-        try:
-            cases.append(HardCase(path, scenes.load(path)))
-        except SceneError:
-            continue  # a broken shipped scene is a test failure, not a gallery entry
-    return cases
+    cases = [HardCase(path, scene) for path, scene in scenes.shipped(folder)
+             if path.stem not in NOT_HARD]
+    return sorted(cases, key=lambda case: (rank.get(case.name, len(ORDER)), case.name))
 
 
 def thumbnail(scene: scenes.Scene) -> QImage | None:

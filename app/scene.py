@@ -24,6 +24,7 @@ ORIGINS = ("bottom-left", "top-left")
 MAX_FILE_BYTES = 8 * 2 ** 20
 MAX_POINTS = 100_000
 RESOURCES = Path(__file__).resolve().parents[1] / "resources"
+SHIPPED = RESOURCES / "scenes"
 MAX_MESSAGE = 300  # characters; a message quoting a huge value is cut here
 # Whole numbers in a scene file have at most this many digits: every field
 # is far smaller, and longer ones cannot even become a float to be checked.
@@ -101,6 +102,19 @@ def _primitives(inputs, points) -> list:
     size = max(1, inputs.count if inputs.multiple else len(points))
     groups = [points[k:k + size] for k in range(0, len(points), size)] or [[]]
     return [{"points": [list(p) for p in group]} for group in groups]
+
+
+def shipped(folder: Path = SHIPPED) -> list[tuple[Path, Scene]]:
+    """The readable scenes of ``folder`` (the shipped examples and hard
+    cases), by file name. A broken shipped scene is left out here and is
+    a test failure instead."""
+    found = []
+    for path in sorted(Path(folder).glob("*.json")):
+        try:
+            found.append((path, load(path)))
+        except SceneError:
+            continue
+    return found
 
 
 # ------------------------------------------------------------------ reading
