@@ -285,14 +285,6 @@ class Run:
         """The ideal primitive, as the main grid draws it."""
         if self.points is None:
             return []
-        shape = self.options.get("shape")
-        if self.spec.family == "antialias" and shape in ("triangles", "polygon", "thick-line"):
-            # A shape option says how the points group: in threes, one
-            # closed polygon, or a segment.
-            points = [(float(x), float(y)) for x, y in self.points]
-            if shape == "triangles":
-                return [(points[k:k + 3], True) for k in range(0, len(points) - 2, 3)]
-            return [(points, shape == "polygon")]
         return frame_view.scene_paths(self.spec, self.points, self.options)
 
     def state_at(self, i: int):

@@ -45,7 +45,8 @@ def ideal_paths(spec, points, options) -> list:
     j + 1/2). Lines: the segment between the end pixels' centres. Circles
     and ellipses: the exact curve of the radius options around the centre.
     Triangles given in threes: each triangle. Polygons and outlines: the
-    closed polygon through the points.
+    closed polygon through the points. An antialiasing run's ``shape``
+    option says how its points group: in threes, one polygon, or a segment.
     """
     inputs = spec.inputs
     if inputs.integer:
@@ -62,6 +63,11 @@ def ideal_paths(spec, points, options) -> list:
             return []
         (cx, cy), angles = centres[0], np.linspace(0, 2 * np.pi, 241)
         return [(list(zip(cx + rx * np.cos(angles), cy + ry * np.sin(angles))), False)]
+    shape = options.get("shape")
+    if shape == "triangles":
+        return [(centres[k:k + 3], True) for k in range(0, len(centres) - 2, 3)]
+    if shape in ("polygon", "thick-line"):
+        return [(centres, shape == "polygon")]
     if getattr(inputs, "multiple", False):
         count = inputs.count
         return [(centres[k:k + count], True) for k in range(0, len(centres) - count + 1, count)]
