@@ -65,7 +65,7 @@ from algorithms.trace import DEFAULT_STEP_CAP, FrameState
 from . import frame_view
 from .frame_view import (compose_frame, compose_region, frame_marks, key_values, primitive_mask,
                          scene_paths, step_caption)
-from .render import PALETTE, Palette
+from .render import DARK_PALETTE, PALETTE, Palette
 from .scene import one_line
 
 MIN_FPS = 0.1
@@ -127,12 +127,8 @@ LIGHT = Theme("light", PALETTE, panel="#ffffff", caption="#f3f5f8", border="#d5d
               text="#1d2733", muted="#55606d", line_number="#8a94a1",
               current_line="#ffe8b3", current_edge="#f08c00", changed="#b35900")
 
-DARK = Theme("dark", Palette(background="#1e232a", ink="#4f9cf0", overdraw="#b4d8ff",
-                             grid="#39414c", outside="#12161b", current="#ffa23e",
-                             candidate="#3fcf74", difference="#ff5fa2", primitive="#ff6b57",
-                             handle="#1e232a", handle_edge="#e6eaef"),
-             panel="#181c21", caption="#101317", border="#2d343c", text="#e6eaef",
-             muted="#9aa4b0", line_number="#6b7683", current_line="#4a3a12",
+DARK = Theme("dark", DARK_PALETTE, panel="#181c21", caption="#101317", border="#2d343c",
+             text="#e6eaef", muted="#9aa4b0", line_number="#6b7683", current_line="#4a3a12",
              current_edge="#ffa23e", changed="#ffb15c")
 
 THEMES = {"light": LIGHT, "dark": DARK}

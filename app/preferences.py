@@ -31,7 +31,7 @@ from algorithms.registry import InputError
 from algorithms.trace import DEFAULT_STEP_CAP
 from widgets.transport import SPEED_MAX, SPEED_MIN
 
-from .render import PALETTE, Palette
+from .render import DARK_PALETTE, PALETTE, Palette
 
 SETTINGS_ENV = "RASTERLAB_SETTINGS"
 ORGANIZATION = "RasterLab"
@@ -40,13 +40,6 @@ THEMES = ("light", "dark")
 STEP_CAP_RANGE = (1_000, 50_000_000)
 MIN_GRID = 16
 
-# The dark theme's grid: light ink on a dark ground, highlights kept in the
-# same hues as the light theme so that the legend reads the same.
-DARK_PALETTE = Palette(
-    background="#1b2027", ink="#5fa8f5", overdraw="#b9dcff", grid="#38414d",
-    outside="#11151a", current="#ffa94d", candidate="#40c057", difference="#f06595",
-    primitive="#ff6b5b", handle="#1b2027", handle_edge="#e6edf3", seed="#9775fa",
-    coverage=("#1b2027", "#285a8c", "#f59f00", "#e64980"))
 BASE_PALETTES = {"light": PALETTE, "dark": DARK_PALETTE}
 # The grid colours a person can choose: Palette field -> what it colours.
 COLOR_NAMES = {

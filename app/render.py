@@ -59,6 +59,14 @@ class Palette:
 
 
 PALETTE = Palette()
+# The dark theme's grid (the window's and dark exports'): light ink on a
+# dark ground, highlights kept in the same hues as the light theme so that
+# the legend reads the same.
+DARK_PALETTE = Palette(
+    background="#1b2027", ink="#5fa8f5", overdraw="#b9dcff", grid="#38414d",
+    outside="#11151a", current="#ffa94d", candidate="#40c057", difference="#f06595",
+    primitive="#ff6b5b", handle="#1b2027", handle_edge="#e6edf3", seed="#9775fa",
+    coverage=("#1b2027", "#285a8c", "#f59f00", "#e64980"))
 
 
 @dataclass(frozen=True)
