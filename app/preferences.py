@@ -23,7 +23,7 @@ import pyqtgraph as pg
 from PySide6.QtCore import QObject, QSettings, Qt
 from PySide6.QtGui import QAction, QColor, QIcon, QKeySequence, QPalette, QPixmap
 from PySide6.QtWidgets import (QApplication, QCheckBox, QColorDialog, QComboBox, QDialog,
-                               QDialogButtonBox, QFormLayout, QGridLayout, QGroupBox, QLabel,
+                               QDialogButtonBox, QFormLayout, QGridLayout, QGroupBox,
                                QPushButton, QSpinBox, QVBoxLayout)
 
 from algorithms.raster import MAX_GRID
@@ -31,7 +31,7 @@ from algorithms.registry import InputError
 from algorithms.trace import DEFAULT_STEP_CAP
 from widgets.transport import SPEED_MAX, SPEED_MIN
 
-from .render import DARK_PALETTE, PALETTE, Palette
+from .render import DARK_PALETTE, PALETTE
 
 SETTINGS_ENV = "RASTERLAB_SETTINGS"
 ORGANIZATION = "RasterLab"
@@ -281,10 +281,7 @@ class PreferencesController(QObject):
         sheet = window.styleSheet().replace(DARK_STYLE, "")
         window.setStyleSheet(sheet + (DARK_STYLE if theme == "dark" else ""))
         palette = dataclasses.replace(BASE_PALETTES[theme], **values["colors"][theme])
-        window.palette_ = palette
-        window._empty_image = None  # composed with the old colours
-        window.grid.set_palette(palette)
-        _recolor_legend(window, palette)
+        window.set_palette(palette)
         _theme_panels(window, theme == "dark")
         self.grid_lines_action.blockSignals(True)
         self.grid_lines_action.setChecked(values["grid_lines"])
@@ -338,17 +335,6 @@ class PreferencesController(QObject):
             self.window.statusBar().showMessage(
                 f"The grid is at its maximum size of {limit} pixels a side; raise "
                 f"\"Maximum grid size\" in Edit > Preferences (up to {MAX_GRID}).", 8000)
-
-
-def _recolor_legend(window, palette: Palette) -> None:
-    """The legend's chips: current, candidate, difference, overdraw."""
-    from .window import _legend_chip
-    colors = ((palette.current, False), (palette.candidate, False),
-              (palette.difference, False), (palette.overdraw, True))
-    chips = [label for label in window.legend.findChildren(QLabel)
-             if label.pixmap() is not None and not label.pixmap().isNull()]
-    for label, (color, fill) in zip(chips, colors):
-        label.setPixmap(_legend_chip(color, fill).pixmap())
 
 
 def _theme_panels(window, dark: bool) -> None:

@@ -111,6 +111,12 @@ def _section(text: str, parent=None) -> QLabel:
 
 
 def _legend_chip(color: str, fill: bool) -> QLabel:
+    label = QLabel()
+    label.setPixmap(_chip_pixmap(color, fill))
+    return label
+
+
+def _chip_pixmap(color: str, fill: bool) -> QPixmap:
     pixmap = QPixmap(14, 14)
     pixmap.fill(Qt.GlobalColor.transparent)
     painter = QPainter(pixmap)
@@ -123,26 +129,48 @@ def _legend_chip(color: str, fill: bool) -> QLabel:
         painter.setPen(pen)
         painter.drawRect(2, 2, 10, 10)
     painter.end()
-    label = QLabel()
-    label.setPixmap(pixmap)
-    return label
+    return pixmap
 
 
 def _legend(rows) -> QWidget:
-    """Chips with their meaning: (colour, filled?, text) per row."""
+    """Chips with their meaning: (colour, filled?, text) per row;
+    ``widget.chips`` keeps (chip, filled?) to recolour them."""
     widget = QWidget()
+    widget.chips = []
     box = QVBoxLayout(widget)
     box.setSpacing(2)
     box.setContentsMargins(0, 4, 0, 0)
     for color, fill, text in rows:
         row = QHBoxLayout()
         row.setSpacing(6)
-        row.addWidget(_legend_chip(color, fill))
+        chip = _legend_chip(color, fill)
+        widget.chips.append((chip, fill))
+        row.addWidget(chip)
         label = QLabel(text)
         label.setObjectName("legend")
         row.addWidget(label, 1)
         box.addLayout(row)
     return widget
+
+
+# The highlight legend: (Palette field, filled chip?, meaning).
+LEGEND = (("current", False, "pixel or span of this step"),
+          ("candidate", False, "candidates of the decision"),
+          ("difference", False, "differs from previous algorithm"),
+          ("overdraw", True, "written more than once"))
+
+
+def _legend_rows(palette) -> list:
+    return [(getattr(palette, field), fill, text) for field, fill, text in LEGEND]
+
+
+def _coverage_rows(palette) -> list:
+    return [(color, True, text) for color, text in zip(palette.coverage, COVERAGE_LEVELS)]
+
+
+def _recolor(legend, rows) -> None:
+    for (chip, fill), (color, _fill, _text) in zip(legend.chips, rows):
+        chip.setPixmap(_chip_pixmap(color, fill))
 
 
 def _is_pixel(value) -> bool:
@@ -293,12 +321,8 @@ class MainWindow(QMainWindow):
                                  "so far (0, 1, 2, 3+): overlaps in a mesh stand out")
         for box in (self.show_primitive, self.compare, self.coverage):
             layout.addWidget(box)
-        self.legend = _legend(((PALETTE.current, False, "pixel or span of this step"),
-                               (PALETTE.candidate, False, "candidates of the decision"),
-                               (PALETTE.difference, False, "differs from previous algorithm"),
-                               (PALETTE.overdraw, True, "written more than once")))
-        self.coverage_legend = _legend(tuple((color, True, text) for color, text
-                                             in zip(PALETTE.coverage, COVERAGE_LEVELS)))
+        self.legend = _legend(_legend_rows(PALETTE))
+        self.coverage_legend = _legend(_coverage_rows(PALETTE))
         self.coverage_legend.hide()
         layout.addWidget(self.legend)
         layout.addWidget(self.coverage_legend)
@@ -621,6 +645,14 @@ class MainWindow(QMainWindow):
         self.points.set_grid(*self.player.grid)
         self.grid.set_grid(*self.player.grid)
         self._sync_points()
+
+    def set_palette(self, palette) -> None:
+        """Draw the grid, the legends and new frames in ``palette``'s colours."""
+        self.palette_ = palette
+        self._empty_image = None  # composed with the old colours
+        self.grid.set_palette(palette)
+        _recolor(self.legend, _legend_rows(palette))
+        _recolor(self.coverage_legend, _coverage_rows(palette))
 
     def set_y_down(self, y_down: bool) -> None:
         """Origin top-left with y down (True), or bottom-left with y up."""

@@ -356,6 +356,11 @@ def test_apply_takes_effect_at_once_in_the_open_window(qtbot, settings_file):
     assert window.player.trace.truncated and len(window.player.trace) == 1000
     assert '"Step cap"' in window.message.text()
     assert window.grid.palette.outside == preferences.DARK_PALETTE.outside
+    # Both legends follow the theme: the "not written" coverage chip too.
+    chip = window.coverage_legend.chips[0][0].pixmap().toImage().pixelColor(7, 7).name()
+    assert chip == preferences.DARK_PALETTE.coverage[0]
+    current = window.legend.chips[0][0].pixmap().toImage().pixelColor(2, 7).name()
+    assert current == preferences.DARK_PALETTE.current
     dialog.reject()
     # The View menu's toggle is the same preference.
     window.preferences.grid_lines_action.setChecked(False)
