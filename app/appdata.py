@@ -1,5 +1,8 @@
-"""Where RasterLab keeps its own files: the recovery copy of the scene
-being edited and the error log.
+"""Where RasterLab keeps its own files: the settings, the recovery copy of
+the scene being edited and the error log.
+
+The settings are the INI file named by ``$RASTERLAB_SETTINGS`` when that is
+set, else the per-user QSettings of RasterLab.
 
 The folder is ``$RASTERLAB_DATA_DIR`` when that is set (tests and portable
 set-ups point it at a folder of their own), else Qt's per-user application
@@ -11,8 +14,10 @@ from __future__ import annotations
 import os
 from pathlib import Path
 
-from PySide6.QtCore import QStandardPaths
+from PySide6.QtCore import QSettings, QStandardPaths
 
+APP_NAME = "RasterLab"  # the window's title, and the settings' organisation and application
+SETTINGS_ENV = "RASTERLAB_SETTINGS"
 ENV_VAR = "RASTERLAB_DATA_DIR"
 FALLBACK = Path.home() / ".rasterlab"
 
@@ -34,3 +39,11 @@ def ensure(folder: Path) -> Path:
     """Create ``folder`` (and its parents) if needed; raises OSError."""
     folder.mkdir(parents=True, exist_ok=True)
     return folder
+
+
+def open_settings() -> QSettings:
+    """The settings store: ``$RASTERLAB_SETTINGS`` (an INI file) or the user's."""
+    path = os.environ.get(SETTINGS_ENV, "").strip()
+    if path:
+        return QSettings(str(Path(path).expanduser()), QSettings.Format.IniFormat)
+    return QSettings(APP_NAME, APP_NAME)

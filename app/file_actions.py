@@ -23,6 +23,7 @@ from algorithms.registry import InputError
 from widgets.export_dialog import ExportDialog
 
 from . import export as exporting
+from .appdata import open_settings
 from . import scene as scenes
 from .scene import Scene, SceneError, one_line
 
@@ -57,8 +58,7 @@ class FileActions(QObject):
         super().__init__(window)
         self.window = window
         if settings is None:
-            from .preferences import open_settings  # honours $RASTERLAB_SETTINGS
-            settings = open_settings()
+            settings = open_settings()  # honours $RASTERLAB_SETTINGS
         self.settings = settings
         self.path: Path | None = None
         # What a scene file holds beyond what the window edits; kept from

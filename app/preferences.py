@@ -13,7 +13,6 @@ range counts as unset: its default is used, nothing raises.
 from __future__ import annotations
 
 import dataclasses
-import os
 import re
 from dataclasses import dataclass
 from pathlib import Path
@@ -31,11 +30,9 @@ from algorithms.registry import InputError
 from algorithms.trace import DEFAULT_STEP_CAP
 from widgets.transport import SPEED_MAX, SPEED_MIN
 
+from .appdata import open_settings
 from .render import DARK_PALETTE, PALETTE
 
-SETTINGS_ENV = "RASTERLAB_SETTINGS"
-ORGANIZATION = "RasterLab"
-APPLICATION = "RasterLab"
 THEMES = ("light", "dark")
 STEP_CAP_RANGE = (1_000, 50_000_000)
 MIN_GRID = 16
@@ -61,14 +58,6 @@ QWidget#transport { background: #232a33; border-top: 1px solid #38414d; }
 QLabel#legend { color: #c9d1d9; }
 QStatusBar QLabel#cursor { color: #c9d1d9; border-left: 1px solid #38414d; }
 """
-
-
-def open_settings() -> QSettings:
-    """The settings store: ``$RASTERLAB_SETTINGS`` (an INI file) or the user's."""
-    path = os.environ.get(SETTINGS_ENV, "").strip()
-    if path:
-        return QSettings(str(Path(path).expanduser()), QSettings.Format.IniFormat)
-    return QSettings(ORGANIZATION, APPLICATION)
 
 
 # ------------------------------------------------------------ parsing values

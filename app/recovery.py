@@ -28,14 +28,13 @@ from PySide6.QtWidgets import QMessageBox
 from algorithms.registry import InputError
 
 from . import scene as scenes
-from .appdata import data_dir, ensure
+from .appdata import APP_NAME, data_dir, ensure
 from .scene import Scene, SceneError, one_line
 
 AUTOSAVE_DELAY_MS = 2000
 POLL_MS = 1500
 FOLDER_NAME = "recovery"
 PREFIX = "scene-"
-APP_NAME = "RasterLab"
 
 
 def recovery_dir() -> Path:

@@ -33,6 +33,7 @@ from widgets.panels import CodePanel, VariablesPanel
 from widgets.tables import TablesPanel
 from widgets.transport import TransportBar
 
+from .appdata import APP_NAME
 from .history import EditHistory
 from .insight import PixelTally, has_insight, inside_chips, row_tones
 from .inputs import split_contours
@@ -48,7 +49,6 @@ from .frame_view import step_cells as _step_cells
 from .frame_view import html_caption as _caption
 from .frame_view import ideal_paths  # noqa: F401 (part of this module's interface)
 
-APP_NAME = "RasterLab"
 PREFERRED_ALGORITHM = "line-bresenham"
 # The demo segment: slope 5/12 has two exact ties (d = 0), where the
 # textbook Bresenham and a rounding DDA may choose differently.

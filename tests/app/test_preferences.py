@@ -15,7 +15,7 @@ from PySide6.QtWidgets import (QAbstractButton, QAbstractSpinBox, QApplication, 
 
 from algorithms.raster import MAX_GRID
 from algorithms.trace import DEFAULT_STEP_CAP
-from app import about, preferences
+from app import about, appdata, preferences
 from app.file_actions import install_file_actions
 from app.preferences import Preferences, apply_theme, default_values
 from app.report_window import install_report_action
@@ -29,7 +29,7 @@ CTRL = Qt.KeyboardModifier.ControlModifier
 def settings_file(tmp_path, monkeypatch):
     """A settings file of this test's own; the light look afterwards."""
     path = tmp_path / "settings.ini"
-    monkeypatch.setenv(preferences.SETTINGS_ENV, str(path))
+    monkeypatch.setenv(appdata.SETTINGS_ENV, str(path))
     yield path
     apply_theme("light")
 
