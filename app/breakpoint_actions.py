@@ -17,7 +17,6 @@ What the conditions and units mean is in app/breakpoints.py.
 from __future__ import annotations
 
 from PySide6.QtCore import QEvent, QObject, Qt
-from PySide6.QtGui import QAction, QKeySequence
 from PySide6.QtWidgets import QDockWidget, QInputDialog, QLineEdit
 
 from widgets.docks import panel_dock
@@ -102,18 +101,11 @@ class Breakpoints(QObject):
         left = Qt.DockWidgetArea.LeftDockWidgetArea
         window.addDockWidget(left, self.breakpoints_dock)
         window.addDockWidget(left, self.bookmarks_dock)
-        scene = getattr(window, "scene_dock", None)
-        if scene is not None:
-            window.tabifyDockWidget(scene, self.breakpoints_dock)
-            window.tabifyDockWidget(self.breakpoints_dock, self.bookmarks_dock)
-            scene.raise_()
-        else:
-            window.splitDockWidget(self.breakpoints_dock, self.bookmarks_dock,
-                                   Qt.Orientation.Vertical)
-        view = getattr(window, "menus", {}).get("view")
-        if view is not None:
-            for dock in (self.breakpoints_dock, self.bookmarks_dock):
-                view.addAction(dock.toggleViewAction())
+        window.tabifyDockWidget(window.scene_dock, self.breakpoints_dock)
+        window.tabifyDockWidget(self.breakpoints_dock, self.bookmarks_dock)
+        window.scene_dock.raise_()
+        for dock in (self.breakpoints_dock, self.bookmarks_dock):
+            window.menus["view"].addAction(dock.toggleViewAction())
 
     def _dock(self, title: str, name: str, widget) -> QDockWidget:
         dock = panel_dock(title, name, widget, self.window)
@@ -122,31 +114,17 @@ class Breakpoints(QObject):
 
     def _build_actions(self) -> None:
         window = self.window
-        menus = getattr(window, "menus", {})
-        run_menu = menus.get("run") or window.menuBar().addMenu("&Run")
+        run_menu = window.menus["run"]
         run_menu.addSeparator()
-        self.run_action = self._action(run_menu, "run-to-breakpoint", "Run to &breakpoint",
-                                       "F5", lambda: self.run_to(+1))
-        self.run_back_action = self._action(run_menu, "run-back-to-breakpoint",
-                                            "Run &back to breakpoint", "Shift+F5",
-                                            lambda: self.run_to(-1))
+        self.run_action = window._action(run_menu, "run-to-breakpoint", "Run to &breakpoint",
+                                         "F5", lambda: self.run_to(+1))
+        self.run_back_action = window._action(run_menu, "run-back-to-breakpoint",
+                                              "Run &back to breakpoint", "Shift+F5",
+                                              lambda: self.run_to(-1))
         run_menu.addSeparator()
-        self.bookmark_action = self._action(run_menu, "add-bookmark", "Book&mark this step\u2026",
-                                            "Ctrl+B", self.add_bookmark)
-
-    def _action(self, menu, key, text, shortcut, slot) -> QAction:
-        act = QAction(text, self.window)
-        act.setShortcut(QKeySequence(shortcut))
-        act.setShortcutContext(Qt.ShortcutContext.WindowShortcut)
-        plain = text.replace("&", "").rstrip("\u2026")
-        act.setToolTip(f"{plain} ({shortcut})")
-        act.triggered.connect(slot)
-        menu.addAction(act)
-        self.window.addAction(act)  # the shortcut works wherever the focus is
-        actions = getattr(self.window, "actions_", None)
-        if isinstance(actions, dict):
-            actions[key] = act
-        return act
+        self.bookmark_action = window._action(run_menu, "add-bookmark",
+                                              "Book&mark this step\u2026", "Ctrl+B",
+                                              self.add_bookmark)
 
     # -------------------------------------------------------------- state
     @property
@@ -194,14 +172,12 @@ class Breakpoints(QObject):
         """The step buttons and the Run menu name the unit they move by."""
         unit = self.unit()
         what = "" if unit == bp.FRAME else f" one {bp.UNIT_TITLES[unit]}"
-        transport = getattr(self.window, "transport", None)
-        if transport is not None:
-            transport.forward_button.setToolTip(f"Step forward{what} (Right)")
-            transport.back_button.setToolTip(f"Step back{what} (Left)")
-        actions = getattr(self.window, "actions_", {})
+        transport = self.window.transport
+        transport.forward_button.setToolTip(f"Step forward{what} (Right)")
+        transport.back_button.setToolTip(f"Step back{what} (Left)")
+        actions = self.window.actions_
         for key, text in (("forward", "Step forward"), ("back", "Step back")):
-            if key in actions:
-                actions[key].setText(text + (f" ({bp.UNIT_TITLES[unit]})" if what else ""))
+            actions[key].setText(text + (f" ({bp.UNIT_TITLES[unit]})" if what else ""))
         self._update_note()
 
     def _update_note(self) -> None:

@@ -414,7 +414,8 @@ class MainWindow(QMainWindow):
         if shortcut:
             act.setShortcut(QKeySequence(shortcut))
             keys = act.shortcut().toString(QKeySequence.SequenceFormat.NativeText)
-            act.setToolTip(f"{text.replace('&', '')} ({keys})")
+            plain = text.replace("&", "").rstrip("\u2026")
+            act.setToolTip(f"{plain} ({keys})")
         # Shortcuts work wherever the focus is in the window; editors that
         # need the key for typing (spin boxes, text fields) keep it.
         act.setShortcutContext(context)
