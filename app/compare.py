@@ -238,6 +238,7 @@ class Run:
         self.exact = None
         self.error = ""
         self._order = None
+        self._state = None  # the last FrameState replayed
         try:
             self.spec = spec_of(pane.algorithm)
             self.options = pane_options(pane, primitives)
@@ -288,16 +289,20 @@ class Run:
         return frame_view.scene_paths(self.spec, self.points, self.options)
 
     def state_at(self, i: int):
-        """The replayed FrameState at step i (None for the exact pane or a failed run)."""
+        """The replayed FrameState at step i (None for the exact pane or a failed run).
+        The last one is kept: the diff and the pane ask for the same step."""
         if self.trace is None:
             return None
-        return self.trace.state_at(min(max(int(i), 0), self.last))
+        i = min(max(int(i), 0), self.last)
+        if self._state is None or self._state.index != i:
+            self._state = self.trace.state_at(i)
+        return self._state
 
     def raster_at(self, i: int) -> Raster | None:
         if self.error:
             return None
         if self.trace is not None:
-            return self.trace.raster_at(min(max(int(i), 0), self.last))
+            return self.state_at(i).raster
         return exact_raster(self.exact)
 
     @property
