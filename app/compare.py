@@ -387,6 +387,12 @@ class Diff:
     kind: str = ""
 
     @property
+    def by_class(self) -> dict:
+        """Cell counts keyed by DIFF_CLASSES, as the legend lists them."""
+        masks = (self.only_a, self.only_b, self.both_same, self.both_different)
+        return {name: int(mask.sum()) for name, mask in zip(DIFF_CLASSES, masks)}
+
+    @property
     def counts(self) -> dict:
         return {"only A": int(self.only_a.sum()), "only B": int(self.only_b.sum()),
                 "both": int(self.both_same.sum() + self.both_different.sum()),

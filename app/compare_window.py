@@ -42,6 +42,7 @@ class CompareWindow(QMainWindow):
         self.position = 0
         self.pair = (0, 1)
         self.current_diff = None
+        self._last_shown = None  # the key of the difference "Next difference" went to
         self._errors: dict[int, str] = {}
         self._build()
         self._timer = QTimer(self)
@@ -322,7 +323,7 @@ class CompareWindow(QMainWindow):
             return None
         cells = cells[np.lexsort((cells[:, 1], cells[:, 0]))]
         keys = cells[:, 0] * (self.primitives.grid[1] + 1) + cells[:, 1]
-        last = getattr(self, "_last_shown", None)
+        last = self._last_shown
         k = 0 if last is None else int(np.searchsorted(keys, last, side="right")) % len(keys)
         x, y = (int(v) for v in cells[k])
         self._last_shown = int(keys[k])
@@ -434,10 +435,7 @@ class CompareWindow(QMainWindow):
         view.diff.set_title(f"Diff: A = {a + 1}, B = {b + 1}",
                             f"A: {run_a.title}\nB: {run_b.title}")
         counts = d.counts
-        view.legend.set_counts({"only A": counts["only A"], "only B": counts["only B"],
-                                "both, same value": counts["both"]
-                                - counts["both, different value"],
-                                "both, different value": counts["both, different value"]})
+        view.legend.set_counts(d.by_class)
         compared = (f"values compared: {d.kind}" if d.kind else
                     "the two runs write different kinds of value: only presence compared")
         view.diff.set_message(f"{counts['only A']:,} only in A \u00b7 {counts['only B']:,} only "
