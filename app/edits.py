@@ -105,10 +105,7 @@ class SceneEdits(QObject):
                 w._scene_changed()
             else:
                 w.options.set_values(player.options)
-                w.grid_editor.set_grid(*player.grid)
-                w.points.set_grid(*player.grid)
-                w.grid.set_grid(*player.grid)
-                w._sync_points()
+                w._sync_grid()
             if snapshot.y_down != w.grid.y_down:
                 w.set_y_down(snapshot.y_down)
         self.refresh()

@@ -642,6 +642,10 @@ class MainWindow(QMainWindow):
             self.player.set_grid(width, height)
         except InputError as error:
             self._say_error(str(error))
+        self._sync_grid()
+
+    def _sync_grid(self) -> None:
+        """The grid's editors and view follow the player's grid and points."""
         self.grid_editor.set_grid(*self.player.grid)
         self.points.set_grid(*self.player.grid)
         self.grid.set_grid(*self.player.grid)
