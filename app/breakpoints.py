@@ -64,7 +64,7 @@ UNITS = (FRAME, DECISION, SCANLINE, PRIMITIVE)
 UNIT_TITLES = {FRAME: "frame", DECISION: "decision", SCANLINE: "scanline",
                PRIMITIVE: "primitive"}
 
-AET_NAMES = ("aet", "active edge table")
+AET_NAME = "AET"  # the scan-line fill's active edge table (algorithms/polygons.py)
 FAIL_BRANCH = "fail"
 PRIMITIVE_KEYS = ("triangle",)
 PRIMITIVE_TABLE = "edge functions of triangle"
@@ -266,7 +266,7 @@ def _branch_changes(trace, _condition) -> np.ndarray:
 
 def _aet_records(trace) -> list:
     return sorted((index, record) for index, record in trace.records.items()
-                  if isinstance(record, Table) and record.name.lower() in AET_NAMES)
+                  if isinstance(record, Table) and record.name == AET_NAME)
 
 
 def _aet_changes(trace, _condition) -> list:
