@@ -3,7 +3,7 @@
 An aliased rasterizer asks one question per pixel: is the centre inside?
 The answer is 0 or 1, and edges come out as stairs. The algorithms here
 estimate the pixel's *coverage* instead, the fraction of its square the
-shape covers (0..1; algorithms/exact_coverage.py computes it exactly):
+shape covers (0..1; algorithms/exact/coverage.py computes it exactly):
 
 * ``aa-supersample``: many samples per pixel, averaged by a filter;
 * ``aa-adaptive``: a few samples, more only where they disagree;
@@ -78,8 +78,9 @@ from fractions import Fraction
 
 import numpy as np
 
-from . import exact_coverage, triangles
-from . import registry as registry_module
+from algorithms.exact import coverage as exact_coverage
+from algorithms import triangles
+from algorithms import registry as registry_module
 from .interpolate import unpack
 from .lines import Octant
 from .registry import AlgorithmSpec, InputError, Inputs, Option, register

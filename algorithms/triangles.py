@@ -94,12 +94,13 @@ from fractions import Fraction
 
 import numpy as np
 
-from . import exact_triangles
+from algorithms.exact import triangles as exact_triangles
 from .interpolate import (ATTRIBUTE_OPTIONS, COLORS as VERTEX_COLORS, PERSPECTIVE, S as S_OPTION,
                           W as W_OPTION, Z as Z_OPTION, VertexAttributes, affine_value,
                           barycentric_weights, check_w, mix, pack, perspective_weights,
                           plane_coefficients, unpack, per_vertex)
-from . import registry as registry_module
+from algorithms import registry as registry_module
+from .code import Code, nonzero
 from .registry import AlgorithmSpec, InputError, Inputs, Option, register
 from .steps import CALC, NO_PIXEL, PER_ROW, PLOT, VISIT, CodeLine, Note, Start, Table, Vars
 
@@ -328,20 +329,6 @@ class Edges:
 
 
 # ======================================================== pseudo-code
-class Code:
-    """Pseudo-code lines built by key, so generators can name lines by key."""
-
-    def __init__(self):
-        self.lines: list[CodeLine] = []
-        self.at: dict[str, int] = {}
-
-    def add(self, key: str, text: str, kind: str = CALC, branch: str = "", ops=None,
-            per=None) -> None:
-        self.at[key] = len(self.lines)
-        self.lines.append(CodeLine(text, kind, branch, ops=_ops(ops or {}),
-                                   per={k: _ops(v) for k, v in (per or {}).items()}))
-
-
 # ------------------------------------------------- operation counts
 # The operations each line performs (CodeLine.ops), for the report's
 # counts. Edge values are integers in fixed precision and floats otherwise,
@@ -351,20 +338,12 @@ class Code:
 # pixel it belongs to; per-row work without a frame (the row loop, the
 # pixel walks' row steps) is not counted. The three sign tests of a
 # pixel are counted in full, as hardware does them side by side.
-def _ops(counts: dict) -> dict:
-    merged = {}
-    for name, count in counts.items():
-        if count:
-            merged[name] = merged.get(name, 0) + count
-    return merged
-
-
 def _sum(*parts) -> dict:
     total = {}
     for part in parts:
         for name, count in part.items():
             total[name] = total.get(name, 0) + count
-    return _ops(total)
+    return nonzero(total)
 
 
 def _add(options) -> str:

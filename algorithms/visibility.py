@@ -43,8 +43,8 @@ from fractions import Fraction
 
 import numpy as np
 
-from . import registry as registry_module
-from . import triangles
+from algorithms import registry as registry_module
+from algorithms import triangles
 from .interpolate import mix, per_vertex, unpack
 from .registry import AlgorithmSpec, Inputs, Option, register
 from .steps import PER_ROW, PLOT, VISIT, CodeLine, Note, Start, Table, Vars

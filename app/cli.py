@@ -15,7 +15,7 @@ from algorithms.raster import MAX_GRID
 from algorithms.registry import InputError, parse_number
 from algorithms.trace import DEFAULT_STEP_CAP, TraceError
 from app.progress import TerminalBar
-from app.scene import one_line
+from app.model.scene import one_line
 
 DEFAULT_GRID = (32, 24)
 # Far beyond what memory holds, and below sys.maxsize, which the recorder's
@@ -181,7 +181,7 @@ def _missing_algorithm(points) -> str:
 
 
 def run_scene(args) -> int:
-    from app import scene as scenes
+    from app.model import scene as scenes
     if args.algorithm is not None or args.points is not None or args.set or args.grid:
         raise CommandError("--scene takes its algorithm, points, options and grid from the file")
     step_cap = parse_step_cap(args.step_cap)
@@ -272,7 +272,7 @@ def summary(spec, trace) -> str:
 
 # ------------------------------------------------------------------- export
 def add_export_command(commands) -> None:
-    """`rasterlab export SCENE.json --gif OUT.gif ...` (see app/export.py)."""
+    """`rasterlab export SCENE.json --gif OUT.gif ...` (see app/render/export.py)."""
     export = commands.add_parser(
         "export", help="export a scene's run as an animated GIF and/or PNG frames",
         description="Draw every step of a scene's run as the window shows it, with an optional "
@@ -318,8 +318,8 @@ def command_export(args) -> int:
     fps = parse_number(args.fps, "--fps")
     hold = parse_number(args.hold, "--hold")
     scale = None if args.scale is None else parse_number(args.scale, "--scale", integer=True)
-    from app import export as exporting
-    from app import scene as scenes
+    from app.render import export as exporting
+    from app.model import scene as scenes
     if not exporting.MIN_FPS <= fps <= exporting.MAX_FPS:
         raise InputError(f"--fps must be {exporting.MIN_FPS:g} .. {exporting.MAX_FPS:g}, "
                          f"got {args.fps.strip()}")
@@ -382,7 +382,7 @@ class _ProgressBar(TerminalBar):
 
 # ------------------------------------------------------------------- report
 def add_report_command(commands) -> None:
-    """`rasterlab report [--quick] [--out DIR]` (see app/report.py)."""
+    """`rasterlab report [--quick] [--out DIR]` (see app/analysis/report.py)."""
     report = commands.add_parser(
         "report", help="measure speed against error and write a report",
         description="Measure every algorithm family (operation counts, errors against the "
@@ -395,7 +395,7 @@ def add_report_command(commands) -> None:
 
 
 def command_report(args) -> int:
-    from app import report
+    from app.analysis import report
 
     bar = report.ProgressBar(sys.stderr)
     result = _with_progress(bar, lambda: report.write_report(args.out, quick=args.quick,
@@ -424,7 +424,7 @@ def main(argv: list[str] | None = None) -> int:
     try:
         args = build_parser().parse_args(_shield_negative_points(argv))
         if args.command is None:
-            from app.window import launch
+            from app.gui.window import launch
             return launch()
         return {"list": command_list, "run": command_run,
                 "export": command_export, "report": command_report}[args.command](args)

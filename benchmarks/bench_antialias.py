@@ -35,7 +35,7 @@ import numpy as np
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 
 from algorithms import antialias as aa  # noqa: E402
-from algorithms import exact_coverage as ec  # noqa: E402
+from algorithms.exact import coverage as ec  # noqa: E402
 
 
 def random_triangles(count: int, size: int, rng) -> list[list[tuple[float, float]]]:

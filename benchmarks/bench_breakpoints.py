@@ -17,7 +17,7 @@ sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 
 from algorithms.lines import bresenham, bresenham_code  # noqa: E402
 from algorithms.trace import Trace  # noqa: E402
-from app import breakpoints as bp  # noqa: E402
+from app.model import breakpoints as bp  # noqa: E402
 
 
 def timed(call):

@@ -28,8 +28,8 @@ from pathlib import Path
 os.environ.setdefault("QT_QPA_PLATFORM", "offscreen")
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 
-from app.export import ExportSettings, FrameRenderer, Run, ensure_qt, export  # noqa: E402
-from app.scene import Scene  # noqa: E402
+from app.render.export import ExportSettings, FrameRenderer, Run, ensure_qt, export  # noqa: E402
+from app.model.scene import Scene  # noqa: E402
 
 
 def best(seconds):

@@ -24,8 +24,8 @@ sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 
 from PySide6.QtWidgets import QApplication  # noqa: E402
 
-from app.render import compose  # noqa: E402
-from app.window import MainWindow  # noqa: E402
+from app.render.compose import compose  # noqa: E402
+from app.gui.window import MainWindow  # noqa: E402
 
 
 def percentile(values, fraction):

@@ -56,10 +56,10 @@ def overhead(steps: int, repeats: int) -> None:
 
 
 def latency() -> None:
-    from app.recording import GapMeter
+    from app.gui.recording import GapMeter
     from PySide6.QtWidgets import QApplication
     app = QApplication.instance() or QApplication([])
-    from app.window import MainWindow
+    from app.gui.window import MainWindow
     window = MainWindow("flood-fill", [[(0, 0), (6, 0), (6, 6), (0, 6)]], grid=(1030, 1030))
     window.show()  # the player keeps the program's own wait (app.player.SYNC_WAIT)
     for _ in range(20):
@@ -99,8 +99,8 @@ def main() -> None:
                         help="switch interval while a worker records (seconds)")
     args = parser.parse_args()
     if args.switch is not None:
-        import app.recording
-        app.recording.SWITCH_INTERVAL = args.switch
+        import app.gui.recording
+        app.gui.recording.SWITCH_INTERVAL = args.switch
     overhead(args.steps, args.repeats)
     latency()
 

@@ -39,7 +39,8 @@ import numpy as np
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 
-from algorithms import exact_triangles, triangles  # noqa: E402
+from algorithms.exact import triangles as exact_triangles
+from algorithms import triangles  # noqa: E402
 
 SIZE = 1024
 

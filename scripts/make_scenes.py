@@ -16,7 +16,7 @@ ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 
 from algorithms import visibility  # noqa: E402
-from app.scene import Scene, save  # noqa: E402
+from app.model.scene import Scene, save  # noqa: E402
 
 
 def star(cx, cy, outer, inner, points=5):

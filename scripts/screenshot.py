@@ -38,7 +38,7 @@ sys.path.insert(0, str(ROOT))
 from PySide6.QtWidgets import QApplication  # noqa: E402
 
 from algorithms.steps import Span  # noqa: E402
-from app.window import DEMO_POINTS, MainWindow  # noqa: E402
+from app.gui.window import DEMO_POINTS, MainWindow  # noqa: E402
 
 RESOURCES = ROOT / "resources"
 

@@ -19,7 +19,7 @@ _SETTINGS_DIR = tempfile.mkdtemp(prefix="rasterlab-test-settings-")
 atexit.register(shutil.rmtree, _SETTINGS_DIR, ignore_errors=True)
 os.environ["XDG_CONFIG_HOME"] = _SETTINGS_DIR
 os.environ.pop("RASTERLAB_SETTINGS", None)
-# Recovery copies and the error log (app/appdata.py) go there too; tests
+# Recovery copies and the error log (app/gui/appdata.py) go there too; tests
 # that look at them point RASTERLAB_DATA_DIR at a folder of their own.
 os.environ["RASTERLAB_DATA_DIR"] = os.path.join(_SETTINGS_DIR, "data")
 from PySide6.QtCore import QSettings  # noqa: E402 (after the environment is set)

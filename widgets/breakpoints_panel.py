@@ -3,7 +3,7 @@
 ``BreakpointsPanel`` holds the step unit, the breakpoint conditions (with
 the pixel of "pixel reached") and the run buttons; ``BookmarksPanel`` lists
 named frames. Both emit requests and show what they are told; what a
-condition means is worked out elsewhere (app/breakpoints.py).
+condition means is worked out elsewhere (app/model/breakpoints.py).
 """
 from __future__ import annotations
 

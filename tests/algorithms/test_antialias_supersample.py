@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 
 from algorithms import antialias as aa
-from algorithms import exact_coverage as ec
+from algorithms.exact import coverage as ec
 from algorithms import trace as trace_module
 from algorithms import triangles
 from algorithms.registry import get

@@ -1,6 +1,6 @@
 """Circles by symmetry and the midpoint circle, against the exact oracles.
 
-The oracles (algorithms/exact_circles.py) are written from the definitions
+The oracles (algorithms/exact/circles.py) are written from the definitions
 with integer square roots; see that module for the derivation of the
 midpoint circle's per-column rule.
 """
@@ -9,7 +9,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from algorithms import exact_circles as exact
+from algorithms.exact import circles as exact
 from algorithms import trace as trace_module
 from algorithms.circles import mirrors8
 from algorithms.registry import InputError, get

@@ -16,7 +16,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from algorithms import exact_circles as exact
+from algorithms.exact import circles as exact
 from algorithms import trace as trace_module
 from algorithms.registry import InputError, get
 

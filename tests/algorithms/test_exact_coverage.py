@@ -10,7 +10,7 @@ import pytest
 from shapely.geometry import LineString, Point, Polygon, box
 from shapely.ops import polygonize, unary_union
 
-from algorithms import exact_coverage as ec
+from algorithms.exact import coverage as ec
 
 GRID = (24, 20)
 

@@ -7,7 +7,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 from skimage.segmentation import flood
 
-from algorithms import exact_circles
+from algorithms.exact import circles as exact_circles
 from algorithms.fill import outline_pixels
 from algorithms.registry import InputError, get
 

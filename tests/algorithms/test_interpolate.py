@@ -12,7 +12,7 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from algorithms import exact_triangles as X
+from algorithms.exact import triangles as X
 from algorithms import interpolate as I
 from algorithms.registry import InputError
 from test_triangles_cases import run_frames, spec, subgrid_triangle

@@ -11,7 +11,7 @@ import itertools
 import pytest
 from hypothesis import given, settings
 
-from algorithms import exact
+from algorithms.exact import lines as exact
 from linecases import NAMED_CASES, pixels_of, segments, trace_of
 
 TEXTBOOK = {}

@@ -4,7 +4,7 @@ from fractions import Fraction
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from algorithms import exact
+from algorithms.exact import lines as exact
 from linecases import points, segments
 
 

@@ -19,7 +19,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from algorithms import exact
+from algorithms.exact import lines as exact
 from linecases import NAMED_CASES, pixels_of, segments, trace_of
 
 

@@ -5,7 +5,7 @@ from fractions import Fraction
 import pytest
 from hypothesis import given, settings
 
-from algorithms import exact
+from algorithms.exact import lines as exact
 from algorithms.steps import PLOT, VISIT
 from linecases import NAMED_CASES, segments, trace_of
 

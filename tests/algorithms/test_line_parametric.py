@@ -12,7 +12,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from algorithms import exact
+from algorithms.exact import lines as exact
 from algorithms.registry import InputError, get
 from linecases import NAMED_CASES, segments, trace_of
 

@@ -20,7 +20,7 @@ import pytest
 from hypothesis import given, settings
 from skimage.draw import line
 
-from algorithms import exact
+from algorithms.exact import lines as exact
 from linecases import NAMED_CASES, pixels_of, segments
 
 

@@ -6,7 +6,9 @@ from fractions import Fraction
 import numpy as np
 import pytest
 
-from algorithms import exact, exact_triangles, measure, registry
+from algorithms.exact import lines as exact, triangles as exact_triangles
+from app.analysis import measure
+from algorithms import registry
 from algorithms.steps import OP_NAMES, CodeLine
 
 

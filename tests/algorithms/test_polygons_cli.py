@@ -1,7 +1,7 @@
 """The polygon algorithms through the command line: contours, options, refusals."""
 import json
 
-from algorithms import exact_polygons as oracle
+from algorithms.exact import polygons as oracle
 from app.cli import main
 
 SQUARE_WITH_HOLE = ["--points", "1,1", "15,1", "15,15", "1,15",

@@ -5,7 +5,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from algorithms import exact_polygons as oracle
+from algorithms.exact import polygons as oracle
 from algorithms.polygons import CONVEX, SCANLINE, TESSELLATE, snap_contours
 from algorithms.registry import InputError
 from algorithms.steps import PLOT, Note, Span, Table

@@ -12,7 +12,7 @@ from collections import Counter
 from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 
-from algorithms import exact_polygons as oracle
+from algorithms.exact import polygons as oracle
 from algorithms.polygons import CONVEX, SCANLINE, TESSELLATE, convexity_problem, snap_contours
 from test_polygons_cases import generator_pixels, kernel_pixels, star_shaped
 

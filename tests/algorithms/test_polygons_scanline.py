@@ -1,6 +1,6 @@
 """polygon-scanline against the exact oracle, its fast kernel and its own frames.
 
-The oracle (algorithms/exact_polygons.py) decides every pixel centre of the
+The oracle (algorithms/exact/polygons.py) decides every pixel centre of the
 bounding box on its own, with integer orientation tests and half-open
 rules; it shares no code with algorithms/polygons.py.
 """
@@ -11,7 +11,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from algorithms import exact_polygons as oracle
+from algorithms.exact import polygons as oracle
 from algorithms.polygons import SCANLINE, scanline_mask, scanline_pixels
 from algorithms.registry import InputError
 from algorithms.steps import PLOT, Span, Start, Table

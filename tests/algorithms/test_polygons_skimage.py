@@ -28,7 +28,7 @@ import numpy as np
 from hypothesis import given, settings
 from skimage.draw import polygon, polygon2mask
 
-from algorithms import exact_polygons as oracle
+from algorithms.exact import polygons as oracle
 from algorithms.polygons import SCANLINE
 from test_polygons_cases import contour, kernel_pixels, star_shaped
 

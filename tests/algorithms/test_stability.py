@@ -36,7 +36,9 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from algorithms import exact, exact_circles, exact_polygons, exact_triangles, registry
+from algorithms.exact import (lines as exact, circles as exact_circles,
+                              polygons as exact_polygons, triangles as exact_triangles)
+from algorithms import registry
 from algorithms.errors import InputError
 from algorithms.fill import NEIGHBOURS, outline_pixels
 

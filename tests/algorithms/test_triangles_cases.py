@@ -6,7 +6,8 @@ from math import gcd
 
 from hypothesis import strategies as st
 
-from algorithms import exact_triangles, registry
+from algorithms.exact import triangles as exact_triangles
+from algorithms import registry
 from algorithms.steps import PLOT, VISIT
 
 SUB = 256  # 8 sub-pixel bits, the default

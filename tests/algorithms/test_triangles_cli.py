@@ -3,7 +3,7 @@ import json
 
 import pytest
 
-from algorithms import exact_triangles
+from algorithms.exact import triangles as exact_triangles
 from app.cli import main
 
 POINTS = ["1.5,2", "20,3.25", "8,17"]

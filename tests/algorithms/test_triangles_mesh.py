@@ -14,7 +14,8 @@ import pytest
 from hypothesis import HealthCheck, assume, given, settings
 from hypothesis import strategies as st
 
-from algorithms import exact_triangles, triangles
+from algorithms.exact import triangles as exact_triangles
+from algorithms import triangles
 from test_triangles_cases import SUB, as_window, oracle, spec, sub
 
 SETTINGS = dict(deadline=None, suppress_health_check=[HealthCheck.too_slow, HealthCheck.filter_too_much])

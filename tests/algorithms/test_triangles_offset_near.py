@@ -4,7 +4,8 @@ from fractions import Fraction
 
 import pytest
 
-from algorithms import exact_triangles, registry
+from algorithms.exact import triangles as exact_triangles
+from algorithms import registry
 from algorithms.registry import InputError
 from algorithms.triangles import MAX_OFFSET
 

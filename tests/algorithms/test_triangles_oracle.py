@@ -1,6 +1,6 @@
 """Every triangle traversal against the exact rational oracle, for every fill rule.
 
-The oracle (algorithms/exact_triangles.py) decides coverage from the
+The oracle (algorithms/exact/triangles.py) decides coverage from the
 definition with Fractions: closed triangle, open triangle, or the centre
 nudged right and a hair up (top-left). Traversals, their fast kernels and
 the oracle must agree pixel for pixel, whatever the winding.

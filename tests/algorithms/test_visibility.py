@@ -7,7 +7,7 @@ from fractions import Fraction
 import numpy as np
 import pytest
 
-from algorithms import exact_triangles
+from algorithms.exact import triangles as exact_triangles
 from algorithms import trace as trace_module
 from algorithms import visibility as vis
 from algorithms.registry import get

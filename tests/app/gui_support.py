@@ -15,7 +15,7 @@ def settle(qtbot, window):
 def shown_window(qtbot, *args, settled: bool = False, **kwargs):
     """A MainWindow(*args, **kwargs) on screen, closed after the test; with
     ``settled`` its grid view has taken its final place too."""
-    from app.window import MainWindow
+    from app.gui.window import MainWindow
     window = MainWindow(*args, **kwargs)
     qtbot.addWidget(window)
     window.show()

@@ -14,11 +14,11 @@ sys.path.insert(0, str(Path(__file__).resolve().parents[2]))
 from PySide6.QtCore import QSettings  # noqa: E402
 from PySide6.QtWidgets import QApplication  # noqa: E402
 
-from app.appdata import data_dir  # noqa: E402
-from app.crash import install_crash_handler  # noqa: E402
-from app.file_actions import install_file_actions  # noqa: E402
-from app.recovery import install_recovery  # noqa: E402
-from app.window import APP_NAME, MainWindow  # noqa: E402
+from app.gui.appdata import data_dir  # noqa: E402
+from app.gui.crash import install_crash_handler  # noqa: E402
+from app.gui.file_actions import install_file_actions  # noqa: E402
+from app.gui.recovery import install_recovery  # noqa: E402
+from app.gui.window import APP_NAME, MainWindow  # noqa: E402
 
 
 def main() -> None:

@@ -9,7 +9,7 @@ import pytest
 
 from algorithms import registry
 from algorithms.steps import Span, Table, Vars
-from app import breakpoints as bp
+from app.model import breakpoints as bp
 
 BRESENHAM = [((4, 5), (28, 15)), ((20, 2), (5, 22)), ((30, 20), (1, 9)), ((2, 3), (20, 3)),
              ((6, 1), (9, 22))]
@@ -308,7 +308,7 @@ def test_bad_conditions_are_refused_clearly():
 def test_the_logic_needs_no_qt():
     import subprocess
     import sys
-    code = ("import sys, app.breakpoints; "
+    code = ("import sys, app.model.breakpoints; "
             "sys.exit(any(m.split('.')[0] in ('PySide6', 'pyqtgraph') for m in sys.modules))")
     root = __file__.rsplit("/tests/", 1)[0]
     assert subprocess.run([sys.executable, "-c", code], cwd=root).returncode == 0

@@ -4,9 +4,9 @@ from PySide6.QtCore import QSettings, Qt
 from PySide6.QtTest import QTest
 from PySide6.QtWidgets import QApplication, QInputDialog
 
-from app import scene as scenes
-from app.file_actions import install_file_actions
-from app.recovery import install_recovery
+from app.model import scene as scenes
+from app.gui.file_actions import install_file_actions
+from app.gui.recovery import install_recovery
 
 from gui_support import settle, shown_window
 from test_breakpoints import (POLYGON, ZBUFFER, depth_fail_events, first_after,

@@ -133,7 +133,8 @@ def test_entry_point_in_a_subprocess():
 
 
 def test_ctrl_c_during_a_report_or_export_ends_with_130_and_one_line(capsys, monkeypatch, tmp_path):
-    from app import export, report
+    from app.render import export
+    from app.analysis import report
 
     def interrupted(*_args, **_kwargs):
         raise KeyboardInterrupt

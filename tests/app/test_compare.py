@@ -6,9 +6,9 @@ from PySide6.QtCore import QPoint, QPointF, Qt
 from PySide6.QtGui import QWheelEvent
 from PySide6.QtWidgets import QApplication
 
-from app import compare
-from app.compare_window import WINDOW_KEY
-from app.window import DEMO_POINTS
+from app.model import compare
+from app.gui.compare_window import WINDOW_KEY
+from app.gui.window import DEMO_POINTS
 from gui_support import shown_window
 from compare_oracles import (FLOAT32_BITS, FLOAT64_BITS, bresenham_pixels, dda_pixels,
                              diff_counts)

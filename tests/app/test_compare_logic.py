@@ -1,14 +1,15 @@
-"""Compare mode's logic (app/compare.py), held to independent oracles."""
+"""Compare mode's logic (app/model/compare.py), held to independent oracles."""
 from fractions import Fraction
 
 import numpy as np
 import pytest
 
-from algorithms import exact_triangles
+from algorithms.exact import triangles as exact_triangles
 from algorithms.errors import InputError
 from algorithms.raster import Raster
-from app import compare, render
-from app.compare import EXACT, FRAME, PROGRESS, Pane, Primitives
+from app.model import compare
+from app.render import compose as render
+from app.model.compare import EXACT, FRAME, PROGRESS, Pane, Primitives
 from compare_oracles import (FLOAT32_BITS, FLOAT64_BITS, bresenham_pixels, dda_pixels,
                              diff_counts, round_to_float)
 
@@ -237,7 +238,7 @@ def test_window_panes_compare_with_the_previous_algorithm():
 def test_the_logic_needs_no_qt():
     import subprocess
     import sys
-    code = ("import sys; import app.compare as c; c.run_panes(c.PRESETS[0].panes, "
+    code = ("import sys; import app.model.compare as c; c.run_panes(c.PRESETS[0].panes, "
             "c.PRESETS[0].primitives()); print(any(m.startswith(('PySide6', 'pyqtgraph')) "
             "for m in sys.modules))")
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,

@@ -17,10 +17,10 @@ from PIL import Image
 
 from algorithms import registry
 from app import cli
-from app import export as ex
-from app.frame_view import FrameMarks, compose_frame, frame_marks, primitive_mask
-from app.render import PALETTE, Overlay, compose
-from app.scene import Scene, load, save
+from app.render import export as ex
+from app.render.frame import FrameMarks, compose_frame, frame_marks, primitive_mask
+from app.render.compose import PALETTE, Overlay, compose
+from app.model.scene import Scene, load, save
 
 ROOT = Path(__file__).resolve().parents[2]
 P, Q = (1, 1), (12, 6)

@@ -11,8 +11,8 @@ from PIL import Image
 
 from algorithms import registry
 from algorithms.antialias import animation_frame_steps
-from app import export as exporting
-from app.scene import Scene, save
+from app.render import export as exporting
+from app.model.scene import Scene, save
 
 ROOT = Path(__file__).resolve().parents[2]
 # Export paints text with Qt: the test session's QApplication must exist
@@ -131,7 +131,7 @@ def test_a_pixel_left_by_the_moving_triangle_shows_white_not_overdraw():
     """Writing a pixel again in a later animation frame replaces it: a cell
     the triangle has left is drawn white (coverage 0 blended over white),
     a covered one in full ink, never darkened as overdraw."""
-    from app.render import compose
+    from app.render.compose import compose
     spec, trace = registry.get("aa-temporal"), moving_trace()
     last = animation_frame_steps(spec, trace)[-1]
     image = compose(trace.raster_at(last), scale=1)  # row 0 is y = 0

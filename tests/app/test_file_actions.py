@@ -9,11 +9,11 @@ from PIL import Image
 from PySide6.QtCore import QSettings, Qt
 from PySide6.QtWidgets import QApplication, QFileDialog, QMessageBox
 
-from app import export as ex
-from app import file_actions as fa
-from app import scene as scenes
-from app.file_actions import install_file_actions
-from app.window import MainWindow
+from app.render import export as ex
+from app.gui import file_actions as fa
+from app.model import scene as scenes
+from app.gui.file_actions import install_file_actions
+from app.gui.window import MainWindow
 
 SHIPPED = sorted((Path(__file__).resolve().parents[2] / "resources" / "scenes").glob("*.json"))
 

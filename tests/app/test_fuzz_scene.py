@@ -21,8 +21,8 @@ from hypothesis import strategies as st
 
 from algorithms import registry
 from app import cli
-from app import scene as scenes
-from app.scene import Scene, SceneError
+from app.model import scene as scenes
+from app.model.scene import Scene, SceneError
 
 SPECS = registry.all_specs()
 SIZE = 40  # valid scenes use grids up to SIZE x SIZE

@@ -11,10 +11,10 @@ from PySide6.QtTest import QTest
 from PySide6.QtWidgets import QMessageBox
 
 from app import cli
-from app import gallery as gal
-from app import scene as scenes
-from app.file_actions import install_file_actions
-from app.window import MainWindow
+from app.gui import gallery as gal
+from app.model import scene as scenes
+from app.gui.file_actions import install_file_actions
+from app.gui.window import MainWindow
 
 ROOT = Path(__file__).resolve().parents[2]
 SHIPPED = sorted((ROOT / "resources" / "scenes").glob("*.json"))

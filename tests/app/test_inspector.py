@@ -10,7 +10,7 @@ from shapely.geometry import Polygon, box
 
 from algorithms import registry
 from algorithms.steps import PLOT, VISIT, Span, Vars
-from app.inspector import PixelInspector, inspect, rows_by_label
+from app.model.inspector import PixelInspector, inspect, rows_by_label
 
 from tests.app.gui_support import shown_window
 

@@ -10,11 +10,11 @@ from pathlib import Path
 import pytest
 from PySide6.QtCore import QSettings
 
-from app import recovery as recovery_module
-from app import scene as scenes
-from app.file_actions import install_file_actions
-from app.recovery import content, install_recovery, pending_recoveries
-from app.window import MainWindow
+from app.gui import recovery as recovery_module
+from app.model import scene as scenes
+from app.gui.file_actions import install_file_actions
+from app.gui.recovery import content, install_recovery, pending_recoveries
+from app.gui.window import MainWindow
 
 CHILD = Path(__file__).with_name("recovery_child.py")
 START_TIMEOUT = 60  # seconds; the child imports Qt and numpy on a busy machine

@@ -14,10 +14,10 @@ from PySide6.QtTest import QTest
 from PySide6.QtWidgets import QApplication, QInputDialog, QMessageBox
 
 from algorithms import registry
-from app import scene as scenes
-from app.file_actions import install_file_actions
-from app.recovery import content, install_recovery
-from app.window import MainWindow
+from app.model import scene as scenes
+from app.gui.file_actions import install_file_actions
+from app.gui.recovery import content, install_recovery
+from app.gui.window import MainWindow
 from gui_support import settle
 
 # A longer hunt: RASTERLAB_MONKEY_SEEDS=4,5,6,7 RASTERLAB_MONKEY_ACTIONS=40

@@ -2,8 +2,8 @@
 import pytest
 
 from algorithms import registry
-from app import scene as scenes
-from app.window import MainWindow
+from app.model import scene as scenes
+from app.gui.window import MainWindow
 
 
 @pytest.fixture

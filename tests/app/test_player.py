@@ -4,7 +4,7 @@ import pytest
 
 from algorithms import registry
 from algorithms.registry import InputError
-from app.player import Player
+from app.gui.player import Player
 
 P, Q = (4, 5), (28, 15)
 

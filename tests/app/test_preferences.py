@@ -15,11 +15,11 @@ from PySide6.QtWidgets import (QAbstractButton, QAbstractSpinBox, QApplication, 
 
 from algorithms.raster import MAX_GRID
 from algorithms.trace import DEFAULT_STEP_CAP
-from app import about, appdata, preferences
-from app.file_actions import install_file_actions
-from app.preferences import Preferences, apply_theme, default_values
-from app.report_window import install_report_action
-from app.window import GESTURES, MainWindow, ShortcutsDialog
+from app.gui import about, appdata, preferences
+from app.gui.file_actions import install_file_actions
+from app.gui.preferences import Preferences, apply_theme, default_values
+from app.gui.report_window import install_report_action
+from app.gui.window import GESTURES, MainWindow, ShortcutsDialog
 
 ROOT = Path(__file__).resolve().parents[2]
 CTRL = Qt.KeyboardModifier.ControlModifier
@@ -225,9 +225,9 @@ def test_the_issue_shortcuts_work(qtbot, settings_file, monkeypatch):
     window = open_window(qtbot)
     player = window.player
     calls = []
-    monkeypatch.setattr("app.file_actions.QFileDialog.getOpenFileName",
+    monkeypatch.setattr("app.gui.file_actions.QFileDialog.getOpenFileName",
                         lambda *a, **k: calls.append("open") or ("", ""))
-    monkeypatch.setattr("app.file_actions.QFileDialog.getSaveFileName",
+    monkeypatch.setattr("app.gui.file_actions.QFileDialog.getSaveFileName",
                         lambda *a, **k: calls.append("save") or ("", ""))
     focus_grid(qtbot, window)
     press(window, Qt.Key.Key_O, CTRL)
@@ -271,7 +271,7 @@ def test_preferences_shortcut_opens_the_dialog(qtbot, settings_file):
 def test_about_names_the_version_and_the_runtime(qtbot, settings_file, monkeypatch):
     window = open_window(qtbot)
     shown = []
-    monkeypatch.setattr("app.window.QMessageBox.about", lambda parent, title, text:
+    monkeypatch.setattr("app.gui.window.QMessageBox.about", lambda parent, title, text:
                         shown.append(text))
     window.show_about()
     text = shown[0]

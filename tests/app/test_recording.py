@@ -13,9 +13,9 @@ from PySide6.QtCore import Qt
 from PySide6.QtTest import QTest
 
 from algorithms import registry
-from app.player import CANCELLED_MESSAGE, Player
-from app.recording import GapMeter, seek_when_recorded
-from app.window import MainWindow
+from app.gui.player import CANCELLED_MESSAGE, Player
+from app.gui.recording import GapMeter, seek_when_recorded
+from app.gui.window import MainWindow
 from gui_support import shown_window
 
 # A square outline whose inside is a 1024 x 1024 region of free pixels.

@@ -6,12 +6,12 @@ import pytest
 from PySide6.QtCore import QSettings
 from PySide6.QtWidgets import QFileDialog, QMessageBox
 
-from app import recovery as recovery_module
-from app import scene as scenes
-from app.crash import CrashHandler, install_crash_handler
-from app.file_actions import install_file_actions
-from app.recovery import PREFIX, content, install_recovery, pending_recoveries
-from app.window import DEMO_POINTS, MainWindow
+from app.gui import recovery as recovery_module
+from app.model import scene as scenes
+from app.gui.crash import CrashHandler, install_crash_handler
+from app.gui.file_actions import install_file_actions
+from app.gui.recovery import PREFIX, content, install_recovery, pending_recoveries
+from app.gui.window import DEMO_POINTS, MainWindow
 
 BUTTONS = QMessageBox.StandardButton
 RESTORE, DISCARD, LATER = recovery_module.RESTORE, recovery_module.DISCARD, \
@@ -325,7 +325,7 @@ def test_without_a_window_one_line_on_stderr(tmp_path, capsys):
 
 def test_help_menu_opens_the_log_folder(window, handler, monkeypatch, data):
     opened = []
-    monkeypatch.setattr("app.crash.QDesktopServices.openUrl",
+    monkeypatch.setattr("app.gui.crash.QDesktopServices.openUrl",
                         lambda url: opened.append(url.toLocalFile()) or True)
     act = next(a for a in window.menus["help"].actions() if "log folder" in a.text())
     assert act.toolTip()

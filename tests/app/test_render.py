@@ -3,7 +3,7 @@ import numpy as np
 import pytest
 
 from algorithms.raster import Raster
-from app.render import PALETTE, Overlay, compose, differences, packed_rgba, top_down
+from app.render.compose import PALETTE, Overlay, compose, differences, packed_rgba, top_down
 
 
 def rgba(color, alpha=255):

@@ -4,8 +4,8 @@ import numpy as np
 
 from algorithms.raster import Raster
 from algorithms.steps import PLOT, VISIT
-from app.insight import row_tones, inside_chips
-from app.render import PALETTE, Overlay, compose, coverage_counts
+from app.model.insight import row_tones, inside_chips
+from app.render.compose import PALETTE, Overlay, compose, coverage_counts
 
 
 def rgba(color):

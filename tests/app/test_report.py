@@ -9,7 +9,7 @@ from collections import defaultdict
 import pytest
 from PIL import Image
 
-from algorithms import measure
+from app.analysis import measure
 from app.cli import main
 
 PICTURES = ("lines", "circles", "polygons", "fill", "triangles", "interpolation")
@@ -211,7 +211,7 @@ def test_a_bad_out_folder_exits_2_with_one_line(tmp_path, capsys, make, words):
 
 
 def test_an_unwritable_folder_is_refused_before_measuring(tmp_path, monkeypatch):
-    from app import report as reporting
+    from app.analysis import report as reporting
 
     def refuse(*args, **kwargs):
         raise PermissionError(13, "Permission denied")

@@ -1,8 +1,8 @@
 """Run > Report in the window: measuring in a thread, cancel, plots, saving."""
 import math
 
-from app import report_window
-from app.report_window import PARAMETER, ReportDialog, series
+from app.gui import report_window
+from app.gui.report_window import PARAMETER, ReportDialog, series
 
 
 def row(variant, parameter_value, metric, value, family="lines", experiment="sweep"):

@@ -4,9 +4,9 @@ import os
 
 import pytest
 
-from app import scene as scenes
+from app.model import scene as scenes
 from app.cli import main
-from app.scene import Scene, SceneError
+from app.model.scene import Scene, SceneError
 
 
 def good() -> dict:

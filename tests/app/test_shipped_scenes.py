@@ -4,10 +4,11 @@ from fractions import Fraction
 import numpy as np
 import pytest
 
-from algorithms import exact_coverage, exact_triangles, registry
+from algorithms.exact import coverage as exact_coverage, triangles as exact_triangles
+from algorithms import registry
 from algorithms.registry import InputError
-from app import scene as scenes
-from app.scene import RESOURCES
+from app.model import scene as scenes
+from app.model.scene import RESOURCES
 
 
 def load(name):

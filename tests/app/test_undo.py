@@ -8,9 +8,9 @@ from PySide6.QtTest import QTest
 from PySide6.QtWidgets import QApplication
 
 from algorithms import registry
-from app.file_actions import install_file_actions
-from app.history import MERGE_SECONDS
-from app.window import MainWindow
+from app.gui.file_actions import install_file_actions
+from app.model.history import MERGE_SECONDS
+from app.gui.window import MainWindow
 from gui_support import drag, settle
 
 LEFT = Qt.MouseButton.LeftButton
@@ -311,7 +311,7 @@ def test_ctrl_z_in_a_spin_box_stays_in_the_box(make, qtbot):
 
 
 def test_history_merges_by_key_within_its_time():
-    from app.history import EditHistory, Snapshot
+    from app.model.history import EditHistory, Snapshot
 
     def scene(x):
         return Snapshot.of("line-dda", [(x, 0), (5, 5)], (), {}, (32, 24), False)

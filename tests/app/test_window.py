@@ -8,7 +8,7 @@ from PySide6.QtWidgets import QApplication
 from algorithms import registry
 from algorithms.registry import format_value
 from gui_support import shown_window
-from app.window import DEMO_POINTS, MainWindow
+from app.gui.window import DEMO_POINTS, MainWindow
 
 LEFT = Qt.MouseButton.LeftButton
 NONE = Qt.KeyboardModifier.NoModifier
@@ -263,7 +263,7 @@ def test_grid_size_changes(window):
 
 
 def test_dialogs_open(window, qtbot):
-    from app.window import ShortcutsDialog
+    from app.gui.window import ShortcutsDialog
     dialog = ShortcutsDialog(window)
     qtbot.addWidget(dialog)
     assert dialog.findChild(type(window.variables.table)).rowCount() > 5

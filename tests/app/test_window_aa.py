@@ -7,9 +7,9 @@ import numpy as np
 import pytest
 from PySide6.QtCore import Qt
 
-from algorithms import exact_coverage
-from app import frame_view
-from app.render import depth_image, error_image, error_stats, final_coverage
+from algorithms.exact import coverage as exact_coverage
+from app.render import frame as frame_view
+from app.render.compose import depth_image, error_image, error_stats, final_coverage
 
 from gui_support import shown_window
 

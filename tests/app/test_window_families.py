@@ -9,10 +9,10 @@ from PySide6.QtTest import QTest
 from algorithms import registry
 from algorithms.registry import format_value
 from algorithms.steps import Table
-from app.render import PALETTE, coverage_counts
-from app.tables import cell_text
+from app.render.compose import PALETTE, coverage_counts
+from app.model.tables import cell_text
 from gui_support import drag, settle
-from app.window import MainWindow
+from app.gui.window import MainWindow
 
 LEFT = Qt.MouseButton.LeftButton
 NONE = Qt.KeyboardModifier.NoModifier

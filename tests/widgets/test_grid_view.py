@@ -4,7 +4,7 @@ import pytest
 from PySide6.QtCore import Qt
 from PySide6.QtTest import QTest
 
-from app.render import OUTLINE_STYLE, PALETTE
+from app.render.compose import OUTLINE_STYLE, PALETTE
 from widgets.grid_view import MIN_CELL_PX, PixelGridView, visible_grid_lines
 
 LEFT = Qt.MouseButton.LeftButton

@@ -4,7 +4,7 @@ from fractions import Fraction
 from PySide6.QtCore import Qt
 
 from algorithms.steps import Table
-from app.tables import TableIndex, cell_text, changes
+from app.model.tables import TableIndex, cell_text, changes
 from widgets.tables import CHANGED_ROW, ShownTable, TablesPanel
 
 

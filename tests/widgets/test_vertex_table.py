@@ -8,7 +8,7 @@ from PySide6.QtGui import QColor
 from PySide6.QtTest import QTest
 from PySide6.QtWidgets import QApplication, QColorDialog
 
-from app.window import MainWindow
+from app.gui.window import MainWindow
 from widgets.vertex_table import VertexTable
 
 LEFT = Qt.MouseButton.LeftButton

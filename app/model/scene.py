@@ -23,7 +23,7 @@ VERSION = 1
 ORIGINS = ("bottom-left", "top-left")
 MAX_FILE_BYTES = 8 * 2 ** 20
 MAX_POINTS = 100_000
-RESOURCES = Path(__file__).resolve().parents[1] / "resources"
+RESOURCES = Path(__file__).resolve().parents[2] / "resources"
 SHIPPED = RESOURCES / "scenes"
 MAX_MESSAGE = 300  # characters; a message quoting a huge value is cut here
 # Whole numbers in a scene file have at most this many digits: every field

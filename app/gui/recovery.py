@@ -27,9 +27,9 @@ from PySide6.QtWidgets import QMessageBox
 
 from algorithms.registry import InputError
 
-from . import scene as scenes
-from .appdata import APP_NAME, data_dir, ensure
-from .scene import Scene, SceneError, one_line
+from app.model import scene as scenes
+from app.gui.appdata import APP_NAME, data_dir, ensure
+from app.model.scene import Scene, SceneError, one_line
 
 AUTOSAVE_DELAY_MS = 2000
 POLL_MS = 1500

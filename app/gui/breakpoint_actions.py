@@ -9,10 +9,10 @@
   which condition stopped it, or that there is no further stop.
 * Bookmarks: named frames of the scene. Add at the step on show (Ctrl+B),
   rename in place, delete, double-click to go there. They are the scene's
-  ``bookmarks`` (saved and loaded with it by app/file_actions.py, used as
+  ``bookmarks`` (saved and loaded with it by app/gui/file_actions.py, used as
   export range ends); without file actions they are kept on the window.
 
-What the conditions and units mean is in app/breakpoints.py.
+What the conditions and units mean is in app/model/breakpoints.py.
 """
 from __future__ import annotations
 
@@ -22,7 +22,7 @@ from PySide6.QtWidgets import QDockWidget, QInputDialog, QLineEdit
 from widgets.docks import panel_dock
 from widgets.breakpoints_panel import BookmarksPanel, BreakpointsPanel
 
-from . import breakpoints as bp
+from app.model import breakpoints as bp
 
 UNIT_TIPS = {
     bp.FRAME: "Every frame of the run",

@@ -24,8 +24,8 @@ import numpy as np
 from algorithms import registry
 from algorithms.steps import PLOT, VISIT, Span
 
-from . import render
-from .render import PALETTE, Overlay, Palette, compose
+from app.render import compose as render
+from app.render.compose import PALETTE, Overlay, Palette, compose
 
 
 # ------------------------------------------------------------ ideal primitive
@@ -401,7 +401,8 @@ def exact_reference(spec, points, options, grid) -> np.ndarray | None:
     ``grid`` is (W, H), or a window (x0, y0, x1, y1) of the grid's cells."""
     if spec is None or spec.family != "antialias" or not points:
         return None
-    from algorithms import antialias, exact_coverage
+    from algorithms import antialias
+    from algorithms.exact import coverage as exact_coverage
     window = tuple(int(v) for v in grid)
     if spec.name in ("line-wu", "line-area"):
         if len(points) != 2:

@@ -10,8 +10,8 @@ from __future__ import annotations
 
 from widgets.drawing import CIRCLE, CONTOURS, FIXED, GROUPS
 
-from .frame_view import ideal_paths, scene_paths, takes_circle
-from .inputs import contour_sizes, runnable_input
+from app.render.frame import ideal_paths, scene_paths, takes_circle
+from app.model.inputs import contour_sizes, runnable_input
 
 
 def drawing_mode(spec) -> str:

@@ -16,7 +16,7 @@ from PySide6.QtCore import QObject
 
 from algorithms.registry import InputError
 
-from .history import MERGE_SECONDS, Snapshot
+from app.model.history import MERGE_SECONDS, Snapshot
 
 # Per-vertex options shown as columns of the vertex table. Lines take a
 # colour per endpoint; triangles and the visibility runs take a colour,

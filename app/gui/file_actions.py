@@ -22,10 +22,10 @@ from PySide6.QtWidgets import QFileDialog, QMenu, QMessageBox
 from algorithms.registry import InputError
 from widgets.export_dialog import ExportDialog
 
-from . import export as exporting
-from .appdata import open_settings
-from . import scene as scenes
-from .scene import Scene, SceneError, one_line
+from app.render import export as exporting
+from app.gui.appdata import open_settings
+from app.model import scene as scenes
+from app.model.scene import Scene, SceneError, one_line
 
 RECENT_KEY = "scenes/recent"
 EXPORT_FOLDER_KEY = "export/folder"
@@ -170,7 +170,7 @@ class FileActions(QObject):
         if "speed" in view:
             window.transport.set_speed(view["speed"])
         if "step" in view:
-            from .recording import seek_when_recorded  # a long run may still be recording
+            from app.gui.recording import seek_when_recorded  # a long run may still be recording
             seek_when_recorded(window.player, int(view["step"]))
         self.title, self.description = scene.title, scene.description
         self.bookmarks = [dict(b) for b in scene.bookmarks]

@@ -7,7 +7,7 @@ window, and adds Edit > Preferences… (Ctrl+,) and View > Grid lines.
 Preferences live in QSettings: the INI file named by ``$RASTERLAB_SETTINGS``
 when that is set (tests and portable set-ups), else the person's RasterLab
 settings (organisation and application "RasterLab", as the recent-files list
-of app/file_actions.py). A stored value that cannot be read back or is out of
+of app/gui/file_actions.py). A stored value that cannot be read back or is out of
 range counts as unset: its default is used, nothing raises.
 """
 from __future__ import annotations
@@ -30,8 +30,8 @@ from algorithms.registry import InputError
 from algorithms.trace import DEFAULT_STEP_CAP
 from widgets.transport import SPEED_MAX, SPEED_MIN
 
-from .appdata import open_settings
-from .render import DARK_PALETTE, PALETTE
+from app.gui.appdata import open_settings
+from app.render.compose import DARK_PALETTE, PALETTE
 
 THEMES = ("light", "dark")
 STEP_CAP_RANGE = (1_000, 50_000_000)

@@ -38,8 +38,8 @@ from algorithms.errors import InputError
 from algorithms.raster import Raster, check_grid
 from algorithms.steps import PLOT, Span
 
-from . import frame_view, render
-from .inputs import flatten, split_contours
+from app.render import frame as frame_view, compose as render
+from app.model.inputs import flatten, split_contours
 
 EXACT = "exact-coverage"
 EXACT_TITLE = "Exact coverage"
@@ -52,7 +52,7 @@ MIN_PANES, MAX_PANES = 2, 4
 # two ways to the same area).
 COVERAGE_TOLERANCE = 1e-9
 STEP_CAP = 2_000_000
-SCENES = Path(__file__).resolve().parents[1] / "resources" / "scenes"
+SCENES = Path(__file__).resolve().parents[2] / "resources" / "scenes"
 
 
 # ------------------------------------------------------------------ panes
@@ -527,7 +527,7 @@ def _mesh() -> Primitives:
 
 
 def _painter_scene() -> Primitives:
-    from . import scene
+    from app.model import scene
     return Primitives.of_scene(scene.load(SCENES / "painter-cyclic.json"))
 
 

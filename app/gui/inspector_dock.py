@@ -21,7 +21,7 @@ from PySide6.QtGui import QAction, QKeySequence, QShortcut
 from widgets.docks import panel_dock
 from widgets.inspector_panel import InspectorPanel
 
-from .inspector import PixelInspector
+from app.model.inspector import PixelInspector
 
 PIN_COLOUR = "#d6336c"
 

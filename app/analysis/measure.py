@@ -1,6 +1,6 @@
 """Speed against error: operation counts, errors against the exact oracles, timings.
 
-Pure (numpy and the standard library); ``app/report.py`` turns the rows into
+Pure (numpy and the standard library); ``app/analysis/report.py`` turns the rows into
 the report. Every measurement is one row (``Row``): the family, the
 experiment, the algorithm and its variant (the options that matter), the
 swept parameter and its value, the metric, its value and its unit. The
@@ -40,9 +40,10 @@ from typing import Callable, Iterable
 
 import numpy as np
 
-from . import exact_circles, registry
-from .errors import InputError
-from .steps import OP_NAMES, PER_PIXEL, PER_ROW, Note, Span, Table
+from algorithms.exact import circles as exact_circles
+from algorithms import registry
+from algorithms.errors import InputError
+from algorithms.steps import OP_NAMES, PER_PIXEL, PER_ROW, Note, Span, Table
 
 ARITHMETIC = ("int_add", "float_add", "mul", "div", "sqrt", "round", "compare")
 COLUMNS = ("family", "experiment", "algorithm", "variant", "parameter", "parameter_value",
@@ -812,7 +813,7 @@ def fill_pixels(trace) -> np.ndarray:
 # ========================================================= interpolation
 def measure_interpolation(settings, rows: Rows, rng, tick=lambda: None) -> None:
     """Affine against perspective-correct interpolation, against the exact value."""
-    from . import exact_triangles
+    from algorithms.exact import triangles as exact_triangles
 
     size = settings.interpolation_grid
     triangle = ((2.25, 3.5), (size - 2.75, size * 0.25 + 0.125), (size * 0.375, size - 2.5))
@@ -907,7 +908,7 @@ def _depth_precision(settings, rows) -> None:
 def antialias_available() -> str:
     """'' when the antialiasing module can be measured, else why not."""
     try:
-        from . import antialias
+        from algorithms import antialias
         needed = ("supersample_image", "reference_coverage", "PATTERNS", "FILTERS")
         missing = [name for name in needed if not hasattr(antialias, name)]
         if missing:
@@ -923,7 +924,7 @@ def antialias_available() -> str:
 
 def measure_antialias(settings, rows: Rows, rng, tick=lambda: None) -> None:
     """RMS and max error against exact coverage, by pattern, filter and samples; time."""
-    from . import antialias
+    from algorithms import antialias
 
     size = settings.aa_grid
     points = []
@@ -1067,7 +1068,7 @@ def ticks(config: Settings) -> int:
     total += len(CIRCLE_VARIANTS) + len(config.magnitudes) + len(TRAVERSALS) + 1
     total += len(config.w_ratios)
     if not antialias_available():
-        from . import antialias
+        from algorithms import antialias
         total += len(antialias.PATTERNS)
     return total
 

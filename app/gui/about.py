@@ -17,7 +17,7 @@ from PySide6.QtCore import qVersion
 from PySide6.QtGui import QKeySequence
 
 PACKAGE = "rasterlab"
-PYPROJECT = Path(__file__).resolve().parents[1] / "pyproject.toml"
+PYPROJECT = Path(__file__).resolve().parents[2] / "pyproject.toml"
 
 
 def app_version() -> str:

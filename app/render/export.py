@@ -62,11 +62,11 @@ from algorithms.registry import InputError
 from algorithms.steps import PLOT, Span
 from algorithms.trace import DEFAULT_STEP_CAP, FrameState
 
-from . import frame_view
-from .frame_view import (compose_frame, compose_region, frame_marks, key_values, primitive_mask,
-                         scene_paths, step_caption)
-from .render import DARK_PALETTE, PALETTE, Palette
-from .scene import one_line
+from app.render import frame as frame_view
+from app.render.frame import (compose_frame, compose_region, frame_marks, key_values,
+                              primitive_mask, scene_paths, step_caption)
+from app.render.compose import DARK_PALETTE, PALETTE, Palette
+from app.model.scene import one_line
 
 MIN_FPS = 0.1
 MAX_FPS = 50.0

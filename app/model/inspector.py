@@ -38,7 +38,7 @@ from algorithms.interpolate import affine_value, barycentric_weights, per_vertex
 from algorithms.registry import InputError, format_value
 from algorithms.steps import PLOT, VISIT, Span, Vars
 
-from . import frame_view
+from app.render import frame as frame_view
 
 MAX_SAMPLE_ROWS = 16  # sample positions listed one per row, at most
 MAX_DEPTH_ROWS = 6  # depth tests listed, the latest ones

@@ -18,9 +18,9 @@ from PySide6.QtWidgets import (QCheckBox, QComboBox, QDialog, QFileDialog, QForm
                                QHBoxLayout, QLabel, QMessageBox, QProgressBar, QPushButton,
                                QRadioButton, QVBoxLayout)
 
-from algorithms import measure
+from app.analysis import measure
 
-from . import report
+from app.analysis import report
 
 PARAMETER = "(swept parameter)"
 

@@ -25,8 +25,8 @@ from PySide6.QtCore import QCoreApplication, QObject, Qt, QUrl, Signal, Slot
 from PySide6.QtGui import QDesktopServices
 from PySide6.QtWidgets import QApplication, QMessageBox
 
-from .appdata import data_dir, ensure
-from .scene import one_line
+from app.gui.appdata import data_dir, ensure
+from app.model.scene import one_line
 
 LOG_NAME = "rasterlab.log"
 LOG_BYTES = 512 * 1024

@@ -48,9 +48,9 @@ from algorithms.raster import MAX_GRID, Raster, check_grid
 from algorithms.trace import DEFAULT_STEP_CAP, Cancelled, FrameState, Trace
 
 
-from .inputs import clean_breaks, complete, contour_sizes, flatten, runnable_input
-from .recording import Job
-from .render import differences
+from app.model.inputs import clean_breaks, complete, contour_sizes, flatten, runnable_input
+from app.gui.recording import Job
+from app.render.compose import differences
 
 # How long an edit waits for its recording before it goes on in the
 # background (seconds); RASTERLAB_RECORD_WAIT overrides it ("inf": always
@@ -120,7 +120,7 @@ class Player(QObject):
         self._timer.timeout.connect(self._tick)
         self._clock = QElapsedTimer()
         self._owed = 0.0  # fractional steps carried over between ticks
-        # Optional hooks (app/breakpoint_actions.py): stepper(index, delta)
+        # Optional hooks (app/gui/breakpoint_actions.py): stepper(index, delta)
         # gives where a step of delta units goes (None: nowhere);
         # stop_finder(index, target) gives a frame in index+1 .. target
         # where play must stop, or None.

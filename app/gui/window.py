@@ -33,21 +33,21 @@ from widgets.panels import CodePanel, VariablesPanel
 from widgets.tables import TablesPanel
 from widgets.transport import TransportBar
 
-from .appdata import APP_NAME
-from .history import EditHistory
-from .insight import PixelTally, has_insight, inside_chips, row_tones
-from .inputs import split_contours
-from .player import Player, default_scene, open_ended
-from . import frame_view
-from .render import (COVERAGE_LEVELS, OUTLINE_STYLE, PALETTE, compose, coverage_counts,
-                     depth_image, depth_range, error_image, error_stats)
-from .tables import TableIndex
-from .tools import (circle_kind, circle_options, clamp_option, drawing_mode,
-                    marker_option, placing_message, shape_paths, tool_hint)
-# What a frame shows is worked out in app/frame_view.py, shared with export.
-from .frame_view import step_cells as _step_cells
-from .frame_view import html_caption as _caption
-from .frame_view import ideal_paths  # noqa: F401 (part of this module's interface)
+from app.gui.appdata import APP_NAME
+from app.model.history import EditHistory
+from app.model.insight import PixelTally, has_insight, inside_chips, row_tones
+from app.model.inputs import split_contours
+from app.gui.player import Player, default_scene, open_ended
+from app.render import frame as frame_view
+from app.render.compose import (COVERAGE_LEVELS, OUTLINE_STYLE, PALETTE, compose, coverage_counts,
+                                depth_image, depth_range, error_image, error_stats)
+from app.model.tables import TableIndex
+from app.model.tools import (circle_kind, circle_options, clamp_option, drawing_mode,
+                             marker_option, placing_message, shape_paths, tool_hint)
+# What a frame shows is worked out in app/render/frame.py, shared with export.
+from app.render.frame import step_cells as _step_cells
+from app.render.frame import html_caption as _caption
+from app.render.frame import ideal_paths  # noqa: F401 (part of this module's interface)
 
 PREFERRED_ALGORITHM = "line-bresenham"
 # The demo segment: slope 5/12 has two exact ties (d = 0), where the
@@ -248,18 +248,18 @@ class MainWindow(QMainWindow):
         self.resizeDocks([self.code_dock, self.variables_dock], [330, 430], Qt.Orientation.Vertical)
         if self._tables:
             self._make_room_for_tables()
-        # Hook: stored preferences, Edit > Preferences (app/preferences.py).
-        from .preferences import install_preferences
+        # Hook: stored preferences, Edit > Preferences (app/gui/preferences.py).
+        from app.gui.preferences import install_preferences
         install_preferences(self)
-        from .compare_window import install_compare  # View > Compare… (Ctrl+K)
+        from app.gui.compare_window import install_compare  # View > Compare… (Ctrl+K)
         install_compare(self)
-        from .gallery import install_gallery  # Help > Hard cases… (app/gallery.py)
+        from app.gui.gallery import install_gallery  # Help > Hard cases… (app/gui/gallery.py)
         install_gallery(self)
-        from .breakpoint_actions import install_breakpoints  # step units, breakpoints, bookmarks
+        from app.gui.breakpoint_actions import (install_breakpoints)  # step units, breakpoints, bookmarks
         install_breakpoints(self)
-        from .inspector_dock import install_inspector  # View > Pixel inspector (Ctrl+I)
+        from app.gui.inspector_dock import install_inspector  # View > Pixel inspector (Ctrl+I)
         install_inspector(self)
-        from .recording import install_recording  # long runs: progress bar and Cancel (Esc)
+        from app.gui.recording import install_recording  # long runs: progress bar and Cancel (Esc)
         install_recording(self)
 
     # ----------------------------------------------------------- building
@@ -472,7 +472,7 @@ class MainWindow(QMainWindow):
         self.y_down_action.setCheckable(True)
         self.y_down_action.setToolTip("Pixel (0, 0) at the top-left, y growing downwards "
                                       "(Ctrl+Z takes it back)")
-        # Connected to set_y_down through the undo history (app/edits.py).
+        # Connected to set_y_down through the undo history (app/gui/edits.py).
         for box, text, key in ((self.show_primitive, "Ideal primitive", ""),
                                (self.compare, "Compare with previous algorithm", ""),
                                (self.coverage, "Coverage counts", "C")):
@@ -545,8 +545,8 @@ class MainWindow(QMainWindow):
         g = self.grid
         g.hoverChanged.connect(self._hover)
         # Scene edits (grid gestures, the vertex table, the algorithm, options,
-        # grid size, origin) go through the undo history: app/edits.py.
-        from .edits import install_edits
+        # grid size, origin) go through the undo history: app/gui/edits.py.
+        from app.gui.edits import install_edits
         install_edits(self)
         self.show_primitive.toggled.connect(g.set_show_primitive)
         self.compare.toggled.connect(p.set_compare)
@@ -670,7 +670,7 @@ class MainWindow(QMainWindow):
         self._hover(self._last_hover)
 
     # -------------------------------------------------------------- undo
-    # The whole scene is remembered before each edit: app/edits.py.
+    # The whole scene is remembered before each edit: app/gui/edits.py.
     def undo(self) -> None:
         self.edits.undo()
 
@@ -1003,12 +1003,12 @@ class MainWindow(QMainWindow):
 
     # ------------------------------------------------------------ dialogs
     def show_shortcuts(self) -> None:
-        from .about import shortcut_rows
+        from app.gui.about import shortcut_rows
         dialog = ShortcutsDialog(self, shortcut_rows(self, GESTURES))
         dialog.exec()
 
     def show_about(self) -> None:
-        from .about import app_version, runtime_versions
+        from app.gui.about import app_version, runtime_versions
         count = len(registry.all_specs())
         QMessageBox.about(
             self, f"About {APP_NAME}",
@@ -1122,17 +1122,17 @@ def launch(argv=None) -> int:
         app.setStyle("Fusion")
     app.setWindowIcon(app_icon())
     window = MainWindow()
-    # Hook: scene files and export (File menu) come from app/file_actions.py.
-    from .file_actions import install_file_actions
-    from .report_window import install_report_action
+    # Hook: scene files and export (File menu) come from app/gui/file_actions.py.
+    from app.gui.file_actions import install_file_actions
+    from app.gui.report_window import install_report_action
     install_file_actions(window)
     install_report_action(window)
-    from .preferences import reopen_last_scene
+    from app.gui.preferences import reopen_last_scene
     reopen_last_scene(window)
-    # Hook: uncaught errors are logged and shown (app/crash.py); unsaved
-    # work is kept and offered back after a crash (app/recovery.py).
-    from .crash import install_crash_handler
-    from .recovery import install_recovery
+    # Hook: uncaught errors are logged and shown (app/gui/crash.py); unsaved
+    # work is kept and offered back after a crash (app/gui/recovery.py).
+    from app.gui.crash import install_crash_handler
+    from app.gui.recovery import install_recovery
     install_crash_handler(window)
     recovery = install_recovery(window)
     window.show()

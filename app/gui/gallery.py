@@ -20,9 +20,9 @@ from PySide6.QtWidgets import (QDialog, QDialogButtonBox, QHBoxLayout, QLabel, Q
 
 from algorithms.registry import InputError
 
-from . import render
-from . import scene as scenes
-from .scene import SceneError, one_line
+from app.render import compose as render
+from app.model import scene as scenes
+from app.model.scene import SceneError, one_line
 
 FOLDER = scenes.SHIPPED
 # Scenes that are examples, not hard cases.

@@ -2,7 +2,7 @@
 
     rasterlab report [--quick] [--out DIR]
 
-measures every algorithm family (algorithms/measure.py) and writes into DIR
+measures every algorithm family (app/analysis/measure.py) and writes into DIR
 (default ./rasterlab-report):
 
 * report.md: the headline findings, then tables per family;
@@ -30,9 +30,9 @@ from pathlib import Path
 
 import numpy as np
 
-from algorithms import measure
+from app.analysis import measure
 
-from .progress import TerminalBar
+from app.progress import TerminalBar
 
 DEFAULT_OUT = "rasterlab-report"
 
@@ -520,7 +520,7 @@ def section_interpolation(view: View) -> str:
 def section_antialias(view: View, missing: str) -> str:
     if missing:
         return ("## Antialiasing\n\nNot measured: " + missing + ". The measurement is "
-                "algorithms.measure.measure_antialias; it runs once algorithms.antialias "
+                "app.analysis.measure.measure_antialias; it runs once algorithms.antialias "
                 "provides supersample_image and reference_coverage.")
     samples = view.values("antialiasing", "supersampling", "rms error")
     if not samples:
@@ -553,7 +553,7 @@ def section_antialias(view: View, missing: str) -> str:
 # ============================================================ charts
 def charts(view: View) -> dict:
     """Family name -> Pillow image."""
-    from app.charts import Chart, figure, palette
+    from app.analysis.charts import Chart, figure, palette
 
     images = {}
     lengths = view.values("lines", "length sweep", "missed columns")
@@ -684,7 +684,7 @@ def charts(view: View) -> dict:
         images["interpolation"] = figure("Interpolation and depth: cost against error",
                                          [left, right])
     if view.values("antialiasing", "supersampling", "rms error"):
-        from app.charts import PALETTE
+        from app.analysis.charts import PALETTE
         variants = view.variants("antialiasing", "supersampling")
         patterns = list(dict.fromkeys(v.split()[0] for v in variants))
         filters = list(dict.fromkeys(v.split()[1] for v in variants if " " in v))

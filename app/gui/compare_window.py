@@ -17,9 +17,10 @@ from algorithms.errors import InputError
 from widgets.compare_view import CompareView
 from widgets.transport import TransportBar
 
-from . import compare, frame_view
-from .compare import FRAME, LINKS, MAX_PANES, MIN_PANES, PRESETS, Pane, Primitives
-from .render import OUTLINE_STYLE, PALETTE, compose
+from app.model import compare
+from app.render import frame as frame_view
+from app.model.compare import FRAME, LINKS, MAX_PANES, MIN_PANES, PRESETS, Pane, Primitives
+from app.render.compose import OUTLINE_STYLE, PALETTE, compose
 
 WINDOW_KEY = "window"  # the comparison of the main window's algorithm and the one before
 MIN_TICK_MS = 16
