@@ -1,0 +1,71 @@
+"""The antialiasing family's entries in the registry."""
+from __future__ import annotations
+
+from algorithms import registry as registry_module
+from algorithms.registry import AlgorithmSpec, Inputs, register
+
+from .adaptive import ADAPTIVE_OPTIONS, adaptive, adaptive_code
+from .filters import FILTER_OPTIONS, filter_code, post_filter
+from .lines import AREA_OPTIONS, WU_OPTIONS, area_code, line_area, wu, wu_code
+from .shapes import POINTS, SEGMENT, explain_samples
+from .supersample import SUPERSAMPLE_OPTIONS, supersample, supersample_code
+from .temporal import TEMPORAL_OPTIONS, temporal, temporal_code
+
+# The families before this one register first, whichever module a caller
+# imported first: the order of algorithms then follows FAMILIES.
+registry_module.all_specs()
+
+AA_NOTES = (
+    "Coverage is the fraction of the pixel square a shape covers (0..1); values are "
+    "coverages, and the grid shows the ink blended over white by them.",
+    "Vertices snap to 1/256 px and samples lie on a 1/512 px lattice: every inside test is "
+    "exact.",
+)
+
+
+def _register(name, title, summary, inputs, options, code, generator, notes=(), explain=None,
+              uses_grid=True):
+    """Register one method; ``code(points, options)`` returns its ``Code``."""
+    def listing(points, options):
+        return tuple(code(points, options).lines)
+
+    register(AlgorithmSpec(name=name, title=title, family="antialias", summary=summary,
+                           inputs=inputs, options=options, code=listing, generator=generator,
+                           notes=AA_NOTES + tuple(notes), explain=explain, uses_grid=uses_grid))
+
+
+_register("aa-supersample", "Supersampling", "n x n samples per pixel (grid, jittered, random "
+          "or rotated grid), weighted by a filter", POINTS, SUPERSAMPLE_OPTIONS,
+          supersample_code, supersample, explain=explain_samples,
+          notes=("weighted: w = h(u) + h(v), h = distance to the nearer pixel border; for the "
+                 "4 x 4 grid exactly the kernel 1 2 2 1 / 2 3 3 2 / 2 3 3 2 / 1 2 2 1.",
+                 "With n = 1, pattern grid and filter box the one sample is the centre: the "
+                 "aliased picture."))
+_register("aa-adaptive", "Adaptive supersampling", "corners and centre first; split a square "
+          "in four where its samples disagree", POINTS, ADAPTIVE_OPTIONS, adaptive_code,
+          adaptive, explain=explain_samples,
+          notes=("Cheap where a pixel is wholly in or out, but a detail that falls between "
+                 "the five samples of a square is missed.",
+                 "Corners are shared by the squares of one pixel, not between pixels; "
+                 "samples counts each tested point once per pixel."))
+_register("aa-filter", "Post-filtering (convolution)", "render aliased, then blur: each pixel "
+          "becomes a weighted average of its neighbourhood", Inputs(3, integer=False,
+                                                                    names=("P0", "P1", "P2"),
+                                                                    multiple=True),
+          FILTER_OPTIONS, filter_code, post_filter, explain=explain_samples,
+          notes=("The filter reads the aliased image and writes a new one; it blurs the "
+                 "stairs but cannot recover detail the centres missed.",))
+_register("line-wu", "Xiaolin Wu's line", "two pixels per column along the minor axis, "
+          "intensities 1 - f and f", SEGMENT, WU_OPTIONS, wu_code, wu, uses_grid=False,
+          notes=("Whole-pixel endpoints as in the line family: the segment joins the two "
+                 "end pixels' centres; e counts the fraction in units of 1/dx, exactly.",))
+_register("line-area", "Area-sampled line", "intensity = the area of the pixel square that "
+          "the line's rectangle covers", SEGMENT, AREA_OPTIONS, area_code, line_area,
+          uses_grid=False,
+          notes=("Areas come from the exact coverage reference (float64, vectorised).",))
+_register("aa-temporal", "Temporal aliasing and motion blur", "a spinning wheel or moving "
+          "triangle over several frames: one instant per frame, or averaged over the exposure",
+          POINTS, TEMPORAL_OPTIONS, temporal_code, temporal,
+          notes=("The wagon-wheel effect: a wheel with s spokes looks the same every 360/s "
+                 "degrees, so a turn of speed per frame looks like the apparent speed.",
+                 "temporal_frames(points, options, grid) gives the images as arrays."))

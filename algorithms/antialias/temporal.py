@@ -1,0 +1,212 @@
+"""Temporal aliasing: a spinning wheel or a moving triangle over animation frames.
+
+Each frame samples the scene at one instant (the wagon-wheel effect) or
+averages it over the frame's exposure (motion blur).
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from algorithms.code import Code
+from algorithms.interpolate import unpack
+from algorithms.registry import InputError, Option
+from algorithms.steps import PLOT, Start, Vars
+
+from .shapes import INK, POSITION, UNIT, Shapes, ink_blend, ops_sum, test_ops
+from .supersample import lattice, sample_strata
+
+TEMPORAL_OPTIONS = (
+    Option("primitive", "choice", "auto", "wheel (1 point: the centre) or triangle (3 points); "
+           "auto picks by the number of points", choices=("auto", "wheel", "triangle")),
+    Option("motion", "choice", "spin", "spin about the centre, or move along +x",
+           choices=("spin", "move")),
+    Option("mode", "choice", "instant", "instant: one sample time per frame; motion-blur: "
+           "average over the frame's exposure", choices=("instant", "motion-blur")),
+    Option("frames", "int", 12, "animation frames", minimum=1, maximum=240),
+    Option("speed", "float", 80.0, "degrees per frame (spin) or px per frame (move)",
+           minimum=-3600, maximum=3600),
+    Option("time_samples", "int", 8, "instants averaged per frame with motion-blur",
+           minimum=1, maximum=64),
+    Option("shutter", "float", 1.0, "fraction of the frame interval the exposure lasts",
+           minimum=0.01, maximum=1),
+    Option("n", "int", 2, "spatial samples per pixel: n x n grid", minimum=1, maximum=8),
+    Option("radius", "float", 9.0, "wheel radius in px", minimum=1, maximum=2048),
+    Option("spokes", "int", 4, "number of spokes", minimum=1, maximum=32),
+    Option("spoke_width", "float", 1.5, "spoke width in px", minimum=0.1, maximum=64),
+    Option("phase", "float", 0.0, "angle of the first spoke at t = 0, degrees",
+           minimum=-360, maximum=360),
+)
+
+
+def _temporal_shapes(points, options, t: float) -> Shapes:
+    """The primitive at time t (in frames), as shapes."""
+    kind = _primitive(points, options)
+    speed = options["speed"]
+    if kind == "wheel":
+        (cx, cy), = points
+        angle = math.radians(options["phase"] + speed * t) if options["motion"] == "spin" \
+            else math.radians(options["phase"])
+        shift = speed * t if options["motion"] == "move" else 0.0
+        spokes = []
+        for k in range(options["spokes"]):
+            a = angle + 2 * math.pi * k / options["spokes"]
+            radius = options["radius"]
+            spokes += [(cx + shift, cy),
+                       (cx + shift + radius * math.cos(a), cy + radius * math.sin(a))]
+        return Shapes(spokes, {"shape": "thick-line", "width": options["spoke_width"],
+                               "caps": "butt"})
+    if options["motion"] == "spin":
+        cx = sum(p[0] for p in points) / 3
+        cy = sum(p[1] for p in points) / 3
+        a = math.radians(speed * t)
+        c, s = math.cos(a), math.sin(a)
+        moved = [(cx + c * (x - cx) - s * (y - cy), cy + s * (x - cx) + c * (y - cy))
+                 for x, y in points]
+    else:
+        moved = [(x + speed * t, y) for x, y in points]
+    return Shapes(moved, {"shape": "triangles"})
+
+
+def _primitive(points, options) -> str:
+    kind = options.get("primitive", "auto")
+    if kind == "auto":
+        if len(points) not in (1, 3):
+            raise InputError(f"aa-temporal: expected 1 point (a wheel's centre) or 3 (a "
+                             f"triangle), got {len(points)}")
+        kind = "wheel" if len(points) == 1 else "triangle"
+    expected = 1 if kind == "wheel" else 3
+    if len(points) != expected:
+        raise InputError(f"primitive {kind}: expected {expected} point"
+                         f"{'' if expected == 1 else 's'}"
+                         f"{' (the centre)' if kind == 'wheel' else ''}, got {len(points)}")
+    return kind
+
+
+def time_samples(options, frame: int) -> list[float]:
+    """The instants (in frames) a frame's image averages."""
+    if options["mode"] == "instant":
+        return [float(frame)]
+    count, shutter = options["time_samples"], options["shutter"]
+    return [frame + shutter * (s + 0.5) / count for s in range(count)]
+
+
+def temporal_frames(points, options, grid) -> list[np.ndarray]:
+    """Image k of the animation, coverage (H, W) float64, for k = 0 .. frames - 1."""
+    options = {**{o.name: o.default for o in TEMPORAL_OPTIONS}, **options}
+    points = [tuple(map(float, p)) for p in points]
+    width, height = int(grid[0]), int(grid[1])
+    n = options["n"]
+    images = []
+    xs = np.arange(width, dtype=np.int64)
+    kx, ky, big = sample_strata("grid", n, 0, 0, xs)
+    ox, oy = lattice(kx[0], big), lattice(ky[0], big)
+    for frame in range(options["frames"]):
+        instants = time_samples(options, frame)
+        hits = np.zeros((height, width), np.int64)
+        for t in instants:
+            shapes = _temporal_shapes(points, options, t)
+            x0, y0, x1, y1 = shapes.window((width, height))
+            if x1 <= x0 or y1 <= y0:
+                continue
+            cols = np.arange(x0, x1, dtype=np.int64)
+            rows = np.arange(y0, y1, dtype=np.int64)
+            sx = cols[None, :, None] * UNIT + ox[None, None, :]
+            sy = rows[:, None, None] * UNIT + oy[None, None, :]
+            sx, sy = np.broadcast_arrays(sx, sy)
+            inside = shapes.owners(sx, sy) >= 0
+            hits[y0:y1, x0:x1] += inside.sum(axis=2)
+        images.append(hits / (len(instants) * n * n))
+    return images
+
+
+def apparent_speed(points, options) -> float:
+    """The motion the frames seem to show, per frame: the speed folded into one period."""
+    if options["motion"] == "move":
+        return float(options["speed"])
+    period = 360.0 / options["spokes"] if _primitive(points, options) == "wheel" else 360.0
+    return float((options["speed"] + period / 2) % period - period / 2)
+
+
+def temporal_code(points, options) -> Code:
+    blur = options.get("mode", "instant") == "motion-blur"
+    sample = (f"average over {options.get('time_samples', 8)} instants t = k + shutter (s + 1/2) "
+              f"/ {options.get('time_samples', 8)}" if blur else "one instant t = k")
+    # Every pixel frame of line "pixels" stands for the pixel's n^2 samples at each
+    # of the frame's instants, each tested against every shape (the images
+    # come from the vectorised kernel, which tests them all), at its
+    # position (POSITION) and summed (1 int_add); then one division. Pixels
+    # the primitive's window reaches but that show nothing in this frame or
+    # the last yield no frame and are not counted, nor is moving the
+    # primitive to each instant (line "frames": per instant, not per pixel).
+    instants = options.get("time_samples", 8) if blur else 1
+    per_pixel = instants * options.get("n", 2) ** 2
+    shape_test = {}
+    try:
+        shape_test = test_ops(_temporal_shapes(
+            [tuple(map(float, p)) for p in points],
+            {**{o.name: o.default for o in TEMPORAL_OPTIONS}, **options}, 0.0))[1]
+    except (InputError, ValueError, TypeError, KeyError):
+        pass
+    one = ops_sum({"samples": 1, "int_add": 1}, POSITION, shape_test)
+    pixel = ops_sum(one, times=per_pixel) | {"div": 1}
+    pixel = ops_sum(pixel, {"compare": 2, "pixels_tested": 1})
+    code = Code()
+    code.add("setup", "setup: the primitive, its motion per frame, the n x n samples of a pixel")
+    code.add("frames", f"for each animation frame k:  {sample}")
+    code.add("pixels", "    for each pixel (x, y) the primitive reaches in any frame:  coverage = "
+                       "(samples inside, over all instants) / (instants * n^2);  write it", PLOT,
+             ops=pixel)
+    code.add("done", "done")
+    return code
+
+
+def temporal(points, options, grid):
+    kind = _primitive(points, options)
+    images = temporal_frames(points, options, grid)
+    apparent = apparent_speed(points, options)
+    at = temporal_code(points, options).at
+    constants = {"primitive": kind, "motion": options["motion"], "mode": options["mode"],
+                 "frames": options["frames"], "speed": options["speed"], "apparent speed":
+                 apparent}
+    yield Start(line=at["setup"], values=("frame", "coverage", "rgb"), constants=constants,
+                pixel_value="coverage", color_value="rgb", replaces=True)
+    reach = np.zeros(images[0].shape, bool) if images else np.zeros((0, 0), bool)
+    for image in images:
+        reach |= image > 0
+    cells = np.argwhere(reach)
+    previous = np.zeros(reach.shape)
+    ink = unpack(INK)
+    for k, image in enumerate(images):
+        instants = time_samples(options, k)
+        values = {"frame": k, "t": f"{instants[0]:g} .. {instants[-1]:g}" if len(instants) > 1
+                  else instants[0]}
+        if options["motion"] == "spin":
+            values["angle"] = options["speed"] * instants[0] % 360
+        yield Vars(line=at["frames"], values=values)
+        for y, x in cells:
+            value = float(image[y, x])
+            if value > 0 or previous[y, x] > 0:
+                yield (at["pixels"], int(x), int(y), float(k), value,
+                       float(ink_blend(ink, value)))
+        previous = image
+    yield Vars(line=at["done"], values={"frames": len(images), "apparent speed": apparent})
+
+
+def animation_frame_steps(spec, trace) -> list[int]:
+    """The step at which each animation frame of an ``aa-temporal`` run is
+    complete (its image fully written), in order; [] for other runs.
+
+    Frame k starts with a Vars record naming ``frame`` k; the step before
+    the next frame's record (or before the closing record) shows image k
+    with frame k's variables.
+    """
+    if spec.name != "aa-temporal" or trace.start is None:
+        return []
+    starts = [index for index, record in sorted(trace.records.items())
+              if isinstance(record, Vars) and "frame" in record.values]
+    ends = [start - 1 for start in starts[1:]] + [len(trace) - 2]
+    return [max(end, start) for start, end in zip(starts, ends)]
+
+
