@@ -45,9 +45,11 @@ import numpy as np
 
 from algorithms import registry as registry_module
 from algorithms import triangles
+from algorithms.triangles import ops_sum
+from .code import Code
 from .interpolate import mix, per_vertex, unpack
 from .registry import AlgorithmSpec, Inputs, Option, register
-from .steps import PER_ROW, PLOT, VISIT, CodeLine, Note, Start, Table, Vars
+from .steps import PER_ROW, PLOT, VISIT, Note, Start, Table, Vars
 
 NAN = math.nan
 TESTS = ("less", "less-equal")
@@ -179,7 +181,7 @@ def _defaults(options):
 # CodeLine.ops of the two visibility algorithms. Edge values are integers
 # (vertices snapped to 1/256 px), so their additions count as int_add; the
 # depth and the colour are interpolated from them. Conventions:
-# * Line 1 runs once per triangle (its Vars record): snapping and 2A as in
+# * Line "triangle" runs once per triangle (its Vars record): snapping and 2A as in
 #   the triangle family (8 mul, 6 round, 5 int_add, 2 compare), the three
 #   edges' a, b, c (6 mul, 9 int_add) and the clamped bounding box (4
 #   ceil/floor divisions with their 4 mul and 8 int_add, 8 + 4 compares).
@@ -196,54 +198,50 @@ TRIANGLE_OPS = {"mul": 18, "round": 6, "int_add": 22, "compare": 14, "div": 4}
 DEPTH_OPS = {"mul": 3, "float_add": 2, "div": 1}
 
 
-def _ops_sum(*parts) -> dict:
-    total = {}
-    for part in parts:
-        for name, count in part.items():
-            total[name] = total.get(name, 0) + count
-    return {name: count for name, count in total.items() if count}
-
-
 def _shade_ops(options) -> dict:
     if not options.get("colors"):
         return {}  # the triangle's palette colour: nothing computed per fragment
     return {"div": 3, "mul": 9, "float_add": 6, "round": 3}
 
 
-def zbuffer_code(points, options):
+def zbuffer_code(points, options) -> Code:
     test = "<" if options.get("depth_test", "less") == "less" else "<="
     # A fragment interpolates its depth and tests it against ZB (1 compare),
     # passing or not; only a passing one writes colour and depth.
-    fragment = _ops_sum(WALK_OPS, DEPTH_OPS, {"compare": 1}, _shade_ops(options))
-    return (
-        CodeLine(f"ZB[x, y] = {options.get('clear_depth', 1.0):g} for every pixel (far);  "
-                 "CB[x, y] = background"),
-        CodeLine("for each triangle T, in input order:   (snap, make counter-clockwise)",
-                 ops=TRIANGLE_OPS),
-        CodeLine("    for each fragment (x, y) of T   (pixel centres T covers, fill rule):"),
-        CodeLine(f"        z = alpha z0 + beta z1 + gamma z2;  if z {test} ZB[x, y]:  "
-                 "CB[x, y] = colour;  ZB[x, y] = z", PLOT, "pass", ops=fragment),
-        CodeLine(f"        else (z {'>=' if test == '<' else '>'} ZB[x, y]): hidden, keep "
-                 "CB and ZB", VISIT, "fail", ops=fragment),
-        CodeLine("done"),
-    )
+    fragment = ops_sum(WALK_OPS, DEPTH_OPS, {"compare": 1}, _shade_ops(options))
+    code = Code()
+    code.add("clear", f"ZB[x, y] = {options.get('clear_depth', 1.0):g} for every pixel (far);  "
+                      "CB[x, y] = background")
+    code.add("triangle", "for each triangle T, in input order:   (snap, make counter-clockwise)",
+             ops=TRIANGLE_OPS)
+    code.add("fragments", "    for each fragment (x, y) of T   (pixel centres T covers, fill "
+                          "rule):")
+    code.add("pass", f"        z = alpha z0 + beta z1 + gamma z2;  if z {test} ZB[x, y]:  "
+                     "CB[x, y] = colour;  ZB[x, y] = z", PLOT, "pass", ops=fragment)
+    code.add("fail", f"        else (z {'>=' if test == '<' else '>'} ZB[x, y]): hidden, keep "
+                     "CB and ZB", VISIT, "fail", ops=fragment)
+    code.add("done", "done")
+    return code
 
 
 def zbuffer(points, options, grid):
     scene = Scene(points, options, grid)
     test = options["depth_test"]
     clear = float(options["clear_depth"])
+    at = zbuffer_code(points, options).at
     constants = {"clear_depth": clear, "depth_test": test, "fill_rule": options["fill_rule"],
                  "triangles": len(scene.setups)}
-    yield Start(0, ("z", "zb", "rgb"), constants, pixel_value="rgb", depth_value="z")
+    yield Start(line=at["clear"], values=("z", "zb", "rgb"), constants=constants,
+                pixel_value="rgb", depth_value="z")
     if not scene.z_given:
-        yield Note(0, "No z given: every vertex lies at depth 0.5, so the first triangle "
-                      "drawn over a pixel keeps it.")
+        yield Note(line=at["clear"], text="No z given: every vertex lies at depth 0.5, so the "
+                                          "first triangle drawn over a pixel keeps it.")
     depth = np.full((scene.height, scene.width), clear)
     fragments = passed = overdraw = 0
     written = np.zeros((scene.height, scene.width), bool)
+    pass_line, fail_line = at["pass"], at["fail"]
     for setup in scene.setups:
-        yield from _triangle_vars(scene, setup, 1)
+        yield from _triangle_vars(scene, setup, at["triangle"])
         if setup.tri is None:
             continue
         for i, j, z, color in scene.fragments(setup):
@@ -254,11 +252,12 @@ def zbuffer(points, options, grid):
                 overdraw += bool(written[j, i])
                 written[j, i] = True
                 depth[j, i] = z
-                yield (3, i, j, z, float(stored), float(color))
+                yield (pass_line, i, j, z, float(stored), float(color))
             else:
-                yield (4, i, j, z, float(stored), float(color))
-    yield Vars(5, {"fragments": fragments, "passed": passed, "failed": fragments - passed,
-                   "overwritten": overdraw, "visible": int(written.sum())})
+                yield (fail_line, i, j, z, float(stored), float(color))
+    yield Vars(line=at["done"], values={"fragments": fragments, "passed": passed,
+                                        "failed": fragments - passed, "overwritten": overdraw,
+                                        "visible": int(written.sum())})
 
 
 def _triangle_vars(scene, setup, line):
@@ -271,9 +270,10 @@ def _triangle_vars(scene, setup, line):
         values[f"z{k}"] = scene.z[index]
     if scene.colors is None:
         values["colour"] = scene.color_of(setup.number)
-    yield Vars(line, values)
+    yield Vars(line=line, values=values)
     if setup.tri is None:
-        yield Note(line, f"Triangle {setup.number + 1} has no area once snapped: no fragments.")
+        yield Note(line=line,
+                   text=f"Triangle {setup.number + 1} has no area once snapped: no fragments.")
 
 
 def explain_depth(trace, i):
@@ -294,60 +294,67 @@ def explain_depth(trace, i):
 
 
 # ============================================================ painter
-def painter_code(points, options):
+def painter_code(points, options) -> Code:
     key = options.get("sort", "mean")
-    # Line 0: the key of every triangle, one row of its drawing-order table
+    # Line "sort": the key of every triangle, one row of its drawing-order table
     # (mean: 2 float_add and a division; min or max: 2 compares); the sort's
     # comparisons are not counted. Fragments carry the walk and the colour
     # but no depth: the depth the shared fragment walk also yields is shown,
-    # not used. Line 3 checks the result against a z-buffer run: analysis,
+    # not used. Line "compare" checks the result against a z-buffer run: analysis,
     # not part of the algorithm, so not counted.
     key_ops = {"float_add": 2, "div": 1} if key == "mean" else {"compare": 2}
-    return (
-        CodeLine(f"key(T) = the {key} of T's vertex depths;  sort the triangles by key, "
-                 "largest (farthest) first", per={PER_ROW: key_ops}),
-        CodeLine("for each triangle T in that order (back to front):", ops=TRIANGLE_OPS),
-        CodeLine("    for each fragment (x, y) of T:  CB[x, y] = colour   (no depth test: "
-                 "the last triangle drawn wins)", PLOT,
-                 ops=_ops_sum(WALK_OPS, _shade_ops(options))),
-        CodeLine("compare with the z-buffer: disagree = pixels whose colours differ"),
-        CodeLine("done"),
-    )
+    code = Code()
+    code.add("sort", f"key(T) = the {key} of T's vertex depths;  sort the triangles by key, "
+                     "largest (farthest) first", per={PER_ROW: key_ops})
+    code.add("triangle", "for each triangle T in that order (back to front):", ops=TRIANGLE_OPS)
+    code.add("paint", "    for each fragment (x, y) of T:  CB[x, y] = colour   (no depth test: "
+                      "the last triangle drawn wins)", PLOT,
+             ops=ops_sum(WALK_OPS, _shade_ops(options)))
+    code.add("compare", "compare with the z-buffer: disagree = pixels whose colours differ")
+    code.add("done", "done")
+    return code
 
 
 def painter(points, options, grid):
     scene = Scene(points, options, grid)
     key = options["sort"]
     order, depth_key = painter_order(scene, key)
+    at = painter_code(points, options).at
     constants = {"sort": key, "fill_rule": options["fill_rule"], "triangles": len(scene.setups)}
-    yield Start(0, ("z", "key", "rgb"), constants, pixel_value="rgb")
+    yield Start(line=at["sort"], values=("z", "key", "rgb"), constants=constants,
+                pixel_value="rgb")
     rows = tuple((rank + 1, s.number + 1, depth_key(s), *(scene.z[k] for k in s.tri.order))
                  for rank, s in enumerate(order))
-    yield Table(0, "drawing order", ("rank", "triangle", f"{key} z", "z0", "z1", "z2"), rows)
+    yield Table(line=at["sort"], name="drawing order",
+                columns=("rank", "triangle", f"{key} z", "z0", "z1", "z2"), rows=rows)
     color = np.full((scene.height, scene.width), -1, np.int64)
     owner = np.full((scene.height, scene.width), -1, np.int64)
+    paint_line = at["paint"]
     for setup in order:
-        yield from _triangle_vars(scene, setup, 1)
+        yield from _triangle_vars(scene, setup, at["triangle"])
         k = depth_key(setup)
         for i, j, z, c in scene.fragments(setup):
             color[j, i], owner[j, i] = c, setup.number
-            yield (2, i, j, z, k, float(c))
+            yield (paint_line, i, j, z, k, float(c))
     reference, _, ref_owner = zbuffer_image(points, {**options, "depth_test": "less"}, grid,
                                             clear=math.inf)
     differ = np.argwhere(color != reference)
     rows = tuple((int(x), int(y), _owner_text(owner[y, x]), _color_text(color[y, x]),
                   _owner_text(ref_owner[y, x]), _color_text(reference[y, x]))
                  for y, x in differ[:MAX_TABLE_ROWS])
-    yield Table(3, "disagreement", ("x", "y", "painter: triangle", "painter: colour",
-                                    "z-buffer: triangle", "z-buffer: colour"), rows)
+    yield Table(line=at["compare"], name="disagreement",
+                columns=("x", "y", "painter: triangle", "painter: colour", "z-buffer: triangle",
+                         "z-buffer: colour"), rows=rows)
     if len(differ) > MAX_TABLE_ROWS:
-        yield Note(3, f"The table lists the first {MAX_TABLE_ROWS} of {len(differ)} pixels.")
+        yield Note(line=at["compare"],
+                   text=f"The table lists the first {MAX_TABLE_ROWS} of {len(differ)} pixels.")
     wrong = int((owner != ref_owner).sum())
-    yield Vars(3, {"disagree": int(len(differ)), "wrong_triangle": wrong,
-                   "drawn": int((color >= 0).sum())})
+    yield Vars(line=at["compare"], values={"disagree": int(len(differ)), "wrong_triangle": wrong,
+                                           "drawn": int((color >= 0).sum())})
     if len(differ):
-        yield Note(4, f"{len(differ)} pixels differ from the z-buffer: no drawing order of "
-                      "whole triangles is right for this scene.")
+        yield Note(line=at["done"], text=f"{len(differ)} pixels differ from the z-buffer: no "
+                                         "drawing order of whole triangles is right for this "
+                                         "scene.")
 
 
 def _owner_text(number) -> str:
@@ -421,7 +428,8 @@ PAINTER_OPTIONS = (Z, COLORS, SORT, FILL_RULE)
 register(AlgorithmSpec(
     name="zbuffer", title="Z-buffer", family="visibility",
     summary="keep, per pixel, the nearest fragment: z < ZB[x, y] writes colour and depth",
-    inputs=TRIANGLES, options=ZBUFFER_OPTIONS, code=zbuffer_code, generator=zbuffer,
+    inputs=TRIANGLES, options=ZBUFFER_OPTIONS,
+    code=lambda points, options: tuple(zbuffer_code(points, options).lines), generator=zbuffer,
     notes=("Depths are interpolated barycentrically at the pixel centre, exactly, then "
            "rounded once to float64.",
            "Fragments that fail the depth test are shown but write nothing; the depth "
@@ -433,7 +441,8 @@ register(AlgorithmSpec(
 register(AlgorithmSpec(
     name="painter", title="Painter's algorithm", family="visibility",
     summary="sort triangles by depth and draw them back to front",
-    inputs=TRIANGLES, options=PAINTER_OPTIONS, code=painter_code, generator=painter,
+    inputs=TRIANGLES, options=PAINTER_OPTIONS,
+    code=lambda points, options: tuple(painter_code(points, options).lines), generator=painter,
     notes=("No depth buffer: whatever is drawn last over a pixel stays.",
            "Whole triangles cannot be ordered when they pierce each other or overlap in "
            "a cycle; the last step counts the pixels where the result differs from the "

@@ -94,7 +94,8 @@ _spec("triangle-linewise", "Linewise (explicit form)", "per row, the span betwee
              "centres exactly, so the fill rule holds at both ends.",
              "The e values shown are computed for display; the algorithm needs only the spans."))
 _spec("triangle-halfplane", "Half-plane (implicit form)", "a centre is inside when it lies "
-      "on the inner side of all three edges, by the winding order", HALFPLANE.code, HALFPLANE.generator,
+      "on the inner side of all three edges, by the winding order", HALFPLANE.code,
+      HALFPLANE.generator,
       notes=("Clockwise triangles keep their order: the inside is then to the right of every "
              "edge, and the fill rule is mirrored to match.",
              "Floating-point side tests use (V - U) x (P - U), relative to a vertex."))

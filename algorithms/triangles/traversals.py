@@ -19,6 +19,12 @@ from .edges import Edges, ExactView, Triangle, ceil_div, floor_div
 from .run import (BASE, LOOP_OPS, TEST_OPS, Run, Traversal, evaluate_ops, footer, header,
                   ops_sum, plot_text, shade_ops, step_ops)
 
+def _add_plot(code: Code, options, pixel: dict, weighted: bool = False) -> None:
+    """The line of a pixel that passes the test: the test's work and the shading's."""
+    code.add("plot", "            else: " + plot_text(options), PLOT,
+             ops=ops_sum(pixel, shade_ops(options, weighted)))
+
+
 # ----------------------------------------------------------- scan, bbox
 def box_code(options, whole: bool) -> Code:
     code = Code()
@@ -33,7 +39,7 @@ def box_code(options, whole: bool) -> Code:
     pixel = ops_sum(evaluate_ops(options), TEST_OPS, LOOP_OPS)
     code.add("test", "            e_k = e_k(x + 1/2, y + 1/2);  "
                      "if not (inside(e0) and inside(e1) and inside(e2)): skip", VISIT, ops=pixel)
-    code.add("plot", "            else: " + plot_text(options), PLOT, ops=ops_sum(pixel, shade_ops(options)))
+    _add_plot(code, options, pixel)
     footer(code)
     return code
 
@@ -74,7 +80,7 @@ def _incremental_code(options):
     pixel = ops_sum(TEST_OPS, LOOP_OPS, step_ops(options))
     code.add("test", "            if not (inside(e0) and inside(e1) and inside(e2)): skip", VISIT,
              ops=pixel)
-    code.add("plot", "            else: " + plot_text(options), PLOT, ops=ops_sum(pixel, shade_ops(options)))
+    _add_plot(code, options, pixel)
     code.add("step_x", "            e_k += a_k   (one pixel right: e(x + 1, y) = e(x, y) + a)")
     code.add("step_y", "        e_row_k += b_k   (one row up: e(x, y + 1) = e(x, y) + b)",
              ops=ops_sum(step_ops(options), LOOP_OPS))
@@ -128,7 +134,7 @@ def _backtrack_code(options):
     pixel = ops_sum(visit, {"compare": 3})
     code.add("test", "            if not (inside(e0) and inside(e1) and inside(e2)): skip", VISIT,
              ops=pixel)
-    code.add("plot", "            else: " + plot_text(options), PLOT, ops=ops_sum(pixel, shade_ops(options)))
+    _add_plot(code, options, pixel)
     code.add("stop", "        outside to the right: y -= 1   (e_k -= b_k; the next row starts "
                      "under this pixel)", VISIT, ops=visit)
     footer(code)
@@ -387,7 +393,7 @@ def _halfplane_code(options):
     code.add("test", "            P = (x + 1/2, y + 1/2);  side(P, U, V) = (V - U) x (P - U);  "
                      "if not (P on the winding's side of A->B, B->C, C->A, or on a kept edge): skip",
              VISIT, ops=pixel)
-    code.add("plot", "            else: " + plot_text(options), PLOT, ops=ops_sum(pixel, shade_ops(options)))
+    _add_plot(code, options, pixel)
     footer(code)
     return code
 
@@ -433,8 +439,7 @@ def _barycentric_code(options):
     pixel = ops_sum(evaluate_ops(options), {"div": 3}, TEST_OPS, LOOP_OPS)
     code.add("test", "            if not (alpha, beta, gamma >= 0, a zero one kept only by the "
                      "fill rule on its edge): skip   (each is then <= 1 too)", VISIT, ops=pixel)
-    code.add("plot", "            else: " + plot_text(options), PLOT,
-             ops=ops_sum(pixel, shade_ops(options, weighted=True)))
+    _add_plot(code, options, pixel, weighted=True)
     footer(code)
     return code
 
