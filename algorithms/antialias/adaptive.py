@@ -140,5 +140,3 @@ def adaptive_image(points, options, grid) -> tuple[np.ndarray, np.ndarray]:
             coverage[frame[2], frame[1]] = frame[9]
             spent[frame[2], frame[1]] = int(frame[8])
     return coverage, spent
-
-

@@ -138,5 +138,3 @@ def post_filter(points, options, grid):
         written += 1
         yield (at["out"], x, y, value, float(taps), float(ink_blend(ink, value)))
     yield Vars(line=at["done"], values={"pixels": written})
-
-

@@ -197,5 +197,3 @@ def line_area(points, options):
         + (options["width"] ** 2 if options["caps"] == "square" else 0.0)
     yield Vars(line=at["done"], values={"pixels": written, "area": total_area,
                                         "rectangle area": rectangle})
-
-

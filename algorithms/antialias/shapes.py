@@ -286,7 +286,6 @@ def sample_ops(hit: bool, test: dict, extra: dict | None = None) -> dict:
     return ops_sum({"samples": 1, "compare": 1}, POSITION, test, LOOP, extra or {})
 
 
-
 def shape_vars(shapes: Shapes, line: int):
     """The snapped outline of every shape, and a note on those with no area."""
     values = {}
@@ -298,7 +297,6 @@ def shape_vars(shapes: Shapes, line: int):
     if shapes.degenerate:
         yield Note(line=line, text=f"{shapes.degenerate} shape(s) have no area once snapped "
                                    "and cover nothing.")
-
 
 
 def _outline_vars(variables) -> list:
@@ -347,4 +345,3 @@ def explain_samples(trace, i):
     if "rgb" in step.values:
         rows.append(("colour", f"#{int(step.values['rgb']):06x}"))
     return rows
-

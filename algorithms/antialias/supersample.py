@@ -118,7 +118,6 @@ def normalised_weights(pattern, n, name, sigma=0.5, seed=1, x=0, y=0) -> list[Fr
     return [Fraction(int(v), total) for v in w]
 
 
-
 def supersample_image(points, options, grid, colors: bool = True):
     """Vectorised supersampling: (coverage (H, W) float64, colour (H, W) int64 or None).
 
@@ -266,4 +265,3 @@ def supersample(points, options, grid):
             else:
                 yield (empty_line, x, y, *nothing, 0.0, rgb)
     yield Vars(line=at["done"], values={"pixels": written, "samples": tested, "area": area})
-

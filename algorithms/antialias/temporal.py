@@ -208,5 +208,3 @@ def animation_frame_steps(spec, trace) -> list[int]:
               if isinstance(record, Vars) and "frame" in record.values]
     ends = [start - 1 for start in starts[1:]] + [len(trace) - 2]
     return [max(end, start) for start, end in zip(starts, ends)]
-
-

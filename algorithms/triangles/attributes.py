@@ -225,7 +225,8 @@ def _perspective_traversal(run, tri, edges, attrs, at):
             yield (plot, i, j, *shown, 1.0 if tie else 0.0, *map(float, extra))
 
 
-PERSPECTIVE_CORRECT = Traversal(_perspective_code, _perspective_traversal, PERSPECTIVE_COLUMNS)
+PERSPECTIVE_CORRECT = Traversal(_perspective_code, _perspective_traversal, PERSPECTIVE_COLUMNS,
+                                attributes=PerspectiveColumns)
 
 
 def perspective(points, options, grid=None):
@@ -345,4 +346,3 @@ def _with_clip_frames(frames, report, at, near):
     yield Table(line=line, name="near clip", columns=("triangle", "x", "y", "w", "s"),
                 rows=tuple(rows))
     yield from frames
-

@@ -239,7 +239,6 @@ class Edges:
         return tuple(float(w) for w in barycentric_weights(es[0], es[1], es[2], self.area2))
 
 
-
 def window_of(grid, setups, offset=(0, 0)):
     """The pixels a run may touch: (x0, y0, x1, y1), x1 and y1 excluded.
 
@@ -263,7 +262,6 @@ def window_of(grid, setups, offset=(0, 0)):
     return window
 
 
-
 def dyadic_text(numerator: int, denominator: int) -> str:
     """numerator / denominator exactly in decimal (the denominator a power of two)."""
     with localcontext() as context:
@@ -284,7 +282,6 @@ def edge_table(tri: Triangle, line: int) -> Table:
                      f"{tri.side(k)} ({'kept' if tri.include[k] else 'left out'} on a tie)"))
     return Table(line=line, name="edges", columns=("edge", "from -> to", "a", "b", "c", "side"),
                  rows=tuple(rows))
-
 
 
 def explain(trace, i):
@@ -334,4 +331,3 @@ class ExactView(Edges):
         self.tri, self.sign, self.include = tri, tri.sign, tri.include
         self.kind, self.unit, self.area2 = int, 2 * tri.S * tri.S, 2 * tri.area2
         self.a, self.b, self.c = tri.A, tri.B, tri.C
-

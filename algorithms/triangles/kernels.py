@@ -300,4 +300,3 @@ def _float_box_pixels(points, options, grid, whole):
         rows, cols = np.nonzero(ok)
         out.append(np.stack([cols + i_lo - offset[0], rows + j_lo - offset[1]], axis=1))
     return np.concatenate(out).astype(np.int64) if out else np.zeros((0, 2), np.int64)
-

@@ -118,7 +118,6 @@ def plot_text(options, what: str = "setPixel(x, y)") -> str:
     return what
 
 
-
 BASE = ("e0", "e1", "e2", "tie")
 
 
@@ -275,8 +274,6 @@ def mesh_flaws(run: Run) -> tuple[int, list]:
     return overlaps, [(int(c + x0), int(r + y0)) for r, c in zip(rows, columns)]
 
 
-
-
 def drive(run: Run, code: Code, traverse):
     """Start, each triangle's setup and traversal, then the totals; with an
     offset, pixels moved back onto the grid the trace shows."""
@@ -341,4 +338,3 @@ class Traversal:
         run = Run(points, options, grid, self.columns, self.keep_winding, self.weights_always,
                   attributes)
         return drive(run, code, self.traverse)
-

@@ -373,7 +373,6 @@ def _linewise_traversal(run, tri, edges, attrs, at):
             yield run.lean(at["plot"], i, j, es, view, tie, True, extra=(xl, xr), attrs=attrs)
 
 
-
 LINEWISE = Traversal(_linewise_code, _linewise_traversal, SPAN_COLUMNS)
 
 
@@ -464,4 +463,3 @@ def _barycentric_traversal(run, tri, edges, attrs, at):
 
 
 BARYCENTRIC = Traversal(_barycentric_code, _barycentric_traversal, weights_always=True)
-

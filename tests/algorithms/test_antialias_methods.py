@@ -156,8 +156,9 @@ def test_temporal_generator_rows_are_the_frames():
     for got, want in zip(images, frames):
         assert np.array_equal(got, want)
     # the grid at the end of frame k shows image k
+    frame_line = aa.temporal_code(WHEEL, options).at["frames"]
     ends = [i for i in range(len(trace)) if trace.step(i).record is not None
-            and trace.step(i).line == 1][1:] + [len(trace) - 1]
+            and trace.step(i).line == frame_line][1:] + [len(trace) - 1]
     for k, end in enumerate(ends):
         raster = trace.raster_at(end - 1 if k < len(ends) - 1 else end)
         grey = raster.colors & 0xFF
