@@ -1,0 +1,104 @@
+"""The window and an exported frame show the same cells.
+
+The window draws the grid with Qt items over a composed image; export
+composes the whole frame with numpy. For a few shipped scenes both are
+rendered at the same cell size (the window's grid grabbed with ``grab()``
+at the export's automatic scale: 20 screen pixels a cell for a 32 x 24
+grid, 32 for an 11 x 11 one) at the first, the
+middle and the last step, and the colour at each cell's centre, where no
+grid line, outline or text reaches, must be the same in both.
+
+The ideal primitive (a 2.5 px pen in the window, a line as wide as the
+scale allows in files) runs through cell centres, so it is off in both;
+the window's vertex handles and their labels are input controls that
+exports never draw, so they are hidden in the window.
+"""
+from pathlib import Path
+
+import numpy as np
+import pytest
+import pyqtgraph as pg
+from PySide6.QtCore import QRectF
+
+from app.model.scene import load
+from app.render.export import ExportSettings, FrameRenderer, auto_scale
+from gui_support import settle, shown_window
+
+SCENES = Path(__file__).resolve().parents[2] / "resources" / "scenes"
+AGREEING = ["demo-bresenham", "circle-radius-2", "polygon-star-evenodd", "triangle-mesh-1e6",
+            "painter-intersecting"]
+
+
+def show_in_window(qtbot, scene):
+    window = shown_window(qtbot)
+    window.resize(1500, 950)
+    window.set_scene(scene.algorithm, scene.points, scene.options, (scene.width, scene.height))
+    window.set_y_down(scene.origin == "top-left")
+    window.show_primitive.setChecked(False)
+    qtbot.waitUntil(lambda: window.player.trace is not None and not window.player.recording,
+                    timeout=10000)
+    settle(qtbot, window)  # the new size has reached the grid
+    grid = window.grid
+    for item in grid.view_box.addedItems:
+        if isinstance(item, (pg.ScatterPlotItem, pg.TextItem)):
+            item.hide()
+    return window
+
+
+def set_cell_size(grid, cell: int) -> None:
+    """Show the grid from its corner at ``cell`` screen pixels a cell."""
+    box = grid.view_box
+    width, height = box.width(), box.height()
+    assert width >= grid.grid_size[0] * cell and height >= grid.grid_size[1] * cell
+    box.setRange(QRectF(0, 0, width / cell, height / cell), padding=0)
+
+
+def window_cells(qtbot, window, index: int, cell: int) -> np.ndarray:
+    """(H, W, 3) colours at the cell centres of the window's grid, row 0 at y = 0."""
+    window.player.seek(index)
+    qtbot.wait(10)
+    grid = window.grid
+    width, height = grid.grid_size
+    a, b = grid.widget_pos_of((0.0, 0.0)), grid.widget_pos_of((1.0, 1.0))
+    assert abs(b.x() - a.x()) == cell and abs(b.y() - a.y()) == cell
+    image = grid.viewport().grab().toImage()
+    cells = np.zeros((height, width, 3), dtype=np.uint8)
+    for y in range(height):
+        for x in range(width):
+            where = grid.widget_pos_of((x + 0.5, y + 0.5))
+            colour = image.pixelColor(int(where.x()), int(where.y()))
+            cells[y, x] = colour.red(), colour.green(), colour.blue()
+    return cells
+
+
+def export_cells(renderer, index: int) -> np.ndarray:
+    """(H, W, 3) colours at the cell centres of the exported frame, row 0 at y = 0."""
+    width, height = renderer.trace.width, renderer.trace.height
+    scale = renderer.settings.scale
+    frame = renderer.rgb(index)[:height * scale, :width * scale]
+    centres = frame[scale // 2::scale, scale // 2::scale]
+    return centres if renderer.y_down else centres[::-1]
+
+
+def differing(a, b) -> list:
+    ys, xs = np.nonzero((a != b).any(axis=2))
+    return [((int(x), int(y)), "#%02x%02x%02x" % tuple(a[y, x]), "#%02x%02x%02x" % tuple(b[y, x]))
+            for x, y in zip(xs, ys)]
+
+
+@pytest.mark.parametrize("name", AGREEING)
+def test_window_and_export_show_the_same_cells(qtbot, name):
+    scene = load(SCENES / f"{name}.json")
+    window = show_in_window(qtbot, scene)
+    cell = auto_scale(scene.width, scene.height)
+    set_cell_size(window.grid, cell)
+    trace = window.player.trace
+    renderer = FrameRenderer(scene, ExportSettings(scale=cell, primitive=False), trace)
+    last = len(trace) - 1
+    for index in (0, last // 2, last):
+        shown = window_cells(qtbot, window, index, cell)
+        exported = export_cells(renderer, index)
+        assert len(np.unique(shown.reshape(-1, 3), axis=0)) >= (1 if index == 0 else 2)
+        wrong = differing(shown, exported)
+        assert not wrong, (f"{name} step {index}: {len(wrong)} cells differ "
+                           f"(cell, window, export): {wrong[:8]}")
