@@ -129,6 +129,15 @@ class FrameRenderer:
         """Frame ``index`` as an (h, w, 3) uint8 RGB array (for tests and checks)."""
         return self.colours.rgb[self.render(index)]
 
+    def cells(self, index: int) -> np.ndarray:
+        """(H, W, 3) uint8 colours at the centres of the grid's cells in
+        frame ``index``, row 0 at y = 0 (for tests and checks: grid lines,
+        outlines and text never reach a centre)."""
+        scale = self.settings.scale
+        gw, gh = self.grid_size
+        centres = self.rgb(index)[scale // 2:gh:scale, scale // 2:gw:scale]
+        return centres if self.y_down else centres[::-1]
+
 
 class _States:
     """The replayed state of each frame. Frames asked for in order are made

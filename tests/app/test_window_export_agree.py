@@ -71,15 +71,6 @@ def window_cells(qtbot, window, index: int, cell: int) -> np.ndarray:
     return cells
 
 
-def export_cells(renderer, index: int) -> np.ndarray:
-    """(H, W, 3) colours at the cell centres of the exported frame, row 0 at y = 0."""
-    width, height = renderer.trace.width, renderer.trace.height
-    scale = renderer.settings.scale
-    frame = renderer.rgb(index)[:height * scale, :width * scale]
-    centres = frame[scale // 2::scale, scale // 2::scale]
-    return centres if renderer.y_down else centres[::-1]
-
-
 def differing(a, b) -> list:
     ys, xs = np.nonzero((a != b).any(axis=2))
     return [((int(x), int(y)), "#%02x%02x%02x" % tuple(a[y, x]), "#%02x%02x%02x" % tuple(b[y, x]))
@@ -97,7 +88,7 @@ def test_window_and_export_show_the_same_cells(qtbot, name):
     last = len(trace) - 1
     for index in (0, last // 2, last):
         shown = window_cells(qtbot, window, index, cell)
-        exported = export_cells(renderer, index)
+        exported = renderer.cells(index)
         assert len(np.unique(shown.reshape(-1, 3), axis=0)) >= (1 if index == 0 else 2)
         wrong = differing(shown, exported)
         assert not wrong, (f"{name} step {index}: {len(wrong)} cells differ "
