@@ -542,3 +542,45 @@ def test_the_shipped_example_gif_is_small_and_matches_its_scene():
     with Image.open(example) as image:
         assert image.n_frames == len(renderer.trace) and image.info.get("loop") == 0
         assert image.size == renderer.size
+
+
+# ---------------------------------------------------------------- writers
+def test_every_writer_gets_the_same_frames(tmp_path):
+    null = ex.NullWriter()
+    result = ex.export(line_run(), ex.ExportSettings(scale=4), frames_dir=tmp_path / "frames",
+                       writers=[null])
+    assert null.finished and not null.aborted
+    assert null.size == result.size and len(null.frames) == result.frames == steps_of(line_run())
+    for k in (0, result.frames - 1):
+        png = np.asarray(Image.open(tmp_path / "frames" / f"frame_{k:04d}.png").convert("RGB"))
+        assert np.array_equal(png, np.asarray(null.frames[k].convert("RGB")))
+
+
+def test_a_failing_writer_aborts_the_others(tmp_path):
+    class Full(ex.NullWriter):
+        def grab_frame(self, image):
+            if len(self.frames) == 2:
+                raise OSError(28, "No space left on device")
+            super().grab_frame(image)
+
+    null = ex.NullWriter()
+    with pytest.raises(ex.ExportError, match="No space left"):
+        ex.export(line_run(), ex.ExportSettings(scale=4), gif=tmp_path / "x.gif",
+                  writers=[null, Full()])
+    assert null.aborted and not null.finished
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_export_loads_no_qt():
+    """Export draws its text with Pillow: the command never imports Qt."""
+    code = ("import sys, tempfile, os\n"
+            "from app import cli\n"
+            "out = os.path.join(tempfile.mkdtemp(), 'x.gif')\n"
+            "assert cli.main(['export', 'resources/scenes/circle-radius-1.json', '--gif', out,"
+            " '--scale', '4']) == 0\n"
+            "print(sorted(m for m in sys.modules if m.split('.')[0] in"
+            " ('PySide6', 'pyqtgraph', 'shiboken6', 'widgets')))\n")
+    done = subprocess.run([sys.executable, "-c", code], cwd=ROOT, capture_output=True, text=True,
+                          timeout=120)
+    assert done.returncode == 0, done.stderr
+    assert done.stdout.strip().splitlines()[-1] == "[]"
