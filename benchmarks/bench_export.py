@@ -4,7 +4,7 @@ Exports 300 frames of a 64 x 64 grid (a scan-line polygon fill) at scale 8
 with the caption and the pseudo-code panel, as ``rasterlab export`` does,
 and times:
 
-* total: ``app.export.export`` from the recorded run to the GIF on disk
+* total: ``app.render.export.export`` from the recorded run to the GIF on disk
   (drawing every frame, palette lookup, Pillow's encoding, the write);
 * encode: Pillow writing the same frames, drawn beforehand, with the same
   arguments (the floor any exporter built on Pillow pays);
