@@ -11,7 +11,8 @@ grid line, outline or text reaches, must be the same in both.
 The ideal primitive (a 2.5 px pen in the window, a line as wide as the
 scale allows in files) runs through cell centres, so it is off in both;
 the window's vertex handles and their labels are input controls that
-exports never draw, so they are hidden in the window.
+exports never draw, so they are hidden in the window. A scene with more
+colours than a GIF's palette holds agrees up to that palette.
 """
 from pathlib import Path
 
@@ -77,15 +78,22 @@ def differing(a, b) -> list:
             for x, y in zip(xs, ys)]
 
 
-@pytest.mark.parametrize("name", AGREEING)
-def test_window_and_export_show_the_same_cells(qtbot, name):
+def window_and_export(qtbot, name):
+    """The scene shown in the window at the export's automatic scale, and
+    its export renderer drawing the window's own trace at that scale."""
     scene = load(SCENES / f"{name}.json")
     window = show_in_window(qtbot, scene)
     cell = auto_scale(scene.width, scene.height)
     set_cell_size(window.grid, cell)
-    trace = window.player.trace
-    renderer = FrameRenderer(scene, ExportSettings(scale=cell, primitive=False), trace)
-    last = len(trace) - 1
+    renderer = FrameRenderer(scene, ExportSettings(scale=cell, primitive=False),
+                             window.player.trace)
+    return window, renderer, cell
+
+
+@pytest.mark.parametrize("name", AGREEING)
+def test_window_and_export_show_the_same_cells(qtbot, name):
+    window, renderer, cell = window_and_export(qtbot, name)
+    last = len(renderer.trace) - 1
     for index in (0, last // 2, last):
         shown = window_cells(qtbot, window, index, cell)
         exported = renderer.cells(index)
@@ -93,3 +101,17 @@ def test_window_and_export_show_the_same_cells(qtbot, name):
         wrong = differing(shown, exported)
         assert not wrong, (f"{name} step {index}: {len(wrong)} cells differ "
                            f"(cell, window, export): {wrong[:8]}")
+
+
+def test_more_colours_than_a_gif_holds_agree_up_to_the_palette(qtbot):
+    """Interpolated colours: the window shows each exactly, a GIF's palette
+    holds at most 253, so an exported cell shows the palette entry nearest
+    to the window's colour."""
+    window, renderer, cell = window_and_export(qtbot, "triangle-behind-eye")
+    last = len(renderer.trace) - 1
+    shown = window_cells(qtbot, window, last, cell)
+    assert len(np.unique(shown.reshape(-1, 3), axis=0)) > len(renderer.colours)
+    opaque = np.concatenate([shown, np.full(shown.shape[:2] + (1,), 255, np.uint8)], axis=2)
+    nearest = renderer.colours.rgb[renderer.colours.indices(opaque)]
+    wrong = differing(nearest, renderer.cells(last))
+    assert not wrong, f"{len(wrong)} cells differ (cell, window's nearest, export): {wrong[:8]}"
