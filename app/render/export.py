@@ -34,6 +34,7 @@ from app.render.settings import (MAX_FPS, MAX_HOLD, MAX_SCALE, MIN_FPS, NAMES, E
 from app.render.text import TextParts
 from app.render.writers import FrameWriter, GifWriter, NullWriter, PngFolderWriter, saving
 
+# Callers take every export name from here, whichever part defines it.
 __all__ = ["DARK", "LIGHT", "THEMES", "ColourIndex", "Theme", "build_palette", "MAX_FPS",
            "MAX_HOLD", "MAX_SCALE", "MIN_FPS", "ExportCancelled", "ExportError", "ExportSettings",
            "auto_scale", "frame_durations", "frame_range", "frame_steps", "record",
@@ -193,7 +194,7 @@ class _GridPart:
     which is done for the first frame and for a frame that does not follow
     the one before."""
 
-    def __init__(self, renderer: "FrameRenderer", incremental: bool = True):
+    def __init__(self, renderer: FrameRenderer, incremental: bool = True):
         self.r = renderer
         self.width, self.height = renderer.trace.width, renderer.trace.height
         settings = renderer.settings
