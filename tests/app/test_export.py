@@ -584,3 +584,17 @@ def test_export_loads_no_qt():
                           timeout=120)
     assert done.returncode == 0, done.stderr
     assert done.stdout.strip().splitlines()[-1] == "[]"
+
+
+def test_cells_that_differ_from_a_compared_run_are_outlined():
+    settings = ex.ExportSettings(scale=8, caption=False, panel="none", primitive=False)
+    plain = ex.FrameRenderer(line_run(), settings)
+    marked = ex.FrameRenderer(line_run(), settings, plain.trace, differences=np.array([[5, 6]]))
+    difference = rgb(PALETTE.difference)
+
+    def outlined(renderer, x, y):
+        top = (GRID[1] - 1 - y) * 8
+        block = renderer.rgb(3)[top:top + 8, x * 8:x * 8 + 8]
+        return difference in {tuple(c) for c in block.reshape(-1, 3)}
+
+    assert outlined(marked, 5, 6) and not outlined(marked, 6, 5) and not outlined(plain, 5, 6)
