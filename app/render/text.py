@@ -90,6 +90,7 @@ class TextParts:
         self.panel_height = {"code": code_height, "variables": variables_height,
                              "both": code_height + variables_height, "none": 0}[settings.panel]
         self._code_cache: dict[int | None, np.ndarray] = {}
+        self._code_rows: dict[int, Image.Image] = {}
 
     def allocate(self) -> None:
         r = self.r
@@ -126,6 +127,9 @@ class TextParts:
         draw.rectangle((0, 0, width - 1, 0), fill=theme.border)
         top = round(5 * self.ui)
         x0, room = self.pad, width - 2 * self.pad
+        # Line 2 (first, so that no other line's glyphs are covered): the
+        # pseudo-code line, numbered as in the panel.
+        image.paste(self._code_row(state.step.line), (0, top + self.line))
         # Line 1: "Step 12 of 40 · plots (5, 3) · branch NE", bold parts bold.
         text = step_caption(state, self.last, bold=lambda part: f"\x01{part}\x02")
         x, baseline = x0, self._baseline(top, self.sans)
@@ -134,13 +138,6 @@ class TextParts:
                 continue
             face = self.sans_bold if k % 2 == 1 else self.sans
             x += self._text(draw, x, baseline, piece, face, theme.text, x0 + room - x)
-        # Line 2: the pseudo-code line, numbered as in the panel.
-        line = state.step.line
-        baseline = self._baseline(top + self.line, self.mono)
-        if 0 <= line < len(self.code):
-            x = x0 + self._text(draw, x0, baseline, f"{line + 1}: ", self.mono, theme.muted)
-            self._text(draw, x, baseline, self.code[line].strip(), self.mono, theme.text,
-                       x0 + room - x)
         # Line 3: the values of this step, then what the algorithm explains.
         rows = key_values(self.r.trace, state)
         names = {name for name, _ in rows}
@@ -150,6 +147,21 @@ class TextParts:
         baseline = self._baseline(top + 2 * self.line, self.mono)
         self._text(draw, x0, baseline, "   \u00b7   ".join(parts), self.mono, theme.text, room)
         return self._indices(image)
+
+    def _code_row(self, line: int) -> Image.Image:
+        """The caption's second line for pseudo-code line ``line``, drawn
+        once per line (it is the same at every step that runs the line)."""
+        row = self._code_rows.get(line)
+        if row is None:
+            theme = self.r.theme
+            row, draw = self._canvas((self.caption_size[0], self.line), theme.caption)
+            x0, baseline = self.pad, self._baseline(0, self.mono)
+            if 0 <= line < len(self.code):
+                x = x0 + self._text(draw, x0, baseline, f"{line + 1}: ", self.mono, theme.muted)
+                self._text(draw, x, baseline, self.code[line].strip(), self.mono, theme.text,
+                           row.width - self.pad - x)
+            self._code_rows[line] = row
+        return row
 
     def _rows(self, index: int) -> list:
         """The variables panel's rows at step ``index``."""
