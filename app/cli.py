@@ -311,8 +311,6 @@ def add_export_command(commands) -> None:
 
 
 def command_export(args) -> int:
-    import os
-
     if args.gif is None and args.frames_dir is None:
         raise CommandError("export needs --gif OUT.gif, --frames-dir DIR, or both")
     fps = parse_number(args.fps, "--fps")
@@ -337,12 +335,10 @@ def command_export(args) -> int:
         grid_lines=not args.no_grid, primitive=not args.no_primitive,
         highlight=not args.no_highlight, caption=args.caption, panel=args.panel,
         theme=args.theme, loop=not args.once, per=args.per)
-    # Headless by default: the export draws text with Qt, and needs no window.
-    os.environ.setdefault("QT_QPA_PLATFORM", "offscreen")
     bar = _ProgressBar(sys.stderr)
 
     def work():
-        return exporting.export(exporting.Run.from_scene(scene), settings, gif=args.gif,
+        return exporting.export(scene, settings, gif=args.gif,
                                 frames_dir=args.frames_dir,
                                 progress=bar.show if bar.active else None,
                                 names=("--from", "--to"))

@@ -4,7 +4,7 @@ Exports 300 frames of a 64 x 64 grid (a scan-line polygon fill) at scale 8
 with the caption and the pseudo-code panel, as ``rasterlab export`` does,
 and times:
 
-* total: ``app.export.export`` from the recorded run to the GIF on disk
+* total: ``app.render.export.export`` from the recorded run to the GIF on disk
   (drawing every frame, palette lookup, Pillow's encoding, the write);
 * encode: Pillow writing the same frames, drawn beforehand, with the same
   arguments (the floor any exporter built on Pillow pays);
@@ -19,16 +19,14 @@ from __future__ import annotations
 
 import argparse
 import io
-import os
 import sys
 import tempfile
 import time
 from pathlib import Path
 
-os.environ.setdefault("QT_QPA_PLATFORM", "offscreen")
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 
-from app.render.export import ExportSettings, FrameRenderer, Run, ensure_qt, export  # noqa: E402
+from app.render.export import ExportSettings, FrameRenderer, export, record  # noqa: E402
 from app.model.scene import Scene  # noqa: E402
 
 
@@ -44,11 +42,10 @@ def main(argv=None) -> int:
     parser.add_argument("--panel", default="code", choices=("code", "variables", "both", "none"))
     args = parser.parse_args(argv)
 
-    ensure_qt()
     scene = Scene(algorithm="polygon-scanline", points=[[[3, 4], [60, 10], [50, 58], [8, 40]]],
                   width=64, height=64)
-    run = Run.from_scene(scene)
-    frames = min(args.frames, len(run.trace))
+    trace = record(scene)
+    frames = min(args.frames, len(trace))
     settings = ExportSettings(first=0, last=frames - 1, fps=10, scale=args.scale, caption=True,
                               panel=args.panel)
 
@@ -57,14 +54,14 @@ def main(argv=None) -> int:
         target = Path(folder) / "bench.gif"
         for _ in range(args.repeat):
             start = time.perf_counter()
-            result = export(run, settings, gif=target)
+            result = export(scene, settings, gif=target, trace=trace)
             totals.append(time.perf_counter() - start)
         size = target.stat().st_size
 
     draws, encodes = [], []
     for _ in range(args.repeat):
         start = time.perf_counter()
-        renderer = FrameRenderer(run, settings)
+        renderer = FrameRenderer(scene, settings, trace)
         images = [renderer.image(i) for i in range(frames)]
         draws.append(time.perf_counter() - start)
         start = time.perf_counter()

@@ -236,14 +236,17 @@ class FileActions(QObject):
     def export_animation(self) -> "ExportController | None":
         """Open the export dialog for the run on show."""
         window = self.window
-        window.player.pause()
-        try:
-            run = exporting.Run.from_player(window.player, y_down=window.grid.y_down,
-                                            title=self.title)
-        except exporting.ExportError as error:
-            QMessageBox.information(window, "Export animation", str(error))
+        player = window.player
+        player.pause()
+        refusal = _not_exportable(player)
+        if refusal:
+            QMessageBox.information(window, "Export animation", refusal)
             return None
-        run.bookmarks = [dict(b) for b in self.bookmarks]
+        # Build the replay caches now, so that an export running beside the
+        # window never builds them at the same time as the window does.
+        player.trace.raster_at(len(player.trace) - 1)
+        differences = player.differences if len(player.differences) else None
+        scene = self.current_scene()
         if self.export_controller is not None:
             old, self.export_controller = self.export_controller, None
             old.close()
@@ -251,14 +254,24 @@ class FileActions(QObject):
             old.deleteLater()
         folder = self.settings.value(EXPORT_FOLDER_KEY, "") or str(
             self.path.parent if self.path else Path.home())
-        name = (self.path.stem if self.path else run.spec.name) + ".gif"
-        self.export_controller = ExportController(window, run, str(Path(folder) / name),
-                                                  self.settings)
+        name = (self.path.stem if self.path else scene.algorithm) + ".gif"
+        self.export_controller = ExportController(window, scene, player.trace, differences,
+                                                  str(Path(folder) / name), self.settings)
         self.export_controller.dialog.open()
         return self.export_controller
 
     def _status(self, text: str) -> None:
         self.window.statusBar().showMessage(text, 4000)
+
+
+def _not_exportable(player) -> str:
+    """Why the player's run cannot be exported now, or ""."""
+    if player.trace is None:
+        return "there is no run to export: place the points first"
+    if player.recording:
+        return ("the new run is still recording: export when it has finished, "
+                "or cancel it to export the run on show")
+    return ""
 
 
 def _file_menu(window) -> QMenu:
@@ -279,19 +292,20 @@ class ExportThread(QThread):
     failed = Signal(str)
     cancelled = Signal()
 
-    def __init__(self, run, settings, gif, frames_dir, parent=None):
+    def __init__(self, scene, trace, differences, settings, gif, frames_dir, parent=None):
         super().__init__(parent)
-        self.job = (run, settings, gif, frames_dir)
+        self.job = (scene, trace, differences, settings, gif, frames_dir)
         self._stop = threading.Event()
 
     def cancel(self) -> None:
         self._stop.set()
 
     def run(self) -> None:  # the thread's body
-        run, settings, gif, frames_dir = self.job
+        scene, trace, differences, settings, gif, frames_dir = self.job
         try:
-            result = exporting.export(run, settings, gif=gif, frames_dir=frames_dir,
-                                      progress=self.progressed.emit, cancelled=self._stop.is_set)
+            result = exporting.export(scene, settings, gif=gif, frames_dir=frames_dir,
+                                      progress=self.progressed.emit, cancelled=self._stop.is_set,
+                                      trace=trace, differences=differences)
         except exporting.ExportCancelled:
             self.cancelled.emit()
         except exporting.ExportError as error:
@@ -303,20 +317,21 @@ class ExportThread(QThread):
 
 
 class ExportController(QObject):
-    """The export dialog for one run, and the thread that exports it."""
+    """The export dialog for one scene's recorded run (``trace``), and the
+    thread that exports it."""
 
-    def __init__(self, window, run, default_path: str, settings: QSettings | None = None):
+    def __init__(self, window, scene, trace, differences, default_path: str,
+                 settings: QSettings | None = None):
         super().__init__(window)
-        self.run = run
+        self.scene, self.trace, self.differences = scene, trace, differences
         self.settings = settings
         self.thread: ExportThread | None = None
         self.result = None
         self.dialog = ExportDialog(window, exporting.MAX_FPS, exporting.MAX_SCALE,
                                    exporting.MAX_HOLD)
         self.dialog.setWindowModality(Qt.WindowModality.WindowModal)
-        trace = run.trace
         self.dialog.set_steps(window.player.index, len(trace) - 1)
-        self.dialog.set_bookmarks(run.bookmarks)
+        self.dialog.set_bookmarks(scene.bookmarks)
         self.dialog.set_values({"scale": exporting.auto_scale(trace.width, trace.height),
                                 "gif": default_path})
         self.dialog.exportRequested.connect(self.start)
@@ -338,10 +353,10 @@ class ExportController(QObject):
     def _summarise(self) -> None:
         values = self.dialog.values()
         try:
-            count = len(self.run.frame_steps(self.export_settings()[0]))
+            count = len(exporting.frame_steps(self.scene, self.trace, self.export_settings()[0]))
         except exporting.ExportError:
             count = 0
-        trace = self.run.trace
+        trace = self.trace
         seconds = sum(exporting.frame_durations(count, values["fps"], values["hold"])) / 1000
         self.dialog.set_size_text(
             f"{count:,} frame{'s' if count != 1 else ''}, {seconds:g} s; grid "
@@ -352,7 +367,8 @@ class ExportController(QObject):
             return
         settings, gif, frames_dir = self.export_settings()
         self.result = None
-        self.thread = ExportThread(self.run, settings, gif, frames_dir, self)
+        self.thread = ExportThread(self.scene, self.trace, self.differences, settings, gif,
+                                   frames_dir, self)
         self.thread.progressed.connect(self.dialog.set_progress)
         self.thread.succeeded.connect(self._succeeded)
         self.thread.failed.connect(self._failed)

@@ -27,12 +27,6 @@ P, Q = (1, 1), (12, 6)
 GRID = (14, 8)
 
 
-@pytest.fixture(autouse=True)
-def _qt(qapp):
-    """A QApplication exists before any export makes a QGuiApplication."""
-    return qapp
-
-
 def bresenham(p, q):
     """Textbook Bresenham for 0 <= dy <= dx (the oracle)."""
     (x, y), (x1, y1) = p, q
@@ -65,10 +59,13 @@ def line_scene(tmp_path):
 
 
 def line_run(origin="bottom-left"):
-    scene = Scene(algorithm="line-bresenham", points=[list(P), list(Q)], width=GRID[0],
-                  height=GRID[1], origin=origin,
-                  bookmarks=[{"name": "third", "step": 3}, {"name": "late", "step": 9}])
-    return ex.Run.from_scene(scene)
+    return Scene(algorithm="line-bresenham", points=[list(P), list(Q)], width=GRID[0],
+                 height=GRID[1], origin=origin,
+                 bookmarks=[{"name": "third", "step": 3}, {"name": "late", "step": 9}])
+
+
+def steps_of(scene) -> int:
+    return len(ex.record(scene))
 
 
 def gif_frames(path):
@@ -117,7 +114,7 @@ def test_gif_frames_sizes_durations_and_pixels(tmp_path):
     target = tmp_path / "line.gif"
     result = ex.export(run, settings, gif=target)
     frames, infos = gif_frames(target)
-    steps = len(run.trace)
+    steps = steps_of(run)
     assert result.frames == len(frames) == steps
     caption = result.size[1] - GRID[1] * 8
     assert caption > 0
@@ -141,7 +138,7 @@ def test_play_once_has_no_loop_and_one_palette(tmp_path):
     with Image.open(target) as image:
         assert "loop" not in image.info
     has_global, local = gif_blocks(target.read_bytes())
-    assert has_global and len(local) == len(line_run().trace) and not any(local)
+    assert has_global and len(local) == steps_of(line_run()) and not any(local)
 
 
 def test_durations_keep_time_at_any_rate():
@@ -160,7 +157,7 @@ def test_range_by_steps_and_bookmarks(tmp_path):
     assert result.frames == 4 == len(gif_frames(target)[0])
     result = ex.export(run, ex.ExportSettings(first="third", last="late", scale=4), gif=target)
     assert result.frames == 7
-    assert run.frame_range("late") == range(9, len(run.trace))
+    assert ex.frame_range(run, ex.record(run), "late") == range(9, steps_of(run))
 
 
 @pytest.mark.parametrize("settings, words", [
@@ -187,8 +184,7 @@ def test_bad_settings_say_what(tmp_path, settings, words):
 
 
 def test_frame_size_is_capped(tmp_path):
-    run = ex.Run.from_scene(Scene(algorithm="line-bresenham", points=[[0, 0], [3, 1]],
-                                  width=600, height=20))
+    run = Scene(algorithm="line-bresenham", points=[[0, 0], [3, 1]], width=600, height=20)
     with pytest.raises(ex.ExportError, match="4096"):
         ex.export(run, ex.ExportSettings(scale=8), gif=tmp_path / "wide.gif")
     assert list(tmp_path.iterdir()) == []
@@ -261,7 +257,7 @@ def test_png_frames_beside_the_gif(tmp_path):
     settings = ex.ExportSettings(scale=6, panel="code", primitive=False)
     result = ex.export(run, settings, gif=tmp_path / "a.gif", frames_dir=folder)
     names = sorted(p.name for p in folder.iterdir())
-    assert names == [f"frame_{k:04d}.png" for k in range(len(run.trace))]
+    assert names == [f"frame_{k:04d}.png" for k in range(steps_of(run))]
     renderer = ex.FrameRenderer(run, settings)
     assert result.size == (GRID[0] * 6 + renderer.panel_width,
                            max(GRID[1] * 6, renderer.body_height) + renderer.caption_height)
@@ -305,7 +301,7 @@ def test_burn_in_choices_change_what_is_drawn():
 def test_dark_theme_and_the_side_panels():
     run = line_run()
     dark = ex.FrameRenderer(run, ex.ExportSettings(scale=8, theme="dark", panel="both"))
-    image = dark.rgb(len(run.trace) - 1)
+    image = dark.rgb(steps_of(run) - 1)
     assert cell(image, 0, 0, 8, GRID[1]) == rgb(ex.DARK.palette.background)
     assert cell(image, P[0], P[1], 8, GRID[1]) == rgb(ex.DARK.palette.ink)
     panel = image[:dark.body_height, GRID[0] * 8 + 2:]
@@ -324,7 +320,7 @@ def test_the_code_panel_marks_the_current_line():
         image = renderer.rgb(index)
         panel = image[:, GRID[0] * 8 + 2:]
         rows = np.flatnonzero((panel == marked).all(axis=2).any(axis=1))
-        line = run.trace.step(index).line
+        line = renderer.trace.step(index).line
         top = renderer._text.pad + renderer._text.line * (1 + sum(rows_per_line[:line]))
         assert rows.min() == top
         assert rows.max() == top + renderer._text.line * rows_per_line[line] - 1
@@ -333,13 +329,13 @@ def test_the_code_panel_marks_the_current_line():
 def test_run_colours_are_in_the_palette():
     scene = Scene(algorithm="flood-fill", points=[[[2, 2], [17, 3], [10, 14]]], width=20,
                   height=16)
-    run = ex.Run.from_scene(scene)
-    renderer = ex.FrameRenderer(run, ex.ExportSettings(scale=4, panel="none", caption=False,
-                                                       primitive=False))
+    renderer = ex.FrameRenderer(scene, ex.ExportSettings(scale=4, panel="none", caption=False,
+                                                         primitive=False))
     palette = {tuple(c) for c in renderer.colours.rgb}
     assert {rgb("#c0392b"), rgb("#2e86de")} <= palette
-    image = renderer.rgb(len(run.trace) - 1)
-    final = run.trace.raster_at(len(run.trace) - 1)
+    trace = renderer.trace
+    image = renderer.rgb(len(trace) - 1)
+    final = trace.raster_at(len(trace) - 1)
     ys, xs = np.nonzero((final.counts == 1) & (final.colors >= 0))
     for x, y in list(zip(xs, ys))[:50]:
         value = int(final.colors[y, x])
@@ -384,11 +380,10 @@ def test_a_run_with_many_colours_gets_a_reduced_palette():
 ])
 @pytest.mark.parametrize("scale", [1, 2, 5])
 def test_redrawing_only_what_changed_gives_the_same_frames(scene, scale):
-    run = ex.Run.from_scene(scene)
     settings = ex.ExportSettings(scale=scale, caption=False, panel="none")
-    quick = ex.FrameRenderer(run, settings)
-    whole = ex.FrameRenderer(run, settings, incremental=False)
-    count = len(run.trace)
+    quick = ex.FrameRenderer(scene, settings)
+    whole = ex.FrameRenderer(scene, settings, quick.trace, incremental=False)
+    count = len(quick.trace)
     order = list(range(min(count, 80))) + [count - 1, 3, count // 2, 1, count - 2]
     for index in order:
         assert np.array_equal(quick.render(index), whole.render(index)), index
@@ -403,11 +398,11 @@ def test_redrawing_only_what_changed_gives_the_same_frames(scene, scale):
     Scene(algorithm="line-dda", points=[[0, 0], [19, 7]], width=20, height=8),
 ])
 def test_frames_in_order_replay_as_the_trace_does(scene):
-    run = ex.Run.from_scene(scene)
-    states = ex._States(run.trace)
-    for index in range(len(run.trace)):
+    trace = ex.record(scene)
+    states = ex._States(trace)
+    for index in range(len(trace)):
         state, written = states.at(index)
-        expected = run.trace.raster_at(index)
+        expected = trace.raster_at(index)
         assert np.array_equal(state.raster.counts, expected.counts), index
         if expected.colors is not None:
             assert np.array_equal(state.raster.colors, expected.colors), index
@@ -416,10 +411,10 @@ def test_frames_in_order_replay_as_the_trace_does(scene):
 
 def test_frames_are_drawn_by_compose():
     """One path, one current cell: compose_frame is render.compose itself."""
-    run = line_run()
-    paths = run.paths()
-    for index in (2, 5, len(run.trace) - 1):
-        state = run.trace.state_at(index)
+    renderer = ex.FrameRenderer(line_run())
+    paths, trace = renderer.paths, renderer.trace
+    for index in (2, 5, len(trace) - 1):
+        state = trace.state_at(index)
         marks = frame_marks(state, paths)
         ours = compose_frame(state.raster, marks, PALETTE, 8, True)
         overlay = Overlay(current=state.pixel, candidates=state.candidates,
@@ -543,7 +538,63 @@ def test_the_command_runs_headless(line_scene, tmp_path):
 def test_the_shipped_example_gif_is_small_and_matches_its_scene():
     example = ROOT / "resources" / "example-bresenham.gif"
     assert example.stat().st_size < 400 * 1024
-    run = ex.Run.from_scene(load(ROOT / "resources" / "scenes" / "demo-bresenham.json"))
+    renderer = ex.FrameRenderer(load(ROOT / "resources" / "scenes" / "demo-bresenham.json"))
     with Image.open(example) as image:
-        assert image.n_frames == len(run.trace) and image.info.get("loop") == 0
-        assert image.size == ex.FrameRenderer(run).size
+        assert image.n_frames == len(renderer.trace) and image.info.get("loop") == 0
+        assert image.size == renderer.size
+
+
+# ---------------------------------------------------------------- writers
+def test_every_writer_gets_the_same_frames(tmp_path):
+    null = ex.NullWriter()
+    result = ex.export(line_run(), ex.ExportSettings(scale=4), frames_dir=tmp_path / "frames",
+                       writers=[null])
+    assert null.finished and not null.aborted
+    assert null.size == result.size and len(null.frames) == result.frames == steps_of(line_run())
+    for k in (0, result.frames - 1):
+        png = np.asarray(Image.open(tmp_path / "frames" / f"frame_{k:04d}.png").convert("RGB"))
+        assert np.array_equal(png, np.asarray(null.frames[k].convert("RGB")))
+
+
+def test_a_failing_writer_aborts_the_others(tmp_path):
+    class Full(ex.NullWriter):
+        def grab_frame(self, image):
+            if len(self.frames) == 2:
+                raise OSError(28, "No space left on device")
+            super().grab_frame(image)
+
+    null = ex.NullWriter()
+    with pytest.raises(ex.ExportError, match="No space left"):
+        ex.export(line_run(), ex.ExportSettings(scale=4), gif=tmp_path / "x.gif",
+                  writers=[null, Full()])
+    assert null.aborted and not null.finished
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_export_loads_no_qt():
+    """Export draws its text with Pillow: the command never imports Qt."""
+    code = ("import sys, tempfile, os\n"
+            "from app import cli\n"
+            "out = os.path.join(tempfile.mkdtemp(), 'x.gif')\n"
+            "assert cli.main(['export', 'resources/scenes/circle-radius-1.json', '--gif', out,"
+            " '--scale', '4']) == 0\n"
+            "print(sorted(m for m in sys.modules if m.split('.')[0] in"
+            " ('PySide6', 'pyqtgraph', 'shiboken6', 'widgets')))\n")
+    done = subprocess.run([sys.executable, "-c", code], cwd=ROOT, capture_output=True, text=True,
+                          timeout=120)
+    assert done.returncode == 0, done.stderr
+    assert done.stdout.strip().splitlines()[-1] == "[]"
+
+
+def test_cells_that_differ_from_a_compared_run_are_outlined():
+    settings = ex.ExportSettings(scale=8, caption=False, panel="none", primitive=False)
+    plain = ex.FrameRenderer(line_run(), settings)
+    marked = ex.FrameRenderer(line_run(), settings, plain.trace, differences=np.array([[5, 6]]))
+    difference = rgb(PALETTE.difference)
+
+    def outlined(renderer, x, y):
+        top = (GRID[1] - 1 - y) * 8
+        block = renderer.rgb(3)[top:top + 8, x * 8:x * 8 + 8]
+        return difference in {tuple(c) for c in block.reshape(-1, 3)}
+
+    assert outlined(marked, 5, 6) and not outlined(marked, 6, 5) and not outlined(plain, 5, 6)

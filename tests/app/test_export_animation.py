@@ -15,9 +15,6 @@ from app.render import export as exporting
 from app.model.scene import Scene, save
 
 ROOT = Path(__file__).resolve().parents[2]
-# Export paints text with Qt: the test session's QApplication must exist
-# first, or export would make a bare QGuiApplication the widget tests cannot use.
-pytestmark = pytest.mark.usefixtures("qapp")
 GRID = (20, 12)
 # Vertices a quarter pixel off the lattice: no pixel centre lies on an edge.
 TRIANGLE = [[2.25, 2.25], [8.25, 2.75], [4.75, 9.25]]
@@ -76,11 +73,10 @@ def scene_file(tmp_path, algorithm="aa-temporal", points=TRIANGLE, options=MOVIN
 
 
 def test_export_writes_one_png_per_animation_frame(tmp_path):
-    run = exporting.Run(registry.get("aa-temporal"), moving_trace(), TRIANGLE,
-                        registry.get("aa-temporal").resolve(MOVING))
+    scene = Scene("aa-temporal", TRIANGLE, dict(MOVING), *GRID)
     settings = exporting.ExportSettings(scale=4, caption=False, panel="none")
-    result = exporting.export(run, settings, frames_dir=tmp_path / "frames",
-                              gif=tmp_path / "wheel.gif")
+    result = exporting.export(scene, settings, frames_dir=tmp_path / "frames",
+                              gif=tmp_path / "wheel.gif", trace=moving_trace())
     assert result.frames == MOVING["frames"]
     frames = sorted((tmp_path / "frames").glob("frame_*.png"))
     assert len(frames) == MOVING["frames"]
@@ -93,18 +89,19 @@ def test_export_writes_one_png_per_animation_frame(tmp_path):
 
 def test_per_step_and_per_animation_choices(tmp_path):
     spec, trace = registry.get("aa-temporal"), moving_trace()
-    run = exporting.Run(spec, trace, TRIANGLE, spec.resolve(MOVING))
+    scene = Scene("aa-temporal", TRIANGLE, dict(MOVING), *GRID)
     every = exporting.ExportSettings(per="step", first=0, last=9)
-    assert list(run.frame_steps(every)) == list(range(10))
+    assert list(exporting.frame_steps(scene, trace, every)) == list(range(10))
     # A range keeps the animation frames that end inside it.
     steps = animation_frame_steps(spec, trace)
     part = exporting.ExportSettings(per="animation", first=steps[1], last=steps[3])
-    assert run.frame_steps(part) == steps[1:4]
-    line = registry.get("line-bresenham")
-    line_run = exporting.Run(line, line.record([(0, 0), (5, 2)]), [(0, 0), (5, 2)], {})
-    assert list(line_run.frame_steps(exporting.ExportSettings())) == list(range(len(line_run.trace)))
+    assert exporting.frame_steps(scene, trace, part) == steps[1:4]
+    line = Scene("line-bresenham", [[0, 0], [5, 2]])
+    line_trace = exporting.record(line)
+    assert list(exporting.frame_steps(line, line_trace, exporting.ExportSettings())) \
+        == list(range(len(line_trace)))
     with pytest.raises(exporting.ExportError, match="no animation frames"):
-        line_run.frame_steps(exporting.ExportSettings(per="animation"))
+        exporting.frame_steps(line, line_trace, exporting.ExportSettings(per="animation"))
     with pytest.raises(exporting.ExportError, match="frames per"):
         exporting.ExportSettings(per="sometimes").checked()
 

@@ -243,7 +243,8 @@ def test_the_export_dialog_writes_a_gif(window, files, qtbot, tmp_path):
     with Image.open(target) as image:
         assert image.n_frames == last - 6 + 1
         assert image.size == (24 * 4, 16 * 4 + ex.FrameRenderer(
-            controller.run, ex.ExportSettings(scale=4, panel="none")).caption_height)
+            controller.scene, ex.ExportSettings(scale=4, panel="none"),
+            controller.trace).caption_height)
         assert image.info["duration"] == 100 and "loop" not in image.info
     assert dialog.progress.value() == dialog.progress.maximum()
     assert dialog.export_button.isEnabled() and not dialog.cancel_button.isEnabled()
@@ -335,7 +336,7 @@ def test_the_dialog_exports_what_the_command_line_exports(window, files, qtbot, 
                        "theme": "dark"})
     qtbot.mouseClick(dialog.export_button, Qt.MouseButton.LeftButton)
     wait_done(qtbot, controller)
-    ex.export(ex.Run.from_scene(scenes.load(path)),
+    ex.export(scenes.load(path),
               ex.ExportSettings(scale=5, panel="variables", theme="dark"),
               gif=tmp_path / "command.gif")
     with Image.open(tmp_path / "window.gif") as a, Image.open(tmp_path / "command.gif") as b:
