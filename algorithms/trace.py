@@ -366,6 +366,8 @@ class Trace:
     def _span_writes(self, lo: int, hi: int):
         """Steps, pixels and values (NaN for none) of the pixels written by
         the spans on PLOT lines among steps lo..hi-1, in order."""
+        if Span not in self._steps_by_type:  # most runs have none: skip the work
+            return np.zeros(0, np.int64), np.zeros((0, 2), np.int64), np.zeros(0)
         spans = self.spans(lo, hi)
         spans = spans[self._line_plots[spans["line"]]]
         lengths = np.maximum(spans["x_end"] - spans["x_start"], 0)
@@ -549,7 +551,7 @@ def _frozen_steps(steps: list[int]) -> np.ndarray:
 
 def _bounds(steps: np.ndarray, lo: int, hi: int | None) -> tuple[int, int]:
     """Where steps lo..hi-1 begin and end in the sorted ``steps``."""
-    first = int(np.searchsorted(steps, lo))
+    first = 0 if lo <= 0 else int(np.searchsorted(steps, lo))
     return first, len(steps) if hi is None else int(np.searchsorted(steps, hi))
 
 
