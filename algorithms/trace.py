@@ -14,7 +14,7 @@ through the queries below rather than by walking them:
 ``steps_of(*types, lo, hi)``     the steps holding records of those types
 ``records_of(*types, lo, hi)``   (step, record) pairs of those types
 ``last_of(*types, at)``          the latest such pair at or before a step
-``spans(lo, hi)``                every Span as one row of column arrays
+``spans(lo, hi)``                the Spans of a step range, one table row each
 ``written(lo, hi)``              the pixels steps lo..hi-1 write, with values
 ``replay(lo, hi, raster)``       apply steps lo..hi-1 to a raster; the one
                                  replay, which ``state_at`` uses from a keyframe
