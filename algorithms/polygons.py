@@ -278,13 +278,11 @@ def scanline_explain(trace, i):
         if isinstance(record, Table) and record.name == "AET":
             return [("scan line", f"centre line y + 1/2 = {trace.step(i - 1).values.get('y', 0) + 0.5:g}")]
         return []
-    k, ordinal = i - 1, 0
-    while k > 0 and not (isinstance(trace.records.get(k), Table) and trace.records[k].name == "AET"):
-        ordinal += isinstance(trace.records.get(k), Span)
-        k -= 1
-    table = trace.records.get(k)
-    if table is None:
+    tables = [(k, table) for k, table in trace.records_of(Table, hi=i) if table.name == "AET"]
+    if not tables:
         return []
+    k, table = tables[-1]
+    ordinal = len(trace.steps_of(Span, lo=k + 1, hi=i))
     rule = trace.start.constants["fill_rule"]
     active = [ScanEdge(row[0], 0, row[1], row[2], row[3], row[4] if rule == "nonzero" else 1)
               for row in table.rows]

@@ -5,15 +5,27 @@ column per named value), about 10 + 8k bytes a step for k values, instead
 of one Python object per step. ``state_at(i)`` copies the nearest keyframe
 before i and replays the frames in between with numpy, so scrubbing and
 stepping backward never replay from step 0 on long traces.
+
+The rich records (``Start``, ``Vars``, ``Table``, ``Note``, ``Span``) are
+kept by step, with a sorted array of steps per record type, and read
+through the queries below rather than by walking them:
+
+``record_at(i)``                 the rich record of step i, or None
+``steps_of(*types, lo, hi)``     the steps holding records of those types
+``records_of(*types, lo, hi)``   (step, record) pairs of those types
+``last_of(*types, at)``          the latest such pair at or before a step
+``spans(lo, hi)``                the Spans of a step range, one table row each
+``written(lo, hi)``              the pixels steps lo..hi-1 write, with values
+``replay(lo, hi, raster)``       apply steps lo..hi-1 to a raster; the one
+                                 replay, which ``state_at`` uses from a keyframe
 """
 from __future__ import annotations
 
-import bisect
 import math
 import threading
 from dataclasses import dataclass
 from itertools import groupby, islice
-from typing import Iterable, Sequence
+from typing import Iterable, NamedTuple, Sequence
 
 import numpy as np
 
@@ -79,6 +91,26 @@ class FrameState:
         return self.step.pixel
 
 
+class Writes(NamedTuple):
+    """The pixels some steps write, in emission order, duplicates kept.
+
+    A Span on a PLOT line counts as one write per pixel of its run.
+    ``steps`` (n,) int64: the step of each write; ``pixels`` (n, 2) int64:
+    (x, y), outside the grid included; ``values`` (n,) float64: the run's
+    ``Start.pixel_value`` written (NaN from a span without one), or None
+    when the run writes no values.
+    """
+
+    steps: np.ndarray
+    pixels: np.ndarray
+    values: np.ndarray | None
+
+
+# One row per Span record: its step, code line, row and run; value NaN for none.
+SPAN_DTYPE = np.dtype([("step", "i8"), ("line", "i8"), ("y", "i8"), ("x_start", "i8"),
+                       ("x_end", "i8"), ("value", "f8")])
+
+
 class Trace:
     """A recorded run: columns of frames plus the sparse rich records."""
 
@@ -90,11 +122,14 @@ class Trace:
         self.width, self.height = width, height
         self.step_cap = step_cap
         self.start: Start | None = None
-        self.records: dict[int, object] = {}
+        self._records: dict[int, object] = {}
         self.truncated = False
         self.message = ""
-        self._vars_at: list[int] = []
-        self._spans: list[int] = []  # indices of Span records on PLOT lines
+        # Steps of the rich records, per record type and of all types: lists
+        # while recording, read-only int64 arrays once it is finished.
+        self._steps_by_type: dict[type, list[int] | np.ndarray] = {}
+        self._rich_steps: list[int] | np.ndarray = []
+        self._span_table: np.ndarray | None = None
         self._chunks: list[np.ndarray] = []
         self._keyframes: list[Raster] | None = None
         self._gap = 0
@@ -197,11 +232,9 @@ class Trace:
                              f"does not exist")
 
     def _store_rich(self, index: int, record) -> None:
-        self.records[index] = record
-        if isinstance(record, Vars):
-            self._vars_at.append(index)
-        elif isinstance(record, Span) and self.code[record.line].kind == PLOT:
-            self._spans.append(index)
+        self._records[index] = record
+        self._rich_steps.append(index)
+        self._steps_by_type.setdefault(type(record), []).append(index)
 
     def _finish(self) -> None:
         # Chunk by chunk into the columns rather than one concatenate: each
@@ -222,6 +255,9 @@ class Trace:
                 self.values[at:end, column] = block[name]
             at = end
         self._chunks = []
+        self._rich_steps = _frozen_steps(self._rich_steps)
+        self._steps_by_type = {kind: _frozen_steps(steps)
+                               for kind, steps in self._steps_by_type.items()}
 
     # ------------------------------------------------------------ queries
     def __len__(self) -> int:
@@ -236,62 +272,113 @@ class Trace:
         return self.line.nbytes + self.x.nbytes + self.y.nbytes + self.values.nbytes
 
     def cache_nbytes(self) -> int:
-        """Bytes held by the replay caches: keyframes and the pixel index."""
+        """Bytes held by the replay caches: keyframes, the pixel index, the span table."""
         keyframes = sum(raster.bytes() for raster in self._keyframes or () if raster)
-        return keyframes + (0 if self._flat is None else self._flat.nbytes)
+        spans = 0 if self._span_table is None else self._span_table.nbytes
+        return keyframes + spans + (0 if self._flat is None else self._flat.nbytes)
 
     def series(self, name: str) -> np.ndarray:
         """One named value over all steps; NaN where a step lacks it."""
         return self.values[:, self.value_names.index(name)]
 
+    # ------------------------------------------------------- rich records
+    def record_at(self, i: int):
+        """The rich record of step i (a Start, Vars, Table, Note or Span), or None."""
+        return self._records.get(self._index(i))
+
+    def steps_of(self, *types: type, lo: int = 0, hi: int | None = None) -> np.ndarray:
+        """Ascending steps in lo..hi-1 that hold a rich record of one of
+        ``types`` (of any type when none is named): a read-only int64 array,
+        found by binary search in the steps kept per type."""
+        if not types:
+            return _between(self._rich_steps, lo, hi)
+        parts = [_between(self._steps_by_type.get(kind, _NO_STEPS), lo, hi) for kind in types]
+        return parts[0] if len(parts) == 1 else np.sort(np.concatenate(parts))
+
+    def records_of(self, *types: type, lo: int = 0, hi: int | None = None) -> list:
+        """(step, record) pairs of the rich records ``steps_of`` finds, in step order."""
+        return [(step, self._records[step])
+                for step in self.steps_of(*types, lo=lo, hi=hi).tolist()]
+
+    def last_of(self, *types: type, at: int):
+        """The (step, record) pair of the latest record of one of ``types``
+        at or before step ``at``, or None when there is none."""
+        latest = -1
+        for kind in types:
+            steps = self._steps_by_type.get(kind, _NO_STEPS)
+            k = int(np.searchsorted(steps, at, side="right")) - 1
+            if k >= 0:
+                latest = max(latest, int(steps[k]))
+        return None if latest < 0 else (latest, self._records[latest])
+
+    def spans(self, lo: int = 0, hi: int | None = None) -> np.ndarray:
+        """The Span records of steps lo..hi-1, on lines of any kind, one row
+        each (fields of ``SPAN_DTYPE``; ``value`` NaN where a span has none),
+        in step order; read-only."""
+        if self._span_table is None:
+            spans = self.records_of(Span)
+            table = np.array([(step, r.line, r.y, r.x_start, r.x_end,
+                               math.nan if r.value is None else float(r.value))
+                              for step, r in spans], SPAN_DTYPE)
+            table.flags.writeable = False
+            self._span_table = table
+        first, last = _bounds(self._span_table["step"], lo, hi)
+        return self._span_table[first:last]
+
+    # ------------------------------------------------------------- writes
     def writes(self) -> np.ndarray:
-        """Per step: does it write a single pixel? (Span steps are not counted.)"""
-        mask = self._line_plots[self.line] & (self.x != NO_PIXEL)
-        # Rich records never write a single pixel (a Span writes its run).
-        mask[list(self.records)] = False
-        return mask
+        """Per step: does it write a single pixel? (A Span step writes a run
+        and is not counted here; ``written`` gives every write.)"""
+        return self._single_writes(0, len(self))
+
+    def written(self, lo: int = 0, hi: int | None = None) -> Writes:
+        """The pixels steps lo..hi-1 write, spans expanded, in emission order
+        (see ``Writes``); ``written(0, i + 1)`` is everything up to step i."""
+        lo, hi = self._range(lo, hi)
+        steps = lo + np.flatnonzero(self._single_writes(lo, hi))
+        pixels = np.stack([self.x[steps], self.y[steps]], axis=1).astype(np.int64)
+        name = self.start.pixel_value
+        values = None if name is None else self.series(name)[steps]
+        span_steps, span_pixels, span_values = self._span_writes(lo, hi)
+        if len(span_steps):
+            # Stable, so that the pixels of one span keep their order.
+            order = np.argsort(np.concatenate([steps, span_steps]), kind="stable")
+            steps = np.concatenate([steps, span_steps])[order]
+            pixels = np.concatenate([pixels, span_pixels])[order]
+            if values is not None:
+                values = np.concatenate([values, span_values])[order]
+        return Writes(steps, pixels, values)
 
     def written_pixels(self) -> np.ndarray:
         """(n, 2) array of the written pixels, in emission order, duplicates kept."""
-        mask = self.writes()
-        order = np.flatnonzero(mask)
-        pixels = np.stack([self.x[mask], self.y[mask]], axis=1).astype(np.int64)
-        if not self._spans:
-            return pixels
-        span_order, span_pixels, _ = self._span_pixels(0, len(self))
-        order = np.concatenate([order, span_order])
-        pixels = np.concatenate([pixels, span_pixels])
-        return pixels[np.argsort(order, kind="stable")]
-
-    def _span_pixels(self, lo: int, hi: int):
-        """Step indices, pixels and values of the spans recorded in steps lo..hi-1.
-
-        A span without a value gives NaN values.
-        """
-        chosen = self._spans[bisect.bisect_left(self._spans, lo):bisect.bisect_left(self._spans, hi)]
-        orders, pixels = [np.zeros(0, np.int64)], [np.zeros((0, 2), np.int64)]
-        values = [np.zeros(0)]
-        for index in chosen:
-            span = self.records[index]
-            xs = np.arange(span.x_start, span.x_end, dtype=np.int64)
-            orders.append(np.full(len(xs), index, np.int64))
-            pixels.append(np.stack([xs, np.full(len(xs), span.y, np.int64)], axis=1))
-            values.append(np.full(len(xs), math.nan if span.value is None else float(span.value)))
-        return np.concatenate(orders), np.concatenate(pixels), np.concatenate(values)
+        return self.written().pixels
 
     def pixel_values(self) -> np.ndarray | None:
         """The value written with each written pixel (spans included), in emission order."""
-        if self.start.pixel_value is None:
-            return None
-        mask = self.writes()
-        values = self.series(self.start.pixel_value)[mask]
-        if not self._spans:
-            return values
-        span_order, _, span_values = self._span_pixels(0, len(self))
-        order = np.concatenate([np.flatnonzero(mask), span_order])
-        values = np.concatenate([values, span_values])
-        return values[np.argsort(order, kind="stable")]
+        return self.written().values
 
+    def _single_writes(self, lo: int, hi: int) -> np.ndarray:
+        mask = self._line_plots[self.line[lo:hi]] & (self.x[lo:hi] != NO_PIXEL)
+        # Rich records never write a single pixel (a Span writes its run).
+        mask[self.steps_of(lo=lo, hi=hi) - lo] = False
+        return mask
+
+    def _span_writes(self, lo: int, hi: int):
+        """Steps, pixels and values (NaN for none) of the pixels written by
+        the spans on PLOT lines among steps lo..hi-1, in order."""
+        if Span not in self._steps_by_type:  # most runs have none: skip the work
+            return np.zeros(0, np.int64), np.zeros((0, 2), np.int64), np.zeros(0)
+        spans = self.spans(lo, hi)
+        spans = spans[self._line_plots[spans["line"]]]
+        lengths = np.maximum(spans["x_end"] - spans["x_start"], 0)
+        steps = np.repeat(spans["step"], lengths)
+        # x = the span's x_start plus the write's place within its span.
+        offsets = np.repeat(spans["x_start"] - (np.cumsum(lengths) - lengths), lengths)
+        pixels = np.stack([offsets + np.arange(len(steps)), np.repeat(spans["y"], lengths)],
+                          axis=1)
+        return steps, pixels, np.repeat(spans["value"], lengths)
+
+    # ------------------------------------------------------------- steps
     def step(self, i: int) -> Step:
         i = self._index(i)
         line = int(self.line[i])
@@ -300,14 +387,14 @@ class Trace:
         pixel = None if x == NO_PIXEL else (x, y)
         values = {name: float(v) for name, v in zip(self.value_names, self.values[i])
                   if not math.isnan(v)}
-        return Step(i, line, code.kind, pixel, values, code.branch, self.records.get(i))
+        return Step(i, line, code.kind, pixel, values, code.branch, self._records.get(i))
 
     def variables_at(self, i: int) -> dict:
         """Constants, every Vars update up to step i, and step i's own values."""
         i = self._index(i)
         result = dict(self.start.constants)
-        for index in self._vars_at[:bisect.bisect_right(self._vars_at, i)]:
-            result.update(self.records[index].values)
+        for _, record in self.records_of(Vars, hi=i + 1):
+            result.update(record.values)
         result.update(self.step(i).values)
         branch = self.code[int(self.line[i])].branch
         if branch:
@@ -317,8 +404,8 @@ class Trace:
     def final_variables(self) -> dict:
         """The named variables at the end of the run: for each name, the
         value set last, whether by a Vars record or by a frame's value."""
-        updates = [(index, name, value) for index in self._vars_at
-                   for name, value in self.records[index].values.items()]
+        updates = [(index, name, value) for index, record in self.records_of(Vars)
+                   for name, value in record.values.items()]
         for column, name in enumerate(self.value_names):
             known = np.flatnonzero(~np.isnan(self.values[:, column]))
             if known.size:
@@ -351,27 +438,46 @@ class Trace:
         keyframes = self._ensure_keyframes()
         slot = min((i + 1) // self._gap, len(keyframes) - 1)
         raster = keyframes[slot].copy() if slot else self._empty_raster()
-        self._apply(raster, slot * self._gap, i + 1)
+        self.replay(slot * self._gap, i + 1, raster)
         return raster
 
-    def replay_slowly(self, i: int) -> Raster:
-        """Step-by-step replay from step 0, one pixel at a time (for checks)."""
-        raster = self._empty_raster()
+    def replay(self, lo: int, hi: int, raster: Raster) -> None:
+        """Apply steps lo..hi-1 to ``raster``, in step order, vectorised: the
+        one replay behind ``state_at`` and every frame-by-frame renderer.
+
+        Each write adds one to the pixel's count, sets its colour from the
+        run's colour value (``Start.color_value``, else ``pixel_value``; a
+        span's own value) and its depth (``Start.depth_value``; spans carry
+        none). Pixels outside the grid are clipped.
+        """
+        lo, hi = self._range(lo, hi)
+        if hi <= lo:
+            return
         column = self._value_column()
+        values = None if column is None else self.values[lo:hi, column]
         depth_column = self._depth_column()
-        for k in range(self._index(i) + 1):
-            step = self.step(k)
-            if isinstance(step.record, Span):
-                for x in range(step.record.x_start, step.record.x_end):
-                    if step.kind == PLOT:
-                        raster.write(x, step.record.y, step.record.value)
-            elif step.writes:
-                value = None if column is None else self.values[k, column]
-                depth = None if depth_column is None else self.values[k, depth_column]
-                raster.write(*step.pixel, value, depth)
-        return raster
+        depths = None if depth_column is None else self.values[lo:hi, depth_column]
+        flat = self._flat_pixels()[lo:hi]
+        orders, pixels, span_values = self._span_writes(lo, hi)
+        if len(orders):
+            x, y = pixels[:, 0], pixels[:, 1]
+            inside = (x >= 0) & (x < self.width) & (y >= 0) & (y < self.height)
+            # Spans and single pixels merged in step order, so that the last
+            # write to a pixel sets its colour.
+            order = np.argsort(np.concatenate([np.arange(lo, hi), orders]), kind="stable")
+            flat = np.concatenate([flat, np.where(inside, y * self.width + x, -1)])[order]
+            if values is not None:
+                values = np.concatenate([values, span_values])[order]
+            if depths is not None:
+                depths = np.concatenate([depths, np.full(len(orders), math.nan)])[order]
+        raster.write_many(flat, values, depths)
 
     # ---------------------------------------------------------- internals
+    def _range(self, lo: int, hi: int | None) -> tuple[int, int]:
+        """lo..hi clipped to the trace; hi None stands for its end."""
+        n = len(self)
+        return min(max(lo, 0), n), n if hi is None else min(max(hi, 0), n)
+
     def _index(self, i: int) -> int:
         n = len(self)
         if not -n <= i < n:
@@ -393,29 +499,6 @@ class Trace:
         raster.replaces = self.start.replaces
         return raster
 
-    def _apply(self, raster: Raster, lo: int, hi: int) -> None:
-        """Apply steps lo..hi-1 to the raster, vectorised."""
-        if hi <= lo:
-            return
-        column = self._value_column()
-        values = None if column is None else self.values[lo:hi, column]
-        depth_column = self._depth_column()
-        depths = None if depth_column is None else self.values[lo:hi, depth_column]
-        flat = self._flat_pixels()[lo:hi]
-        orders, pixels, span_values = self._span_pixels(lo, hi) if self._spans else ((),) * 3
-        if len(orders):
-            x, y = pixels[:, 0], pixels[:, 1]
-            inside = (x >= 0) & (x < self.width) & (y >= 0) & (y < self.height)
-            # Spans and single pixels merged in step order, so that the last
-            # write to a pixel sets its colour.
-            order = np.argsort(np.concatenate([np.arange(lo, hi), orders]), kind="stable")
-            flat = np.concatenate([flat, np.where(inside, y * self.width + x, -1)])[order]
-            if values is not None:
-                values = np.concatenate([values, span_values])[order]
-            if depths is not None:  # spans carry no depth
-                depths = np.concatenate([depths, np.full(len(orders), math.nan)])[order]
-        raster.write_many(flat, values, depths)
-
     def _flat_pixels(self) -> np.ndarray:
         """Per step, y * W + x of the pixel it writes, or -1 (no write, or clipped)."""
         if self._flat is None:
@@ -436,7 +519,7 @@ class Trace:
         keyframes = [None]
         for lo in range(0, len(self) - self._gap, self._gap):
             raster = keyframes[-1].copy() if keyframes[-1] else self._empty_raster()
-            self._apply(raster, lo, lo + self._gap)
+            self.replay(lo, lo + self._gap, raster)
             keyframes.append(raster)
         self._keyframes = keyframes
         return keyframes
@@ -454,6 +537,28 @@ def _blocks(chunks):
             batch, rows = [], 0
     if batch:
         yield batch[0] if len(batch) == 1 else np.concatenate(batch)
+
+
+_NO_STEPS = np.zeros(0, np.int64)
+_NO_STEPS.flags.writeable = False
+
+
+def _frozen_steps(steps: list[int]) -> np.ndarray:
+    array = np.array(steps, np.int64)
+    array.flags.writeable = False
+    return array
+
+
+def _bounds(steps: np.ndarray, lo: int, hi: int | None) -> tuple[int, int]:
+    """Where steps lo..hi-1 begin and end in the sorted ``steps``."""
+    first = 0 if lo <= 0 else int(np.searchsorted(steps, lo))
+    return first, len(steps) if hi is None else int(np.searchsorted(steps, hi))
+
+
+def _between(steps: np.ndarray, lo: int, hi: int | None) -> np.ndarray:
+    """The part of the sorted ``steps`` in lo..hi-1."""
+    first, last = _bounds(steps, lo, hi)
+    return steps[first:last]
 
 
 def _plain_number(value: float):

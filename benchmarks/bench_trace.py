@@ -1,7 +1,8 @@
-"""Recording and replay cost of a long Bresenham trace.
+"""Recording and replay cost of a long Bresenham trace and of a span run.
 
 Prints: recording time against a bare generator running the same loop and
-yielding (x, y); bytes retained per step; state_at at random positions.
+yielding (x, y); bytes retained per step; state_at at random positions;
+the same for a scan-line polygon fill, whose Span records write runs.
 
     python benchmarks/bench_trace.py [--steps 1000000] [--repeats 5]
 """
@@ -91,6 +92,27 @@ def main() -> None:
               f"(first call, building keyframes: {build * 1000:.0f} ms; target median <= 20 ms); "
               f"with its replay caches the trace holds "
               f"{(trace.nbytes() + trace.cache_nbytes()) / len(trace):.1f} bytes per step")
+    span_run(args.repeats)
+
+
+def span_run(repeats: int) -> None:
+    """A scan-line fill on a big grid: few steps, each span writing a long run."""
+    spec = registry.get("polygon-scanline")
+    contours = [[(0.5, 0.5), (1020, 30), (500, 1020)], [(150, 150), (350, 750), (450, 200)]]
+    recording = median_time(lambda: spec.record(contours, grid=(1024, 1024)), repeats)
+    trace = spec.record(contours, grid=(1024, 1024))
+    pixels = median_time(trace.written_pixels, repeats)
+    trace.state_at(0)
+    rng = random.Random(2)
+    times = []
+    for i in (rng.randrange(len(trace)) for _ in range(50)):
+        start = time.perf_counter()
+        trace.state_at(i)
+        times.append(time.perf_counter() - start)
+    print(f"polygon-scanline on 1024x1024: {len(trace):,} steps, {len(trace.written_pixels()):,} "
+          f"pixels written; recording {recording * 1000:.0f} ms, written_pixels "
+          f"{pixels * 1000:.1f} ms, state_at median {statistics.median(times) * 1000:.1f} ms "
+          f"over {len(times)} random steps")
 
 
 if __name__ == "__main__":

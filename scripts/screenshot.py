@@ -37,7 +37,6 @@ sys.path.insert(0, str(ROOT))
 
 from PySide6.QtWidgets import QApplication  # noqa: E402
 
-from algorithms.steps import Span  # noqa: E402
 from app.gui.window import DEMO_POINTS, MainWindow  # noqa: E402
 
 RESOURCES = ROOT / "resources"
@@ -67,7 +66,8 @@ def polygon_scene(app, size, _step):
     trace = window.player.trace
     # A span on a row that crosses the hole, just after a fresh active
     # edge table with four edges in it.
-    spans = [i for i, r in trace.records.items() if isinstance(r, Span) and r.y == 9]
+    spans = trace.spans()
+    spans = spans["step"][spans["y"] == 9].tolist()
     window.player.seek(spans[-1])
     return window
 

@@ -204,7 +204,6 @@ def animation_frame_steps(spec, trace) -> list[int]:
     """
     if spec.name != "aa-temporal" or trace.start is None:
         return []
-    starts = [index for index, record in sorted(trace.records.items())
-              if isinstance(record, Vars) and "frame" in record.values]
+    starts = [index for index, record in trace.records_of(Vars) if "frame" in record.values]
     ends = [start - 1 for start in starts[1:]] + [len(trace) - 2]
     return [max(end, start) for start, end in zip(starts, ends)]

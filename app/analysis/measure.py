@@ -43,7 +43,7 @@ import numpy as np
 from algorithms.exact import circles as exact_circles
 from algorithms import registry
 from algorithms.errors import InputError
-from algorithms.steps import OP_NAMES, PER_PIXEL, PER_ROW, Note, Span, Table
+from algorithms.steps import OP_NAMES, PER_PIXEL, PER_ROW, Note, Table
 
 ARITHMETIC = ("int_add", "float_add", "mul", "div", "sqrt", "round", "compare")
 COLUMNS = ("family", "experiment", "algorithm", "variant", "parameter", "parameter_value",
@@ -83,8 +83,8 @@ def op_counts(trace) -> dict[str, int]:
     """Operations the run performed, by name (OP_NAMES), from its code lines."""
     code = trace.code
     executions = np.bincount(trace.line, minlength=len(code)).astype(np.int64)
-    notes = [i for i, record in trace.records.items() if isinstance(record, Note)]
-    if notes:
+    notes = trace.steps_of(Note)
+    if len(notes):
         executions -= np.bincount(trace.line[notes], minlength=len(code))
     counts = dict.fromkeys(OP_NAMES, 0)
     for k, line in enumerate(code):
@@ -100,11 +100,11 @@ def op_counts(trace) -> dict[str, int]:
 def _quantity(trace, line: int, quantity: str, executions: int) -> int:
     """How much of ``quantity`` the frames on ``line`` carry, summed."""
     if quantity == PER_PIXEL:
-        return sum(max(0, r.x_end - r.x_start) for r in trace.records.values()
-                   if isinstance(r, Span) and r.line == line)
+        spans = trace.spans()
+        lengths = np.maximum(spans["x_end"] - spans["x_start"], 0)
+        return int(lengths[spans["line"] == line].sum())
     if quantity == PER_ROW:
-        return sum(len(r.rows) for r in trace.records.values()
-                   if isinstance(r, Table) and r.line == line)
+        return sum(len(table.rows) for _, table in trace.records_of(Table) if table.line == line)
     if quantity in trace.value_names:
         values = trace.series(quantity)[trace.line == line]
         return int(np.nansum(values))
@@ -801,13 +801,8 @@ def measure_fill(settings, rows: Rows, rng, tick=lambda: None) -> None:
 
 def fill_pixels(trace) -> np.ndarray:
     """Keys of the pixels a seed fill filled (its outline, line 0, left out)."""
-    lean = trace.writes() & (trace.line != 0)
-    pixels = [np.stack([trace.x[lean], trace.y[lean]], axis=1).astype(np.int64)]
-    for record in trace.records.values():
-        if isinstance(record, Span) and record.line != 0 and trace.code[record.line].kind == "plot":
-            xs = np.arange(record.x_start, record.x_end, dtype=np.int64)
-            pixels.append(np.stack([xs, np.full(len(xs), record.y, np.int64)], axis=1))
-    return np.unique(_keys(np.concatenate(pixels)))
+    writes = trace.written()
+    return np.unique(_keys(writes.pixels[trace.line[writes.steps] != 0]))
 
 
 # ========================================================= interpolation

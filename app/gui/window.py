@@ -736,8 +736,7 @@ class MainWindow(QMainWindow):
         self._tables = TableIndex(trace)
         self._tally = PixelTally(trace) if trace is not None and has_insight(
             trace.value_names) else None
-        self._notes = [] if trace is None else sorted(
-            i for i, r in trace.records.items() if isinstance(r, Note))
+        self._notes = [] if trace is None else trace.steps_of(Note).tolist()
         self._show_tables_dock()
         self._prepare_depth_and_accuracy()
         if trace is None:
@@ -993,7 +992,7 @@ class MainWindow(QMainWindow):
         if not text and trace is not None and self._notes:
             k = bisect.bisect_right(self._notes, player.index) - 1
             if k >= 0:
-                text = f"Step {self._notes[k]:,}: {trace.records[self._notes[k]].text}"
+                text = f"Step {self._notes[k]:,}: {trace.record_at(self._notes[k]).text}"
         self._say(text, error)
 
     def _say(self, text: str, error: bool = False) -> None:
@@ -1107,9 +1106,9 @@ def _series_name(trace) -> str | None:
 
 def crack_cells(trace, index: int) -> list:
     """The pixels of the run's "cracks" table recorded at or before ``index``."""
-    for at, record in trace.records.items():
-        if at <= index and isinstance(record, Table) and record.name == "cracks":
-            return [tuple(row) for row in record.rows]
+    for _, table in trace.records_of(Table, hi=index + 1):
+        if table.name == "cracks":
+            return [tuple(row) for row in table.rows]
     return []
 
 

@@ -47,7 +47,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from algorithms.steps import NO_PIXEL, PLOT, VISIT, Span, Table, Vars
+from algorithms.steps import NO_PIXEL, PLOT, VISIT, Table, Vars
 
 SIGN, BRANCH, AET, SCANLINE, PIXEL, DEPTH = "sign", "branch", "aet", "scanline", "pixel", "depth"
 CONDITIONS = (SIGN, BRANCH, AET, SCANLINE, PIXEL, DEPTH)
@@ -265,8 +265,8 @@ def _branch_changes(trace, _condition) -> np.ndarray:
 
 
 def _aet_records(trace) -> list:
-    return sorted((index, record) for index, record in trace.records.items()
-                  if isinstance(record, Table) and record.name == AET_NAME)
+    return [(index, table) for index, table in trace.records_of(Table)
+            if table.name == AET_NAME]
 
 
 def _aet_changes(trace, _condition) -> list:
@@ -280,28 +280,17 @@ def _aet_changes(trace, _condition) -> list:
     return found
 
 
-def _spans(trace) -> np.ndarray:
-    """(n, 5) int64: index, y, x_start, x_end, is the line a visit or plot line."""
-    cache = _cache(trace)
-    if "spans" not in cache:
-        kinds = [line.kind in (PLOT, VISIT) for line in trace.code]
-        rows = [(index, r.y, r.x_start, r.x_end, kinds[r.line])
-                for index, r in trace.records.items() if isinstance(r, Span)]
-        cache["spans"] = np.array(sorted(rows), np.int64).reshape(-1, 5)
-    return cache["spans"]
-
-
 def _rows(trace) -> np.ndarray:
     """Per frame, the row it works on (see the module's notes); NaN for none."""
     cache = _cache(trace)
     if "rows" in cache:
         return cache["rows"]
     rows = np.where(trace.x != NO_PIXEL, trace.y, np.nan).astype(float)
-    spans = _spans(trace)
-    rows[spans[:, 0]] = np.nan
+    spans = trace.spans()
+    rows[spans["step"]] = np.nan
     if "y" in trace.value_names and len(spans) and not np.isfinite(rows).any():
         rows = trace.series("y").copy()
-    rows[spans[:, 0]] = spans[:, 1]
+    rows[spans["step"]] = spans["y"]
     cache["rows"] = rows
     return rows
 
@@ -315,10 +304,10 @@ def _pixel_frames(trace, condition) -> np.ndarray:
     x, y = condition.pixel
     looks = np.array([line.kind in (PLOT, VISIT) for line in trace.code], bool)
     hit = (trace.x == x) & (trace.y == y) & looks[trace.line]
-    spans = _spans(trace)
-    covered = spans[(spans[:, 1] == y) & (spans[:, 2] <= x) & (x < spans[:, 3])
-                    & (spans[:, 4] == 1), 0]
-    hit[spans[:, 0]] = False
+    spans = trace.spans()
+    covered = spans["step"][(spans["y"] == y) & (spans["x_start"] <= x) & (x < spans["x_end"])
+                            & looks[spans["line"]]]
+    hit[spans["step"]] = False
     hit[covered] = True
     return np.flatnonzero(hit)
 
@@ -332,9 +321,10 @@ def _depth_fails(trace, _condition) -> np.ndarray:
 
 
 def _primitive_starts(trace) -> np.ndarray:
-    found = [index for index, record in trace.records.items()
-             if (isinstance(record, Vars) and any(key in record.values for key in PRIMITIVE_KEYS))
-             or (isinstance(record, Table) and record.name.startswith(PRIMITIVE_TABLE))]
+    found = [index for index, record in trace.records_of(Vars)
+             if any(key in record.values for key in PRIMITIVE_KEYS)]
+    found += [index for index, table in trace.records_of(Table)
+              if table.name.startswith(PRIMITIVE_TABLE)]
     return np.array(sorted(found), np.int64)
 
 

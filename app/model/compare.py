@@ -36,7 +36,6 @@ import numpy as np
 from algorithms import registry
 from algorithms.errors import InputError
 from algorithms.raster import Raster, check_grid
-from algorithms.steps import PLOT, Span
 
 from app.render import frame as frame_view, compose as render
 from app.model.inputs import flatten, split_contours
@@ -237,7 +236,7 @@ class Run:
         self.trace = None
         self.exact = None
         self.error = ""
-        self._order = None
+        self._writes = None  # every write of the run (Trace.written), made on first use
         self._state = None  # the last FrameState replayed
         try:
             self.spec = spec_of(pane.algorithm)
@@ -334,23 +333,12 @@ class Run:
         return np.where(written, values, np.nan)
 
     def _coverage_at(self, i: int) -> np.ndarray:
-        order, pixels, values = self._writes()
-        n = int(np.searchsorted(order, i, side="right"))
-        return render.final_coverage(self.trace.width, self.trace.height, pixels[:n], values[:n])
-
-    def _writes(self):
-        """Step index, pixel and value of every write, in emission order."""
-        if self._order is None:
-            trace = self.trace
-            steps = [np.flatnonzero(trace.writes())]
-            for index, record in sorted(trace.records.items()):
-                if isinstance(record, Span) and trace.code[record.line].kind == PLOT:
-                    steps.append(np.full(max(0, record.x_end - record.x_start), index))
-            order = np.concatenate(steps)
-            # The same stable sort written_pixels uses, so the three line up.
-            order = order[np.argsort(order, kind="stable")]
-            self._order = (order, trace.written_pixels(), trace.pixel_values())
-        return self._order
+        if self._writes is None:
+            self._writes = self.trace.written()
+        writes = self._writes
+        n = int(np.searchsorted(writes.steps, i, side="right"))
+        return render.final_coverage(self.trace.width, self.trace.height, writes.pixels[:n],
+                                     writes.values[:n])
 
 
 def exact_raster(coverage: np.ndarray) -> Raster:

@@ -125,7 +125,7 @@ class PixelTally:
         kinds = np.array([line.kind for line in trace.code])
         has_pixel = trace.x != NO_PIXEL
         rich = np.zeros(len(trace), dtype=bool)
-        rich[list(trace.records)] = True
+        rich[trace.steps_of()] = True
         kind = kinds[trace.line]
         filled = (kind == PLOT) & has_pixel & ~rich
         tested = filled | ((kind == VISIT) & has_pixel & ~rich)

@@ -36,7 +36,7 @@ from algorithms import triangles
 from algorithms.interpolate import affine_value, barycentric_weights, per_vertex, \
     perspective_weights
 from algorithms.registry import InputError, format_value
-from algorithms.steps import PLOT, VISIT, Span, Vars
+from algorithms.steps import PLOT, VISIT, Vars
 
 from app.render import frame as frame_view
 
@@ -74,10 +74,8 @@ class PixelInspector:
         self._raster_at = raster_at or trace.raster_at
         self._pixels: OrderedDict = OrderedDict()
         self._kinds = np.array([line.kind for line in trace.code])
-        self._spans = _span_arrays(trace)
-        self._triangles = sorted(i for i, r in trace.records.items()
-                                 if isinstance(r, Vars) and "triangle" in r.values
-                                 and all(f"P{k}" in r.values for k in range(3)))
+        self._triangles = [i for i, r in trace.records_of(Vars) if "triangle" in r.values
+                           and all(f"P{k}" in r.values for k in range(3))]
 
     # ------------------------------------------------------------ rows
     def rows(self, index: int, pixel) -> list[Row]:
@@ -114,12 +112,12 @@ class PixelInspector:
         lean = np.flatnonzero((trace.x == x) & (trace.y == y))
         # Rich records carry a pixel for show; only lean frames and spans
         # stand for work on the pixel.
-        lean = np.array([i for i in lean.tolist() if i not in trace.records], dtype=np.int64)
+        lean = lean[~np.isin(lean, trace.steps_of())]
         kinds = self._kinds[trace.line[lean]] if len(lean) else np.zeros(0, str)
-        span_at, span_line, span_y, span_a, span_b = self._spans
-        inside = (span_y == y) & (span_a <= x) & (x < span_b)
-        span_kinds = self._kinds[span_line[inside]]
-        steps = np.concatenate([lean, span_at[inside]])
+        spans = trace.spans()
+        spans = spans[(spans["y"] == y) & (spans["x_start"] <= x) & (x < spans["x_end"])]
+        span_kinds = self._kinds[spans["line"]]
+        steps = np.concatenate([lean, spans["step"]])
         kinds = np.concatenate([kinds, span_kinds]) if len(steps) else np.zeros(0, str)
         order = np.argsort(steps, kind="stable")
         steps, kinds = steps[order], kinds[order]
@@ -162,7 +160,7 @@ class PixelInspector:
         record_at = self.triangle_at(index, visits)
         if record_at is None:
             return []
-        values = self.trace.records[record_at].values
+        values = self.trace.record_at(record_at).values
         tri = recorded_triangle(self.trace, values)
         if tri is None:
             return [Row("Triangle", "triangle", f"{values['triangle']}: no area once snapped")]
@@ -298,9 +296,10 @@ class PixelInspector:
         if not len(plots):
             return 0.0
         last = int(plots[-1])
-        record = self.trace.records.get(last)
-        if isinstance(record, Span):
-            return 0.0 if record.value is None else float(record.value)
+        span = self.trace.spans(last, last + 1)
+        if len(span):
+            value = float(span["value"][0])
+            return 0.0 if math.isnan(value) else value
         return float(self.trace.series(self.trace.start.pixel_value)[last])
 
     def exact_coverage(self, pixel) -> float | None:
@@ -327,14 +326,6 @@ def exact_edges(trace, tri, pixel) -> list[Fraction]:
     ox, oy = trace.start.constants.get("offset", (0, 0))
     unit = 2 * tri.S * tri.S
     return [Fraction(e, unit) for e in tri.at(pixel[0] + ox, pixel[1] + oy)]
-
-
-def _span_arrays(trace):
-    """Step, line, row, x_start, x_end of every span record, as arrays."""
-    spans = [(i, r.line, r.y, r.x_start, r.x_end) for i, r in trace.records.items()
-             if isinstance(r, Span)]
-    table = np.array(spans, dtype=np.int64).reshape(-1, 5)
-    return tuple(table[:, k] for k in range(5))
 
 
 def _steps_text(steps) -> str:

@@ -31,13 +31,11 @@ class TableIndex:
         self._cache: dict[tuple[int, bool], ShownTable] = {}
         if trace is None:
             return
-        for index in sorted(trace.records):
-            record = trace.records[index]
-            if isinstance(record, Table):
-                if record.name not in self._steps:
-                    self.names.append(record.name)
-                    self._steps[record.name] = []
-                self._steps[record.name].append(index)
+        for index, record in trace.records_of(Table):
+            if record.name not in self._steps:
+                self.names.append(record.name)
+                self._steps[record.name] = []
+            self._steps[record.name].append(index)
 
     def __bool__(self) -> bool:
         return bool(self.names)
@@ -52,8 +50,8 @@ class TableIndex:
                 continue
             key = (steps[k], steps[k] == index)
             if key not in self._cache:
-                record = self.trace.records[steps[k]]
-                before = self.trace.records[steps[k - 1]] if k > 0 else None
+                record = self.trace.record_at(steps[k])
+                before = self.trace.record_at(steps[k - 1]) if k > 0 else None
                 self._cache[key] = _shown(record, before, *key)
             shown.append(self._cache[key])
         return shown

@@ -22,7 +22,6 @@ import numpy as np
 from PIL import Image
 
 from algorithms import registry
-from algorithms.steps import PLOT, Span
 from algorithms.trace import FrameState
 
 from app.render import frame as frame_view
@@ -142,18 +141,14 @@ class FrameRenderer:
 
 class _States:
     """The replayed state of each frame. Frames asked for in order are made
-    from the one before by replaying one step into the same raster, as
-    ``Trace.replay_slowly`` replays; any other frame comes from
-    ``Trace.state_at``. ``at`` also returns the cells the step wrote, or
-    None when the frame did not follow the one before."""
+    from the one before by replaying one step into the same raster
+    (``Trace.replay``); any other frame comes from ``Trace.raster_at``.
+    ``at`` also returns the cells the step wrote, or None when the frame
+    did not follow the one before."""
 
     def __init__(self, trace, incremental: bool = True):
         self.trace = trace
         self.incremental = incremental
-        name = frame_view.colour_name(trace.start)
-        self.values = trace.series(name) if name is not None else None
-        depth = trace.start.depth_value
-        self.depths = trace.series(depth) if depth is not None else None
         self.raster = None
         self.index: int | None = None
 
@@ -161,29 +156,14 @@ class _States:
         trace = self.trace
         step = trace.step(index)
         if self.incremental and self.index is not None and index == self.index + 1:
-            written = self._replay(index, step)
+            trace.replay(index, index + 1, self.raster)
+            written = [tuple(cell) for cell in trace.written(index, index + 1).pixels.tolist()]
         else:
             self.raster, written = trace.raster_at(index), None
         self.index = index
         state = FrameState(index, step, self.raster, trace.variables_at(index),
                            trace.candidates_at(index))
         return state, written
-
-    def _replay(self, index: int, step) -> list:
-        record = step.record
-        if isinstance(record, Span):
-            if step.kind != PLOT:
-                return []
-            cells = [(x, record.y) for x in range(record.x_start, record.x_end)]
-            for x, y in cells:
-                self.raster.write(x, y, record.value)
-            return cells
-        if step.writes:
-            value = None if self.values is None else self.values[index]
-            depth = None if self.depths is None else self.depths[index]
-            self.raster.write(*step.pixel, value, depth)
-            return [step.pixel]
-        return []
 
 
 class _GridPart:

@@ -15,6 +15,7 @@ from algorithms.fill import outline_pixels, segment_pixels
 from algorithms.registry import InputError, get
 from algorithms.steps import PLOT, Span, Vars
 from algorithms.trace import DEFAULT_STEP_CAP
+from trace_oracle import slow_replay
 
 BOUNDARY, FILL = 0xC0392B, 0x2E86DE
 ORDERS = ("stack", "queue", "span")
@@ -323,7 +324,7 @@ def test_state_at_equals_slow_replay(order, connectivity, monkeypatch):
                    connectivity=connectivity)
     for i in range(len(trace)):
         state = trace.state_at(i)
-        replay = trace.replay_slowly(i)
+        replay = slow_replay(trace, i)
         assert np.array_equal(state.raster.counts, replay.counts)
         assert np.array_equal(state.raster.colors, replay.colors)
     assert len(trace._keyframes) > 3

@@ -58,10 +58,10 @@ def test_convex_equals_scanline_row_for_row(points):
 
 def test_convex_frames_one_span_per_row():
     trace = CONVEX.record([[(1, 1), (9, 3), (5, 9)]], grid=(12, 12))
-    spans = [r for r in trace.records.values() if isinstance(r, Span)]
+    spans = [r for _, r in trace.records_of(Span)]
     # Centre lines 1.5 .. 8.5: rows 1 .. 8.
     assert [s.y for s in spans] == list(range(1, 9))
-    chains = next(r for r in trace.records.values() if isinstance(r, Table))
+    chains = next(r for _, r in trace.records_of(Table))
     assert {row[0] for row in chains.rows} == {"left", "right"}
     assert trace.final_variables()["pixels"] == 28
 
@@ -113,13 +113,13 @@ def test_tessellate_named_simple_polygons(points):
 def test_ear_tests_are_frames():
     trace = TESSELLATE.record([COMB], grid=(16, 12))
     branches = Counter(trace.code[int(line)].branch for line in trace.line if trace.code[int(line)].branch)
-    triangles = next(r for r in trace.records.values() if isinstance(r, Table) and r.name == "triangles")
+    triangles = next(r for _, r in trace.records_of(Table) if r.name == "triangles")
     assert branches["ear"] == len(triangles.rows) - 1  # the last triangle is what remains
     assert branches["reflex"] > 0 and branches["blocked"] > 0
     # Clipping an ear can leave a vertex on a straight line; it is dropped, not cut.
-    dropped = [r for r in trace.records.values() if isinstance(r, Note) and "dropped" in r.text]
+    dropped = [r for _, r in trace.records_of(Note) if "dropped" in r.text]
     assert dropped and len(triangles.rows) + len(dropped) == len(COMB) - 2
-    spans = [r for r in trace.records.values() if isinstance(r, Span)]
+    spans = [r for _, r in trace.records_of(Span)]
     assert spans and all(trace.code[s.line].kind == PLOT for s in spans)
     # A blocked candidate highlights the vertex that blocks it.
     blocked = [i for i in range(len(trace)) if trace.code[int(trace.line[i])].branch == "blocked"]

@@ -17,6 +17,7 @@ from algorithms.registry import InputError
 from algorithms.steps import PLOT, Span, Start, Table
 from algorithms.trace import Trace
 from test_polygons_cases import generator_pixels, kernel_pixels, polygon
+from trace_oracle import slow_replay
 
 RULES = ("evenodd", "nonzero")
 
@@ -210,7 +211,7 @@ def record(contours, options=None, grid=(32, 24)):
 def test_frames_show_every_phase():
     trace = record(NAMED[6][1], {"fill_rule": "nonzero"})
     code = trace.code
-    records = [trace.records.get(i) for i in range(len(trace))]
+    records = [trace.record_at(i) for i in range(len(trace))]
     assert isinstance(records[0], Start)
     tables = [(i, r) for i, r in enumerate(records) if isinstance(r, Table)]
     assert [r.name for _, r in tables].count("ET") == 1 and tables[0][1].name == "ET"
@@ -233,7 +234,7 @@ def test_frames_show_every_phase():
 
 def test_aet_rows_are_exact_fractions():
     trace = record([[(1, 1), (9, 3), (5, 9)]])
-    et = next(r for r in trace.records.values() if isinstance(r, Table) and r.name == "ET")
+    et = next(r for _, r in trace.records_of(Table) if r.name == "ET")
     # Edge P1P2 from (1, 1) to (9, 3): 1/m = 4, x at the centre line y = 1.5 is 3.
     row = next(row for row in et.rows if row[1] == "P1P2")
     assert row == (1, "P1P2", 3, 3, 4)
@@ -249,9 +250,9 @@ def test_trace_pixels_are_the_generator_pixels():
 @pytest.mark.parametrize("contours", [NAMED[6][1], [[(-3.5, 2), (40, 5.5), (10, 30)]]])
 def test_state_at_equals_a_slow_replay(contours):
     trace = record(contours, {"fill_rule": "nonzero"}, grid=(20, 18))
-    assert trace._spans
+    assert len(trace.spans())
     for i in range(len(trace)):
-        assert np.array_equal(trace.state_at(i).raster.counts, trace.replay_slowly(i).counts), i
+        assert np.array_equal(trace.state_at(i).raster.counts, slow_replay(trace, i).counts), i
 
 
 def test_state_at_equals_a_slow_replay_across_keyframes():
@@ -260,12 +261,12 @@ def test_state_at_equals_a_slow_replay_across_keyframes():
     trace = SCANLINE.record(contours, {}, grid=(256, 512))
     assert len(trace) > 3000
     for i in list(range(0, len(trace), 397)) + [len(trace) - 1]:
-        assert np.array_equal(trace.state_at(i).raster.counts, trace.replay_slowly(i).counts)
+        assert np.array_equal(trace.state_at(i).raster.counts, slow_replay(trace, i).counts)
 
 
 def test_explain_names_the_pair_of_a_span():
     trace = record([[(1, 1), (9, 3), (5, 9)]])
-    index = next(i for i in range(len(trace)) if isinstance(trace.records.get(i), Span))
+    index = int(trace.steps_of(Span)[0])
     rows = dict(SCANLINE.panel_rows(trace, index))
     assert rows["run"].startswith("x_left = 5/4")
     assert rows["pixels"].endswith("i = 1 .. 2")

@@ -353,7 +353,7 @@ def check_values(case: Case, trace) -> None:
     values = trace.values
     assert not np.isinf(values).any(), f"{case}: an infinite value in a frame"
     lean = np.ones(len(trace), bool)
-    lean[list(trace.records)] = False
+    lean[trace.steps_of()] = False
     for line in np.unique(trace.line[lean]):
         rows = values[lean & (trace.line == line)]
         missing = np.isnan(rows)

@@ -17,6 +17,7 @@ from hypothesis import strategies as st
 from algorithms.exact import triangles as exact_triangles
 from algorithms import triangles
 from test_triangles_cases import SUB, as_window, oracle, spec, sub
+from trace_oracle import slow_replay
 
 SETTINGS = dict(deadline=None, suppress_health_check=[HealthCheck.too_slow, HealthCheck.filter_too_much])
 
@@ -227,7 +228,7 @@ def test_state_at_equals_a_slow_replay_on_a_mesh():
     for name in ("triangle-bbox", "triangle-pineda", "triangle-backtrack"):
         trace = spec(name).record(points, {"colors": colors}, grid=(12, 12))
         for i in list(range(0, len(trace), max(1, len(trace) // 9))) + [len(trace) - 1]:
-            fast, slow = trace.state_at(i).raster, trace.replay_slowly(i)
+            fast, slow = trace.state_at(i).raster, slow_replay(trace, i)
             assert np.array_equal(fast.counts, slow.counts), (name, i)
             assert np.array_equal(fast.colors, slow.colors), (name, i)
 

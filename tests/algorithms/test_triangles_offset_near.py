@@ -7,6 +7,7 @@ import pytest
 from algorithms.exact import triangles as exact_triangles
 from algorithms import registry
 from algorithms.registry import InputError
+from algorithms.steps import Note, Table
 from algorithms.triangles import MAX_OFFSET
 
 GRID = (20, 16)
@@ -168,10 +169,9 @@ def test_near_clipping_draws_what_the_eye_sees():
 def test_clipping_is_reported_as_frames():
     spec = registry.get("triangle-perspective")
     trace = spec.record(STRADDLE, {"w": W, "s": S, "near": NEAR}, grid=(32, 24))
-    records = list(trace.records.values())
-    notes = [r.text for r in records if type(r).__name__ == "Note"]
+    notes = [r.text for _, r in trace.records_of(Note)]
     assert any("crosses w = 0.05" in text and "4 corners" in text for text in notes)
-    table = next(r for r in records if getattr(r, "name", "") == "near clip")
+    table = next(r for _, r in trace.records_of(Table) if r.name == "near clip")
     assert len(table.rows) == 4 and sum(1 for row in table.rows if row[3] == NEAR) == 2
 
 
@@ -183,7 +183,7 @@ def test_triangle_in_front_is_drawn_as_before_and_one_behind_not_at_all():
     assert counts(plain) == counts(clipped)
     behind = spec.record(STRADDLE, {"w": (-1.0, -2.0, 0.01), "s": S, "near": NEAR}, grid=(32, 24))
     assert len(behind.written_pixels()) == 0
-    assert any("wholly behind" in getattr(r, "text", "") for r in behind.records.values())
+    assert any("wholly behind" in r.text for _, r in behind.records_of(Note))
 
 
 def test_w_below_zero_without_near_is_refused_and_points_to_near():

@@ -11,7 +11,9 @@ from algorithms.exact import triangles as exact_triangles
 from algorithms import trace as trace_module
 from algorithms import visibility as vis
 from algorithms.registry import get
+from algorithms.steps import Table
 from app.cli import main
+from trace_oracle import slow_replay
 
 PALETTE = [int(c[1:], 16) for c in vis.PALETTE]
 
@@ -121,7 +123,7 @@ def test_state_at_equals_slow_replay_with_the_depth_buffer(monkeypatch):
     trace = get("zbuffer").record(points, {"z": tuple(z)}, grid=(14, 12))
     assert len(trace._ensure_keyframes()) > 3
     for i in range(len(trace)):
-        fast, slow = trace.state_at(i).raster, trace.replay_slowly(i)
+        fast, slow = trace.state_at(i).raster, slow_replay(trace, i)
         assert np.array_equal(fast.counts, slow.counts)
         assert np.array_equal(fast.colors, slow.colors)
         assert np.array_equal(fast.depth, slow.depth, equal_nan=True)
@@ -151,8 +153,7 @@ def test_painter_fails_on_its_two_scenes(scene, key):
     trace = get("painter").record(s["points"], options, grid=s["grid"])
     final = trace.final_variables()
     assert final["disagree"] > 0 and final["wrong_triangle"] > 0
-    table = [trace.records[i] for i in trace.records if getattr(trace.records[i], "name", "")
-             == "disagreement"][0]
+    table = [r for _, r in trace.records_of(Table) if r.name == "disagreement"][0]
     assert len(table.rows) == min(final["disagree"], vis.MAX_TABLE_ROWS)
     colors, _ = vis.painter_image(s["points"], options, s["grid"])
     reference, _, _ = vis.zbuffer_image(s["points"], options, s["grid"])
@@ -206,7 +207,7 @@ def test_painter_draws_back_to_front_by_the_key():
     expected = {"mean": [1, 2, 3, 4], "min": [1, 2, 3, 4], "max": [4, 1, 2, 3]}
     for key in vis.SORT_KEYS:
         trace = get("painter").record(points, {"z": z, "sort": key}, grid=(32, 24))
-        order = trace.records[1]
+        order = trace.record_at(1)
         assert order.name == "drawing order"
         keys = [row[2] for row in order.rows]
         assert keys == sorted(keys, reverse=True)

@@ -116,8 +116,7 @@ def test_zbuffer_fragment_and_stored_depth():
     spec, options, trace = run("zbuffer", ZSCENE, {"z": ZS})
     first, second = exact_depth(ZSCENE[:3], ZS[:3], pixel), exact_depth(ZSCENE[3:], ZS[3:], pixel)
     # Triangle 2 starts at its Vars record; just before it only triangle 1 is drawn.
-    start2 = min(i for i, r in trace.records.items()
-                 if isinstance(r, Vars) and r.values.get("triangle") == 2)
+    start2 = min(i for i, r in trace.records_of(Vars) if r.values.get("triangle") == 2)
     before = rows_by_label(inspect(trace, start2 - 1, pixel, spec, ZSCENE, options, GRID))
     assert float(before["fragment depth"].split()[0]) == first
     assert float(before["stored depth"]) == first

@@ -8,7 +8,7 @@ from PySide6.QtTest import QTest
 
 from algorithms import registry
 from algorithms.registry import format_value
-from algorithms.steps import Table
+from algorithms.steps import Span, Table, Vars
 from app.render.compose import PALETTE, coverage_counts
 from app.model.tables import cell_text
 from gui_support import drag, settle
@@ -118,7 +118,7 @@ def test_polygon_with_a_hole_and_its_tables(open_window, qtbot):
     assert w.points.row_count() == 8 and w.points.label_text(5) == "C2.P1"
     # Stepping: the tables panel shows the latest ET and AET at or before the step.
     assert w.tables_dock.isVisible()
-    tables = sorted((i, r) for i, r in trace.records.items() if isinstance(r, Table))
+    tables = trace.records_of(Table)
     aet_steps = [i for i, r in tables if r.name == "AET"]
     for index in (aet_steps[0], aet_steps[3] + 1, aet_steps[len(aet_steps) // 2]):
         w.transport.timeline.setValue(index)
@@ -132,10 +132,9 @@ def test_polygon_with_a_hole_and_its_tables(open_window, qtbot):
                     [cell_text(v) for v in row]
         assert shown["AET"].fresh == (index in aet_steps)
     # A Span step is outlined as one box around its run.
-    span_step = next(i for i, r in trace.records.items() if type(r).__name__ == "Span"
-                     and r.x_end > r.x_start)
+    span_step = next(i for i, r in trace.records_of(Span) if r.x_end > r.x_start)
     w.transport.timeline.setValue(span_step)
-    record = trace.records[span_step]
+    record = trace.record_at(span_step)
     assert w.grid.outlines.spans.tolist() == [[record.x_start, record.x_end, record.y]]
 
 
@@ -178,7 +177,7 @@ def test_flood_fill_outline_seed_and_stepping(open_window, qtbot):
     trace = expected("flood-fill", [outline], {"seed": (12, 10)})
     assert pixels(w.player.trace) == pixels(trace)
     # Stepping through the fill: the stack's size and head read on one row each.
-    index = 20 + min(i for i, r in trace.records.items() if "next" in getattr(r, "values", {}))
+    index = 20 + min(i for i, r in trace.records_of(Vars) if "next" in r.values)
     w.player.first()
     for _ in range(index):
         w.player.forward()
@@ -284,7 +283,7 @@ def test_every_algorithm_can_be_selected_and_stepped(open_window):
             player.forward()
         player.step(10)
         player.to_last()
-        has_tables = any(isinstance(r, Table) for r in player.trace.records.values())
+        has_tables = len(player.trace.steps_of(Table)) > 0
         assert w.tables_dock.isVisibleTo(w) == has_tables, spec.name
         assert w.transport.counter.text() == f"step {player.last:,} / {player.last:,}"
         assert w.grid.mode == expected_mode(spec), spec.name

@@ -9,8 +9,16 @@ from widgets.tables import CHANGED_ROW, ShownTable, TablesPanel
 
 
 class FakeTrace:
+    """The two Trace queries TableIndex uses, over {step: record}."""
+
     def __init__(self, records):
-        self.records = records
+        self._records = records
+
+    def records_of(self, kind):
+        return [(i, r) for i, r in sorted(self._records.items()) if isinstance(r, kind)]
+
+    def record_at(self, i):
+        return self._records.get(i)
 
 
 AET = ("edge", "ymax", "x")
