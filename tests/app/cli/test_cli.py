@@ -2,30 +2,22 @@
 import json
 import subprocess
 import sys
-from pathlib import Path
 
 import pytest
 
 from app.cli import main
-
-ROOT = Path(__file__).resolve().parents[2]
-
-
-def run_cli(capsys, *argv):
-    status = main(list(argv))
-    out, err = capsys.readouterr()
-    return status, out, err
+from tests.support import ROOT
 
 
-def test_list_names_every_line_algorithm(capsys):
-    status, out, err = run_cli(capsys, "list")
+def test_list_names_every_line_algorithm(run_cli):
+    status, out, err = run_cli("list")
     assert status == 0 and err == ""
     for name in ("line-bresenham", "line-dda"):
         assert name in out
 
 
-def test_list_json_schema(capsys):
-    status, out, _ = run_cli(capsys, "list", "--json")
+def test_list_json_schema(run_cli):
+    status, out, _ = run_cli("list", "--json")
     assert status == 0
     specs = json.loads(out)
     names = [spec["name"] for spec in specs]
@@ -36,8 +28,8 @@ def test_list_json_schema(capsys):
             assert set(option) >= {"name", "type", "default"}
 
 
-def test_run_json_schema_and_pixels(capsys):
-    status, out, err = run_cli(capsys, "run", "line-bresenham", "--points", "0,0", "6,3", "--json")
+def test_run_json_schema_and_pixels(run_cli):
+    status, out, err = run_cli("run", "line-bresenham", "--points", "0,0", "6,3", "--json")
     assert status == 0 and err == ""
     result = json.loads(out)
     assert set(result) >= {"algorithm", "grid", "pixels", "steps", "final", "options"}
@@ -50,8 +42,8 @@ def test_run_json_schema_and_pixels(capsys):
     assert result["final"]["dx"] == 6 and result["final"]["dy"] == 3
 
 
-def test_run_json_values_are_colours(capsys):
-    status, out, _ = run_cli(capsys, "run", "line-dda", "--points", "0,0", "4,0",
+def test_run_json_values_are_colours(run_cli):
+    status, out, _ = run_cli("run", "line-dda", "--points", "0,0", "4,0",
                              "--set", "colors=#ff0000,#0000ff", "--json")
     assert status == 0
     result = json.loads(out)
@@ -60,21 +52,21 @@ def test_run_json_values_are_colours(capsys):
     assert len(result["values"]) == len(result["pixels"]) == 5
 
 
-def test_run_ascii_draws_the_grid_top_row_first(capsys):
-    status, out, _ = run_cli(capsys, "run", "line-bresenham", "--points", "0,0", "3,1",
+def test_run_ascii_draws_the_grid_top_row_first(run_cli):
+    status, out, _ = run_cli("run", "line-bresenham", "--points", "0,0", "3,1",
                              "--grid", "4,2", "--ascii")
     assert status == 0
     assert out.splitlines() == ["..##", "##.."]
 
 
-def test_run_options_are_applied(capsys):
-    _, out, _ = run_cli(capsys, "run", "line-dda", "--points", "0,0", "5,2",
+def test_run_options_are_applied(run_cli):
+    _, out, _ = run_cli("run", "line-dda", "--points", "0,0", "5,2",
                         "--set", "dtype=float32", "--json")
     assert json.loads(out)["options"]["dtype"] == "float32"
 
 
-def test_step_cap_stops_with_a_message(capsys):
-    status, out, err = run_cli(capsys, "run", "line-bresenham", "--points", "0,0", "100,3",
+def test_step_cap_stops_with_a_message(run_cli):
+    status, out, err = run_cli("run", "line-bresenham", "--points", "0,0", "100,3",
                                "--step-cap", "10", "--json")
     result = json.loads(out)
     assert status == 0
@@ -108,8 +100,8 @@ def test_step_cap_stops_with_a_message(capsys):
     (["run", "line-dda"], "--points"),
     (["frobnicate"], "invalid choice"),
 ])
-def test_bad_input_exits_2_with_one_line(capsys, argv, words):
-    status, out, err = run_cli(capsys, *argv)
+def test_bad_input_exits_2_with_one_line(run_cli, argv, words):
+    status, out, err = run_cli(*argv)
     assert status == 2
     assert out == ""
     lines = err.strip().splitlines()

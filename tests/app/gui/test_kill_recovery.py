@@ -15,8 +15,9 @@ from app.model import scene as scenes
 from app.gui.file_actions import install_file_actions
 from app.gui.recovery import content, install_recovery, pending_recoveries
 from app.gui.window import MainWindow
+from tests.support import ROOT
 
-CHILD = Path(__file__).with_name("recovery_child.py")
+CHILD = ROOT / "tests" / "support" / "recovery_child.py"
 START_TIMEOUT = 60  # seconds; the child imports Qt and numpy on a busy machine
 
 pytestmark = pytest.mark.skipif(not hasattr(signal, "SIGKILL"), reason="needs SIGKILL")

@@ -3,14 +3,9 @@ import pytest
 
 from algorithms import registry
 from app.model import scene as scenes
-from app.gui.window import MainWindow
 
 
-@pytest.fixture
-def window(qtbot):
-    w = MainWindow()
-    qtbot.addWidget(w)
-    return w
+pytestmark = pytest.mark.window(shown=False)
 
 
 def test_an_option_set_while_placing_points_does_not_block_a_switch(window):

@@ -10,8 +10,9 @@ from algorithms.raster import Raster
 from app.model import compare
 from app.render import compose as render
 from app.model.compare import EXACT, FRAME, PROGRESS, Pane, Primitives
-from compare_oracles import (FLOAT32_BITS, FLOAT64_BITS, bresenham_pixels, dda_pixels,
-                             diff_counts, round_to_float)
+from tests.support import ROOT
+from tests.support.compare_oracles import (FLOAT32_BITS, FLOAT64_BITS, bresenham_pixels,
+                                           dda_pixels, diff_counts, round_to_float)
 
 DEMO = ((4, 5), (28, 15))
 LONG = ((0, 0), (4095, 192))
@@ -242,6 +243,6 @@ def test_the_logic_needs_no_qt():
             "c.PRESETS[0].primitives()); print(any(m.startswith(('PySide6', 'pyqtgraph')) "
             "for m in sys.modules))")
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
-                         cwd=str(__import__("pathlib").Path(__file__).resolve().parents[2]))
+                         cwd=str(ROOT))
     assert out.returncode == 0, out.stderr
     assert out.stdout.strip() == "False"

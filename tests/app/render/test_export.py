@@ -9,7 +9,6 @@ import json
 import os
 import subprocess
 import sys
-from pathlib import Path
 
 import numpy as np
 import pytest
@@ -21,8 +20,8 @@ from app.render import export as ex
 from app.render.frame import FrameMarks, compose_frame, frame_marks, primitive_mask
 from app.render.compose import PALETTE, Overlay, compose
 from app.model.scene import Scene, load, save
+from tests.support import ROOT
 
-ROOT = Path(__file__).resolve().parents[2]
 P, Q = (1, 1), (12, 6)
 GRID = (14, 8)
 
@@ -431,19 +430,7 @@ def test_frames_are_drawn_by_compose():
 
 
 # -------------------------------------------------------------------- CLI
-def run_cli(*args):
-    err = io.StringIO()
-    out = io.StringIO()
-    old = sys.stderr, sys.stdout
-    sys.stderr, sys.stdout = err, out
-    try:
-        code = cli.main(list(args))
-    finally:
-        sys.stderr, sys.stdout = old
-    return code, out.getvalue(), err.getvalue()
-
-
-def test_cli_exports_gif_and_frames(line_scene, tmp_path):
+def test_cli_exports_gif_and_frames(run_cli, line_scene, tmp_path):
     gif, folder = tmp_path / "out.gif", tmp_path / "frames"
     code, out, err = run_cli("export", str(line_scene), "--gif", str(gif), "--frames-dir",
                              str(folder), "--fps", "10", "--scale", "5", "--from", "third",
@@ -476,7 +463,7 @@ def test_cli_exports_gif_and_frames(line_scene, tmp_path):
     (["--gif", "{tmp}/no/such/folder/x.gif"], "does not exist"),
     (["--gif", "/proc/rasterlab-export.gif"], "cannot write"),
 ])
-def test_cli_bad_input_exits_2_with_one_line(line_scene, tmp_path, args, words):
+def test_cli_bad_input_exits_2_with_one_line(run_cli, line_scene, tmp_path, args, words):
     args = [a.replace("{tmp}", str(tmp_path)) for a in args]
     code, out, err = run_cli("export", str(line_scene), *args)
     assert code == 2 and out == ""
@@ -485,7 +472,7 @@ def test_cli_bad_input_exits_2_with_one_line(line_scene, tmp_path, args, words):
     assert not any(p.suffix in (".gif", ".tmp") for p in tmp_path.rglob("*"))
 
 
-def test_cli_refuses_frames_too_large(tmp_path):
+def test_cli_refuses_frames_too_large(run_cli, tmp_path):
     wide = tmp_path / "wide.json"
     save(Scene(algorithm="line-bresenham", points=[[0, 0], [5, 2]], width=300, height=10), wide)
     code, out, err = run_cli("export", str(wide), "--gif", str(tmp_path / "x.gif"),
@@ -494,7 +481,7 @@ def test_cli_refuses_frames_too_large(tmp_path):
     assert not (tmp_path / "x.gif").exists()
 
 
-def test_cli_bad_scene_files(tmp_path):
+def test_cli_bad_scene_files(run_cli, tmp_path):
     broken = tmp_path / "broken.json"
     broken.write_text('{"version": 1, "grid": ')
     for scene in (str(broken), str(tmp_path / "missing.json")):

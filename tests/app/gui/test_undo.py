@@ -11,7 +11,7 @@ from algorithms import registry
 from app.gui.file_actions import install_file_actions
 from app.model.history import MERGE_SECONDS
 from app.gui.window import MainWindow
-from gui_support import drag, settle
+from tests.support.gui import drag, settle
 
 LEFT = Qt.MouseButton.LeftButton
 NONE = Qt.KeyboardModifier.NoModifier

@@ -9,16 +9,13 @@ import random
 import sys
 
 import pytest
-from PySide6.QtCore import QPoint, QSettings, Qt, QTimer
+from PySide6.QtCore import QPoint, Qt, QTimer
 from PySide6.QtTest import QTest
 from PySide6.QtWidgets import QApplication, QInputDialog, QMessageBox
 
 from algorithms import registry
 from app.model import scene as scenes
-from app.gui.file_actions import install_file_actions
-from app.gui.recovery import content, install_recovery
-from app.gui.window import MainWindow
-from gui_support import settle
+from app.gui.recovery import content
 
 # A longer hunt: RASTERLAB_MONKEY_SEEDS=4,5,6,7 RASTERLAB_MONKEY_ACTIONS=40
 SEEDS = tuple(int(s) for s in os.environ.get("RASTERLAB_MONKEY_SEEDS", "1,2,3").split(","))
@@ -168,21 +165,7 @@ def walk(tree):
         stack.extend(item.child(i) for i in range(item.childCount()))
 
 
-@pytest.fixture
-def window(qtbot, tmp_path, monkeypatch):
-    monkeypatch.setenv("RASTERLAB_DATA_DIR", str(tmp_path / "data"))
-    w = MainWindow()  # not given to qtbot: closed below, without the question
-    install_file_actions(w, QSettings(str(tmp_path / "s.ini"), QSettings.Format.IniFormat))
-    install_recovery(w, delay_ms=30)
-    w.show()
-    qtbot.waitExposed(w)
-    settle(qtbot, w)
-    yield w
-    w.player.pause()
-    w.removeEventFilter(w.recovery)
-    w.recovery.shutdown()
-    w.close()
-    w.deleteLater()
+pytestmark = pytest.mark.window(settled=True, recovery=True, delay_ms=30)
 
 
 def responds(qtbot):

@@ -9,14 +9,8 @@ from PySide6.QtWidgets import QApplication
 from app.model import compare
 from app.gui.compare_window import WINDOW_KEY
 from app.gui.window import DEMO_POINTS
-from gui_support import shown_window
-from compare_oracles import (FLOAT32_BITS, FLOAT64_BITS, bresenham_pixels, dda_pixels,
-                             diff_counts)
-
-
-@pytest.fixture
-def window(qtbot):
-    return shown_window(qtbot)
+from tests.support.compare_oracles import (FLOAT32_BITS, FLOAT64_BITS, bresenham_pixels,
+                                           dda_pixels, diff_counts)
 
 
 @pytest.fixture

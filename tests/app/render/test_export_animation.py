@@ -1,10 +1,7 @@
 """An animated run (aa-temporal) exports one frame per animation frame, each
 showing that frame's whole image; other runs export one frame per step."""
 import json
-import subprocess
-import sys
 from fractions import Fraction
-from pathlib import Path
 
 import pytest
 from PIL import Image
@@ -14,7 +11,6 @@ from algorithms.antialias import animation_frame_steps
 from app.render import export as exporting
 from app.model.scene import Scene, save
 
-ROOT = Path(__file__).resolve().parents[2]
 # Export paints text with Qt: the test session's QApplication must exist
 # first, or export would make a bare QGuiApplication the widget tests cannot use.
 pytestmark = pytest.mark.usefixtures("qapp")
@@ -109,22 +105,19 @@ def test_per_step_and_per_animation_choices(tmp_path):
         exporting.ExportSettings(per="sometimes").checked()
 
 
-def cli(*args):
-    return subprocess.run([sys.executable, "-m", "app", *map(str, args)], cwd=ROOT,
-                          capture_output=True, text=True, timeout=120)
-
-
-def test_command_line_exports_animation_frames_and_refuses_them_for_a_line(tmp_path):
+def test_command_line_exports_animation_frames_and_refuses_them_for_a_line(tmp_path, run_cli):
     scene = scene_file(tmp_path)
-    done = cli("export", scene, "--frames-dir", tmp_path / "out", "--scale", "2")
-    assert done.returncode == 0, done.stderr
+    status, _, err = run_cli("export", scene, "--frames-dir", tmp_path / "out", "--scale", "2",
+                             child=True)
+    assert status == 0, err
     assert len(list((tmp_path / "out").glob("frame_*.png"))) == MOVING["frames"]
     line = scene_file(tmp_path, "line-bresenham", [[0, 0], [5, 2]], {})
-    refused = cli("export", line, "--gif", tmp_path / "line.gif", "--per", "animation")
-    assert refused.returncode == 2
-    assert "no animation frames" in refused.stderr and "Traceback" not in refused.stderr
+    status, _, err = run_cli("export", line, "--gif", tmp_path / "line.gif", "--per", "animation",
+                             child=True)
+    assert status == 2
+    assert "no animation frames" in err and "Traceback" not in err
     assert not (tmp_path / "line.gif").exists()
-    json.loads(cli("run", "--scene", scene, "--json").stdout)  # the scene itself runs
+    json.loads(run_cli("run", "--scene", scene, "--json", child=True)[1])  # the scene itself runs
 
 
 def test_a_pixel_left_by_the_moving_triangle_shows_white_not_overdraw():

@@ -11,7 +11,7 @@ from algorithms.registry import format_value
 from algorithms.steps import Table
 from app.render.compose import PALETTE, coverage_counts
 from app.model.tables import cell_text
-from gui_support import drag, settle
+from tests.support.gui import drag, settle
 from app.gui.window import MainWindow
 
 LEFT = Qt.MouseButton.LeftButton

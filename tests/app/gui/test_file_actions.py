@@ -14,8 +14,9 @@ from app.gui import file_actions as fa
 from app.model import scene as scenes
 from app.gui.file_actions import install_file_actions
 from app.gui.window import MainWindow
+from tests.support import ROOT
 
-SHIPPED = sorted((Path(__file__).resolve().parents[2] / "resources" / "scenes").glob("*.json"))
+SHIPPED = sorted((ROOT / "resources" / "scenes").glob("*.json"))
 
 
 @pytest.fixture
@@ -23,11 +24,7 @@ def settings(tmp_path):
     return QSettings(str(tmp_path / "settings.ini"), QSettings.Format.IniFormat)
 
 
-@pytest.fixture
-def window(qtbot):
-    w = MainWindow()
-    qtbot.addWidget(w)
-    return w
+pytestmark = pytest.mark.window(shown=False)
 
 
 @pytest.fixture
@@ -40,14 +37,14 @@ def messages(monkeypatch):
     """Message boxes are recorded instead of shown."""
     shown = []
 
-    def record(kind):
+    def shown_as(kind):
         def show(parent, title, text, *args, **kwargs):
             shown.append((kind, title, text))
             return QMessageBox.StandardButton.Ok
         return show
 
-    monkeypatch.setattr(QMessageBox, "warning", record("warning"))
-    monkeypatch.setattr(QMessageBox, "information", record("information"))
+    monkeypatch.setattr(QMessageBox, "warning", shown_as("warning"))
+    monkeypatch.setattr(QMessageBox, "information", shown_as("information"))
     return shown
 
 

@@ -16,7 +16,6 @@ from algorithms import registry
 from app.gui.player import CANCELLED_MESSAGE, Player
 from app.gui.recording import GapMeter, seek_when_recorded
 from app.gui.window import MainWindow
-from gui_support import shown_window
 
 # A square outline whose inside is a 1024 x 1024 region of free pixels.
 BIG = 1025
@@ -60,12 +59,7 @@ def player(qtbot):
     p.stop_recording()
 
 
-@pytest.fixture
-def window(qtbot):
-    w = shown_window(qtbot, "flood-fill", [SMALL_SQUARE], grid=FILL_GRID)
-    w.player.sync_wait = 0.0
-    yield w
-    w.player.stop_recording()
+pytestmark = pytest.mark.window("flood-fill", [SMALL_SQUARE], grid=FILL_GRID, sync_wait=0.0)
 
 
 class Signals:

@@ -7,20 +7,15 @@ from PySide6.QtWidgets import QApplication
 
 from algorithms import registry
 from algorithms.registry import format_value
-from gui_support import shown_window
 from app.gui.window import DEMO_POINTS, MainWindow
+from tests.support import record
 
 LEFT = Qt.MouseButton.LeftButton
 NONE = Qt.KeyboardModifier.NoModifier
+DEMO = ("line-bresenham", DEMO_POINTS)  # the run a new window shows
 
 
-@pytest.fixture
-def window(qtbot):
-    return shown_window(qtbot, settled=True)
-
-
-def record(name="line-bresenham", points=DEMO_POINTS, options=None, grid=(32, 24)):
-    return registry.get(name).record(list(points), options or {}, grid)
+pytestmark = pytest.mark.window(settled=True)
 
 
 def click_grid(window, grid_pos):
@@ -33,7 +28,7 @@ def press(window, key, modifier=NONE, widget=None):
 
 
 def test_opens_on_the_demo_scene(window):
-    trace = record()
+    trace = record(*DEMO)
     assert window.player.spec.name == "line-bresenham"
     assert window.player.points == list(DEMO_POINTS)
     assert window.player.index == len(trace) - 1
@@ -48,7 +43,7 @@ def test_placing_two_points_by_clicking(window):
     assert "Q" in window.message.text()
     click_grid(window, (30.4, 1.7))
     assert window.player.points == [(2, 20), (30, 1)]
-    trace = record(points=((2, 20), (30, 1)))
+    trace = record("line-bresenham", ((2, 20), (30, 1)))
     assert np.array_equal(window.player.trace.written_pixels(), trace.written_pixels())
     # The numbers in the points editor follow.
     assert [window.points.cell_text(1, axis) for axis in ("x", "y")] == ["30", "1"]
@@ -71,8 +66,8 @@ def test_choosing_an_algorithm_and_the_comparison(window, qtbot):
     QTest.mouseClick(window.picker.viewport(), LEFT, NONE, rect.center())
     assert window.player.spec.name == "line-dda"
     assert "DDA" in window.windowTitle()
-    a = {tuple(p) for p in record().written_pixels().tolist()}
-    b = {tuple(p) for p in record("line-dda").written_pixels().tolist()}
+    a = {tuple(p) for p in record(*DEMO).written_pixels().tolist()}
+    b = {tuple(p) for p in record("line-dda", DEMO_POINTS).written_pixels().tolist()}
     expected = a ^ b
     assert {tuple(c) for c in window.grid.outlines.layer("difference").tolist()} == expected
     text = window.difference_label.text()
@@ -105,7 +100,7 @@ def test_changing_an_option(window):
     box = window.options.editor("symmetric")
     box.click()
     assert window.player.options["symmetric"] is True
-    trace = record(options={"symmetric": True})
+    trace = record(*DEMO, {"symmetric": True})
     assert np.array_equal(window.player.trace.written_pixels(), trace.written_pixels())
 
 
@@ -152,7 +147,7 @@ def test_scrubbing_the_timeline(window):
     window.transport.timeline.setValue(9)
     assert window.player.index == 9
     assert window.transport.counter.text().startswith("step 9 /")
-    trace = record()
+    trace = record(*DEMO)
     assert window.grid.outlines.layer("current").tolist() == [list(trace.step(9).pixel)]
 
 
@@ -219,7 +214,7 @@ def test_y_down_origin(window):
 
 
 def test_panels_show_the_current_frame(window):
-    trace = record()
+    trace = record(*DEMO)
     spec = registry.get("line-bresenham")
     for index in (0, 1, 5, len(trace) - 1):
         window.transport.timeline.setValue(index)

@@ -3,53 +3,20 @@ handler of uncaught exceptions."""
 import threading
 
 import pytest
-from PySide6.QtCore import QSettings
 from PySide6.QtWidgets import QFileDialog, QMessageBox
 
 from app.gui import recovery as recovery_module
 from app.model import scene as scenes
 from app.gui.crash import CrashHandler, install_crash_handler
-from app.gui.file_actions import install_file_actions
-from app.gui.recovery import PREFIX, content, install_recovery, pending_recoveries
-from app.gui.window import DEMO_POINTS, MainWindow
+from app.gui.recovery import PREFIX, content, pending_recoveries
+from app.gui.window import DEMO_POINTS
 
 BUTTONS = QMessageBox.StandardButton
 RESTORE, DISCARD, LATER = recovery_module.RESTORE, recovery_module.DISCARD, \
     recovery_module.LATER
 
 
-@pytest.fixture
-def data(tmp_path, monkeypatch):
-    folder = tmp_path / "data"
-    monkeypatch.setenv("RASTERLAB_DATA_DIR", str(folder))
-    return folder
-
-
-@pytest.fixture
-def make_window(qapp, tmp_path, data):
-    """Builds windows as the program does; at the end they close without
-    questions, whatever the test left (so they are not given to qtbot,
-    which would close them with the question still armed)."""
-    made = []
-
-    def make(delay_ms=20, **kwargs):
-        window = MainWindow()
-        settings = QSettings(str(tmp_path / "settings.ini"), QSettings.Format.IniFormat)
-        install_file_actions(window, settings)
-        install_recovery(window, data / "recovery", delay_ms=delay_ms, **kwargs)
-        made.append(window)
-        return window
-    yield make
-    for window in made:
-        window.removeEventFilter(window.recovery)
-        window.recovery.shutdown()
-        window.close()
-        window.deleteLater()
-
-
-@pytest.fixture
-def window(make_window):
-    return make_window()
+pytestmark = pytest.mark.window(shown=False, recovery=True)
 
 
 @pytest.fixture

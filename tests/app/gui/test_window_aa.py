@@ -11,14 +11,11 @@ from algorithms.exact import coverage as exact_coverage
 from app.render import frame as frame_view
 from app.render.compose import depth_image, error_image, error_stats, final_coverage
 
-from gui_support import shown_window
 
 TRIANGLE = [(3.25, 2.5), (20.5, 6.75), (9.125, 17.25)]
 
 
-@pytest.fixture
-def window(qtbot):
-    return shown_window(qtbot, "line-bresenham")
+pytestmark = pytest.mark.window("line-bresenham")
 
 
 def _chip_rows(w):

@@ -1,52 +1,15 @@
-"""The pixel inspector: its values against oracles written here (exact
-fractions from the vertices, an independent scan of the frames, shapely's
-areas), and the dock in the window."""
+"""The pixel inspector: its values against oracles written for the tests
+(exact fractions from the vertices, an independent scan of the frames,
+shapely's areas). The dock in the window: tests/app/gui/test_inspector_dock.py."""
 from fractions import Fraction
 
 import pytest
-from PySide6.QtCore import Qt
-from PySide6.QtTest import QTest
 from shapely.geometry import Polygon, box
 
 from algorithms import registry
 from algorithms.steps import PLOT, VISIT, Span, Vars
 from app.model.inspector import PixelInspector, inspect, rows_by_label
-
-from tests.app.gui_support import shown_window
-
-GRID = (16, 14)
-# Not on the 1/256 grid: the run snaps them (DESIGN.md: nearest multiple of
-# 1/256 px, halves to even) and the oracle must do the same.
-TRIANGLE = [(2.3, 1.1), (12.7, 3.2), (5.5, 10.9)]
-
-
-def snapped(points, bits=8):
-    scale = 1 << bits
-    # round() of a Fraction rounds halves to even, as the run does.
-    return [tuple(Fraction(round(Fraction(v) * scale), scale) for v in point) for point in points]
-
-
-def edge_values(vertices, pixel):
-    """e_k at the pixel centre: twice the signed area of (P_k+1, P_k+2, centre)."""
-    px, py = Fraction(2 * pixel[0] + 1, 2), Fraction(2 * pixel[1] + 1, 2)
-    values = []
-    for k in range(3):
-        (xi, yi), (xj, yj) = vertices[(k + 1) % 3], vertices[(k + 2) % 3]
-        values.append((xj - xi) * (py - yi) - (yj - yi) * (px - xi))
-    return values
-
-
-def weight(text):
-    """A weight as the inspector prints it: exact, or 10 digits and an ellipsis."""
-    return text.rstrip("\u2026"), text.endswith("\u2026")
-
-
-def assert_weight(text, exact):
-    digits, rounded = weight(text)
-    if rounded:
-        assert float(digits) == pytest.approx(float(exact), rel=1e-9, abs=1e-12)
-    else:
-        assert Fraction(digits) == exact
+from tests.support.inspector_oracles import GRID, TRIANGLE, assert_weight, edge_values, snapped
 
 
 def run(name, points, options=None, grid=GRID):
@@ -220,54 +183,6 @@ def test_samples_follow_the_step():
                and sx[k] == sx[k]]
     assert rows["hit / tested"].startswith(f"{sum(hit[k] > 0 for k in samples)} / {len(samples)}")
     assert rows["coverage"] == "0.0"  # not written yet at this step
-
-
-# ------------------------------------------------------------ the dock
-@pytest.fixture
-def window(qtbot):
-    return shown_window(qtbot, "triangle-bbox", TRIANGLE, grid=GRID, settled=True)
-
-
-def test_hovering_and_pinning_fill_the_dock(window, qtbot):
-    w = window
-    assert w.inspector.action in w.menus["view"].actions()
-    w.inspector.action.trigger()
-    assert w.inspector.dock.isVisible()
-    grid, panel = w.grid, w.inspector.panel
-    es = edge_values(snapped(TRIANGLE), (5, 4))
-    QTest.mouseMove(grid.viewport(), grid.widget_pos_of((5.5, 4.5)))
-    qtbot.waitUntil(lambda: panel.rows().get("pixel", "").startswith("(5, 4) "), timeout=2000)
-    rows = panel.rows()
-    assert [Fraction(rows[f"e{k}"].split()[0]) for k in range(3)] == es
-    assert_weight(rows["alpha"], es[0] / sum(es))
-    # Alt+click pins the pixel (and places no point): it stays while the
-    # pointer moves and the step changes.
-    points = list(w.player.points)
-    QTest.mouseClick(grid.viewport(), Qt.MouseButton.LeftButton, Qt.KeyboardModifier.AltModifier,
-                     grid.widget_pos_of((5.5, 4.5)))
-    assert w.inspector.pinned == (5, 4)
-    assert w.player.points == points
-    QTest.mouseMove(grid.viewport(), grid.widget_pos_of((9.5, 6.5)))
-    w.player.seek(0)
-    rows = panel.rows()
-    assert rows["pixel"].startswith("(5, 4) ") and rows["at step"].startswith("0 of")
-    assert rows["visited"] == "never"
-    assert panel.unpin.isVisible() and w.inspector.outline.isVisible()
-    w.player.to_last()
-    assert panel.rows()["plotted"].startswith("once")
-    panel.unpin.click()
-    assert w.inspector.pinned is None and not w.inspector.outline.isVisible()
-    # The menu's "Inspect pixel" pins too; Esc lets go.
-    grid.inspectRequested.emit((9, 6))
-    assert panel.rows()["pixel"].startswith("(9, 6) ") and panel.unpin.isVisible()
-    w.activateWindow()
-    QTest.keyClick(w, Qt.Key.Key_Escape)
-    qtbot.waitUntil(lambda: w.inspector.pinned is None, timeout=1000)
-    # I pins the pixel under the pointer.
-    QTest.mouseMove(grid.viewport(), grid.widget_pos_of((3.5, 2.5)))
-    qtbot.waitUntil(lambda: w.inspector.hovered == (3, 2), timeout=1000)
-    QTest.keyClick(w, Qt.Key.Key_I)
-    qtbot.waitUntil(lambda: w.inspector.pinned == (3, 2), timeout=1000)
 
 
 def test_a_float_run_shows_its_own_edge_values_beside_the_exact_ones():

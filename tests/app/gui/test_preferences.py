@@ -20,8 +20,8 @@ from app.gui.file_actions import install_file_actions
 from app.gui.preferences import Preferences, apply_theme, default_values
 from app.gui.report_window import install_report_action
 from app.gui.window import GESTURES, MainWindow, ShortcutsDialog
+from tests.support import ROOT
 
-ROOT = Path(__file__).resolve().parents[2]
 CTRL = Qt.KeyboardModifier.ControlModifier
 
 

@@ -4,19 +4,12 @@ import json
 import pytest
 
 from algorithms.exact import triangles as exact_triangles
-from app.cli import main
 
 POINTS = ["1.5,2", "20,3.25", "8,17"]
 
 
-def run_cli(capsys, *argv):
-    status = main(list(argv))
-    out, err = capsys.readouterr()
-    return status, out, err
-
-
-def test_run_triangle_bbox_inclusive_json(capsys):
-    status, out, err = run_cli(capsys, "run", "triangle-bbox", "--points", *POINTS,
+def test_run_triangle_bbox_inclusive_json(run_cli):
+    status, out, err = run_cli("run", "triangle-bbox", "--points", *POINTS,
                                "--set", "fill_rule=inclusive", "--json")
     assert status == 0 and err == ""
     result = json.loads(out)
@@ -37,15 +30,15 @@ def test_run_triangle_bbox_inclusive_json(capsys):
                                   "triangle-pineda", "triangle-linewise", "triangle-halfplane",
                                   "triangle-barycentric", "triangle-plane",
                                   "triangle-perspective"])
-def test_every_traversal_runs_from_the_command_line(capsys, name):
-    status, out, err = run_cli(capsys, "run", name, "--points", *POINTS, "--json")
+def test_every_traversal_runs_from_the_command_line(run_cli, name):
+    status, out, err = run_cli("run", name, "--points", *POINTS, "--json")
     assert status == 0, err
     want = exact_triangles.coverage([(1.5, 2), (20, 3.25), (8, 17)], 8, "top-left", (0, 0, 32, 24))
     assert sorted(map(tuple, json.loads(out)["pixels"])) == sorted(want)
 
 
-def test_colours_per_vertex_give_pixel_values(capsys):
-    status, out, _ = run_cli(capsys, "run", "triangle-barycentric", "--points", "0.5,0.5",
+def test_colours_per_vertex_give_pixel_values(run_cli):
+    status, out, _ = run_cli("run", "triangle-barycentric", "--points", "0.5,0.5",
                              "8.5,0.5", "0.5,8.5", "--set", "colors=#ff0000,#00ff00,#0000ff",
                              "--set", "fill_rule=inclusive", "--json")
     assert status == 0
@@ -55,8 +48,8 @@ def test_colours_per_vertex_give_pixel_values(capsys):
     assert by_pixel[(0, 0)] == "#ff0000" and by_pixel[(8, 0)] == "#00ff00"
 
 
-def test_two_triangles_and_numbers_options(capsys):
-    status, out, err = run_cli(capsys, "run", "triangle-bbox", "--points", "1,1", "9,1", "9,9",
+def test_two_triangles_and_numbers_options(run_cli):
+    status, out, err = run_cli("run", "triangle-bbox", "--points", "1,1", "9,1", "9,9",
                                "1,1", "9,9", "1,9", "--set", "z=0,1,2", "--set", "w=1,2,4",
                                "--set", "s=0,10,20", "--set", "perspective=true", "--json")
     assert status == 0, err
@@ -66,8 +59,8 @@ def test_two_triangles_and_numbers_options(capsys):
     assert len(result["pixels"]) == 64
 
 
-def test_list_shows_the_family(capsys):
-    status, out, _ = run_cli(capsys, "list", "--json")
+def test_list_shows_the_family(run_cli):
+    status, out, _ = run_cli("list", "--json")
     specs = {s["name"]: s for s in json.loads(out)}
     bbox = specs["triangle-bbox"]
     assert bbox["family"] == "triangles" and bbox["inputs"]["multiple"]
@@ -88,8 +81,8 @@ def test_list_shows_the_family(capsys):
     (["run", "triangle-bbox", "--points", *POINTS, "--set", "subpixel_bits=12"], "subpixel_bits"),
     (["run", "triangle-bbox", "--points", "1,1", "50,1", "1,5", "--grid", "32,24"], "outside"),
 ])
-def test_bad_input_exits_2_with_one_line(capsys, argv, words):
-    status, out, err = run_cli(capsys, *argv)
+def test_bad_input_exits_2_with_one_line(run_cli, argv, words):
+    status, out, err = run_cli(*argv)
     assert status == 2 and out == ""
     lines = err.strip().splitlines()
     assert len(lines) == 1 and lines[0].startswith("rasterlab: ") and words in lines[0], err

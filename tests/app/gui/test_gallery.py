@@ -3,20 +3,18 @@ import json
 import shutil
 import subprocess
 import sys
-from pathlib import Path
 
 import pytest
-from PySide6.QtCore import QSettings, Qt
+from PySide6.QtCore import Qt
 from PySide6.QtTest import QTest
 from PySide6.QtWidgets import QMessageBox
 
 from app import cli
 from app.gui import gallery as gal
 from app.model import scene as scenes
-from app.gui.file_actions import install_file_actions
 from app.gui.window import MainWindow
+from tests.support import ROOT
 
-ROOT = Path(__file__).resolve().parents[2]
 SHIPPED = sorted((ROOT / "resources" / "scenes").glob("*.json"))
 HARD = [p for p in SHIPPED if p.stem != "demo-bresenham"]
 # The hard cases the issue names, by the scene that shows each.
@@ -26,12 +24,7 @@ NAMED = ("line-float32-drift", "line-centre-ties", "line-reversed", "circle-radi
          "triangle-behind-eye", "painter-cyclic", "aa-siemens-star")
 
 
-@pytest.fixture
-def window(qtbot, tmp_path):
-    w = MainWindow()
-    qtbot.addWidget(w)
-    install_file_actions(w, QSettings(str(tmp_path / "s.ini"), QSettings.Format.IniFormat))
-    return w
+pytestmark = pytest.mark.window(shown=False, files=True)
 
 
 @pytest.fixture

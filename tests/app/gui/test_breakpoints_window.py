@@ -8,16 +8,11 @@ from app.model import scene as scenes
 from app.gui.file_actions import install_file_actions
 from app.gui.recovery import install_recovery
 
-from gui_support import settle, shown_window
-from test_breakpoints import (POLYGON, ZBUFFER, depth_fail_events, first_after,
-                              scanline_events, sign_events)
+from tests.support.gui import settle
+from tests.support.breakpoint_oracles import (POLYGON, ZBUFFER, depth_fail_events, first_after,
+                                              scanline_events, sign_events)
 
 SHIFT = Qt.KeyboardModifier.ShiftModifier
-
-
-@pytest.fixture
-def window(qtbot):
-    return shown_window(qtbot)
 
 
 def press(window, key, modifier=Qt.KeyboardModifier.NoModifier):

@@ -5,7 +5,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from algorithms.exact import lines as exact
-from linecases import points, segments
+from tests.support.linecases import points, segments
 
 
 def test_rounding_of_fractions_including_negatives():
