@@ -97,6 +97,9 @@ def test_the_help_menu_opens_one_dialog_and_a_double_click_opens_a_scene(window,
     assert window.player.options["near"] == scene.options["near"]
     assert [list(p) for p in window.player.input_points()] == scene.points
     assert first.isVisible()  # non-modal: it stays open beside the window
+    # Its pictures are drawn one per turn of the event loop: all drawn before
+    # qtbot deletes the dialog, so none is drawn into a deleted label later.
+    qtbot.waitUntil(lambda: first.thumbnails_done, timeout=10000)
 
 
 def test_open_works_without_the_file_menu_and_a_broken_file_is_refused(qtbot, tmp_path,
@@ -118,3 +121,4 @@ def test_open_works_without_the_file_menu_and_a_broken_file_is_refused(qtbot, tm
     assert not dialog.open_row(0)
     assert window.player.spec.name == "triangle-incremental" and "polygon-star-nonzero" in shown[0]
     assert not dialog.open_row(5)
+    qtbot.waitUntil(lambda: dialog.thumbnails_done, timeout=10000)
