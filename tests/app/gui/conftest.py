@@ -81,6 +81,8 @@ def make_window(request, qtbot, tmp_path):
 
 @pytest.fixture
 def window(make_window):
+    """The test's window, made as its window mark says; a recording still
+    running at the end is cancelled before the window goes."""
     window = make_window()
     yield window
     window.player.stop_recording()
