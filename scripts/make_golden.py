@@ -1,8 +1,8 @@
 """Write the golden frames the export tests compare with.
 
-For each scene of ``GOLDEN`` (tests/app/golden_frames.py), the exported
+For each scene of ``GOLDEN`` (tests/support/golden_frames.py), the exported
 frame at its first, middle and last step is reduced to the colour at the
-centre of each grid cell and stored in tests/app/golden/NAME.npz. The tests
+centre of each grid cell and stored in tests/app/render/golden/NAME.npz. The tests
 never write these files: run this command when a change to what the frames
 show is intended, check the cells the failing test listed, and commit the
 new files with that change.
@@ -19,7 +19,7 @@ import numpy as np
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 
-from tests.app.golden_frames import GOLDEN, GOLDEN_DIR, golden_frames  # noqa: E402
+from tests.support.golden_frames import GOLDEN, GOLDEN_DIR, golden_frames  # noqa: E402
 
 
 def main() -> int:

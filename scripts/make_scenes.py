@@ -3,7 +3,7 @@
     python scripts/make_scenes.py
 
 Each scene's description says what makes it hard and what to look for;
-tests/app/test_shipped_scenes.py checks what the descriptions claim.
+tests/app/model/test_shipped_scenes.py checks what the descriptions claim.
 """
 from __future__ import annotations
 

@@ -8,7 +8,7 @@ from pathlib import Path
 # Qt tests never need a display.
 os.environ.setdefault("QT_QPA_PLATFORM", "offscreen")
 # Edits wait for their recording however long it takes, so a test sees the
-# new trace at once; tests/app/test_recording.py sets the wait to 0.
+# new trace at once; tests/app/gui/test_recording.py sets the wait to 0.
 os.environ["RASTERLAB_RECORD_WAIT"] = "inf"
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 

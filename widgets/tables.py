@@ -7,39 +7,18 @@ of each table belongs to the step.
 """
 from __future__ import annotations
 
-from dataclasses import dataclass, field
-
 from PySide6.QtCore import Qt
 from PySide6.QtGui import QBrush, QColor, QFont
 from PySide6.QtWidgets import (QAbstractItemView, QBoxLayout, QFrame, QHeaderView, QLabel,
                                QScrollArea, QSizePolicy, QTableWidget, QTableWidgetItem,
                                QVBoxLayout, QWidget)
 
+from app.model.tables import ShownTable
+
 from .panels import CHANGED_VALUE, monospace_font
 
 CHANGED_ROW = QColor("#fff3bf")
 FRESH_TITLE = "#b35900"
-
-
-@dataclass(frozen=True)
-class ShownTable:
-    """One table as the panel shows it.
-
-    ``rows`` hold the text of each cell, in the order the algorithm gave
-    them. ``changed_rows`` are rows that are new or differ from the previous
-    snapshot of the same table; ``changed_cells`` (row, column) the cells
-    that differ within a row that was there before. ``step`` is the step the
-    snapshot was taken at; ``fresh`` says it was taken at the step on show.
-    """
-
-    name: str
-    columns: tuple[str, ...]
-    rows: tuple[tuple[str, ...], ...]
-    step: int
-    fresh: bool = False
-    changed_rows: frozenset = field(default_factory=frozenset)
-    changed_cells: frozenset = field(default_factory=frozenset)
-    tooltips: dict = field(default_factory=dict)  # (row, column) -> longer text
 
 
 class _Block(QWidget):

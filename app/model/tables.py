@@ -9,14 +9,35 @@ it. Nothing here imports Qt.
 from __future__ import annotations
 
 import bisect
+from dataclasses import dataclass, field
 from fractions import Fraction
 
 from algorithms.registry import format_value
 from algorithms.steps import Table
-from widgets.tables import ShownTable
 
 # A fraction is shown as a decimal when that decimal is exact and this short.
 MAX_DECIMALS = 6
+
+
+@dataclass(frozen=True)
+class ShownTable:
+    """One table as the panel shows it.
+
+    ``rows`` hold the text of each cell, in the order the algorithm gave
+    them. ``changed_rows`` are rows that are new or differ from the previous
+    snapshot of the same table; ``changed_cells`` (row, column) the cells
+    that differ within a row that was there before. ``step`` is the step the
+    snapshot was taken at; ``fresh`` says it was taken at the step on show.
+    """
+
+    name: str
+    columns: tuple[str, ...]
+    rows: tuple[tuple[str, ...], ...]
+    step: int
+    fresh: bool = False
+    changed_rows: frozenset = field(default_factory=frozenset)
+    changed_cells: frozenset = field(default_factory=frozenset)
+    tooltips: dict = field(default_factory=dict)  # (row, column) -> longer text
 
 
 class TableIndex:

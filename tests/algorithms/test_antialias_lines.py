@@ -9,7 +9,7 @@ from hypothesis import given, settings
 
 from algorithms import antialias as aa
 from algorithms.registry import get
-from linecases import NAMED_CASES, OCTANT_CASES, points
+from tests.support.linecases import NAMED_CASES, OCTANT_CASES, points
 
 
 def major_axis(p, q) -> int:

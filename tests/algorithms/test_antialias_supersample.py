@@ -11,7 +11,7 @@ from algorithms import trace as trace_module
 from algorithms import triangles
 from algorithms.registry import get
 from app.cli import main
-from trace_oracle import slow_replay
+from tests.support.trace_oracle import slow_replay
 
 GRID = (40, 32)
 

@@ -13,13 +13,14 @@ from algorithms.exact import circles as exact
 from algorithms import trace as trace_module
 from algorithms.circles import mirrors8
 from algorithms.registry import InputError, get
-from trace_oracle import slow_replay
+from tests.support.trace_oracle import slow_replay
+from tests.support import record
 
 CIRCLES = ("circle-sqrt4", "circle-sqrt8", "circle-midpoint")
 
 
-def record(name, r, centre=(0, 0), grid=(8, 8), **options):
-    return get(name).record((centre,), {"radius": r, **options}, grid=grid)
+def circle(name, r, centre=(0, 0), grid=(8, 8), **options):
+    return record(name, (centre,), {"radius": r, **options}, grid)
 
 
 def offsets(trace, centre=(0, 0)):
@@ -60,15 +61,15 @@ def same_raster(a, b):
 @pytest.mark.parametrize("start", ["integer", "fraction"])
 def test_midpoint_equals_the_oracle_without_duplicates(start):
     for r in range(0, 161):
-        pixels = offsets(record("circle-midpoint", r, start=start))
+        pixels = offsets(circle("circle-midpoint", r, start=start))
         assert len(pixels) == len(set(pixels)), r
         assert set(pixels) == exact.midpoint_circle(r), r
 
 
 def test_both_starts_choose_identical_pixels():
     for r in range(0, 401):
-        integer = record("circle-midpoint", r, start="integer")
-        fraction = record("circle-midpoint", r, start="fraction")
+        integer = circle("circle-midpoint", r, start="integer")
+        fraction = circle("circle-midpoint", r, start="fraction")
         assert np.array_equal(integer.written_pixels(), fraction.written_pixels()), r
         # The fraction start's d is always the integer start's d plus 1/4.
         d_int, d_frac = integer.series("d"), fraction.series("d")
@@ -77,18 +78,18 @@ def test_both_starts_choose_identical_pixels():
 
 
 def test_small_radii_by_hand():
-    assert offsets(record("circle-midpoint", 0)) == [(0, 0)]
-    assert offsets(record("circle-midpoint", 1)) == [(0, 1), (1, 0), (0, -1), (-1, 0)]
+    assert offsets(circle("circle-midpoint", 0)) == [(0, 0)]
+    assert offsets(circle("circle-midpoint", 1)) == [(0, 1), (1, 0), (0, -1), (-1, 0)]
     # r = 2: columns 0 and 1 have y = 2 (sqrt 3 = 1.73 rounds to 2); column 2
     # has y = 0 and lies past the diagonal.
-    assert set(offsets(record("circle-midpoint", 2))) == {
+    assert set(offsets(circle("circle-midpoint", 2))) == {
         (0, 2), (2, 0), (0, -2), (-2, 0),
         (1, 2), (2, 1), (2, -1), (1, -2), (-1, -2), (-2, -1), (-2, 1), (-1, 2)}
 
 
 @pytest.mark.parametrize("r", [1000, 4096])
 def test_large_radii(r):
-    pixels = offsets(record("circle-midpoint", r))
+    pixels = offsets(circle("circle-midpoint", r))
     assert len(pixels) == len(set(pixels))
     assert set(pixels) == exact.midpoint_circle(r)
     assert is_closed_curve(pixels)
@@ -98,7 +99,7 @@ def test_large_radii(r):
 @given(st.integers(0, 600), st.tuples(st.integers(-50, 50), st.integers(-50, 50)),
        st.sampled_from(["integer", "fraction"]))
 def test_midpoint_is_eight_way_symmetric_anywhere(r, centre, start):
-    pixels = offsets(record("circle-midpoint", r, centre=centre, start=start), centre)
+    pixels = offsets(circle("circle-midpoint", r, centre=centre, start=start), centre)
     assert len(pixels) == len(set(pixels))
     assert exact.eight_way(pixels) == set(pixels)
     if r >= 1:
@@ -108,7 +109,7 @@ def test_midpoint_is_eight_way_symmetric_anywhere(r, centre, start):
 @pytest.mark.parametrize("start", ["integer", "fraction"])
 @pytest.mark.parametrize("r", [1, 2, 8, 23, 24])
 def test_each_decision_is_f_at_the_midpoint(start, r):
-    trace = record("circle-midpoint", r, centre=(3, -2), start=start)
+    trace = circle("circle-midpoint", r, centre=(3, -2), start=start)
     decisions = 0
     for i in range(1, len(trace)):
         step = trace.step(i)
@@ -132,7 +133,7 @@ def test_each_decision_is_f_at_the_midpoint(start, r):
 
 
 def test_each_step_plots_its_distinct_mirrors_once():
-    trace = record("circle-midpoint", 30)
+    trace = circle("circle-midpoint", 30)
     groups, current = [], None
     for i in range(1, len(trace)):
         step = trace.step(i)
@@ -175,7 +176,7 @@ def test_a_float_square_root_floors_exactly_up_to_radius_4096(dtype):
 
 def test_sqrt4_pixels_and_duplicates():
     for r in range(0, 120):
-        trace = record("circle-sqrt4", r)
+        trace = circle("circle-sqrt4", r)
         pixels = offsets(trace)
         assert set(pixels) == exact.sqrt4_circle(r)
         # (r, 0) and (-r, 0) are each plotted twice, as (x, y) and (x, -y); at
@@ -186,7 +187,7 @@ def test_sqrt4_pixels_and_duplicates():
 
 def test_sqrt4_gaps_where_the_arc_is_steep():
     for r in range(0, 300):
-        final = record("circle-sqrt4", r).final_variables()
+        final = circle("circle-sqrt4", r).final_variables()
         jumps = exact.sqrt4_gap_columns(r)
         assert final["gaps"] == 4 * len(jumps)
         assert final["missing"] == 4 * sum(skipped for _, skipped in jumps)
@@ -204,24 +205,24 @@ def test_sqrt4_gaps_counted_on_the_drawn_pixels():
     # Independently of the oracle: walk the first quadrant's arc column by
     # column over the drawn pixels and count steps between non-neighbours.
     for r in (3, 10, 57, 200):
-        pixels = set(offsets(record("circle-sqrt4", r)))
+        pixels = set(offsets(circle("circle-sqrt4", r)))
         arc = sorted(((x, y) for x, y in pixels if x >= 0 and y >= 0))
         jumps = sum(1 for a, b in zip(arc, arc[1:]) if max(abs(a[0] - b[0]), abs(a[1] - b[1])) > 1)
-        assert record("circle-sqrt4", r).final_variables()["gaps"] == 4 * jumps > 0
+        assert circle("circle-sqrt4", r).final_variables()["gaps"] == 4 * jumps > 0
         assert not is_closed_curve(pixels)
 
 
 def test_sqrt4_gap_counts_for_some_radii():
     # By hand for r = 6: y = 6, 5, 5, 5, 4, 3, 0 for x = 0..6; only the last
     # column drops by more than one (3 -> 0, two pixels skipped per arc).
-    final = record("circle-sqrt4", 6).final_variables()
+    final = circle("circle-sqrt4", 6).final_variables()
     assert (final["gaps"], final["missing"], tuple(final["gap_columns"])) == (4, 8, (6,))
 
 
 # --------------------------------------------------------- sqrt, 8 ways
 def test_sqrt8_has_no_gaps():
     for r in range(0, 250):
-        trace = record("circle-sqrt8", r)
+        trace = circle("circle-sqrt8", r)
         pixels = offsets(trace)
         assert set(pixels) == exact.sqrt8_circle(r)
         final = trace.final_variables()
@@ -237,16 +238,16 @@ def test_sqrt8_has_no_gaps():
 @pytest.mark.parametrize("name", CIRCLES)
 def test_radius_is_checked(name):
     with pytest.raises(InputError):
-        record(name, -1)
+        circle(name, -1)
     with pytest.raises(InputError):
-        record(name, 4097)
+        circle(name, 4097)
     with pytest.raises(InputError):
-        record(name, 2.5)
+        circle(name, 2.5)
 
 
 @pytest.mark.parametrize("name", CIRCLES)
 def test_pixels_past_the_grid_are_clipped_but_kept(name):
-    trace = record(name, 12, centre=(2, 2), grid=(10, 10))
+    trace = circle(name, 12, centre=(2, 2), grid=(10, 10))
     written = trace.written_pixels()
     inside = (written >= 0).all(axis=1) & (written < 10).all(axis=1)
     assert not inside.all()

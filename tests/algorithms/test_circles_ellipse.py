@@ -19,13 +19,14 @@ from hypothesis import strategies as st
 from algorithms.exact import circles as exact
 from algorithms import trace as trace_module
 from algorithms.registry import InputError, get
-from trace_oracle import slow_replay
+from tests.support.trace_oracle import slow_replay
+from tests.support import record
 
 HALF, ONE = Fraction(1, 2), Fraction(1)
 
 
-def record(rx, ry, centre=(0, 0), grid=(8, 8)):
-    return get("ellipse-midpoint").record((centre,), {"rx": rx, "ry": ry}, grid=grid)
+def ellipse(rx, ry, centre=(0, 0), grid=(8, 8)):
+    return record("ellipse-midpoint", (centre,), {"rx": rx, "ry": ry}, grid)
 
 
 def offsets(trace, centre=(0, 0)):
@@ -45,7 +46,7 @@ def is_unbroken(pixels) -> bool:
 
 
 def check_ellipse(rx, ry, centre=(0, 0)):
-    pixels = offsets(record(rx, ry, centre), centre)
+    pixels = offsets(ellipse(rx, ry, centre), centre)
     assert len(pixels) == len(set(pixels)), "a pixel is plotted twice"
     assert exact.four_way(pixels) == set(pixels), "not 4-way symmetric"
     if rx == 0 or ry == 0:
@@ -76,7 +77,7 @@ def test_thin_ellipses_stay_within_one_pixel():
 
 def test_most_pixels_are_within_half_a_pixel():
     for rx, ry in [(8, 6), (20, 13), (37, 50), (100, 90)]:
-        pixels = offsets(record(rx, ry))
+        pixels = offsets(ellipse(rx, ry))
         near = sum(exact.ellipse_axis_distance_below(rx, ry, x, y, HALF) for x, y in pixels)
         assert near >= 0.9 * len(pixels)
 
@@ -86,19 +87,19 @@ def test_equals_the_midpoint_circle_when_rx_equals_ry():
     # choices (d is R^2 times the circle's F) and region 2 picks the
     # nearest pixel of each row, the mirror image of the circle's columns.
     for r in range(0, 301):
-        assert set(offsets(record(r, r))) == exact.midpoint_circle(r), r
+        assert set(offsets(ellipse(r, r))) == exact.midpoint_circle(r), r
 
 
 def test_degenerate_ellipses():
-    assert offsets(record(0, 0)) == [(0, 0)]
-    assert set(offsets(record(0, 5))) == {(0, y) for y in range(-5, 6)}
-    assert set(offsets(record(7, 0))) == {(x, 0) for x in range(-7, 8)}
+    assert offsets(ellipse(0, 0)) == [(0, 0)]
+    assert set(offsets(ellipse(0, 5))) == {(0, y) for y in range(-5, 6)}
+    assert set(offsets(ellipse(7, 0))) == {(x, 0) for x in range(-7, 8)}
 
 
 def test_worked_example_rx8_ry6():
     # The classic worked example: region 1 decisions (d / 4 is F at the
     # midpoint) -332, -224, -44, 208, -108, 288, 244; region 2: -23, 361, 297.
-    trace = record(8, 6)
+    trace = ellipse(8, 6)
     decisions = [(trace.step(i).branch, trace.step(i).pixel, trace.step(i).values["d"] / 4)
                  for i in range(len(trace)) if trace.step(i).branch]
     assert decisions == [
@@ -109,7 +110,7 @@ def test_worked_example_rx8_ry6():
 
 @pytest.mark.parametrize("rx, ry", [(8, 6), (13, 31), (40, 9), (1, 12), (12, 1)])
 def test_decisions_are_f_at_the_midpoints_and_candidates_follow_the_region(rx, ry):
-    trace = record(rx, ry, centre=(4, 5))
+    trace = ellipse(rx, ry, centre=(4, 5))
     for i in range(1, len(trace)):
         step = trace.step(i)
         if not step.branch:
@@ -129,15 +130,15 @@ def test_decisions_are_f_at_the_midpoints_and_candidates_follow_the_region(rx, r
 
 def test_options_are_checked():
     with pytest.raises(InputError):
-        record(-1, 3)
+        ellipse(-1, 3)
     with pytest.raises(InputError):
-        record(3, 5000)
+        ellipse(3, 5000)
 
 
 def test_state_at_equals_slow_replay(monkeypatch):
     monkeypatch.setattr(trace_module, "MIN_KEYFRAME_GAP", 4)
     monkeypatch.setattr(trace_module, "KEYFRAME_BYTES_PER_STEP", 2 ** 40)
-    trace = record(11, 6, centre=(12, 7), grid=(25, 15))
+    trace = ellipse(11, 6, centre=(12, 7), grid=(25, 15))
     for i in range(len(trace)):
         state = trace.state_at(i)
         replay = slow_replay(trace, i)

@@ -15,7 +15,8 @@ from algorithms.fill import outline_pixels, segment_pixels
 from algorithms.registry import InputError, get
 from algorithms.steps import PLOT, Span, Vars
 from algorithms.trace import DEFAULT_STEP_CAP
-from trace_oracle import slow_replay
+from tests.support.trace_oracle import slow_replay
+from tests.support import record
 
 BOUNDARY, FILL = 0xC0392B, 0x2E86DE
 ORDERS = ("stack", "queue", "span")
@@ -23,8 +24,8 @@ FOUR = ((1, 0), (-1, 0), (0, 1), (0, -1))
 EIGHT = FOUR + ((1, 1), (-1, 1), (-1, -1), (1, -1))
 
 
-def record(contours, grid=(24, 20), **options):
-    return get("flood-fill").record(contours, options, grid=grid)
+def flood(contours, grid=(24, 20), **options):
+    return record("flood-fill", contours, options, grid)
 
 
 def final_sets(trace):
@@ -107,7 +108,7 @@ SHAPES = [
 def test_every_order_fills_the_bfs_region(contours, connectivity, outline):
     results = []
     for order in ORDERS:
-        trace = record(contours, order=order, connectivity=connectivity, outline=outline)
+        trace = flood(contours, order=order, connectivity=connectivity, outline=outline)
         boundary, filled = final_sets(trace)
         seed = trace.start.constants["seed"]
         assert boundary == {p for p in outline_pixels(contours, outline == "4")
@@ -135,11 +136,11 @@ def test_random_outlines_and_seeds(scene, connectivity, outline):
     boundary = set(outline_pixels(contours, outline == "4"))
     if seed in boundary:
         with pytest.raises(InputError, match="boundary"):
-            record(contours, grid=(20, 16), seed=seed, outline=outline)
+            flood(contours, grid=(20, 16), seed=seed, outline=outline)
         return
     expected = bfs(boundary, seed, (20, 16), connectivity)
     for order in ORDERS:
-        trace = record(contours, grid=(20, 16), seed=seed, order=order,
+        trace = flood(contours, grid=(20, 16), seed=seed, order=order,
                        connectivity=connectivity, outline=outline)
         assert final_sets(trace)[1] == expected
         assert sorted(fill_order(trace)) == sorted(expected)
@@ -179,8 +180,8 @@ def bfs_order(blocked, seed, grid, steps):
 @pytest.mark.parametrize("connectivity", ["4", "8"])
 def test_stack_follows_the_recursion_and_queue_the_bfs(contours, connectivity):
     steps = FOUR if connectivity == "4" else EIGHT
-    stack = record(contours, order="stack", connectivity=connectivity, outline="4")
-    queue = record(contours, order="queue", connectivity=connectivity, outline="4")
+    stack = flood(contours, order="stack", connectivity=connectivity, outline="4")
+    queue = flood(contours, order="queue", connectivity=connectivity, outline="4")
     boundary, _ = final_sets(stack)
     seed = stack.start.constants["seed"]
     assert fill_order(stack) == recursive_fill(boundary, seed, (24, 20), steps)
@@ -188,7 +189,7 @@ def test_stack_follows_the_recursion_and_queue_the_bfs(contours, connectivity):
 
 
 def test_span_fills_maximal_runs():
-    trace = record(SHAPES[2], order="span")
+    trace = flood(SHAPES[2], order="span")
     boundary, filled = final_sets(trace)
     runs = [trace.step(i).record for i in range(len(trace))
             if isinstance(trace.step(i).record, Span) and trace.step(i).kind == PLOT]
@@ -211,8 +212,8 @@ def test_eight_neighbours_leak_through_exactly_one_diagonal_gap():
     walls = [[(10, 0), (10, 4), (10, 4)], [(11, 5), (11, 10), (11, 10)]]
     contours = [room] + walls
     for order in ORDERS:
-        four = final_sets(record(contours, grid=(21, 11), seed=(3, 3), order=order))[1]
-        eight = final_sets(record(contours, grid=(21, 11), seed=(3, 3), order=order,
+        four = final_sets(flood(contours, grid=(21, 11), seed=(3, 3), order=order))[1]
+        eight = final_sets(flood(contours, grid=(21, 11), seed=(3, 3), order=order,
                                   connectivity="8"))[1]
         left = {(x, y) for x in range(1, 10) for y in range(1, 10)} | {(10, y) for y in range(5, 10)}
         right = {(x, y) for x in range(11, 20) for y in range(1, 5)} | \
@@ -227,9 +228,9 @@ def test_eight_neighbours_leak_through_exactly_one_diagonal_gap():
 
 def test_eight_neighbours_leak_through_an_8_connected_outline():
     triangle = [[(2, 2), (12, 2), (2, 12)]]
-    four = final_sets(record(triangle, seed=(4, 4)))[1]
-    eight = final_sets(record(triangle, seed=(4, 4), connectivity="8"))[1]
-    held = final_sets(record(triangle, seed=(4, 4), connectivity="8", outline="4"))[1]
+    four = final_sets(flood(triangle, seed=(4, 4)))[1]
+    eight = final_sets(flood(triangle, seed=(4, 4), connectivity="8"))[1]
+    held = final_sets(flood(triangle, seed=(4, 4), connectivity="8", outline="4"))[1]
     inside = {(x, y) for x in range(3, 12) for y in range(3, 12) if x + y < 14}
     assert four == inside
     # From (6, 7) to (7, 8) between the hypotenuse's pixels (7, 7) and (6, 8).
@@ -246,7 +247,7 @@ def fill_big(**options):
     limit = sys.getrecursionlimit()
     sys.setrecursionlimit(400)  # a recursive fill would need about a million
     try:
-        trace = record(BIG_BOX, grid=(1026, 1026), seed=(600, 3), **options)
+        trace = flood(BIG_BOX, grid=(1026, 1026), seed=(600, 3), **options)
     finally:
         sys.setrecursionlimit(limit)
     assert not trace.truncated and len(trace) < DEFAULT_STEP_CAP
@@ -270,29 +271,29 @@ def test_a_1024_square_with_eight_neighbours_stays_under_the_step_cap():
 def test_bad_seeds_are_input_errors():
     box = SHAPES[0]
     with pytest.raises(InputError, match="boundary"):
-        record(box, seed=(2, 5))
+        flood(box, seed=(2, 5))
     with pytest.raises(InputError, match="outside the 24x20 grid"):
-        record(box, seed=(24, 5))
+        flood(box, seed=(24, 5))
     with pytest.raises(InputError, match="outside"):
-        record(box, seed=(-1, 5))
+        flood(box, seed=(-1, 5))
     with pytest.raises(InputError, match="no free pixel"):
-        record([[(2, 2), (9, 9), (5, 5)]])  # collinear: nothing inside
+        flood([[(2, 2), (9, 9), (5, 5)]])  # collinear: nothing inside
     with pytest.raises(InputError):
-        record([[(2, 2), (9, 9)]])  # an outline needs three points
+        flood([[(2, 2), (9, 9)]])  # an outline needs three points
 
 
 def test_auto_seed_is_inside_the_first_outline():
-    trace = record(SHAPES[2])
+    trace = flood(SHAPES[2])
     x, y = trace.start.constants["seed"]
     assert 1 < x < 22 and 1 < y < 18 and not (8 <= x <= 14 and 6 <= y <= 12)
     # A seed outside the outline fills the outside instead.
-    outside = final_sets(record(SHAPES[0], seed=(0, 0)))[1]
+    outside = final_sets(flood(SHAPES[0], seed=(0, 0)))[1]
     assert (23, 19) in outside and (5, 5) not in outside
 
 
 # ------------------------------------------------------------- frames
 def test_panel_shows_size_and_next_entries():
-    trace = record(SHAPES[0], order="queue")
+    trace = flood(SHAPES[0], order="queue")
     pops = [(i, trace.step(i)) for i in range(len(trace)) if isinstance(trace.step(i).record, Vars)
             and "next" in trace.step(i).record.values and trace.step(i).line == 3]
     assert pops
@@ -308,7 +309,7 @@ def test_panel_shows_size_and_next_entries():
 
 def test_entries_stop_after_the_detail_limit(monkeypatch):
     monkeypatch.setattr(fill_module, "DETAIL_POPS", 10)
-    trace = record(SHAPES[0])
+    trace = flood(SHAPES[0])
     records = [trace.step(i).record for i in range(len(trace))]
     assert sum(isinstance(r, Vars) for r in records) == 10 + 1  # and the final one
     assert sum(type(r).__name__ == "Note" for r in records) == 1
@@ -320,7 +321,7 @@ def test_entries_stop_after_the_detail_limit(monkeypatch):
 def test_state_at_equals_slow_replay(order, connectivity, monkeypatch):
     monkeypatch.setattr(trace_module, "MIN_KEYFRAME_GAP", 7)
     monkeypatch.setattr(trace_module, "KEYFRAME_BYTES_PER_STEP", 2 ** 40)
-    trace = record([[(1, 1), (9, 1), (5, 4), (9, 8), (1, 8)]], grid=(11, 10), order=order,
+    trace = flood([[(1, 1), (9, 1), (5, 4), (9, 8), (1, 8)]], grid=(11, 10), order=order,
                    connectivity=connectivity)
     for i in range(len(trace)):
         state = trace.state_at(i)
@@ -332,7 +333,7 @@ def test_state_at_equals_slow_replay(order, connectivity, monkeypatch):
 
 @pytest.mark.parametrize("order", ORDERS)
 def test_values_line_up_with_pixels(order):
-    trace = record(SHAPES[1], order=order)
+    trace = flood(SHAPES[1], order=order)
     pixels, values = trace.written_pixels(), trace.pixel_values()
     assert len(pixels) == len(values)
     boundary = len(outline_pixels(SHAPES[1]))

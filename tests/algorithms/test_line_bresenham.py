@@ -12,7 +12,7 @@ import pytest
 from hypothesis import given, settings
 
 from algorithms.exact import lines as exact
-from linecases import NAMED_CASES, pixels_of, segments, trace_of
+from tests.support.linecases import NAMED_CASES, pixels_of, segments, trace_of
 
 TEXTBOOK = {}
 SYMMETRIC = {"symmetric": True}

@@ -4,7 +4,8 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from algorithms.exact import lines as exact
-from linecases import LINE_ALGORITHMS, NAMED_CASES, channels, pack, segments, trace_of
+from tests.support.linecases import (LINE_ALGORITHMS, NAMED_CASES, channels, pack, segments,
+                                     trace_of)
 
 HEX = st.integers(0, 0xFFFFFF).map(lambda v: f"#{v:06x}")
 

@@ -20,7 +20,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from algorithms.exact import lines as exact
-from linecases import NAMED_CASES, pixels_of, segments, trace_of
+from tests.support.linecases import NAMED_CASES, pixels_of, segments, trace_of
 
 
 def accepted(value: Fraction, rounding: str) -> set[int]:

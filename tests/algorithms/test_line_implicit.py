@@ -7,7 +7,7 @@ from hypothesis import given, settings
 
 from algorithms.exact import lines as exact
 from algorithms.steps import PLOT, VISIT
-from linecases import NAMED_CASES, segments, trace_of
+from tests.support.linecases import NAMED_CASES, segments, trace_of
 
 
 def box(p, q, margin=0):

@@ -5,7 +5,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from algorithms.registry import get
-from linecases import LINE_ALGORITHMS, NAMED_CASES, segments, trace_of
+from tests.support.linecases import LINE_ALGORITHMS, NAMED_CASES, segments, trace_of
 
 OPTIONS = {
     "line-bresenham": st.fixed_dictionaries({"symmetric": st.booleans()}),

@@ -5,7 +5,7 @@ import pytest
 
 from algorithms.registry import get
 from algorithms.steps import PLOT, VISIT
-from linecases import LINE_ALGORITHMS, NAMED_CASES, trace_of
+from tests.support.linecases import LINE_ALGORITHMS, NAMED_CASES, trace_of
 
 
 @pytest.mark.parametrize("name", LINE_ALGORITHMS)

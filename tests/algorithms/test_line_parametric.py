@@ -14,7 +14,7 @@ from hypothesis import strategies as st
 
 from algorithms.exact import lines as exact
 from algorithms.registry import InputError, get
-from linecases import NAMED_CASES, segments, trace_of
+from tests.support.linecases import NAMED_CASES, segments, trace_of
 
 NEAR = Fraction(1, 10 ** 9)  # far above the float error of t * (Q - P)
 DTS = st.one_of(st.sampled_from(["auto", 1.0, 0.5, 0.3, 0.1, 0.05, 0.013, 0.001]),

@@ -21,7 +21,7 @@ from hypothesis import given, settings
 from skimage.draw import line
 
 from algorithms.exact import lines as exact
-from linecases import NAMED_CASES, pixels_of, segments
+from tests.support.linecases import NAMED_CASES, pixels_of, segments
 
 
 def skimage_pixels(p, q):

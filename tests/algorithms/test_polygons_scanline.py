@@ -16,8 +16,9 @@ from algorithms.polygons import SCANLINE, scanline_mask, scanline_pixels
 from algorithms.registry import InputError
 from algorithms.steps import PLOT, Span, Start, Table
 from algorithms.trace import Trace
+from tests.support import record
 from test_polygons_cases import generator_pixels, kernel_pixels, polygon
-from trace_oracle import slow_replay
+from tests.support.trace_oracle import slow_replay
 
 RULES = ("evenodd", "nonzero")
 
@@ -204,12 +205,8 @@ def test_kernel_follows_the_generator_in_float_arithmetic(arithmetic):
 
 
 # ------------------------------------------------------- frames
-def record(contours, options=None, grid=(32, 24)):
-    return SCANLINE.record(contours, options or {}, grid=grid)
-
-
 def test_frames_show_every_phase():
-    trace = record(NAMED[6][1], {"fill_rule": "nonzero"})
+    trace = record(SCANLINE.name, NAMED[6][1], {"fill_rule": "nonzero"})
     code = trace.code
     records = [trace.record_at(i) for i in range(len(trace))]
     assert isinstance(records[0], Start)
@@ -233,7 +230,7 @@ def test_frames_show_every_phase():
 
 
 def test_aet_rows_are_exact_fractions():
-    trace = record([[(1, 1), (9, 3), (5, 9)]])
+    trace = record(SCANLINE.name, [[(1, 1), (9, 3), (5, 9)]])
     et = next(r for _, r in trace.records_of(Table) if r.name == "ET")
     # Edge P1P2 from (1, 1) to (9, 3): 1/m = 4, x at the centre line y = 1.5 is 3.
     row = next(row for row in et.rows if row[1] == "P1P2")
@@ -243,13 +240,13 @@ def test_aet_rows_are_exact_fractions():
 
 def test_trace_pixels_are_the_generator_pixels():
     for _, contours in NAMED[:8]:
-        trace = record(contours, grid=(40, 40))
+        trace = record(SCANLINE.name, contours, grid=(40, 40))
         assert [tuple(p) for p in trace.written_pixels().tolist()] == generator_pixels(SCANLINE, contours)
 
 
 @pytest.mark.parametrize("contours", [NAMED[6][1], [[(-3.5, 2), (40, 5.5), (10, 30)]]])
 def test_state_at_equals_a_slow_replay(contours):
-    trace = record(contours, {"fill_rule": "nonzero"}, grid=(20, 18))
+    trace = record(SCANLINE.name, contours, {"fill_rule": "nonzero"}, grid=(20, 18))
     assert len(trace.spans())
     for i in range(len(trace)):
         assert np.array_equal(trace.state_at(i).raster.counts, slow_replay(trace, i).counts), i
@@ -265,7 +262,7 @@ def test_state_at_equals_a_slow_replay_across_keyframes():
 
 
 def test_explain_names_the_pair_of_a_span():
-    trace = record([[(1, 1), (9, 3), (5, 9)]])
+    trace = record(SCANLINE.name, [[(1, 1), (9, 3), (5, 9)]])
     index = int(trace.steps_of(Span)[0])
     rows = dict(SCANLINE.panel_rows(trace, index))
     assert rows["run"].startswith("x_left = 5/4")

@@ -8,8 +8,8 @@ from algorithms import trace as trace_module
 from algorithms.registry import get
 from algorithms.steps import CALC, NO_PIXEL, PLOT, CodeLine, Note, Start, Table, Vars
 from algorithms.trace import Trace, TraceError
-from linecases import LINE_ALGORITHMS, trace_of
-from trace_oracle import slow_replay
+from tests.support.linecases import LINE_ALGORITHMS, trace_of
+from tests.support.trace_oracle import slow_replay
 
 CODE = (CodeLine("start"), CodeLine("plot(x, y)", PLOT), CodeLine("set variables"),
         CodeLine("remark"))

@@ -2,23 +2,20 @@
 import numpy as np
 import pytest
 
-from algorithms import registry
 from algorithms.trace import Cancelled, RecordMonitor
+from tests.support import record
 
 STEPS = 100_000
 P, Q = (0, 0), (STEPS - 1, 3 * (STEPS - 1) // 10)
+LINE = ("line-bresenham", [P, Q])
 GRID = (4096, 4096)
-
-
-def record(monitor=None):
-    return registry.get("line-bresenham").record([P, Q], {}, GRID, monitor=monitor)
 
 
 def test_progress_comes_every_so_many_steps_and_changes_nothing():
     heard = []
     every = 10_000
-    trace = record(RecordMonitor(heard.append, every))
-    plain = record()
+    trace = record(*LINE, grid=GRID, monitor=RecordMonitor(heard.append, every))
+    plain = record(*LINE, grid=GRID)
     assert len(trace) == len(plain)
     # An x-major segment writes one pixel per column, in order.
     assert np.array_equal(trace.written_pixels()[:, 0], np.arange(STEPS))
@@ -38,7 +35,7 @@ def test_cancel_stops_the_recording_at_the_next_report():
         monitor.cancel()
     monitor.progress = progress
     with pytest.raises(Cancelled):
-        record(monitor)
+        record(*LINE, grid=GRID, monitor=monitor)
     assert len(heard) == 1 and monitor.cancelled
 
 
@@ -46,4 +43,4 @@ def test_a_monitor_cancelled_before_the_start_records_nothing_long():
     monitor = RecordMonitor(every=1_000)
     monitor.cancel()
     with pytest.raises(Cancelled, match=r"after 1,\d{3} steps"):
-        record(monitor)
+        record(*LINE, grid=GRID, monitor=monitor)

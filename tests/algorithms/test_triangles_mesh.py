@@ -17,7 +17,7 @@ from hypothesis import strategies as st
 from algorithms.exact import triangles as exact_triangles
 from algorithms import triangles
 from test_triangles_cases import SUB, as_window, oracle, spec, sub
-from trace_oracle import slow_replay
+from tests.support.trace_oracle import slow_replay
 
 SETTINGS = dict(deadline=None, suppress_health_check=[HealthCheck.too_slow, HealthCheck.filter_too_much])
 

@@ -13,7 +13,7 @@ from algorithms import visibility as vis
 from algorithms.registry import get
 from algorithms.steps import Table
 from app.cli import main
-from trace_oracle import slow_replay
+from tests.support.trace_oracle import slow_replay
 
 PALETTE = [int(c[1:], 16) for c in vis.PALETTE]
 

@@ -112,16 +112,29 @@ def test_grid_lines_only_in_view_and_only_when_cells_are_large():
     assert list(xs) == list(range(1, 32)) and list(ys) == list(range(1, 24))
 
 
+def colours_at(view, grid_points):
+    """The colours the view paints at these grid points (a fresh grab)."""
+    picture = view.grab().toImage()
+    return [picture.pixelColor(view.widget_pos_of(p)).name() for p in grid_points]
+
+
 def test_image_and_outlines(view):
     image = np.zeros((24, 32, 4), np.uint8)
+    image[..., 3] = 255
+    image[4, 3] = (255, 0, 0, 255)  # row y, column x: cell (3, 4)
     view.set_image(image)
     assert view.image.image.shape == (24, 32, 4)
+    # Inside a cell's left edge, where an outline is drawn, and its centre.
+    edge_of_current, edge_of_difference = (3.03, 4.5), (1.03, 1.5)
+    probes = [(3.5, 4.5), edge_of_current, edge_of_difference, (10.5, 10.5)]
+    assert colours_at(view, probes) == ["#ff0000", "#ff0000", "#000000", "#000000"]
     view.set_highlights([(3, 4)], [(4, 4), (4, 5)])
     view.set_differences(np.array([[1, 1], [2, 2]]))
     assert view.outlines.layer("current").tolist() == [[3, 4]]
     assert view.outlines.layer("candidate").tolist() == [[4, 4], [4, 5]]
     assert view.outlines.layer("difference").tolist() == [[1, 1], [2, 2]]
-    view.grab()  # paints every layer without error
+    # The outlines are painted over the cells; the cells' insides keep their colour.
+    assert colours_at(view, probes) == ["#ff0000", PALETTE.current, PALETTE.difference, "#000000"]
     # A new image of another size resizes the grid.
     view.set_image(np.zeros((10, 12, 4), np.uint8))
     assert view.grid_size == (12, 10)
@@ -129,8 +142,12 @@ def test_image_and_outlines(view):
 
 def test_large_grid_paints(view):
     view.set_grid(4096, 4096)
-    view.set_image(np.zeros((4096, 4096, 4), np.uint8))
+    image = np.zeros((4096, 4096, 4), np.uint8)
+    image[..., 3] = 255
+    image[2015, 2020] = (0, 255, 0, 255)
+    view.set_image(image)
     view.view_box.setRange(xRange=(2000, 2040), yRange=(2000, 2030), padding=0)
-    view.grab()
+    assert colours_at(view, [(2020.5, 2015.5), (2010.5, 2010.5)]) == ["#00ff00", "#000000"]
     view.fit()
-    view.grab()
+    # The whole grid in view: one cell is less than a screen pixel.
+    assert colours_at(view, [(2048.5, 2048.5)]) == ["#000000"]
