@@ -16,7 +16,8 @@ from PySide6.QtCore import QObject
 
 from algorithms.registry import InputError
 
-from app.model.history import MERGE_SECONDS, Snapshot
+from app.model.history import MERGE_SECONDS
+from app.model.scene import Scene
 
 # Per-vertex options shown as columns of the vertex table. Lines take a
 # colour per endpoint; triangles and the visibility runs take a colour,
@@ -44,10 +45,12 @@ class SceneEdits(QObject):
         self._depth = 0  # nested recordings count as the outer one
 
     # --------------------------------------------------------- snapshot
-    def snapshot(self) -> Snapshot:
+    def snapshot(self) -> Scene:
         w, player = self.window, self.window.player
-        return Snapshot.of(player.spec.name, player.points, player.breaks, player.options,
-                           player.grid, w.grid.y_down)
+        width, height = player.grid
+        return Scene.of_flat(player.spec.name, player.points, player.breaks,
+                             options=player.options, width=width, height=height,
+                             origin="top-left" if w.grid.y_down else "bottom-left")
 
     @contextmanager
     def recording(self, key=None, seconds: float | None = None):
@@ -90,14 +93,14 @@ class SceneEdits(QObject):
     def redo(self) -> None:
         self.go_to(self.history.redo(self.snapshot()))
 
-    def go_to(self, snapshot: Snapshot | None) -> None:
+    def go_to(self, snapshot: Scene | None) -> None:
         """Put back the scene of ``snapshot``: the trace is recorded again
         and the step stays where it was, as a fraction of the run."""
         if snapshot is not None:
             w, player = self.window, self.window.player
             switched = snapshot.algorithm != player.spec.name
             try:
-                player.restore(snapshot.points, snapshot.breaks, dict(snapshot.options),
+                player.restore(snapshot.flat, snapshot.breaks, dict(snapshot.options),
                                snapshot.algorithm, snapshot.grid)
             except InputError as error:
                 w._say_error(str(error))

@@ -147,7 +147,7 @@ def test_open_and_save_as_through_the_file_dialogs(window, files, tmp_path, monk
                         lambda *a, **k: pytest.fail("Save asked for a name"))
     window.set_scene("line-bresenham", [(1, 1), (15, 2)], None, (24, 16))
     files.save_action.trigger()
-    assert scenes.load(path).points == [[1, 1], [15, 2]]
+    assert scenes.load(path).points == ((1, 1), (15, 2))
 
     window.set_scene("line-dda", [(0, 0), (3, 3)], None, (8, 8))
     monkeypatch.setattr(QFileDialog, "getOpenFileName", lambda *a, **k: (str(path), ""))

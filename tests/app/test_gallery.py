@@ -102,7 +102,7 @@ def test_the_help_menu_opens_one_dialog_and_a_double_click_opens_a_scene(window,
     scene = first.cases[row].scene
     assert window.player.spec.name == "triangle-perspective"
     assert window.player.options["near"] == scene.options["near"]
-    assert [list(p) for p in window.player.input_points()] == scene.points
+    assert tuple(window.player.input_points()) == scene.points
     assert first.isVisible()  # non-modal: it stays open beside the window
 
 

@@ -311,10 +311,11 @@ def test_ctrl_z_in_a_spin_box_stays_in_the_box(make, qtbot):
 
 
 def test_history_merges_by_key_within_its_time():
-    from app.model.history import EditHistory, Snapshot
+    from app.model.history import EditHistory
+    from app.model.scene import Scene
 
     def scene(x):
-        return Snapshot.of("line-dda", [(x, 0), (5, 5)], (), {}, (32, 24), False)
+        return Scene(algorithm="line-dda", points=[(x, 0), (5, 5)])
     clock = Clock()
     history = EditHistory(clock)
     history.push(scene(0), scene(1), ("option", "a"), 1.5)
