@@ -61,7 +61,7 @@ def latency() -> None:
     app = QApplication.instance() or QApplication([])
     from app.gui.window import MainWindow
     window = MainWindow("flood-fill", [[(0, 0), (6, 0), (6, 6), (0, 6)]], grid=(1030, 1030))
-    window.show()  # the player keeps the program's own wait (app.player.SYNC_WAIT)
+    window.show()  # the player keeps the program's own wait (app.model.session.SYNC_WAIT)
     for _ in range(20):
         app.processEvents()
     meter = GapMeter(10)

@@ -35,7 +35,7 @@ from PySide6.QtCore import QLineF, QPointF, QRectF, Qt, Signal
 from PySide6.QtGui import QColor, QCursor, QPen
 from PySide6.QtWidgets import QMenu
 
-from .drawing import CIRCLE, CONTOURS, FIXED, GROUPS, Drawing
+from app.model.drawing import CIRCLE, CONTOURS, FIXED, GROUPS, Drawing
 
 
 # Grid lines appear once a cell is this many screen pixels wide, and reach

@@ -5,7 +5,7 @@ among them), the grid size and the origin.
 
 ``install_edits(window)`` connects the scene editors to the window's
 setters, each wrapped in ``SceneEdits.recording``: the scene before the
-edit is kept in ``window.history`` under the name of what changed, and the
+edit is kept in the session's history under the name of what changed, and the
 Edit menu's Undo and Redo say that name.
 """
 from __future__ import annotations
@@ -17,7 +17,6 @@ from PySide6.QtCore import QObject
 from algorithms.registry import InputError
 
 from app.model.history import MERGE_SECONDS
-from app.model.scene import Scene
 
 # Per-vertex options shown as columns of the vertex table. Lines take a
 # colour per endpoint; triangles and the visibility runs take a colour,
@@ -35,38 +34,24 @@ def vertex_options(spec) -> list[str]:
 
 
 class SceneEdits(QObject):
-    """Records scene edits in the window's history and takes them back."""
+    """Records scene edits in the session's history and takes them back."""
 
     def __init__(self, window):
         super().__init__(window)
         self.window = window
-        self.history = window.history
+        self.session = window.player.session
+        self.history = self.session.history
         self._gesture = 0  # one drag or click on the grid: its edits merge
-        self._depth = 0  # nested recordings count as the outer one
-
-    # --------------------------------------------------------- snapshot
-    def snapshot(self) -> Scene:
-        w, player = self.window, self.window.player
-        width, height = player.grid
-        return Scene.of_flat(player.spec.name, player.points, player.breaks,
-                             options=player.options, width=width, height=height,
-                             origin="top-left" if w.grid.y_down else "bottom-left")
 
     @contextmanager
     def recording(self, key=None, seconds: float | None = None):
         """Run an edit; if it changed the scene, remember the scene before it.
         Edits with the same ``key`` merge while the entry is open (for
         ``seconds`` after the last one; None: until another edit)."""
-        if self._depth:
-            yield
-            return
-        before = self.snapshot()
-        self._depth += 1
         try:
-            yield
+            with self.session.edit(key, seconds):
+                yield
         finally:
-            self._depth -= 1
-            self.history.push(before, self.snapshot(), key, seconds)
             self.refresh()
 
     def start_gesture(self) -> None:
@@ -88,29 +73,26 @@ class SceneEdits(QObject):
 
     # ------------------------------------------------------- undo, redo
     def undo(self) -> None:
-        self.go_to(self.history.undo(self.snapshot()))
+        self._go_to(self.session.undo)
 
     def redo(self) -> None:
-        self.go_to(self.history.redo(self.snapshot()))
+        self._go_to(self.session.redo)
 
-    def go_to(self, snapshot: Scene | None) -> None:
-        """Put back the scene of ``snapshot``: the trace is recorded again
-        and the step stays where it was, as a fraction of the run."""
-        if snapshot is not None:
-            w, player = self.window, self.window.player
-            switched = snapshot.algorithm != player.spec.name
-            try:
-                player.restore(snapshot.flat, snapshot.breaks, dict(snapshot.options),
-                               snapshot.algorithm, snapshot.grid)
-            except InputError as error:
-                w._say_error(str(error))
-            if switched:
+    def _go_to(self, move) -> None:
+        """Put back a scene from the history (``move()`` returns it, None
+        when there is none): the trace is recorded again and the step stays
+        where it was, as a fraction of the run; the editors follow."""
+        w, player = self.window, self.window.player
+        algorithm = player.spec.name
+        scene = move()
+        if scene is not None:
+            if scene.algorithm != algorithm:
                 w._scene_changed()
             else:
                 w.options.set_values(player.options)
                 w._sync_grid()
-            if snapshot.y_down != w.grid.y_down:
-                w.set_y_down(snapshot.y_down)
+            if scene.y_down != w.grid.y_down:
+                w.set_y_down(scene.y_down)
         self.refresh()
 
     def refresh(self) -> None:

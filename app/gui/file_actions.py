@@ -140,22 +140,14 @@ class FileActions(QObject):
 
     # ------------------------------------------------------------ scenes
     def current_scene(self) -> Scene:
-        """The scene on show, as a scene file holds it."""
-        window, player = self.window, self.window.player
-        spec = player.spec
-        points = player.input_points()
-        if spec.inputs.contours:
-            points = [[list(p) for p in contour] for contour in points]
-        else:
-            points = [list(p) for p in points]
-        width, height = player.grid
-        view = {"step": int(player.index), "speed": float(player.speed),
+        """The scene on show, as a scene file holds it (without a contour or
+        a triangle still being drawn)."""
+        window, session = self.window, self.window.player.session
+        view = {"step": int(session.index), "speed": float(window.player.speed),
                 "compare": bool(window.compare.isChecked())}
-        return Scene(algorithm=spec.name, points=points, options=dict(player.options),
-                     width=width, height=height,
-                     origin="top-left" if window.grid.y_down else "bottom-left",
-                     title=self.title, description=self.description, view=view,
-                     bookmarks=[dict(b) for b in self.bookmarks])
+        return session.scene.replace(points=session.input_points(), title=self.title,
+                                     description=self.description, view=view,
+                                     bookmarks=self.bookmarks)
 
     def apply_scene(self, scene: Scene) -> None:
         """Show ``scene`` in the window; raises InputError (and changes

@@ -133,7 +133,7 @@ class InspectorDock:
                 return state.raster if state is not None else trace.raster_at(index)
 
             shown = player.shown_scene  # the trace's own scene, even mid-recording
-            self._inspector = PixelInspector(trace, shown.spec, shown.points, shown.options,
+            self._inspector = PixelInspector(trace, shown.spec, shown.flat, shown.options,
                                              shown.grid, raster_at)
         return self._inspector
 

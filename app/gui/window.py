@@ -25,7 +25,7 @@ from algorithms.registry import InputError
 from algorithms.steps import Note, Table
 from widgets.docks import panel_dock
 from widgets.depth_view import DepthView
-from widgets.drawing import CONTOURS, point_labels
+from app.model.drawing import CONTOURS, point_labels
 from widgets.editors import AlgorithmPicker, GridEditor, OptionsEditor
 from widgets.vertex_table import VertexTable
 from widgets.grid_view import DRAW, MARKER, PixelGridView
@@ -34,10 +34,10 @@ from widgets.tables import TablesPanel
 from widgets.transport import TransportBar
 
 from app.gui.appdata import APP_NAME
-from app.model.history import EditHistory
 from app.model.insight import PixelTally, has_insight, inside_chips, row_tones
 from app.model.inputs import split_contours
-from app.gui.player import Player, default_scene, open_ended
+from app.gui.player import Player
+from app.model.session import default_scene, open_ended
 from app.render import frame as frame_view
 from app.render.compose import (COVERAGE_LEVELS, OUTLINE_STYLE, PALETTE, compose, coverage_counts,
                                 depth_image, depth_range, error_image, error_stats)
@@ -214,7 +214,7 @@ class MainWindow(QMainWindow):
         self.setStyleSheet(STYLE)
         self.palette_ = PALETTE
         self.player = Player(self)
-        self.history = EditHistory()
+        self.history = self.player.session.history  # undo and redo of scene edits
         self._empty_image = None
         self._last_hover = None
         self._error = ""  # the last refusal, shown until the next good change
@@ -531,6 +531,7 @@ class MainWindow(QMainWindow):
         p.frameChanged.connect(self._frame_changed)
         p.playingChanged.connect(self.transport.set_playing)
         p.comparisonChanged.connect(self._comparison_changed)
+        p.session.message.connect(self._say_error)
 
         t = self.transport
         t.firstRequested.connect(p.first)
@@ -661,6 +662,7 @@ class MainWindow(QMainWindow):
 
     def set_y_down(self, y_down: bool) -> None:
         """Origin top-left with y down (True), or bottom-left with y up."""
+        self.player.session.set_origin(y_down)
         self.grid.set_y_down(y_down)
         self.depth_view.set_y_down(y_down)
         self.grid_editor.set_y_down(y_down)

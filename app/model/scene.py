@@ -15,6 +15,7 @@ import reprlib
 import tempfile
 import dataclasses
 from dataclasses import dataclass, field
+from functools import cached_property
 from pathlib import Path
 
 from algorithms import registry
@@ -141,12 +142,12 @@ class Scene:
     def y_down(self) -> bool:
         return self.origin == "top-left"
 
-    @property
+    @cached_property
     def flat(self) -> tuple:
         """Every point in one tuple, whatever the nesting."""
         return tuple(self.spec.inputs.flat(self.points))
 
-    @property
+    @cached_property
     def breaks(self) -> tuple[int, ...]:
         """Where contours 2, 3, ... start in ``flat`` (none but for contour inputs)."""
         return flatten(self.spec, self.points)[1]

@@ -206,8 +206,8 @@ def test_bookmarks_are_saved_and_loaded_with_the_scene(window, qtbot, tmp_path):
     marks.add_bookmark("second tie")
     path = tmp_path / "ties.json"
     assert files.save_to(path)
-    assert scenes.load(path).bookmarks == [{"name": "first tie", "step": 7},
-                                           {"name": "second tie", "step": 19}]
+    assert scenes.load(path).bookmarks == ({"name": "first tie", "step": 7},
+                                           {"name": "second tie", "step": 19})
     # A bookmark is part of the unsaved work.
     recovery = install_recovery(window, tmp_path / "recovery", delay_ms=10_000)
     assert not recovery.dirty
