@@ -116,13 +116,13 @@ class Breakpoints(QObject):
         window = self.window
         run_menu = window.menus["run"]
         run_menu.addSeparator()
-        self.run_action = window._action(run_menu, "run-to-breakpoint", "Run to &breakpoint",
+        self.run_action = window.add_action(run_menu, "run-to-breakpoint", "Run to &breakpoint",
                                          "F5", lambda: self.run_to(+1))
-        self.run_back_action = window._action(run_menu, "run-back-to-breakpoint",
+        self.run_back_action = window.add_action(run_menu, "run-back-to-breakpoint",
                                               "Run &back to breakpoint", "Shift+F5",
                                               lambda: self.run_to(-1))
         run_menu.addSeparator()
-        self.bookmark_action = window._action(run_menu, "add-bookmark",
+        self.bookmark_action = window.add_action(run_menu, "add-bookmark",
                                               "Book&mark this step\u2026", "Ctrl+B",
                                               self.add_bookmark)
 

@@ -87,10 +87,10 @@ class SceneEdits(QObject):
         scene = move()
         if scene is not None:
             if scene.algorithm != algorithm:
-                w._scene_changed()
+                w.follow_scene()
             else:
                 w.options.set_values(player.options)
-                w._sync_grid()
+                w.sync_grid()
             if scene.y_down != w.grid.y_down:
                 w.set_y_down(scene.y_down)
         self.refresh()
@@ -117,9 +117,9 @@ class SceneEdits(QObject):
             try:
                 player.restore(points, breaks, options)
             except InputError as error:
-                w._say_error(str(error))
+                w.say_error(str(error))
             w.options.set_values(player.options)
-            w._sync_points()
+            w.sync_points()
 
     def sync_table(self) -> None:
         """The table's attribute columns follow the algorithm and options."""
@@ -137,11 +137,11 @@ def install_edits(window) -> SceneEdits:
     g.pointsEdited.connect(lambda points: edits.gesture(
         lambda: window.set_points(points, g.breaks)))
     g.radiusDragged.connect(lambda rx, ry: edits.gesture(
-        lambda: window._radius_dragged(rx, ry)))
-    g.markerPlaced.connect(lambda pixel: edits.gesture(lambda: window._marker_placed(pixel)))
+        lambda: window.drag_radius(rx, ry)))
+    g.markerPlaced.connect(lambda pixel: edits.gesture(lambda: window.place_marker(pixel)))
     g.clearRequested.connect(window.clear_points)
     window.points.edited.connect(edits.table_edited)
-    window.points.refused.connect(window._say_error)
+    window.points.refused.connect(window.say_error)
     window.picker.algorithmChosen.connect(lambda name: edits.once(
         lambda: window.set_algorithm(name)))
     window.options.valueEdited.connect(lambda name, value: edits.field(

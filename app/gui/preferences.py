@@ -297,7 +297,7 @@ class PreferencesController(QObject):
                 try:
                     player.restore(player.points, player.breaks, player.options)
                 except InputError as error:
-                    window._say_error(str(error))
+                    window.say_error(str(error))
 
     def open_dialog(self) -> "PreferencesDialog":
         if self.dialog is None:

@@ -97,7 +97,7 @@ class RecordingStatus:
             # The scene went back (cancelled, refused) or was replaced by an
             # example shape: the editors follow the player again. (The
             # session's message listener shows the message.)
-            self.window._scene_changed()
+            self.window.follow_scene()
 
 
 def install_recording(window) -> RecordingStatus:
