@@ -22,6 +22,7 @@ from app.render import frame as frame_view
 from app.model.compare import (FRAME, LINKS, MAX_PANES, MIN_PANES, PRESETS, Pane,
                                window_primitives)
 from app.model.scene import Scene
+from app.gui.entries import WindowEntry
 from app.render.compose import OUTLINE_STYLE, PALETTE, compose
 
 WINDOW_KEY = "window"  # the comparison of the main window's algorithm and the one before
@@ -468,31 +469,15 @@ def _empty(width: int, height: int):
 
 
 # ----------------------------------------------------------------- hook
-def install_compare(window) -> QAction:
-    """Add View > Compare… (Ctrl+K) to the main window."""
+def compare_entry(window) -> WindowEntry:
+    """View > Compare… (Ctrl+K) of the main window, and the compare window it opens."""
     menu = window.menus["view"]
     menu.addSeparator()
     action = QAction("&Compare\u2026", window)
     action.setShortcut(QKeySequence("Ctrl+K"))
     action.setToolTip("Compare algorithms side by side on the same primitives, stepped "
                       "together, with a diff of two of them (Ctrl+K)")
-    action.triggered.connect(lambda: open_compare(window))
     menu.addAction(action)
     window.addAction(action)
-    window.compare_action = action
-    return action
-
-
-def open_compare(window) -> CompareWindow:
-    """Show the compare window (made once, then brought back)."""
-    existing = getattr(window, "compare_window", None)
-    fresh = existing is None
-    if fresh:
-        existing = CompareWindow(window)
-        window.compare_window = existing
-    existing.show()
-    existing.raise_()
-    existing.activateWindow()
-    if not fresh:
-        existing._main_changed()  # catch up with what the main window did meanwhile
-    return existing
+    # Brought back, it catches up with what the main window did meanwhile.
+    return WindowEntry(window, action, CompareWindow, refresh=CompareWindow._main_changed)

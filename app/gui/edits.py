@@ -3,7 +3,7 @@ window, so that undo and redo cover them all: points drawn, dragged or
 typed, contours, the algorithm, each option (per-vertex colour, z and w
 among them), the grid size and the origin.
 
-``install_edits(window)`` connects the scene editors to the window's
+``SceneEdits(window)`` connects the scene editors to the window's
 setters, each wrapped in ``SceneEdits.recording``: the scene before the
 edit is kept in the session's history under the name of what changed, and the
 Edit menu's Undo and Redo say that name.
@@ -42,6 +42,31 @@ class SceneEdits(QObject):
         self.session = window.player.session
         self.history = self.session.history
         self._gesture = 0  # one drag or click on the grid: its edits merge
+        self._connect(window)
+        self.refresh()
+
+    def _connect(self, window) -> None:
+        """Route every scene editor of ``window`` through the history."""
+        g = window.grid
+        g.editStarted.connect(self.start_gesture)
+        g.pointsEdited.connect(lambda points: self.gesture(
+            lambda: window.set_points(points, g.breaks)))
+        g.radiusDragged.connect(lambda rx, ry: self.gesture(lambda: window.drag_radius(rx, ry)))
+        g.markerPlaced.connect(lambda pixel: self.gesture(lambda: window.place_marker(pixel)))
+        g.clearRequested.connect(window.clear_points)
+        window.points.edited.connect(self.table_edited)
+        window.points.refused.connect(window.say_error)
+        window.picker.algorithmChosen.connect(lambda name: self.once(
+            lambda: window.set_algorithm(name)))
+        window.options.valueEdited.connect(lambda name, value: self.field(
+            ("option", name), lambda: window.set_option(name, value)))
+        window.grid_editor.gridChanged.connect(lambda width, height: self.field(
+            ("grid",), lambda: window.set_grid(width, height)))
+        window.grid_editor.originChanged.connect(lambda down: self.once(
+            lambda: window.set_y_down(down)))
+        window.y_down_action.toggled.connect(lambda down: self.once(
+            lambda: window.set_y_down(down)))
+        window.player.traceChanged.connect(self.sync_table)
 
     @contextmanager
     def recording(self, key=None, seconds: float | None = None):
@@ -126,32 +151,3 @@ class SceneEdits(QObject):
         player = self.window.player
         if player.spec is not None:
             self.window.points.set_attributes(vertex_options(player.spec), player.options)
-
-
-def install_edits(window) -> SceneEdits:
-    """Route the scene editors through the history (called by the window)."""
-    edits = SceneEdits(window)
-    window.edits = edits
-    g = window.grid
-    g.editStarted.connect(edits.start_gesture)
-    g.pointsEdited.connect(lambda points: edits.gesture(
-        lambda: window.set_points(points, g.breaks)))
-    g.radiusDragged.connect(lambda rx, ry: edits.gesture(
-        lambda: window.drag_radius(rx, ry)))
-    g.markerPlaced.connect(lambda pixel: edits.gesture(lambda: window.place_marker(pixel)))
-    g.clearRequested.connect(window.clear_points)
-    window.points.edited.connect(edits.table_edited)
-    window.points.refused.connect(window.say_error)
-    window.picker.algorithmChosen.connect(lambda name: edits.once(
-        lambda: window.set_algorithm(name)))
-    window.options.valueEdited.connect(lambda name, value: edits.field(
-        ("option", name), lambda: window.set_option(name, value)))
-    window.grid_editor.gridChanged.connect(lambda width, height: edits.field(
-        ("grid",), lambda: window.set_grid(width, height)))
-    window.grid_editor.originChanged.connect(lambda down: edits.once(
-        lambda: window.set_y_down(down)))
-    window.y_down_action.toggled.connect(lambda down: edits.once(
-        lambda: window.set_y_down(down)))
-    window.player.traceChanged.connect(edits.sync_table)
-    edits.refresh()
-    return edits

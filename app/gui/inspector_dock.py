@@ -1,6 +1,6 @@
 """The "Pixel inspector" dock: what is known about one pixel at the step on show.
 
-``install_inspector(window)`` adds the dock (hidden until asked for, from
+``InspectorDock(window)`` adds the dock (hidden until asked for, from
 View > Pixel inspector, Ctrl+I), and wires it to the grid and the player:
 
 * hovering a pixel inspects it;
@@ -138,7 +138,3 @@ class InspectorDock:
         return self._inspector
 
 
-def install_inspector(window) -> InspectorDock:
-    """Add the pixel inspector to the main window."""
-    window.inspector = InspectorDock(window)
-    return window.inspector

@@ -100,11 +100,6 @@ class RecordingStatus:
             self.window.follow_scene()
 
 
-def install_recording(window) -> RecordingStatus:
-    window.recording_status = RecordingStatus(window)
-    return window.recording_status
-
-
 def seek_when_recorded(player, index: int) -> None:
     """Go to step ``index`` now or, when the run is still recording in the
     background, as soon as its trace is installed (not if it is cancelled)."""

@@ -74,6 +74,9 @@ class MainWindow(WindowLayout, WindowMenus, DepthAndAccuracy, QMainWindow):
         self._tables_for = None  # the algorithm the tables dock was last shown for
         self._depth = None  # (clear, near, far) of a run that keeps a depth buffer
         self._accuracy = None  # AccuracyCache of the antialiasing run on show
+        # Parts a running program adds (see add_file_actions and below).
+        self.file_actions = self.report_entry = self.crash_handler = self.recovery = None
+        self.bookmarks: list = []  # the scene's bookmarks while there are no file actions
 
         self._build_centre()
         self._build_scene_dock()
@@ -98,19 +101,51 @@ class MainWindow(WindowLayout, WindowMenus, DepthAndAccuracy, QMainWindow):
         self.resizeDocks([self.code_dock, self.variables_dock], [330, 430], Qt.Orientation.Vertical)
         if self._tables:
             self._make_room_for_tables()
-        # Hook: stored preferences, Edit > Preferences (app/gui/preferences.py).
-        from app.gui.preferences import install_preferences
-        install_preferences(self)
-        from app.gui.compare_window import install_compare  # View > Compare… (Ctrl+K)
-        install_compare(self)
-        from app.gui.gallery import install_gallery  # Help > Hard cases… (app/gui/gallery.py)
-        install_gallery(self)
-        from app.gui.breakpoint_actions import (install_breakpoints)  # step units, breakpoints, bookmarks
-        install_breakpoints(self)
-        from app.gui.inspector_dock import install_inspector  # View > Pixel inspector (Ctrl+I)
-        install_inspector(self)
-        from app.gui.recording import install_recording  # long runs: progress bar and Cancel (Esc)
-        install_recording(self)
+        self._build_parts()
+
+    def _build_parts(self) -> None:
+        """The parts written in modules of their own, each given this window."""
+        from app.gui.breakpoint_actions import Breakpoints
+        from app.gui.compare_window import compare_entry
+        from app.gui.gallery import gallery_entry
+        from app.gui.inspector_dock import InspectorDock
+        from app.gui.preferences import Preferences, PreferencesController
+        from app.gui.recording import RecordingStatus
+        # Stored preferences, Edit > Preferences (Ctrl+,) and View > Grid lines.
+        self.preferences = PreferencesController(self, Preferences())
+        self.compare_entry = compare_entry(self)  # View > Compare… (Ctrl+K)
+        self.gallery_entry = gallery_entry(self)  # Help > Hard cases…
+        self.breakpoints = Breakpoints(self)  # step units, breakpoints, bookmarks
+        self.inspector = InspectorDock(self)  # View > Pixel inspector (Ctrl+I)
+        self.recording_status = RecordingStatus(self)  # long runs: progress bar and Cancel
+
+    # Parts a running program adds (``launch``); tests add them where they need them.
+    def add_file_actions(self, settings=None):
+        """Scene files and export in the File menu (app/gui/file_actions.py);
+        ``settings`` keeps the recent files."""
+        from app.gui.file_actions import FileActions
+        self.file_actions = FileActions(self, settings)
+        return self.file_actions
+
+    def add_report_entry(self):
+        """Run > Report… (app/gui/report_window.py)."""
+        from app.gui.report_window import report_entry
+        self.report_entry = report_entry(self)
+        return self.report_entry
+
+    def add_crash_handler(self, folder=None):
+        """Uncaught errors logged and shown, Help > Open log folder (app/gui/crash.py)."""
+        from app.gui.crash import CrashHandler
+        self.crash_handler = CrashHandler(self, folder).install()
+        self.crash_handler.add_menu_entry(self.menus["help"])
+        return self.crash_handler
+
+    def add_recovery(self, folder=None, **timing):
+        """Unsaved work kept and offered back after a crash (app/gui/recovery.py;
+        needs the file actions). ``timing``: ``delay_ms``, ``poll_ms``."""
+        from app.gui.recovery import Recovery
+        self.recovery = Recovery(self, folder, **timing)
+        return self.recovery
 
     # ----------------------------------------------------------- building
     def _connect(self) -> None:
@@ -135,8 +170,8 @@ class MainWindow(WindowLayout, WindowMenus, DepthAndAccuracy, QMainWindow):
         g.hoverChanged.connect(self._hover)
         # Scene edits (grid gestures, the vertex table, the algorithm, options,
         # grid size, origin) go through the undo history: app/gui/edits.py.
-        from app.gui.edits import install_edits
-        install_edits(self)
+        from app.gui.edits import SceneEdits
+        self.edits = SceneEdits(self)
         self.show_primitive.toggled.connect(g.set_show_primitive)
         self.compare.toggled.connect(p.set_compare)
         self.coverage.toggled.connect(self._coverage_toggled)
@@ -571,19 +606,12 @@ def launch(argv=None) -> int:
         app.setStyle("Fusion")
     app.setWindowIcon(app_icon())
     window = MainWindow()
-    # Hook: scene files and export (File menu) come from app/gui/file_actions.py.
-    from app.gui.file_actions import install_file_actions
-    from app.gui.report_window import install_report_action
-    install_file_actions(window)
-    install_report_action(window)
+    window.add_file_actions()
+    window.add_report_entry()
     from app.gui.preferences import reopen_last_scene
     reopen_last_scene(window)
-    # Hook: uncaught errors are logged and shown (app/gui/crash.py); unsaved
-    # work is kept and offered back after a crash (app/gui/recovery.py).
-    from app.gui.crash import install_crash_handler
-    from app.gui.recovery import install_recovery
-    install_crash_handler(window)
-    recovery = install_recovery(window)
+    window.add_crash_handler()
+    recovery = window.add_recovery()
     window.show()
     recovery.offer()
     return app.exec()

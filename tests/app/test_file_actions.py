@@ -12,7 +12,6 @@ from PySide6.QtWidgets import QApplication, QFileDialog, QMessageBox
 from app.render import export as ex
 from app.gui import file_actions as fa
 from app.model import scene as scenes
-from app.gui.file_actions import install_file_actions
 from app.gui.window import MainWindow
 
 SHIPPED = sorted((Path(__file__).resolve().parents[2] / "resources" / "scenes").glob("*.json"))
@@ -32,7 +31,7 @@ def window(qtbot):
 
 @pytest.fixture
 def files(window, settings):
-    return install_file_actions(window, settings)
+    return window.add_file_actions(settings)
 
 
 @pytest.fixture
@@ -201,7 +200,7 @@ def test_recent_files_newest_first_and_capped(window, files, tmp_path, settings)
     other = MainWindow()
     try:
         # Opening it made it the newest.
-        assert install_file_actions(other, settings).recent()[0] == paths[2]
+        assert other.add_file_actions(settings).recent()[0] == paths[2]
     finally:
         other.deleteLater()
 

@@ -13,7 +13,6 @@ from PySide6.QtWidgets import QMessageBox
 from app import cli
 from app.gui import gallery as gal
 from app.model import scene as scenes
-from app.gui.file_actions import install_file_actions
 from app.gui.window import MainWindow
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -30,13 +29,13 @@ NAMED = ("line-float32-drift", "line-centre-ties", "line-reversed", "circle-radi
 def window(qtbot, tmp_path):
     w = MainWindow()
     qtbot.addWidget(w)
-    install_file_actions(w, QSettings(str(tmp_path / "s.ini"), QSettings.Format.IniFormat))
+    w.add_file_actions(QSettings(str(tmp_path / "s.ini"), QSettings.Format.IniFormat))
     return w
 
 
 @pytest.fixture
 def dialog(window, qtbot):
-    found = gal.show_gallery(window)
+    found = window.gallery_entry.open()
     qtbot.waitUntil(lambda: found.thumbnails_done, timeout=10000)
     return found
 
@@ -90,9 +89,9 @@ def test_run_scene_exits_0_with_json_for_every_scene_as_a_program():
 def test_the_help_menu_opens_one_dialog_and_a_double_click_opens_a_scene(window, qtbot):
     action = next(a for a in window.menus["help"].actions() if "Hard cases" in a.text())
     action.trigger()
-    first = window.gallery
+    first = window.gallery_entry.window
     action.trigger()
-    assert window.gallery is first and first.isVisible()
+    assert window.gallery_entry.window is first and first.isVisible()
     row = next(n for n, c in enumerate(first.cases) if c.name == "triangle-behind-eye")
     item = first.list.item(row)
     first.list.scrollToItem(item)

@@ -15,8 +15,7 @@ from PySide6.QtWidgets import QApplication, QInputDialog, QMessageBox
 
 from algorithms import registry
 from app.model import scene as scenes
-from app.gui.file_actions import install_file_actions
-from app.gui.recovery import content, install_recovery
+from app.gui.recovery import content
 from app.gui.window import MainWindow
 from gui_support import settle
 
@@ -172,8 +171,8 @@ def walk(tree):
 def window(qtbot, tmp_path, monkeypatch):
     monkeypatch.setenv("RASTERLAB_DATA_DIR", str(tmp_path / "data"))
     w = MainWindow()  # not given to qtbot: closed below, without the question
-    install_file_actions(w, QSettings(str(tmp_path / "s.ini"), QSettings.Format.IniFormat))
-    install_recovery(w, delay_ms=30)
+    w.add_file_actions(QSettings(str(tmp_path / "s.ini"), QSettings.Format.IniFormat))
+    w.add_recovery(delay_ms=30)
     w.show()
     qtbot.waitExposed(w)
     settle(qtbot, w)

@@ -8,9 +8,8 @@ from PySide6.QtWidgets import QFileDialog, QMessageBox
 
 from app.gui import recovery as recovery_module
 from app.model import scene as scenes
-from app.gui.crash import CrashHandler, install_crash_handler
-from app.gui.file_actions import install_file_actions
-from app.gui.recovery import PREFIX, content, install_recovery, pending_recoveries
+from app.gui.crash import CrashHandler
+from app.gui.recovery import PREFIX, content, pending_recoveries
 from app.gui.window import DEMO_POINTS, MainWindow
 
 BUTTONS = QMessageBox.StandardButton
@@ -35,8 +34,8 @@ def make_window(qapp, tmp_path, data):
     def make(delay_ms=20, **kwargs):
         window = MainWindow()
         settings = QSettings(str(tmp_path / "settings.ini"), QSettings.Format.IniFormat)
-        install_file_actions(window, settings)
-        install_recovery(window, data / "recovery", delay_ms=delay_ms, **kwargs)
+        window.add_file_actions(settings)
+        window.add_recovery(data / "recovery", delay_ms=delay_ms, **kwargs)
         made.append(window)
         return window
     yield make
@@ -274,7 +273,7 @@ def shown(monkeypatch):
 
 @pytest.fixture
 def handler(window, data):
-    installed = install_crash_handler(window, data)
+    installed = window.add_crash_handler(data)
     yield installed
     installed.uninstall()
 

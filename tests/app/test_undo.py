@@ -8,7 +8,6 @@ from PySide6.QtTest import QTest
 from PySide6.QtWidgets import QApplication
 
 from algorithms import registry
-from app.gui.file_actions import install_file_actions
 from app.model.history import MERGE_SECONDS
 from app.gui.window import MainWindow
 from gui_support import drag, settle
@@ -33,7 +32,7 @@ def make(qtbot, tmp_path):
     def build(algorithm="line-bresenham"):
         w = MainWindow(algorithm)
         qtbot.addWidget(w)
-        install_file_actions(w, QSettings(str(tmp_path / "s.ini"), QSettings.Format.IniFormat))
+        w.add_file_actions(QSettings(str(tmp_path / "s.ini"), QSettings.Format.IniFormat))
         w.clock = Clock()
         w.history.clock = w.clock
         w.show()
