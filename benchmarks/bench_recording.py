@@ -68,7 +68,7 @@ def latency() -> None:
     started = meter.restart()
     window.set_points(SQUARE)
     returned = time.perf_counter()
-    job = window.player._job
+    job = window.player.session.job
     while window.player.recording:
         app.processEvents()
         time.sleep(0.001)

@@ -30,7 +30,8 @@ from app.gui.window_menus import WindowMenus
 from app.model.drawing import CONTOURS, point_labels
 from app.model.insight import PixelTally, has_insight, inside_chips, row_tones
 from app.model.inputs import split_contours
-from app.model.session import default_scene, open_ended
+from app.model.examples import default_scene
+from app.model.inputs import open_ended
 from app.model.tables import TableIndex
 from app.model.tools import (circle_kind, circle_options, clamp_option, drawing_mode,
                              marker_option, placing_message, shape_paths, tool_hint)

@@ -58,7 +58,9 @@ from algorithms.registry import InputError
 from algorithms.trace import DEFAULT_STEP_CAP, Cancelled, FrameState, Trace
 
 from app.model.history import EditHistory
-from app.model.inputs import clean_breaks, complete, contour_sizes, flatten, runnable_input
+from app.model.examples import default_scene
+from app.model.inputs import (clamp, clean_breaks, complete, contour_sizes, flatten,
+                              open_ended, runnable_input)
 from app.model.recording import Job
 from app.model.scene import Scene, SceneError
 from app.render.compose import differences
@@ -264,7 +266,7 @@ class Session:
         width, height = _checked_grid((width, height), self.max_grid)
         if (width, height) == self.grid:
             return
-        points = [_clamp(p, width, height, self.spec.inputs.integer) for p in self.points]
+        points = [clamp(p, width, height, self.spec.inputs.integer) for p in self.points]
         scene = self._flat_scene(self.spec.name, points, self.breaks, self.options,
                                  (width, height))
         self._change(scene, self.previous)
@@ -314,7 +316,7 @@ class Session:
         """The current points and breaks as the new algorithm takes them:
         triangles become contours of three and back; a fixed count keeps
         the first points."""
-        points = [_clamp(p, *self.grid, spec.inputs.integer) for p in self.points]
+        points = [clamp(p, *self.grid, spec.inputs.integer) for p in self.points]
         old = self.spec.inputs if self.spec is not None else None
         inputs = spec.inputs
         if inputs.contours:
@@ -660,71 +662,6 @@ def sync_wait() -> float | None:
     return None if not math.isfinite(value) else max(0.0, value)
 
 
-# A concave hexagon with a notch on its right (fractions of the grid): the
-# example shape of polygon fills and flood fill.
-_CONCAVE = ((0.12, 0.14), (0.86, 0.1), (0.6, 0.46), (0.88, 0.86), (0.42, 0.7), (0.14, 0.88))
-
-
-def default_scene(spec, grid) -> tuple[list[tuple], tuple[int, ...], dict]:
-    """A pleasant first scene for an algorithm: (points, breaks, options).
-
-    Polygon and fill algorithms get a concave shape; one that only takes a
-    convex polygon gets a convex one instead (tried, not looked up by name).
-    """
-    width, height = grid
-    if spec.inputs.contours:
-        points = [_grid_point(spec, fx * width, fy * height, grid) for fx, fy in _CONCAVE]
-        try:
-            spec.record(runnable_input(spec, points, ()), spec.resolve(), grid, step_cap=100_000)
-        except Exception:  # noqa: BLE001 - any refusal: fall back to the convex shape
-            points = default_points(spec, grid, vertices=6)
-        return points, (), {}
-    points = default_points(spec, grid)
-    if spec.inputs.multiple and len(points) == 1:
-        # Inputs of any number of points (a shape of 3k points, say): one
-        # point may not be a shape; a triangle is (tried, not looked up).
-        try:
-            spec.record(runnable_input(spec, points, ()), spec.resolve(), grid, step_cap=100_000)
-        except Exception:  # noqa: BLE001 - any refusal: a triangle instead
-            points = default_points(spec, grid, vertices=3)
-    return points, (), {}
-
-
-def _grid_point(spec, x: float, y: float, grid):
-    if spec.inputs.integer:
-        return _clamp((math.floor(x), math.floor(y)), *grid, True)
-    return _clamp((round(x * 4) / 4, round(y * 4) / 4), *grid, False)
-
-
-def default_points(spec, grid, vertices: int | None = None) -> list[tuple]:
-    """A pleasant first input for an algorithm on a grid: the centre for one
-    point, a shallow segment for two, a slightly irregular polygon for more."""
-    width, height = grid
-    count = max(1, vertices or spec.inputs.count)
-    integer = spec.inputs.integer
-    if count == 1:
-        raw = [(width / 2, height / 2)]
-    elif count == 2:
-        raw = [(width * 0.125, height * 0.21), (width * 0.875, height * 0.625)]
-    else:
-        raw = []
-        for k in range(count):
-            angle = math.radians(100 + 360 * k / count + (12 if k % 2 else 0))
-            raw.append((width / 2 + 0.4 * width * math.cos(angle),
-                        height / 2 + 0.4 * height * math.sin(angle)))
-    if integer:
-        return [_clamp((math.floor(x), math.floor(y)), width, height, True) for x, y in raw]
-    # Real inputs: quarter pixels, clear of the pixel centres.
-    return [_clamp((round(x * 4) / 4, round(y * 4) / 4), width, height, False) for x, y in raw]
-
-
-def open_ended(spec) -> bool:
-    """Does the algorithm take any number of points (a polygon's contour,
-    k triangles) rather than exactly ``inputs.count``?"""
-    inputs = spec.inputs
-    return bool(getattr(inputs, "contours", False) or getattr(inputs, "multiple", False))
-
-
 def _checked_grid(grid, limit: int = MAX_GRID) -> tuple[int, int]:
     try:
         width, height = (int(v) for v in grid)
@@ -736,10 +673,3 @@ def _checked_grid(grid, limit: int = MAX_GRID) -> tuple[int, int]:
                          f"{limit}x{limit}; raise \"Maximum grid size\" in "
                          f"Edit > Preferences (up to {MAX_GRID})")
     return width, height
-
-
-def _clamp(point, width: int, height: int, integer: bool):
-    x, y = point
-    if integer:
-        return (min(max(int(x), 0), width - 1), min(max(int(y), 0), height - 1))
-    return (min(max(float(x), 0.0), float(width)), min(max(float(y), 0.0), float(height)))
