@@ -7,13 +7,13 @@ that fails leaves the old file as it was.
 """
 from __future__ import annotations
 
+import dataclasses
 import json
 import math
 import numbers
 import os
 import reprlib
 import tempfile
-import dataclasses
 from dataclasses import dataclass, field
 from functools import cached_property
 from pathlib import Path
@@ -76,9 +76,6 @@ class Frozen(dict):
     def __hash__(self):
         return hash(tuple(sorted(self.items(), key=repr)))
 
-    def __reduce__(self):
-        return (Frozen, (dict(self),))
-
 
 @dataclass(frozen=True)
 class Scene:
@@ -109,7 +106,8 @@ class Scene:
         _grid_size(self.width, "width")
         _grid_size(self.height, "height")
         if self.origin not in ORIGINS:
-            raise SceneError(f"origin: expected one of {', '.join(ORIGINS)}, got {show(self.origin)}")
+            raise SceneError(f"origin: expected one of {', '.join(ORIGINS)}, "
+                             f"got {show(self.origin)}")
         set_field = object.__setattr__
         set_field(self, "points", _frozen_points(spec, self.points))
         set_field(self, "options", Frozen(_options(spec, self.options)))
