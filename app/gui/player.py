@@ -59,7 +59,7 @@ class Player(QObject):
 
     def __init__(self, parent=None, step_cap: int = DEFAULT_STEP_CAP):
         super().__init__(parent)
-        self._posted.connect(lambda news: news())
+        self._posted.connect(self._take_news)
         self.session = session = Session(step_cap, post=self._posted.emit)
         session.trace_changed.connect(self._trace_changed)
         session.step_changed.connect(self.frameChanged.emit)
@@ -166,6 +166,10 @@ class Player(QObject):
     def to_last(self) -> None:
         self.pause()
         self.session.to_last()
+
+    def _take_news(self, news) -> None:
+        """Run what the recording worker posted, here in this object's thread."""
+        news()
 
     def _trace_changed(self) -> None:
         if self.trace is None or self.index >= self.last:
