@@ -61,14 +61,14 @@ def latency() -> None:
     app = QApplication.instance() or QApplication([])
     from app.gui.window import MainWindow
     window = MainWindow("flood-fill", [[(0, 0), (6, 0), (6, 6), (0, 6)]], grid=(1030, 1030))
-    window.show()  # the player keeps the program's own wait (app.player.SYNC_WAIT)
+    window.show()  # the player keeps the program's own wait (app.model.session.SYNC_WAIT)
     for _ in range(20):
         app.processEvents()
     meter = GapMeter(10)
     started = meter.restart()
     window.set_points(SQUARE)
     returned = time.perf_counter()
-    job = window.player._job
+    job = window.player.session.job
     while window.player.recording:
         app.processEvents()
         time.sleep(0.001)

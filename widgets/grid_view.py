@@ -11,7 +11,7 @@ The view only displays: it is handed an RGBA image of the grid (row 0 at
 y = 0), the cells to outline, and the points; it reports points the person
 places or drags, radii dragged out, a marker (a seed) placed, and the pixel
 under the cursor. What a click does to the points is decided by
-``widgets.drawing``.
+``app.model.drawing``.
 
 Mouse and keys (the window's Help lists them too):
 
@@ -31,25 +31,18 @@ import math
 
 import numpy as np
 import pyqtgraph as pg
-from PySide6.QtCore import QLineF, QPointF, QRectF, Qt, Signal
-from PySide6.QtGui import QColor, QCursor, QPen
+from PySide6.QtCore import QPointF, QRectF, Qt, Signal
+from PySide6.QtGui import QColor, QCursor
 from PySide6.QtWidgets import QMenu
 
-from .drawing import CIRCLE, CONTOURS, FIXED, GROUPS, Drawing
+from app.model.drawing import CIRCLE, CONTOURS, FIXED, GROUPS, Drawing
+
+from .grid_items import (CellOutlines, GridLinesItem, PixelAxis, handle_items, number_text,
+                         path_xy, primitive_curves, translucent)
 
 
-# Grid lines appear once a cell is this many screen pixels wide, and reach
-# full strength at FULL_CELL_PX.
-MIN_CELL_PX = 5.0
-FULL_CELL_PX = 14.0
-# More outlined cells than this in view are not drawn one by one.
-MAX_OUTLINES = 20000
-HANDLE_SIZE = 15  # screen pixels
 HANDLE_HIT = 12   # screen pixels from a handle's centre that grab it
-RIM_SIZE = 11     # the square handle on a circle's rim
-MARKER_SIZE = 22  # the seed marker
 MAX_LABELS = 40   # more points than this go unlabelled on the grid
-OUTLINE_ORDER = ("difference", "candidate", "current")
 # Real coordinates snap to 1/COARSE_SNAP px on a plain click, 1/FINE_SNAP
 # px (the algorithms' own sub-pixel grid) with FINE held.
 COARSE_SNAP = 8
@@ -59,193 +52,6 @@ NEW_CONTOUR = Qt.KeyboardModifier.ShiftModifier
 EQUAL_RADII = Qt.KeyboardModifier.ShiftModifier
 INSPECT = Qt.KeyboardModifier.AltModifier  # Alt+click asks to inspect a pixel
 DRAW, MARKER = "draw", "marker"  # the tools
-
-
-class PixelAxis(pg.AxisItem):
-    """An axis whose ticks stand at pixel centres and read as pixel indices."""
-
-    def tickValues(self, minVal, maxVal, size):  # noqa: N802 (Qt naming)
-        levels = []
-        for spacing, values in super().tickValues(minVal - 0.5, maxVal - 0.5, size):
-            if spacing >= 1:
-                levels.append((spacing, [v + 0.5 for v in values if float(v).is_integer()]))
-        if not levels:
-            first, last = math.ceil(minVal - 0.5), math.floor(maxVal - 0.5)
-            levels = [(1.0, [v + 0.5 for v in range(first, last + 1)])]
-        return levels
-
-    def tickStrings(self, values, scale, spacing):  # noqa: N802
-        return [str(math.floor(v)) for v in values]
-
-
-def visible_grid_lines(left, right, bottom, top, width, height, cell_px):
-    """The inner cell borders in view, or None when cells are too small.
-
-    Returns ((xs, ys), (left, right, bottom, top)): the ranges of x and y
-    at which vertical and horizontal lines are drawn, and the part of the
-    grid in view they span. The count depends on the view alone, never on
-    the grid's size.
-    """
-    if cell_px < MIN_CELL_PX:
-        return None
-    left, right = max(0.0, left), min(float(width), right)
-    bottom, top = max(0.0, bottom), min(float(height), top)
-    if left >= right or bottom >= top:
-        return None
-    xs = range(max(1, math.ceil(left)), min(width - 1, math.floor(right)) + 1)
-    ys = range(max(1, math.ceil(bottom)), min(height - 1, math.floor(top)) + 1)
-    return (xs, ys), (left, right, bottom, top)
-
-
-class GridLinesItem(pg.GraphicsObject):
-    """Cell borders, drawn only for the cells in view and only when cells are
-    large enough on screen to tell apart. Cost depends on the view, not on
-    the grid: a 4096 x 4096 grid draws the same few hundred lines as a small one."""
-
-    def __init__(self, color: str):
-        super().__init__()
-        self._size = (1, 1)
-        self.set_color(color)
-
-    def set_color(self, color: str) -> None:
-        self._color = QColor(color)
-        self._border = QColor(color).darker(125)
-        self.update()
-
-    def set_size(self, width: int, height: int) -> None:
-        self.prepareGeometryChange()
-        self._size = (width, height)
-        self.update()
-
-    def boundingRect(self):  # noqa: N802
-        width, height = self._size
-        return QRectF(0, 0, width, height)
-
-    def paint(self, painter, *args):
-        view = self.getViewBox()
-        if view is None:
-            return
-        width, height = self._size
-        rect = view.viewRect()
-        pixel = view.viewPixelSize()
-        cell_px = 1.0 / max(pixel[0], pixel[1], 1e-12)
-        border = QPen(self._border)
-        border.setCosmetic(True)
-        border.setWidthF(1.0)
-        bottom, top = min(rect.top(), rect.bottom()), max(rect.top(), rect.bottom())
-        lines = visible_grid_lines(rect.left(), rect.right(), bottom, top, width, height, cell_px)
-        if lines is not None:
-            (xs, ys), (left, right, low, high) = lines
-            color = QColor(self._color)
-            strength = min(1.0, (cell_px - MIN_CELL_PX) / (FULL_CELL_PX - MIN_CELL_PX))
-            color.setAlphaF(0.25 + 0.75 * strength)
-            pen = QPen(color)
-            pen.setCosmetic(True)
-            pen.setWidthF(1.0)
-            painter.setPen(pen)
-            segments = [QLineF(x, low, x, high) for x in xs]
-            segments += [QLineF(left, y, right, y) for y in ys]
-            if segments:
-                painter.drawLines(segments)
-        painter.setPen(border)
-        painter.setBrush(Qt.BrushStyle.NoBrush)
-        painter.drawRect(QRectF(0, 0, width, height))
-
-
-class CellOutlines(pg.GraphicsObject):
-    """Outlines around cells, one layer per kind of highlight, and one box
-    around each run of cells a span step fills or scans."""
-
-    def __init__(self, palette, styles):
-        super().__init__()
-        self._size = (1, 1)
-        self._styles = styles
-        self._pens = {}
-        self.set_palette(palette)
-        self._layers = {name: np.zeros((0, 2), dtype=np.int64) for name in OUTLINE_ORDER}
-        self._spans = np.zeros((0, 3), dtype=np.int64)
-
-    def set_palette(self, palette) -> None:
-        for name in OUTLINE_ORDER + ("span",):
-            style = self._styles[name]
-            pen = QPen(QColor(getattr(palette, "current" if name == "span" else name)))
-            pen.setCosmetic(True)
-            pen.setWidthF(style.width)
-            pen.setJoinStyle(Qt.PenJoinStyle.MiterJoin)
-            if style.dashed:
-                pen.setStyle(Qt.PenStyle.DashLine)
-                pen.setDashPattern([2.0, 1.5])
-            self._pens[name] = pen
-        self.update()
-
-    def set_size(self, width: int, height: int) -> None:
-        self.prepareGeometryChange()
-        self._size = (width, height)
-        self.update()
-
-    def set_layer(self, name: str, cells) -> None:
-        cells = np.asarray(cells if cells is not None else (), dtype=np.int64).reshape(-1, 2)
-        old = self._layers[name]
-        if old.shape == cells.shape and np.array_equal(old, cells):
-            return
-        self._layers[name] = cells
-        self.update()
-
-    def layer(self, name: str) -> np.ndarray:
-        return self._layers[name]
-
-    def set_spans(self, spans) -> None:
-        """Runs (x_start, x_end, y): cells x_start .. x_end - 1 of row y."""
-        spans = np.asarray(spans if spans is not None else (), dtype=np.int64).reshape(-1, 3)
-        if spans.shape == self._spans.shape and np.array_equal(spans, self._spans):
-            return
-        self._spans = spans
-        self.update()
-
-    @property
-    def spans(self) -> np.ndarray:
-        return self._spans
-
-    def boundingRect(self):  # noqa: N802
-        width, height = self._size
-        return QRectF(-1, -1, width + 2, height + 2)
-
-    def paint(self, painter, *args):
-        view = self.getViewBox()
-        if view is None:
-            return
-        rect = view.viewRect()
-        x0, x1 = rect.left() - 1, rect.right() + 1
-        y0, y1 = min(rect.top(), rect.bottom()) - 1, max(rect.top(), rect.bottom()) + 1
-        pixel = view.viewPixelSize()
-        cell_px = 1.0 / max(pixel[0], pixel[1], 1e-12)
-        painter.setBrush(Qt.BrushStyle.NoBrush)
-        for name in OUTLINE_ORDER:
-            cells = self._layers[name]
-            if not len(cells):
-                continue
-            seen = cells[(cells[:, 0] >= x0) & (cells[:, 0] <= x1)
-                         & (cells[:, 1] >= y0) & (cells[:, 1] <= y1)]
-            if not len(seen) or len(seen) > MAX_OUTLINES:
-                continue
-            # Insets only make sense while a cell is several pixels wide.
-            inset = self._styles[name].inset if cell_px >= 10 else 0.0
-            size = 1.0 - 2 * inset
-            painter.setPen(self._pens[name])
-            painter.drawRects([QRectF(float(x) + inset, float(y) + inset, size, size)
-                               for x, y in seen])
-        if len(self._spans):
-            painter.setPen(self._pens["span"])
-            painter.drawRects([QRectF(float(a), float(y), float(b - a), 1.0)
-                               for a, b, y in self._spans if b > a])
-
-
-class _Handles(pg.ScatterPlotItem):
-    """Handles that leave every click to the view box: a click on a vertex
-    closes a contour or shares the vertex, which the drawing tool decides."""
-
-    def mouseClickEvent(self, ev):  # noqa: N802
-        ev.ignore()
 
 
 class _GridViewBox(pg.ViewBox):
@@ -286,7 +92,7 @@ class _GridViewBox(pg.ViewBox):
 
 class PixelGridView(pg.PlotWidget):
     """The grid of pixels, with everything drawn over it, and the drawing
-    tools (see ``widgets.drawing``)."""
+    tools (see ``app.model.drawing``)."""
 
     #: The points after a click, a drag or a key (a list of (x, y), possibly
     #: fewer than the algorithm takes while the person is still placing
@@ -329,25 +135,8 @@ class PixelGridView(pg.PlotWidget):
         self.grid_lines.setZValue(1)
         self.outlines = CellOutlines(palette, outline_styles)
         self.outlines.setZValue(2)
-        self.primitive = pg.PlotCurveItem(pen=pg.mkPen(palette.primitive, width=2.5),
-                                          antialias=True, connect="finite")
-        self.primitive.setZValue(3)
-        self.preview = pg.PlotCurveItem(pen=pg.mkPen(palette.primitive, width=1.5,
-                                                     style=Qt.PenStyle.DashLine),
-                                        antialias=True)
-        self.preview.setZValue(3)
-        self.handles = _Handles(pxMode=True, size=HANDLE_SIZE, symbol="o",
-                                          brush=pg.mkBrush(_translucent(palette.handle, 70)),
-                                          pen=pg.mkPen(palette.handle_edge, width=2.5))
-        self.handles.setZValue(4)
-        self.rim = _Handles(pxMode=True, size=RIM_SIZE, symbol="s",
-                                      brush=pg.mkBrush(palette.handle),
-                                      pen=pg.mkPen(palette.primitive, width=2.5))
-        self.rim.setZValue(4)
-        self.marker = _Handles(pxMode=True, size=MARKER_SIZE, symbol="star",
-                                         brush=pg.mkBrush(palette.seed),
-                                         pen=pg.mkPen(palette.handle, width=1.5))
-        self.marker.setZValue(6)
+        self.primitive, self.preview = primitive_curves(palette)
+        self.handles, self.rim, self.marker = handle_items(palette)
         # The samples tested in the current pixel: hit filled, miss hollow,
         # sized in grid units so that they stay inside the magnified cell.
         self.samples = pg.ScatterPlotItem(pxMode=False, symbol="o")
@@ -434,7 +223,7 @@ class PixelGridView(pg.PlotWidget):
     def set_input(self, count: int, integer: bool, names=(), closed: bool | None = None,
                   open_ended: bool = False, mode: str | None = None) -> None:
         """How many points the algorithm takes, whether they are whole
-        pixels, and which drawing tool places them (``widgets.drawing``).
+        pixels, and which drawing tool places them (``app.model.drawing``).
 
         Without a ``mode``: ``open_ended`` inputs are contours when
         ``closed`` and groups of ``count`` otherwise; the rest a fixed set.
@@ -516,7 +305,7 @@ class PixelGridView(pg.PlotWidget):
         self.outlines.set_palette(palette)
         self.primitive.setPen(pg.mkPen(palette.primitive, width=2.5))
         self.preview.setPen(pg.mkPen(palette.primitive, width=1.5, style=Qt.PenStyle.DashLine))
-        self.handles.setBrush(pg.mkBrush(_translucent(palette.handle, 70)))
+        self.handles.setBrush(pg.mkBrush(translucent(palette.handle, 70)))
         self.handles.setPen(pg.mkPen(palette.handle_edge, width=2.5))
         self.rim.setBrush(pg.mkBrush(palette.handle))
         self.rim.setPen(pg.mkPen(palette.primitive, width=2.5))
@@ -844,15 +633,7 @@ class PixelGridView(pg.PlotWidget):
             if not (self._drawing.complete() and len(anchors) >= 2):
                 return [], []
             paths = [([(a.x(), a.y()) for a in anchors], self._closed)]
-        xs, ys = [], []
-        for points, closed in paths:
-            if not points:
-                continue
-            if closed:
-                points = list(points) + [points[0]]
-            xs += [p[0] for p in points] + [math.nan]
-            ys += [p[1] for p in points] + [math.nan]
-        return np.array(xs, dtype=float), np.array(ys, dtype=float)
+        return path_xy(paths)
 
     def _place_labels(self) -> None:
         points = self._drawing.points
@@ -866,7 +647,8 @@ class PixelGridView(pg.PlotWidget):
         cx = sum(a.x() for a in anchors) / len(anchors)
         cy = sum(a.y() for a in anchors) / len(anchors)
         for label, name, point, at in zip(self._labels, names, points, anchors):
-            text = f"{name} ({_number(point[0])}, {_number(point[1])})" if with_numbers else name
+            text = f"{name} ({number_text(point[0])}, {number_text(point[1])})" if with_numbers \
+                else name
             label.setText(text)
             # Above or below the handle, away from the middle of the points,
             # so a label does not cover the primitive (on screen, whichever
@@ -900,7 +682,7 @@ class PixelGridView(pg.PlotWidget):
             self._marker_label.hide()
             return
         at = QPointF(point[0] + 0.5, point[1] + 0.5)
-        brush = _translucent(self.palette.seed, 90) if self._marker_automatic else self.palette.seed
+        brush = translucent(self.palette.seed, 90) if self._marker_automatic else self.palette.seed
         self.marker.setData(pos=[(at.x(), at.y())], brush=pg.mkBrush(brush))
         name = self._marker_name or "marker"
         self._marker_label.setText(f"{name} ({point[0]}, {point[1]})"
@@ -922,16 +704,3 @@ class PixelGridView(pg.PlotWidget):
         if self._drawing.mode in (CONTOURS, GROUPS) and len(anchors) > 2:
             anchors.append(anchors[0])
         self.preview.setData([a.x() for a in anchors], [a.y() for a in anchors])
-
-
-def _translucent(color: str, alpha: int) -> QColor:
-    """A ring handle: the pixel under it stays visible."""
-    result = QColor(color)
-    result.setAlpha(alpha)
-    return result
-
-
-def _number(value) -> str:
-    if isinstance(value, float) and value.is_integer():
-        return str(int(value))
-    return f"{value:g}" if isinstance(value, float) else str(value)

@@ -1,6 +1,6 @@
 """Breakpoints, step units and bookmarks in the main window.
 
-``install_breakpoints(window)`` adds two docks to a ``MainWindow``:
+``Breakpoints(window)`` adds two docks to a ``MainWindow``:
 
 * Breakpoints: the step unit (frame, decision, scanline, primitive) that
   the step buttons and Left/Right move by, the breakpoint conditions, and
@@ -45,22 +45,11 @@ TITLES = {bp.SIGN: "Decision changes sign", bp.BRANCH: "Branch changes",
 MESSAGE_MS = 8000
 
 
-def install_breakpoints(window) -> "Breakpoints":
-    """Add the breakpoints and bookmarks docks and actions to ``window``."""
-    controller = Breakpoints(window)
-    window.breakpoints = controller
-    return controller
-
-
 def bookmark_list(window) -> list:
     """The scene's bookmarks ({"name", "step"}): the file actions' list when
     they are installed, else one kept on the window."""
-    files = getattr(window, "file_actions", None)
-    if files is not None:
-        return files.bookmarks
-    if not isinstance(getattr(window, "bookmarks", None), list):
-        window.bookmarks = []
-    return window.bookmarks
+    files = window.file_actions
+    return files.bookmarks if files is not None else window.bookmarks
 
 
 class Breakpoints(QObject):
@@ -116,13 +105,13 @@ class Breakpoints(QObject):
         window = self.window
         run_menu = window.menus["run"]
         run_menu.addSeparator()
-        self.run_action = window._action(run_menu, "run-to-breakpoint", "Run to &breakpoint",
+        self.run_action = window.add_action(run_menu, "run-to-breakpoint", "Run to &breakpoint",
                                          "F5", lambda: self.run_to(+1))
-        self.run_back_action = window._action(run_menu, "run-back-to-breakpoint",
+        self.run_back_action = window.add_action(run_menu, "run-back-to-breakpoint",
                                               "Run &back to breakpoint", "Shift+F5",
                                               lambda: self.run_to(-1))
         run_menu.addSeparator()
-        self.bookmark_action = window._action(run_menu, "add-bookmark",
+        self.bookmark_action = window.add_action(run_menu, "add-bookmark",
                                               "Book&mark this step\u2026", "Ctrl+B",
                                               self.add_bookmark)
 
@@ -280,7 +269,7 @@ class Breakpoints(QObject):
         return bookmark_list(self.window)
 
     def _follow_files(self) -> None:
-        files = getattr(self.window, "file_actions", None)
+        files = self.window.file_actions
         if files is not None and files is not self._files:
             self._files = files
             files.bookmarksChanged.connect(self._show_bookmarks)
@@ -295,7 +284,7 @@ class Breakpoints(QObject):
 
     def _edited(self) -> None:
         self._show_bookmarks()
-        recovery = getattr(self.window, "recovery", None)
+        recovery = self.window.recovery
         if recovery is not None:
             recovery.check()  # bookmarks are part of the unsaved work
 

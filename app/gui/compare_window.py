@@ -19,7 +19,10 @@ from widgets.transport import TransportBar
 
 from app.model import compare
 from app.render import frame as frame_view
-from app.model.compare import FRAME, LINKS, MAX_PANES, MIN_PANES, PRESETS, Pane, Primitives
+from app.model.compare import (FRAME, LINKS, MAX_PANES, MIN_PANES, PRESETS, Pane,
+                               window_primitives)
+from app.model.scene import Scene
+from app.gui.entries import WindowEntry
 from app.render.compose import OUTLINE_STYLE, PALETTE, compose
 
 WINDOW_KEY = "window"  # the comparison of the main window's algorithm and the one before
@@ -37,7 +40,7 @@ class CompareWindow(QMainWindow):
         self.setWindowTitle("Compare \u2014 RasterLab")
         self.panes: list[Pane] = []
         self.runs: list[compare.Run] = []
-        self.primitives: Primitives | None = None
+        self.primitives: Scene | None = None
         self.preset_key = WINDOW_KEY
         self.link = FRAME
         self.position = 0
@@ -142,7 +145,7 @@ class CompareWindow(QMainWindow):
             key = PRESETS[0].key  # no main window to follow
         if key == WINDOW_KEY:
             self.panes = list(compare.window_panes(self.main.player))
-            self.primitives = Primitives.of_player(self.main.player)
+            self.primitives = window_primitives(self.main.player)
             self.description.setText("The main window's algorithm against the one shown "
                                      "before it; the panes follow the main window's points.")
             self.pair = (0, 1)
@@ -165,10 +168,10 @@ class CompareWindow(QMainWindow):
         self.view.set_grid(*self.primitives.grid)
         self.view.fit()
 
-    def _window_primitives(self) -> Primitives | None:
+    def _window_primitives(self) -> Scene | None:
         if self.main is None or not self.main.player.points:
             return None
-        return Primitives.of_player(self.main.player)
+        return window_primitives(self.main.player)
 
     def _follows_main(self) -> bool:
         if self.main is None:
@@ -187,7 +190,7 @@ class CompareWindow(QMainWindow):
         if self.preset_key == WINDOW_KEY and self.main.player.spec.name != self._main_spec:
             self.apply_preset(WINDOW_KEY)  # another algorithm: compare it with the one before
             return
-        self.primitives = Primitives.of_player(self.main.player)
+        self.primitives = window_primitives(self.main.player)
         self.view.set_y_down(self.main.grid.y_down)
         if tuple(self.primitives.grid) != self.view.grids()[0].grid_size:
             self.view.set_grid(*self.primitives.grid)
@@ -466,31 +469,15 @@ def _empty(width: int, height: int):
 
 
 # ----------------------------------------------------------------- hook
-def install_compare(window) -> QAction:
-    """Add View > Compare… (Ctrl+K) to the main window."""
+def compare_entry(window) -> WindowEntry:
+    """View > Compare… (Ctrl+K) of the main window, and the compare window it opens."""
     menu = window.menus["view"]
     menu.addSeparator()
     action = QAction("&Compare\u2026", window)
     action.setShortcut(QKeySequence("Ctrl+K"))
     action.setToolTip("Compare algorithms side by side on the same primitives, stepped "
                       "together, with a diff of two of them (Ctrl+K)")
-    action.triggered.connect(lambda: open_compare(window))
     menu.addAction(action)
     window.addAction(action)
-    window.compare_action = action
-    return action
-
-
-def open_compare(window) -> CompareWindow:
-    """Show the compare window (made once, then brought back)."""
-    existing = getattr(window, "compare_window", None)
-    fresh = existing is None
-    if fresh:
-        existing = CompareWindow(window)
-        window.compare_window = existing
-    existing.show()
-    existing.raise_()
-    existing.activateWindow()
-    if not fresh:
-        existing._main_changed()  # catch up with what the main window did meanwhile
-    return existing
+    # Brought back, it catches up with what the main window did meanwhile.
+    return WindowEntry(window, action, CompareWindow, refresh=CompareWindow._main_changed)

@@ -1,6 +1,6 @@
 """The last line of defence: an exception nobody caught.
 
-``install_crash_handler(window)`` makes ``sys.excepthook`` (where PySide6
+``CrashHandler(window).install()`` makes ``sys.excepthook`` (where PySide6
 sends an exception raised in a slot or an event handler) and
 ``threading.excepthook`` write the traceback to a rotating log file in the
 application data folder and show one message box saying so. The program
@@ -70,6 +70,13 @@ class CrashHandler(QObject):
         sys.excepthook = self.handle
         threading.excepthook = self._thread_hook
         return self
+
+    def add_menu_entry(self, menu) -> None:
+        """"Open log folder" in ``menu`` (the main window's Help menu)."""
+        act = menu.addAction("Open &log folder")
+        act.setToolTip(f"Show the folder of the error log ({self.log_file.parent})")
+        act.setStatusTip(act.toolTip())
+        act.triggered.connect(self.open_log_folder)
 
     def uninstall(self) -> None:
         if self._previous is not None and sys.excepthook == self.handle:
@@ -188,17 +195,3 @@ def _alive(widget) -> bool:
     except RuntimeError:  # the C++ side was deleted
         return False
     return True
-
-
-def install_crash_handler(window, folder: Path | None = None) -> CrashHandler:
-    """Catch uncaught exceptions for ``window``'s program; adds "Open log
-    folder" to its Help menu."""
-    handler = CrashHandler(window, folder).install()
-    window.crash_handler = handler
-    menu = getattr(window, "menus", {}).get("help")
-    if menu is not None:
-        act = menu.addAction("Open &log folder")
-        act.setToolTip(f"Show the folder of the error log ({handler.log_file.parent})")
-        act.setStatusTip(act.toolTip())
-        act.triggered.connect(handler.open_log_folder)
-    return handler

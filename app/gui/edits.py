@@ -3,9 +3,9 @@ window, so that undo and redo cover them all: points drawn, dragged or
 typed, contours, the algorithm, each option (per-vertex colour, z and w
 among them), the grid size and the origin.
 
-``install_edits(window)`` connects the scene editors to the window's
+``SceneEdits(window)`` connects the scene editors to the window's
 setters, each wrapped in ``SceneEdits.recording``: the scene before the
-edit is kept in ``window.history`` under the name of what changed, and the
+edit is kept in the session's history under the name of what changed, and the
 Edit menu's Undo and Redo say that name.
 """
 from __future__ import annotations
@@ -16,7 +16,7 @@ from PySide6.QtCore import QObject
 
 from algorithms.registry import InputError
 
-from app.model.history import MERGE_SECONDS, Snapshot
+from app.model.history import MERGE_SECONDS
 
 # Per-vertex options shown as columns of the vertex table. Lines take a
 # colour per endpoint; triangles and the visibility runs take a colour,
@@ -34,36 +34,49 @@ def vertex_options(spec) -> list[str]:
 
 
 class SceneEdits(QObject):
-    """Records scene edits in the window's history and takes them back."""
+    """Records scene edits in the session's history and takes them back."""
 
     def __init__(self, window):
         super().__init__(window)
         self.window = window
-        self.history = window.history
+        self.session = window.player.session
+        self.history = self.session.history
         self._gesture = 0  # one drag or click on the grid: its edits merge
-        self._depth = 0  # nested recordings count as the outer one
+        self._connect(window)
+        self.refresh()
 
-    # --------------------------------------------------------- snapshot
-    def snapshot(self) -> Snapshot:
-        w, player = self.window, self.window.player
-        return Snapshot.of(player.spec.name, player.points, player.breaks, player.options,
-                           player.grid, w.grid.y_down)
+    def _connect(self, window) -> None:
+        """Route every scene editor of ``window`` through the history."""
+        g = window.grid
+        g.editStarted.connect(self.start_gesture)
+        g.pointsEdited.connect(lambda points: self.gesture(
+            lambda: window.set_points(points, g.breaks)))
+        g.radiusDragged.connect(lambda rx, ry: self.gesture(lambda: window.drag_radius(rx, ry)))
+        g.markerPlaced.connect(lambda pixel: self.gesture(lambda: window.place_marker(pixel)))
+        g.clearRequested.connect(window.clear_points)
+        window.points.edited.connect(self.table_edited)
+        window.points.refused.connect(window.say_error)
+        window.picker.algorithmChosen.connect(lambda name: self.once(
+            lambda: window.set_algorithm(name)))
+        window.options.valueEdited.connect(lambda name, value: self.field(
+            ("option", name), lambda: window.set_option(name, value)))
+        window.grid_editor.gridChanged.connect(lambda width, height: self.field(
+            ("grid",), lambda: window.set_grid(width, height)))
+        window.grid_editor.originChanged.connect(lambda down: self.once(
+            lambda: window.set_y_down(down)))
+        window.y_down_action.toggled.connect(lambda down: self.once(
+            lambda: window.set_y_down(down)))
+        window.player.traceChanged.connect(self.sync_table)
 
     @contextmanager
     def recording(self, key=None, seconds: float | None = None):
         """Run an edit; if it changed the scene, remember the scene before it.
         Edits with the same ``key`` merge while the entry is open (for
         ``seconds`` after the last one; None: until another edit)."""
-        if self._depth:
-            yield
-            return
-        before = self.snapshot()
-        self._depth += 1
         try:
-            yield
+            with self.session.edit(key, seconds):
+                yield
         finally:
-            self._depth -= 1
-            self.history.push(before, self.snapshot(), key, seconds)
             self.refresh()
 
     def start_gesture(self) -> None:
@@ -85,29 +98,26 @@ class SceneEdits(QObject):
 
     # ------------------------------------------------------- undo, redo
     def undo(self) -> None:
-        self.go_to(self.history.undo(self.snapshot()))
+        self._go_to(self.session.undo)
 
     def redo(self) -> None:
-        self.go_to(self.history.redo(self.snapshot()))
+        self._go_to(self.session.redo)
 
-    def go_to(self, snapshot: Snapshot | None) -> None:
-        """Put back the scene of ``snapshot``: the trace is recorded again
-        and the step stays where it was, as a fraction of the run."""
-        if snapshot is not None:
-            w, player = self.window, self.window.player
-            switched = snapshot.algorithm != player.spec.name
-            try:
-                player.restore(snapshot.points, snapshot.breaks, dict(snapshot.options),
-                               snapshot.algorithm, snapshot.grid)
-            except InputError as error:
-                w._say_error(str(error))
-            if switched:
-                w._scene_changed()
+    def _go_to(self, move) -> None:
+        """Put back a scene from the history (``move()`` returns it, None
+        when there is none): the trace is recorded again and the step stays
+        where it was, as a fraction of the run; the editors follow."""
+        w, player = self.window, self.window.player
+        algorithm = player.spec.name
+        scene = move()
+        if scene is not None:
+            if scene.algorithm != algorithm:
+                w.follow_scene()
             else:
                 w.options.set_values(player.options)
-                w._sync_grid()
-            if snapshot.y_down != w.grid.y_down:
-                w.set_y_down(snapshot.y_down)
+                w.sync_grid()
+            if scene.y_down != w.grid.y_down:
+                w.set_y_down(scene.y_down)
         self.refresh()
 
     def refresh(self) -> None:
@@ -132,41 +142,12 @@ class SceneEdits(QObject):
             try:
                 player.restore(points, breaks, options)
             except InputError as error:
-                w._say_error(str(error))
+                w.say_error(str(error))
             w.options.set_values(player.options)
-            w._sync_points()
+            w.sync_points()
 
     def sync_table(self) -> None:
         """The table's attribute columns follow the algorithm and options."""
         player = self.window.player
         if player.spec is not None:
             self.window.points.set_attributes(vertex_options(player.spec), player.options)
-
-
-def install_edits(window) -> SceneEdits:
-    """Route the scene editors through the history (called by the window)."""
-    edits = SceneEdits(window)
-    window.edits = edits
-    g = window.grid
-    g.editStarted.connect(edits.start_gesture)
-    g.pointsEdited.connect(lambda points: edits.gesture(
-        lambda: window.set_points(points, g.breaks)))
-    g.radiusDragged.connect(lambda rx, ry: edits.gesture(
-        lambda: window._radius_dragged(rx, ry)))
-    g.markerPlaced.connect(lambda pixel: edits.gesture(lambda: window._marker_placed(pixel)))
-    g.clearRequested.connect(window.clear_points)
-    window.points.edited.connect(edits.table_edited)
-    window.points.refused.connect(window._say_error)
-    window.picker.algorithmChosen.connect(lambda name: edits.once(
-        lambda: window.set_algorithm(name)))
-    window.options.valueEdited.connect(lambda name, value: edits.field(
-        ("option", name), lambda: window.set_option(name, value)))
-    window.grid_editor.gridChanged.connect(lambda width, height: edits.field(
-        ("grid",), lambda: window.set_grid(width, height)))
-    window.grid_editor.originChanged.connect(lambda down: edits.once(
-        lambda: window.set_y_down(down)))
-    window.y_down_action.toggled.connect(lambda down: edits.once(
-        lambda: window.set_y_down(down)))
-    window.player.traceChanged.connect(edits.sync_table)
-    edits.refresh()
-    return edits

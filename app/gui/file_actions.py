@@ -1,6 +1,6 @@
 """Scene files and animation export in the window's File menu.
 
-``install_file_actions(window)`` adds to the File menu of a ``MainWindow``:
+``MainWindow.add_file_actions()`` adds to the File menu:
 Open…, Open Recent, Open Example, Save, Save As… and Export Animation…
 (Ctrl+E). It reads and changes the window's scene only through the
 window's public methods (``set_scene``, ``set_y_down``, the player, the
@@ -33,17 +33,6 @@ MAX_RECENT = 8
 SCENE_FILTER = "RasterLab scenes (*.json);;All files (*)"
 
 
-def install_file_actions(window, settings: QSettings | None = None) -> "FileActions":
-    """Put the scene-file and export actions into ``window``'s File menu.
-
-    ``settings`` keeps the recent files (by default the user's RasterLab
-    settings). The returned object lives as long as the window.
-    """
-    actions = FileActions(window, settings)
-    window.file_actions = actions
-    return actions
-
-
 class FileActions(QObject):
     """The File menu's scene and export actions for one window."""
 
@@ -66,7 +55,7 @@ class FileActions(QObject):
         self.title = ""
         self.description = ""
         # Bookmarks made before the file actions came keep their place.
-        self.bookmarks: list = [dict(b) for b in getattr(window, "bookmarks", [])]
+        self.bookmarks: list = [dict(b) for b in window.bookmarks]
         self.export_controller: ExportController | None = None
         self._build_menu()
 
@@ -140,22 +129,14 @@ class FileActions(QObject):
 
     # ------------------------------------------------------------ scenes
     def current_scene(self) -> Scene:
-        """The scene on show, as a scene file holds it."""
-        window, player = self.window, self.window.player
-        spec = player.spec
-        points = player.input_points()
-        if spec.inputs.contours:
-            points = [[list(p) for p in contour] for contour in points]
-        else:
-            points = [list(p) for p in points]
-        width, height = player.grid
-        view = {"step": int(player.index), "speed": float(player.speed),
+        """The scene on show, as a scene file holds it (without a contour or
+        a triangle still being drawn)."""
+        window, session = self.window, self.window.player.session
+        view = {"step": int(session.index), "speed": float(window.player.speed),
                 "compare": bool(window.compare.isChecked())}
-        return Scene(algorithm=spec.name, points=points, options=dict(player.options),
-                     width=width, height=height,
-                     origin="top-left" if window.grid.y_down else "bottom-left",
-                     title=self.title, description=self.description, view=view,
-                     bookmarks=[dict(b) for b in self.bookmarks])
+        return session.scene.replace(points=session.input_points(), title=self.title,
+                                     description=self.description, view=view,
+                                     bookmarks=self.bookmarks)
 
     def apply_scene(self, scene: Scene) -> None:
         """Show ``scene`` in the window; raises InputError (and changes

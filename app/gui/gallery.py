@@ -1,6 +1,6 @@
 """Help > Hard cases…: the shipped scenes that make algorithms stumble.
 
-``install_gallery(window)`` adds the entry to the window's Help menu. The
+``gallery_entry(window)`` makes the entry of the window's Help menu. The
 dialog lists every hard-case scene in resources/scenes with its title, the
 one line that says what makes it hard, and its algorithm; a small picture
 of each run's last frame follows once it is drawn (one scene at a time, so
@@ -23,6 +23,7 @@ from algorithms.registry import InputError
 from app.render import compose as render
 from app.model import scene as scenes
 from app.model.scene import SceneError, one_line
+from app.gui.entries import WindowEntry
 
 FOLDER = scenes.SHIPPED
 # Scenes that are examples, not hard cases.
@@ -181,26 +182,13 @@ def _open_directly(window, path: Path) -> bool:
     return True
 
 
-def show_gallery(window) -> GalleryDialog:
-    """Show the window's gallery, made on first use and kept."""
-    dialog = getattr(window, "gallery", None)
-    if dialog is None:
-        dialog = window.gallery = GalleryDialog(window)
-    dialog.show()
-    dialog.raise_()
-    dialog.activateWindow()
-    return dialog
-
-
-def install_gallery(window) -> QAction:
-    """Add Help > Hard cases… to ``window``."""
+def gallery_entry(window) -> WindowEntry:
+    """Help > Hard cases… of the main window, and the gallery it opens."""
     menu = window.menus["help"]
     action = QAction("&Hard cases…", window)
     action.setToolTip("Shipped scenes that make the algorithms stumble, each with what to "
                       "look for")
     action.setStatusTip(action.toolTip())
-    action.triggered.connect(lambda: show_gallery(window))
     first = menu.actions()[0] if menu.actions() else None
     menu.insertAction(first, action)
-    window.gallery = None
-    return action
+    return WindowEntry(window, action, GalleryDialog)

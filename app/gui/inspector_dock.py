@@ -1,6 +1,6 @@
 """The "Pixel inspector" dock: what is known about one pixel at the step on show.
 
-``install_inspector(window)`` adds the dock (hidden until asked for, from
+``InspectorDock(window)`` adds the dock (hidden until asked for, from
 View > Pixel inspector, Ctrl+I), and wires it to the grid and the player:
 
 * hovering a pixel inspects it;
@@ -133,12 +133,8 @@ class InspectorDock:
                 return state.raster if state is not None else trace.raster_at(index)
 
             shown = player.shown_scene  # the trace's own scene, even mid-recording
-            self._inspector = PixelInspector(trace, shown.spec, shown.points, shown.options,
+            self._inspector = PixelInspector(trace, shown.spec, shown.flat, shown.options,
                                              shown.grid, raster_at)
         return self._inspector
 
 
-def install_inspector(window) -> InspectorDock:
-    """Add the pixel inspector to the main window."""
-    window.inspector = InspectorDock(window)
-    return window.inspector

@@ -1,6 +1,6 @@
 """Preferences kept between runs, and the dialog that edits them.
 
-``install_preferences(window)`` (one line at the end of
+``PreferencesController(window, Preferences())`` (made by
 ``MainWindow.__init__``) reads the stored preferences, applies them to the
 window, and adds Edit > Preferences… (Ctrl+,) and View > Grid lines.
 
@@ -218,13 +218,6 @@ def apply_theme(theme: str) -> None:
 
 
 # ----------------------------------------------------------- the window side
-def install_preferences(window, settings: QSettings | None = None) -> "PreferencesController":
-    """Apply the stored preferences to ``window`` and add their menu entries."""
-    controller = PreferencesController(window, Preferences(settings))
-    window.preferences = controller
-    return controller
-
-
 class PreferencesController(QObject):
     """Preferences of one window: the menu entries, the dialog, applying."""
 
@@ -297,7 +290,7 @@ class PreferencesController(QObject):
                 try:
                     player.restore(player.points, player.breaks, player.options)
                 except InputError as error:
-                    window._say_error(str(error))
+                    window.say_error(str(error))
 
     def open_dialog(self) -> "PreferencesDialog":
         if self.dialog is None:
@@ -342,9 +335,8 @@ def _theme_panels(window, dark: bool) -> None:
 def reopen_last_scene(window) -> bool:
     """At start: open the scene opened or saved last, when the preference
     asks for it and the file is still there."""
-    controller = getattr(window, "preferences", None)
-    actions = getattr(window, "file_actions", None)
-    if controller is None or actions is None or not controller.prefs.get("reopen_last"):
+    controller, actions = window.preferences, window.file_actions
+    if actions is None or not controller.prefs.get("reopen_last"):
         return False
     recent = actions.recent()
     if not recent:

@@ -1,6 +1,6 @@
 """No lost work: unsaved changes, the recovery copy, and closing.
 
-``install_recovery(window)`` (after ``install_file_actions``) keeps track
+``MainWindow.add_recovery()`` (after ``add_file_actions``) keeps track
 of whether the scene on show differs from the one last opened or saved
 (its "view" part aside: the step on show and the speed are not work). While
 it differs, the title shows "*" and, a moment after the last edit, the
@@ -324,11 +324,3 @@ def ask_restore(parent, when: str) -> str:
     box.setEscapeButton(later)
     box.exec()
     return {restore: RESTORE, discard: DISCARD}.get(box.clickedButton(), LATER)
-
-
-def install_recovery(window, folder: Path | None = None, delay_ms: int = AUTOSAVE_DELAY_MS,
-                     poll_ms: int = POLL_MS) -> Recovery:
-    """Track unsaved changes of ``window`` (which needs its file actions)."""
-    recovery = Recovery(window, folder, delay_ms, poll_ms)
-    window.recovery = recovery
-    return recovery

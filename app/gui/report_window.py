@@ -21,6 +21,7 @@ from PySide6.QtWidgets import (QCheckBox, QComboBox, QDialog, QFileDialog, QForm
 from app.analysis import measure
 
 from app.analysis import report
+from app.gui.entries import WindowEntry
 
 PARAMETER = "(swept parameter)"
 
@@ -260,23 +261,11 @@ class ReportDialog(QDialog):
         self.status.setText(f"Saved {', '.join(written['files'])} in {written['folder']}.")
 
 
-def install_report_action(window) -> QAction:
-    """Add Run > Report… to the window's menu bar."""
+def report_entry(window) -> WindowEntry:
+    """Run > Report… of the main window, and the report dialog it opens."""
     menu = window.menus["run"]
     menu.addSeparator()
     action = QAction("&Report: speed against error…", window)
     action.setShortcut(QKeySequence("Ctrl+R"))
-    action.triggered.connect(lambda: open_report(window))
     menu.addAction(action)
-    window.report_action = action
-    return action
-
-
-def open_report(window) -> ReportDialog:
-    dialog = getattr(window, "report_dialog", None)
-    if dialog is None:
-        dialog = ReportDialog(window)
-        window.report_dialog = dialog
-    dialog.show()
-    dialog.raise_()
-    return dialog
+    return WindowEntry(window, action, ReportDialog)

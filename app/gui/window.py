@@ -11,39 +11,32 @@ import bisect
 import sys
 
 import numpy as np
-from PySide6.QtCore import QRect, Qt
-from PySide6.QtGui import (QAction, QActionGroup, QColor, QIcon, QKeySequence, QPainter,
-                           QPixmap)
-from PySide6.QtWidgets import (QApplication, QCheckBox, QDialog, QDialogButtonBox,
-                               QFrame, QHBoxLayout, QHeaderView, QLabel, QMainWindow, QMessageBox,
-                               QPushButton, QScrollArea, QSizePolicy, QTableWidget,
-                               QTableWidgetItem, QToolBar, QVBoxLayout, QWidget)
+from PySide6.QtCore import Qt
+from PySide6.QtWidgets import QApplication, QMainWindow, QMessageBox
 
 from algorithms import registry
-from algorithms.raster import MAX_GRID, Raster
+from algorithms.raster import Raster
 from algorithms.registry import InputError
 from algorithms.steps import Note, Table
-from widgets.docks import panel_dock
-from widgets.depth_view import DepthView
-from widgets.drawing import CONTOURS, point_labels
-from widgets.editors import AlgorithmPicker, GridEditor, OptionsEditor
-from widgets.vertex_table import VertexTable
-from widgets.grid_view import DRAW, MARKER, PixelGridView
-from widgets.panels import CodePanel, VariablesPanel
-from widgets.tables import TablesPanel
-from widgets.transport import TransportBar
+from widgets.grid_view import DRAW, MARKER
 
 from app.gui.appdata import APP_NAME
-from app.model.history import EditHistory
+from app.gui.look import ERROR_STYLE, STYLE, app_icon, coverage_rows, legend_rows, recolor
+from app.gui.player import Player
+from app.gui.shortcuts import GESTURES, ShortcutsDialog
+from app.gui.window_depth import DepthAndAccuracy
+from app.gui.window_layout import WindowLayout
+from app.gui.window_menus import WindowMenus
+from app.model.drawing import CONTOURS, point_labels
 from app.model.insight import PixelTally, has_insight, inside_chips, row_tones
 from app.model.inputs import split_contours
-from app.gui.player import Player, default_scene, open_ended
-from app.render import frame as frame_view
-from app.render.compose import (COVERAGE_LEVELS, OUTLINE_STYLE, PALETTE, compose, coverage_counts,
-                                depth_image, depth_range, error_image, error_stats)
+from app.model.examples import default_scene
+from app.model.inputs import open_ended
 from app.model.tables import TableIndex
 from app.model.tools import (circle_kind, circle_options, clamp_option, drawing_mode,
                              marker_option, placing_message, shape_paths, tool_hint)
+from app.render import frame as frame_view
+from app.render.compose import PALETTE, compose, coverage_counts, error_image
 # What a frame shows is worked out in app/render/frame.py, shared with export.
 from app.render.frame import step_cells as _step_cells
 from app.render.frame import html_caption as _caption
@@ -55,156 +48,14 @@ PREFERRED_ALGORITHM = "line-bresenham"
 DEMO_POINTS = [(4, 5), (28, 15)]
 DEMO_GRID = (32, 24)
 
-# What the shortcuts sheet lists besides the window's actions (which it
-# reads from the menus): pointer gestures and keys that belong to one widget.
-GESTURES = (
-    ("Mouse wheel", "Zoom the grid"),
-    ("Drag (empty cell)", "Pan the grid (with any tool: drag with the middle button)"),
-    ("Click", "Place a point (a full set of points starts a new one)"),
-    ("Drag a handle", "Move a point"),
-    ("Ctrl+click, Ctrl+drag", "Polygons and triangles: place to 1/256 px (otherwise 1/8 px)"),
-    ("Double-click", "Close the polygon being drawn (so does a click on its first vertex)"),
-    ("Shift+click", "Start a new contour: a hole or a second part of the polygon"),
-    ("Click on a vertex", "Triangles: add a point exactly there, shared by two triangles"),
-    ("Drag (circles)", "From an empty cell: the centre, then the radius"),
-    ("Drag the square handle", "Change a circle's radius, or an ellipse's rx and ry"),
-    ("Shift+drag (ellipses)", "Keep rx and ry equal"),
-    ("Drag the star", "Flood fill: move the seed"),
-    ("Right-click", "Menu: place the seed, close the contour, remove or clear points"),
-    ("Alt+click", "Pin the pixel for the pixel inspector (Ctrl+I); Esc lets go"),
-    ("Tab, Enter (vertex table)", "Next cell; typing replaces the value"),
-    ("Insert, Delete (vertex table)", "Add a vertex after the selected one, remove it"),
-    ("F2 (bookmarks)", "Rename the selected bookmark"),
-    ("Esc (while recording)", "Cancel the recording; the previous run stays"),
-)
-
-STYLE = """
-QLabel#section { color: #55606d; font-weight: bold; padding-top: 8px; }
-QLabel#summary { color: #55606d; }
-QLabel#stepCaption { color: #1d2733; padding: 2px 0 4px 0; }
-QLabel#seriesTitle { color: #55606d; }
-QLabel#codeNotes { color: #4b5563; background: #f3f5f8; border: 1px solid #dde2e8;
-                   border-radius: 4px; padding: 6px; }
-QLabel#stepCounter { font-weight: bold; }
-QTableWidget#codeLines { background: #ffffff; border: 1px solid #dde2e8; }
-QTreeWidget#algorithmPicker { border: 1px solid #dde2e8; }
-QTableWidget#variables { border: 1px solid #dde2e8; }
-QWidget#transport { background: #f3f5f8; border-top: 1px solid #d5dbe2; }
-QLabel#legend { color: #3d4754; }
-QStatusBar QLabel#differences { color: #b0245f; padding: 0 10px; }
-QStatusBar QLabel#cursor { color: #3d4754; padding: 0 6px 0 10px; border-left: 1px solid #cfd5dc; }
-QStatusBar QLabel#coverage { color: #c2255c; padding: 0 10px; }
-QToolBar#drawingTools { spacing: 2px; padding: 1px 4px; }
-"""
-ERROR_STYLE = "color: #c92a2a;"
-
-
-def _section(text: str, parent=None) -> QLabel:
-    label = QLabel(text.upper(), parent)
-    label.setObjectName("section")
-    font = label.font()
-    if font.pointSizeF() > 0:
-        font.setPointSizeF(font.pointSizeF() * 0.85)
-    font.setLetterSpacing(font.SpacingType.PercentageSpacing, 108)
-    label.setFont(font)
-    return label
-
-
-def _legend_chip(color: str, fill: bool) -> QLabel:
-    label = QLabel()
-    label.setPixmap(_chip_pixmap(color, fill))
-    return label
-
-
-def _chip_pixmap(color: str, fill: bool) -> QPixmap:
-    pixmap = QPixmap(14, 14)
-    pixmap.fill(Qt.GlobalColor.transparent)
-    painter = QPainter(pixmap)
-    if fill:
-        painter.fillRect(1, 1, 12, 12, QColor(color))
-    else:
-        pen = painter.pen()
-        pen.setColor(QColor(color))
-        pen.setWidth(3)
-        painter.setPen(pen)
-        painter.drawRect(2, 2, 10, 10)
-    painter.end()
-    return pixmap
-
-
-def _legend(rows) -> QWidget:
-    """Chips with their meaning: (colour, filled?, text) per row;
-    ``widget.chips`` keeps (chip, filled?) to recolour them."""
-    widget = QWidget()
-    widget.chips = []
-    box = QVBoxLayout(widget)
-    box.setSpacing(2)
-    box.setContentsMargins(0, 4, 0, 0)
-    for color, fill, text in rows:
-        row = QHBoxLayout()
-        row.setSpacing(6)
-        chip = _legend_chip(color, fill)
-        widget.chips.append((chip, fill))
-        row.addWidget(chip)
-        label = QLabel(text)
-        label.setObjectName("legend")
-        row.addWidget(label, 1)
-        box.addLayout(row)
-    return widget
-
-
-# The highlight legend: (Palette field, filled chip?, meaning).
-LEGEND = (("current", False, "pixel or span of this step"),
-          ("candidate", False, "candidates of the decision"),
-          ("difference", False, "differs from previous algorithm"),
-          ("overdraw", True, "written more than once"))
-
-
-def _legend_rows(palette) -> list:
-    return [(getattr(palette, field), fill, text) for field, fill, text in LEGEND]
-
-
-def _coverage_rows(palette) -> list:
-    return [(color, True, text) for color, text in zip(palette.coverage, COVERAGE_LEVELS)]
-
-
-def _recolor(legend, rows) -> None:
-    for (chip, fill), (color, _fill, _text) in zip(legend.chips, rows):
-        chip.setPixmap(_chip_pixmap(color, fill))
-
-
 def _is_pixel(value) -> bool:
     return isinstance(value, tuple) and len(value) == 2 and all(
         isinstance(v, int) and not isinstance(v, bool) for v in value)
 
 
-def app_icon() -> QIcon:
-    """A staircase of pixels under a thin ideal line."""
-    icon = QIcon()
-    for size in (16, 32, 64, 128):
-        pixmap = QPixmap(size, size)
-        pixmap.fill(QColor(PALETTE.background))
-        painter = QPainter(pixmap)
-        cell = size / 8
-        ink = QColor(PALETTE.ink)
-        for k in range(8):
-            y = round(k * 5 / 8)
-            painter.fillRect(QRect(round(k * cell), round(size - (y + 2) * cell - cell),
-                                   max(1, round(cell)), max(1, round(cell))), ink)
-        pen = painter.pen()
-        pen.setColor(QColor(PALETTE.primitive))
-        pen.setWidthF(max(1.0, size / 24))
-        painter.setPen(pen)
-        painter.setRenderHint(QPainter.RenderHint.Antialiasing)
-        painter.drawLine(round(cell / 2), round(size - 2.5 * cell),
-                         round(size - cell / 2), round(size - 2.5 * cell - 7 * cell * 5 / 8))
-        painter.end()
-        icon.addPixmap(pixmap)
-    return icon
-
-
-class MainWindow(QMainWindow):
-    """RasterLab's main window."""
+class MainWindow(WindowLayout, WindowMenus, DepthAndAccuracy, QMainWindow):
+    """RasterLab's main window. Its layout, menus and depth and accuracy
+    displays are written in the modules of its base classes."""
 
     def __init__(self, algorithm: str | None = None, points=None, options: dict | None = None,
                  grid=DEMO_GRID, parent=None):
@@ -214,7 +65,7 @@ class MainWindow(QMainWindow):
         self.setStyleSheet(STYLE)
         self.palette_ = PALETTE
         self.player = Player(self)
-        self.history = EditHistory()
+        self.history = self.player.session.history  # undo and redo of scene edits
         self._empty_image = None
         self._last_hover = None
         self._error = ""  # the last refusal, shown until the next good change
@@ -224,6 +75,9 @@ class MainWindow(QMainWindow):
         self._tables_for = None  # the algorithm the tables dock was last shown for
         self._depth = None  # (clear, near, far) of a run that keeps a depth buffer
         self._accuracy = None  # AccuracyCache of the antialiasing run on show
+        # Parts a running program adds (see add_file_actions and below).
+        self.file_actions = self.report_entry = self.crash_handler = self.recovery = None
+        self.bookmarks: list = []  # the scene's bookmarks while there are no file actions
 
         self._build_centre()
         self._build_scene_dock()
@@ -248,289 +102,60 @@ class MainWindow(QMainWindow):
         self.resizeDocks([self.code_dock, self.variables_dock], [330, 430], Qt.Orientation.Vertical)
         if self._tables:
             self._make_room_for_tables()
-        # Hook: stored preferences, Edit > Preferences (app/gui/preferences.py).
-        from app.gui.preferences import install_preferences
-        install_preferences(self)
-        from app.gui.compare_window import install_compare  # View > Compare… (Ctrl+K)
-        install_compare(self)
-        from app.gui.gallery import install_gallery  # Help > Hard cases… (app/gui/gallery.py)
-        install_gallery(self)
-        from app.gui.breakpoint_actions import (install_breakpoints)  # step units, breakpoints, bookmarks
-        install_breakpoints(self)
-        from app.gui.inspector_dock import install_inspector  # View > Pixel inspector (Ctrl+I)
-        install_inspector(self)
-        from app.gui.recording import install_recording  # long runs: progress bar and Cancel (Esc)
-        install_recording(self)
+        self._build_parts()
+
+    def _build_parts(self) -> None:
+        """The parts written in modules of their own, each given this window."""
+        from app.gui.breakpoint_actions import Breakpoints
+        from app.gui.compare_window import compare_entry
+        from app.gui.gallery import gallery_entry
+        from app.gui.inspector_dock import InspectorDock
+        from app.gui.preferences import Preferences, PreferencesController
+        from app.gui.recording import RecordingStatus
+        # Stored preferences, Edit > Preferences (Ctrl+,) and View > Grid lines.
+        self.preferences = PreferencesController(self, Preferences())
+        self.compare_entry = compare_entry(self)  # View > Compare… (Ctrl+K)
+        self.gallery_entry = gallery_entry(self)  # Help > Hard cases…
+        self.breakpoints = Breakpoints(self)  # step units, breakpoints, bookmarks
+        self.inspector = InspectorDock(self)  # View > Pixel inspector (Ctrl+I)
+        self.recording_status = RecordingStatus(self)  # long runs: progress bar and Cancel
+
+    # Parts a running program adds (``launch``); tests add them where they need them.
+    def add_file_actions(self, settings=None):
+        """Scene files and export in the File menu (app/gui/file_actions.py);
+        ``settings`` keeps the recent files."""
+        from app.gui.file_actions import FileActions
+        self.file_actions = FileActions(self, settings)
+        return self.file_actions
+
+    def add_report_entry(self):
+        """Run > Report… (app/gui/report_window.py)."""
+        from app.gui.report_window import report_entry
+        self.report_entry = report_entry(self)
+        return self.report_entry
+
+    def add_crash_handler(self, folder=None):
+        """Uncaught errors logged and shown, Help > Open log folder (app/gui/crash.py)."""
+        from app.gui.crash import CrashHandler
+        self.crash_handler = CrashHandler(self, folder).install()
+        self.crash_handler.add_menu_entry(self.menus["help"])
+        return self.crash_handler
+
+    def add_recovery(self, folder=None, **timing):
+        """Unsaved work kept and offered back after a crash (app/gui/recovery.py;
+        needs the file actions). ``timing``: ``delay_ms``, ``poll_ms``."""
+        from app.gui.recovery import Recovery
+        self.recovery = Recovery(self, folder, **timing)
+        return self.recovery
 
     # ----------------------------------------------------------- building
-    def _build_centre(self) -> None:
-        self.grid = PixelGridView(PALETTE, OUTLINE_STYLE, self)
-        self.grid.setObjectName("pixelGrid")
-        self.transport = TransportBar(self)
-        centre = QWidget(self)
-        layout = QVBoxLayout(centre)
-        layout.setContentsMargins(0, 0, 0, 0)
-        layout.setSpacing(0)
-        layout.addWidget(self.grid, 1)
-        layout.addWidget(self.transport)
-        self.setCentralWidget(centre)
-
-    def _build_scene_dock(self) -> None:
-        panel = QWidget()
-        layout = QVBoxLayout(panel)
-        layout.setContentsMargins(10, 4, 10, 10)
-        layout.setSpacing(6)
-
-        layout.addWidget(_section("Algorithm"))
-        self.picker = AlgorithmPicker(panel)
-        self.picker.setMinimumHeight(150)
-        self.picker.setMaximumHeight(260)
-        layout.addWidget(self.picker)
-
-        layout.addWidget(_section("Options"))
-        self.options = OptionsEditor(panel)
-        layout.addWidget(self.options)
-
-        layout.addWidget(_section("Points"))
-        self.points = VertexTable(panel)  # one row per vertex: x, y, colour, z, w
-        layout.addWidget(self.points)
-        self.hint = QLabel(panel)
-        self.hint.setObjectName("summary")
-        self.hint.setWordWrap(True)
-        layout.addWidget(self.hint)
-
-        layout.addWidget(_section("Grid"))
-        self.grid_editor = GridEditor(MAX_GRID, panel)
-        layout.addWidget(self.grid_editor)
-        fit = QPushButton("Fit grid to view", panel)
-        fit.setToolTip("Zoom and pan so that the whole grid is in view (F)")
-        fit.setFocusPolicy(Qt.FocusPolicy.NoFocus)
-        fit.clicked.connect(self.grid.fit)
-        layout.addWidget(fit)
-
-        layout.addWidget(_section("Display"))
-        self.show_primitive = QCheckBox("Ideal primitive", panel)
-        self.show_primitive.setChecked(True)
-        self.show_primitive.setToolTip("Draw the exact primitive the pixels stand for")
-        self.compare = QCheckBox("Compare with previous algorithm", panel)
-        self.compare.setChecked(True)
-        self.compare.setToolTip("After switching algorithm, outline the pixels where the "
-                                "previous algorithm's final result differs")
-        self.coverage = QCheckBox("Coverage counts", panel)
-        self.coverage.setToolTip("Colour every pixel by how many times it has been written "
-                                 "so far (0, 1, 2, 3+): overlaps in a mesh stand out")
-        for box in (self.show_primitive, self.compare, self.coverage):
-            layout.addWidget(box)
-        self.legend = _legend(_legend_rows(PALETTE))
-        self.coverage_legend = _legend(_coverage_rows(PALETTE))
-        self.coverage_legend.hide()
-        layout.addWidget(self.legend)
-        layout.addWidget(self.coverage_legend)
-        layout.addStretch(1)
-
-        scroll = QScrollArea()
-        scroll.setWidget(panel)
-        scroll.setWidgetResizable(True)
-        scroll.setFrameShape(QFrame.Shape.NoFrame)
-        scroll.setHorizontalScrollBarPolicy(Qt.ScrollBarPolicy.ScrollBarAlwaysOff)
-        self.scene_dock = panel_dock("Scene", "sceneDock", scroll, self)
-        self.addDockWidget(Qt.DockWidgetArea.LeftDockWidgetArea, self.scene_dock)
-        panel.setMinimumWidth(240)
-
-    def _build_code_dock(self) -> None:
-        self.code = CodePanel(self)
-        self.code_dock = panel_dock("Pseudo-code", "codeDock", self.code, self)
-        self.variables = VariablesPanel(self)
-        self.variables_dock = panel_dock("Variables", "variablesDock", self.variables, self)
-        self.tables = TablesPanel(self)
-        self.tables_dock = panel_dock("Tables", "tablesDock", self.tables, self)
-        for dock in (self.code_dock, self.variables_dock):
-            self.addDockWidget(Qt.DockWidgetArea.RightDockWidgetArea, dock)
-        self.splitDockWidget(self.code_dock, self.variables_dock, Qt.Orientation.Vertical)
-        # Tables are wide and short: under the grid, side by side, between
-        # the scene and the pseudo-code columns (which keep their height).
-        self.setCorner(Qt.Corner.BottomLeftCorner, Qt.DockWidgetArea.LeftDockWidgetArea)
-        self.setCorner(Qt.Corner.BottomRightCorner, Qt.DockWidgetArea.RightDockWidgetArea)
-        self.addDockWidget(Qt.DockWidgetArea.BottomDockWidgetArea, self.tables_dock)
-        across = (Qt.DockWidgetArea.BottomDockWidgetArea, Qt.DockWidgetArea.TopDockWidgetArea)
-        self.tables_dock.dockLocationChanged.connect(
-            lambda area: self.tables.set_side_by_side(area in across))
-        self.tables.set_side_by_side(True)
-        self.tables_dock.hide()
-        # The depth buffer beside the colour buffer, for runs that keep one.
-        self.depth_view = DepthView(PALETTE, self)
-        self.depth_dock = panel_dock("Depth buffer", "depthDock", self.depth_view, self)
-        self.addDockWidget(Qt.DockWidgetArea.RightDockWidgetArea, self.depth_dock)
-        self.splitDockWidget(self.code_dock, self.depth_dock, Qt.Orientation.Vertical)
-        self.depth_dock.hide()
-        self.depth_dock.visibilityChanged.connect(self._depth_dock_shown)
-
-    def _build_status(self) -> None:
-        status = self.statusBar()
-        self.message = QLabel(self)
-        self.message.setObjectName("message")
-        self.message.setSizePolicy(QSizePolicy.Policy.Ignored, QSizePolicy.Policy.Preferred)
-        self.coverage_label = QLabel(self)
-        self.coverage_label.setObjectName("coverage")
-        self.difference_label = QLabel(self)
-        self.difference_label.setObjectName("differences")
-        self.cursor_label = QLabel(self)
-        self.cursor_label.setObjectName("cursor")
-        self.cursor_label.setMinimumWidth(210)
-        status.addWidget(self.message, 1)
-        status.addPermanentWidget(self.coverage_label)
-        self.error_label = QLabel(self)
-        self.error_label.setObjectName("coverageError")
-        status.addPermanentWidget(self.error_label)
-        status.addPermanentWidget(self.difference_label)
-        status.addPermanentWidget(self.cursor_label)
-
-    def _build_actions(self) -> None:
-        bar = self.menuBar()
-        file_menu = bar.addMenu("&File")
-        # Other modules add their entries to these menus by name.
-        self.menus = {"file": file_menu}
-        quit_action = file_menu.addAction("&Quit")
-        quit_action.setShortcut(QKeySequence("Ctrl+Q"))  # what StandardKey.Quit is on Linux
-        quit_action.triggered.connect(self.close)
-        self.actions_: dict[str, QAction] = {}
-        for key, title in (("edit", "&Edit"), ("view", "&View"), ("run", "&Run")):
-            self.menus[key] = bar.addMenu(title)
-        self._build_edit_menu(self.menus["edit"])
-        self._build_playback_menu(self.menus["run"])
-        self._build_view_menu(self.menus["view"])
-        self._build_toolbar()
-
-        help_menu = self.menus["help"] = bar.addMenu("&Help")
-        keys = help_menu.addAction("&Keyboard shortcuts")
-        keys.setShortcut(QKeySequence("F1"))
-        keys.triggered.connect(self.show_shortcuts)
-        about = help_menu.addAction(f"&About {APP_NAME}")
-        about.triggered.connect(self.show_about)
-
-    def _action(self, menu, key, text, shortcut, slot, context=Qt.ShortcutContext.WindowShortcut,
-                owner=None) -> QAction:
-        act = QAction(text, self)
-        if shortcut:
-            act.setShortcut(QKeySequence(shortcut))
-            keys = act.shortcut().toString(QKeySequence.SequenceFormat.NativeText)
-            plain = text.replace("&", "").rstrip("\u2026")
-            act.setToolTip(f"{plain} ({keys})")
-        # Shortcuts work wherever the focus is in the window; editors that
-        # need the key for typing (spin boxes, text fields) keep it.
-        act.setShortcutContext(context)
-        act.triggered.connect(slot)
-        menu.addAction(act)
-        (owner or self).addAction(act)
-        self.actions_[key] = act
-        return act
-
-    def _build_edit_menu(self, menu) -> None:
-        self._action(menu, "undo", "&Undo", "Ctrl+Z", self.undo)
-        redo = self._action(menu, "redo", "&Redo", "Ctrl+Shift+Z", self.redo)
-        redo.setShortcuts([QKeySequence("Ctrl+Shift+Z"), QKeySequence("Ctrl+Y")])
-        menu.addSeparator()
-        # Enter and Backspace belong to the grid only: elsewhere they confirm
-        # a typed number or delete a character.
-        grid_only = Qt.ShortcutContext.WidgetWithChildrenShortcut
-        self._action(menu, "close", "&Close the contour", "Return", self.grid.close_contour,
-                     grid_only, self.grid)
-        self._action(menu, "remove", "Remove the &last point", "Backspace",
-                     self.grid.remove_last_point, grid_only, self.grid)
-        self._action(menu, "clear", "C&lear points", None, self.clear_points).setToolTip(
-            "Remove every point (Ctrl+Z brings them back)")
-        menu.addSeparator()
-        group = QActionGroup(self)
-        draw = self._action(menu, "draw", "&Draw points", None,
-                            lambda: self.set_tool(DRAW))
-        seed = self._action(menu, "marker", "Place the &seed", "S",
-                            lambda: self.set_tool(MARKER if self.grid.tool != MARKER else DRAW))
-        for act in (draw, seed):
-            act.setCheckable(True)
-            group.addAction(act)
-        draw.setChecked(True)
-        draw.setToolTip("Clicks on the grid place points; drag a handle to move one")
-
-    def _build_playback_menu(self, play) -> None:
-        self._action(play, "play", "Play / Pause", "Space", self.player.toggle)
-        play.addSeparator()
-        self._action(play, "forward", "Step forward", "Right", self.player.forward)
-        self._action(play, "back", "Step back", "Left", self.player.back)
-        self._action(play, "forward10", "Ten steps forward", "Shift+Right",
-                     lambda: self.player.step(10))
-        self._action(play, "back10", "Ten steps back", "Shift+Left", lambda: self.player.step(-10))
-        play.addSeparator()
-        self._action(play, "first", "First step", "Home", self.player.first)
-        self._action(play, "last", "Last step", "End", self.player.to_last)
-
-    def _build_view_menu(self, view) -> None:
-        fit = view.addAction("Fit grid to view")
-        fit.setShortcut(QKeySequence("F"))
-        fit.triggered.connect(self.grid.fit)
-        self.addAction(fit)
-        self.y_down_action = view.addAction("Origin top-left, y down")
-        self.y_down_action.setCheckable(True)
-        self.y_down_action.setToolTip("Pixel (0, 0) at the top-left, y growing downwards "
-                                      "(Ctrl+Z takes it back)")
-        # Connected to set_y_down through the undo history (app/gui/edits.py).
-        for box, text, key in ((self.show_primitive, "Ideal primitive", ""),
-                               (self.compare, "Compare with previous algorithm", ""),
-                               (self.coverage, "Coverage counts", "C")):
-            act = view.addAction(text)
-            act.setCheckable(True)
-            act.setChecked(box.isChecked())
-            if key:
-                act.setShortcut(QKeySequence(key))
-                self.addAction(act)
-            act.toggled.connect(box.setChecked)
-            box.toggled.connect(act.setChecked)
-            self.actions_[f"view-{text}"] = act
-        self.coverage_action = self.actions_["view-Coverage counts"]
-        self.coverage_action.setToolTip(self.coverage.toolTip() + " (C)")
-        self.depth_action = view.addAction("Depth buffer")
-        self.depth_action.setCheckable(True)
-        self.depth_action.setChecked(True)
-        self.depth_action.setToolTip("Show the depth buffer (near dark, far light) of runs "
-                                     "that keep one")
-        self.depth_action.toggled.connect(self._depth_toggled)
-        self.actions_["view-Depth buffer"] = self.depth_action
-        self.error_action = view.addAction("Coverage error")
-        self.error_action.setCheckable(True)
-        self.error_action.setToolTip("Colour each pixel by |coverage - exact coverage| "
-                                     "(white: none, red: the run's largest)")
-        self.error_action.toggled.connect(lambda _on: self.show_frame())
-        self.actions_["view-Coverage error"] = self.error_action
-        view.addSeparator()
-        for dock in (self.scene_dock, self.code_dock, self.variables_dock, self.tables_dock):
-            view.addAction(dock.toggleViewAction())
-
-    def _build_toolbar(self) -> None:
-        bar = QToolBar("Drawing", self)
-        bar.setObjectName("drawingTools")
-        bar.setMovable(False)
-        bar.setToolButtonStyle(Qt.ToolButtonStyle.ToolButtonTextOnly)
-        for key in ("draw", "marker"):
-            bar.addAction(self.actions_[key])
-        bar.addSeparator()
-        for key in ("close", "remove", "clear", "undo", "redo"):
-            bar.addAction(self.actions_[key])
-        bar.addSeparator()
-        bar.addAction(self.coverage_action)
-        for act in bar.actions():
-            button = bar.widgetForAction(act)
-            if button is not None:
-                # The buttons never take the focus: Space and the arrows stay
-                # with playback, Enter and Backspace with the grid.
-                button.setFocusPolicy(Qt.FocusPolicy.NoFocus)
-        self.toolbar = bar
-        self.addToolBar(Qt.ToolBarArea.TopToolBarArea, bar)
-
     def _connect(self) -> None:
         p = self.player
         p.traceChanged.connect(self._trace_changed)
         p.frameChanged.connect(self._frame_changed)
         p.playingChanged.connect(self.transport.set_playing)
         p.comparisonChanged.connect(self._comparison_changed)
+        p.session.message.connect(self.say_error)
 
         t = self.transport
         t.firstRequested.connect(p.first)
@@ -546,8 +171,8 @@ class MainWindow(QMainWindow):
         g.hoverChanged.connect(self._hover)
         # Scene edits (grid gestures, the vertex table, the algorithm, options,
         # grid size, origin) go through the undo history: app/gui/edits.py.
-        from app.gui.edits import install_edits
-        install_edits(self)
+        from app.gui.edits import SceneEdits
+        self.edits = SceneEdits(self)
         self.show_primitive.toggled.connect(g.set_show_primitive)
         self.compare.toggled.connect(p.set_compare)
         self.coverage.toggled.connect(self._coverage_toggled)
@@ -561,18 +186,18 @@ class MainWindow(QMainWindow):
         self.player.set_scene(algorithm, points, options, grid)
         self.history.clear()
         self.edits.refresh()
-        self._scene_changed()
+        self.follow_scene()
 
     def set_algorithm(self, name: str) -> None:
         try:
             self.player.set_algorithm(name)
         except InputError as error:
-            self._say_error(str(error))
+            self.say_error(str(error))
             self.picker.set_current(self.player.spec.name)
             return
-        self._scene_changed()
+        self.follow_scene()
         if self.player.refusal:
-            self._say_error(f"{self.player.spec.title} refused the points drawn before "
+            self.say_error(f"{self.player.spec.title} refused the points drawn before "
                             f"({self.player.refusal}); showing an example shape instead.")
 
     def set_option(self, name: str, value) -> None:
@@ -581,7 +206,7 @@ class MainWindow(QMainWindow):
         except InputError as error:
             self.options.show_error(name, str(error))
             self.options.set_values({name: self.player.options[name]})
-            self._say_error(str(error))
+            self.say_error(str(error))
             return
         self.options.accept(name, self.player.options[name])
 
@@ -590,7 +215,7 @@ class MainWindow(QMainWindow):
         try:
             self.player.set_options(values)
         except InputError as error:
-            self._say_error(str(error))
+            self.say_error(str(error))
             for name in values:
                 self.options.show_error(name, str(error))
             return
@@ -602,13 +227,13 @@ class MainWindow(QMainWindow):
         try:
             self.player.set_points(points, breaks)
         except InputError as error:
-            self._say_error(str(error))
-        self._sync_points(keep_open=True)
+            self.say_error(str(error))
+        self.sync_points(keep_open=True)
 
     def clear_points(self) -> None:
         self.edits.once(lambda: self.set_points([], ()))
 
-    def _sync_points(self, keep_open: bool = False) -> None:
+    def sync_points(self, keep_open: bool = False) -> None:
         player = self.player
         self.grid.set_points(player.points, player.breaks, keep_open)
         self.points.set_points(player.points, self._labels(), player.breaks)
@@ -619,13 +244,13 @@ class MainWindow(QMainWindow):
         return point_labels(drawing_mode(spec), spec.inputs.count, len(player.points),
                             player.breaks, spec.inputs.names)
 
-    def _radius_dragged(self, rx: float, ry: float) -> None:
+    def drag_radius(self, rx: float, ry: float) -> None:
         spec = self.player.spec
         names = circle_options(spec)
         self._set_grid_options({name: clamp_option(spec.option(name), value)
                                 for name, value in zip(names, (rx, ry))})
 
-    def _marker_placed(self, pixel) -> None:
+    def place_marker(self, pixel) -> None:
         option = marker_option(self.player.spec)
         if option is not None:
             self._set_grid_options({option.name: (int(pixel[0]), int(pixel[1]))})
@@ -641,26 +266,27 @@ class MainWindow(QMainWindow):
         try:
             self.player.set_grid(width, height)
         except InputError as error:
-            self._say_error(str(error))
-        self._sync_grid()
+            self.say_error(str(error))
+        self.sync_grid()
 
-    def _sync_grid(self) -> None:
+    def sync_grid(self) -> None:
         """The grid's editors and view follow the player's grid and points."""
         self.grid_editor.set_grid(*self.player.grid)
         self.points.set_grid(*self.player.grid)
         self.grid.set_grid(*self.player.grid)
-        self._sync_points()
+        self.sync_points()
 
     def set_palette(self, palette) -> None:
         """Draw the grid, the legends and new frames in ``palette``'s colours."""
         self.palette_ = palette
         self._empty_image = None  # composed with the old colours
         self.grid.set_palette(palette)
-        _recolor(self.legend, _legend_rows(palette))
-        _recolor(self.coverage_legend, _coverage_rows(palette))
+        recolor(self.legend, legend_rows(palette))
+        recolor(self.coverage_legend, coverage_rows(palette))
 
     def set_y_down(self, y_down: bool) -> None:
         """Origin top-left with y down (True), or bottom-left with y up."""
+        self.player.session.set_origin(y_down)
         self.grid.set_y_down(y_down)
         self.depth_view.set_y_down(y_down)
         self.grid_editor.set_y_down(y_down)
@@ -677,7 +303,7 @@ class MainWindow(QMainWindow):
     def redo(self) -> None:
         self.edits.redo()
 
-    def _scene_changed(self) -> None:
+    def follow_scene(self) -> None:
         """Editors follow the player's scene (after an algorithm switch, say)."""
         spec, player = self.player.spec, self.player
         mode = drawing_mode(spec)
@@ -701,7 +327,7 @@ class MainWindow(QMainWindow):
             self.set_tool(DRAW)
         self.actions_["close"].setVisible(mode == CONTOURS)
         self.hint.setText(tool_hint(spec))
-        self._sync_points()
+        self.sync_points()
         self._show_inputs()
 
     def _show_inputs(self) -> None:
@@ -844,85 +470,6 @@ class MainWindow(QMainWindow):
              + (f" ({more:,} three times or more)" if more else ""))
             + (f" · {cracks:,} crack{'s' if cracks != 1 else ''} outlined" if cracks else ""))
 
-    # ------------------------------------------- depth, samples, accuracy
-    def _prepare_depth_and_accuracy(self) -> None:
-        """Per run: the depth view's scale, and the exact coverage of an
-        antialiasing run (worked out when first needed, then kept)."""
-        player, trace = self.player, self.player.trace
-        self._depth = None
-        self._accuracy = None
-        if trace is not None and trace.start.depth_value is not None:
-            clear = float(trace.start.constants.get("clear_depth",
-                                                    player.options.get("clear_depth", 1.0)))
-            self._depth = (clear, *depth_range(trace.series(trace.start.depth_value), clear))
-        if trace is not None and player.spec.family == "antialias" \
-                and trace.start.pixel_value is not None:
-            self._accuracy = AccuracyCache(player.spec, player.points, player.options,
-                                           player.grid, trace)
-            if not self._accuracy.available:
-                self._accuracy = None
-        self.error_action.setEnabled(self._accuracy is not None)
-        self.depth_action.setEnabled(self._depth is not None)
-        self._place_depth_dock()
-
-    def _place_depth_dock(self) -> None:
-        want = self._depth is not None and self.depth_action.isChecked()
-        if want != self.depth_dock.isVisibleTo(self):
-            self.depth_dock.setVisible(want)
-
-    def _depth_toggled(self, on: bool) -> None:
-        self._place_depth_dock()
-        self.show_frame()
-
-    def _depth_dock_shown(self, visible: bool) -> None:
-        # Closing the dock by its own button turns the View toggle off.
-        if not visible and self._depth is not None and not self.depth_dock.isVisibleTo(self):
-            self.depth_action.blockSignals(True)
-            self.depth_action.setChecked(False)
-            self.depth_action.blockSignals(False)
-
-    def _show_depth(self, state) -> None:
-        if self._depth is None or not self.depth_dock.isVisibleTo(self):
-            return
-        clear, near, far = self._depth
-        depth = state.raster.depth
-        if depth is None:
-            depth = np.full(state.raster.counts.shape, np.nan)
-        self.depth_view.set_y_down(self.grid.y_down)
-        self.depth_view.set_image(depth_image(depth, clear, near, far), near, far)
-
-    def _show_samples(self, state) -> None:
-        samples = frame_view.pixel_samples(self.player.trace, state.index)
-        if samples is None:
-            self.grid.set_samples()
-        else:
-            self.grid.set_samples(samples.xs, samples.ys, samples.hits, samples.current)
-
-    def _show_error_summary(self) -> None:
-        accuracy = self._accuracy if self.error_action.isChecked() else None
-        if accuracy is None:
-            self.error_label.setText("")
-            return
-        self.error_label.setText(f"Coverage error: RMS {accuracy.rms:.4f} \u00b7 "
-                                 f"max {accuracy.max:.4f}")
-        self.error_label.setToolTip("|coverage - exact coverage| per pixel; the RMS is taken "
-                                    "over the pixels the run or the exact shape covers")
-
-    def _accuracy_rows(self, state, rows) -> list:
-        """Exact coverage and error of the step's pixel, unless the
-        algorithm's own explanation already gives them."""
-        accuracy, pixel = self._accuracy, state.pixel
-        if accuracy is None or pixel is None or any(name == "exact coverage"
-                                                    for name, _ in rows):
-            return []
-        x, y = pixel
-        if not state.raster.inside(x, y):
-            return []
-        exact = float(accuracy.exact[y, x])
-        final = float(accuracy.estimate[y, x])
-        return [("exact coverage", f"{exact:.6f}"),
-                ("error (final)", f"{final - exact:+.6f}")]
-
     def _show_cracks(self, trace, index: int) -> None:
         """With coverage counts on, outline the cracks a mesh run reports
         (its "cracks" table) instead of the compared run's differences."""
@@ -974,7 +521,7 @@ class MainWindow(QMainWindow):
         self.cursor_label.setText(text)
 
     # ----------------------------------------------------------- messages
-    def _say_error(self, text: str) -> None:
+    def say_error(self, text: str) -> None:
         """A refusal: shown (in red) until the next change that works."""
         self._error = text
         self._update_message()
@@ -1027,68 +574,6 @@ class MainWindow(QMainWindow):
         super().closeEvent(event)
 
 
-class ShortcutsDialog(QDialog):
-    def __init__(self, parent=None, rows=GESTURES):
-        super().__init__(parent)
-        self.setWindowTitle("Keyboard shortcuts")
-        self.rows = list(rows)
-        table = QTableWidget(len(self.rows), 2, self)
-        table.setHorizontalHeaderLabels(["Key", "Action"])
-        table.verticalHeader().setVisible(False)
-        table.setEditTriggers(QTableWidget.EditTrigger.NoEditTriggers)
-        table.setSelectionMode(QTableWidget.SelectionMode.NoSelection)
-        table.setShowGrid(False)
-        table.setAlternatingRowColors(True)
-        for row, (key, text) in enumerate(self.rows):
-            item = QTableWidgetItem(key)
-            font = item.font()
-            font.setBold(True)
-            item.setFont(font)
-            table.setItem(row, 0, item)
-            table.setItem(row, 1, QTableWidgetItem(text))
-        table.horizontalHeader().setSectionResizeMode(0, QHeaderView.ResizeMode.ResizeToContents)
-        table.horizontalHeader().setSectionResizeMode(1, QHeaderView.ResizeMode.Stretch)
-        note = QLabel("Playback keys work wherever the focus is, except while you are typing "
-                      "in a number or text field.", self)
-        note.setWordWrap(True)
-        buttons = QDialogButtonBox(QDialogButtonBox.StandardButton.Close, self)
-        buttons.rejected.connect(self.reject)
-        layout = QVBoxLayout(self)
-        layout.addWidget(table)
-        layout.addWidget(note)
-        layout.addWidget(buttons)
-        self.resize(640, 680)
-
-
-class AccuracyCache:
-    """How far an antialiasing run's coverages are from the exact ones:
-    worked out once per run, on first use."""
-
-    def __init__(self, spec, points, options, grid, trace):
-        self._args = (spec, points, options, grid)
-        self.trace = trace
-        self._done = False
-        self.available = spec.name != "aa-temporal" and len(points) > 0
-
-    def _compute(self) -> None:
-        if self._done:
-            return
-        self._done = True
-        exact = frame_view.exact_reference(*self._args)
-        estimate = frame_view.run_coverage(self.trace)
-        if exact is None or estimate is None or exact.shape != estimate.shape:
-            exact = np.zeros((self.trace.height, self.trace.width))
-            estimate = exact
-        self._exact, self._estimate = exact, estimate
-        self._rms, self._max, self._error = error_stats(estimate, exact)
-
-    def __getattr__(self, name):
-        if name in ("exact", "estimate", "rms", "max", "error"):
-            self._compute()
-            return object.__getattribute__(self, "_" + name)
-        raise AttributeError(name)
-
-
 def _series_name(trace) -> str | None:
     """The value to plot over the run: the decision variable, else the first
     named value that has finite values."""
@@ -1121,19 +606,12 @@ def launch(argv=None) -> int:
         app.setStyle("Fusion")
     app.setWindowIcon(app_icon())
     window = MainWindow()
-    # Hook: scene files and export (File menu) come from app/gui/file_actions.py.
-    from app.gui.file_actions import install_file_actions
-    from app.gui.report_window import install_report_action
-    install_file_actions(window)
-    install_report_action(window)
+    window.add_file_actions()
+    window.add_report_entry()
     from app.gui.preferences import reopen_last_scene
     reopen_last_scene(window)
-    # Hook: uncaught errors are logged and shown (app/gui/crash.py); unsaved
-    # work is kept and offered back after a crash (app/gui/recovery.py).
-    from app.gui.crash import install_crash_handler
-    from app.gui.recovery import install_recovery
-    install_crash_handler(window)
-    recovery = install_recovery(window)
+    window.add_crash_handler()
+    recovery = window.add_recovery()
     window.show()
     recovery.offer()
     return app.exec()

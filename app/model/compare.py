@@ -1,8 +1,8 @@
 """Compare mode: several algorithms on the same primitives, stepped together.
 
 A *pane* is an algorithm with the options it sets; it runs on shared
-``Primitives`` (points, contour breaks, grid, and the options of the scene
-they came from). Options the scene changed from their defaults carry over
+primitives, a ``Scene`` (points, grid, and the options of the scene they
+came from). Options the scene changed from their defaults carry over
 to panes whose algorithm has an option of the same name and kind (a
 circle's radius, a triangle's colours and depths), as they do when the
 main window switches algorithm; the pane's own options win.
@@ -29,7 +29,6 @@ from __future__ import annotations
 import math
 import re
 from dataclasses import dataclass
-from pathlib import Path
 
 import numpy as np
 
@@ -38,7 +37,8 @@ from algorithms.errors import InputError
 from algorithms.raster import Raster, check_grid
 
 from app.render import frame as frame_view, compose as render
-from app.model.inputs import flatten, split_contours
+from app.model.inputs import split_contours
+from app.model.scene import SHIPPED, Scene, load
 
 EXACT = "exact-coverage"
 EXACT_TITLE = "Exact coverage"
@@ -51,7 +51,6 @@ MIN_PANES, MAX_PANES = 2, 4
 # two ways to the same area).
 COVERAGE_TOLERANCE = 1e-9
 STEP_CAP = 2_000_000
-SCENES = Path(__file__).resolve().parents[2] / "resources" / "scenes"
 
 
 # ------------------------------------------------------------------ panes
@@ -123,43 +122,20 @@ def value_text(value) -> str:
 
 
 # -------------------------------------------------------------- primitives
-@dataclass(frozen=True)
-class Primitives:
-    """What panes run on: points in the shape ``source`` takes them (flat,
-    with ``breaks`` where contours start), the grid, and the options of the
-    scene they came from."""
-
-    source: str
-    points: tuple
-    breaks: tuple = ()
-    grid: tuple = (32, 24)
-    options: tuple = ()
-    title: str = ""
-
-    @classmethod
-    def of_player(cls, player) -> "Primitives":
-        """The main window's complete primitives (not a contour or a
-        triangle still being drawn)."""
-        spec = player.spec
-        points, breaks = _flat(spec, player.input_points())
-        return cls(spec.name, points, breaks, tuple(player.grid),
-                   tuple(sorted(_changed_options(spec, player.options).items())),
-                   "the main window's scene")
-
-    @classmethod
-    def of_scene(cls, scene) -> "Primitives":
-        """From an ``app.scene.Scene`` (a shipped or saved scene file)."""
-        spec = scene.spec
-        points, breaks = _flat(spec, scene.points)
-        options = spec.resolve(scene.options)
-        return cls(spec.name, points, breaks, (scene.width, scene.height),
-                   tuple(sorted(_changed_options(spec, options).items())), scene.title)
+def window_primitives(player) -> Scene:
+    """The main window's complete primitives (not a contour or a triangle
+    still being drawn) with the options it changed from their defaults."""
+    spec = player.spec
+    width, height = player.grid
+    return Scene(algorithm=spec.name, points=player.input_points(),
+                 options=_changed_options(spec, player.options), width=width, height=height,
+                 title="the main window's scene")
 
 
-def _flat(spec, points) -> tuple[tuple, tuple]:
-    """``inputs.flatten`` with the points as a tuple (Primitives is frozen)."""
-    flat, breaks = flatten(spec, points)
-    return tuple(flat), breaks
+def file_primitives(scene: Scene) -> Scene:
+    """A shipped or saved scene with only the options it changed from their defaults."""
+    spec = scene.spec
+    return scene.replace(options=_changed_options(spec, spec.resolve(scene.options)))
 
 
 def _changed_options(spec, options: dict) -> dict:
@@ -207,14 +183,14 @@ def _convert(point, integer: bool):
     return (float(x), float(y))
 
 
-def pane_options(pane: Pane, primitives: Primitives) -> dict:
+def pane_options(pane: Pane, primitives: Scene) -> dict:
     """The options a pane runs with: the scene's changed options where the
     pane's algorithm has them (same name and kind), then the pane's own."""
-    spec, source = spec_of(pane.algorithm), registry.get(primitives.source)
+    spec, source = spec_of(pane.algorithm), primitives.spec
     kinds = {o.name: o.kind for o in source.options}
     carried = {}
     for option in spec.options:
-        value = dict(primitives.options).get(option.name)
+        value = primitives.options.get(option.name)
         if value is not None and kinds.get(option.name) == option.kind:
             try:
                 carried[option.name] = option.check(value)
@@ -227,7 +203,7 @@ def pane_options(pane: Pane, primitives: Primitives) -> dict:
 class Run:
     """One pane recorded on the primitives, or the reason it could not be."""
 
-    def __init__(self, pane: Pane, primitives: Primitives, step_cap: int = STEP_CAP):
+    def __init__(self, pane: Pane, primitives: Scene, step_cap: int = STEP_CAP):
         self.pane = pane
         self.grid = tuple(primitives.grid)
         self.spec = None
@@ -241,7 +217,7 @@ class Run:
         try:
             self.spec = spec_of(pane.algorithm)
             self.options = pane_options(pane, primitives)
-            self.points = fit_points(registry.get(primitives.source), primitives.points,
+            self.points = fit_points(primitives.spec, primitives.flat,
                                      primitives.breaks, self.spec)
             self._record(step_cap)
         except InputError as error:
@@ -354,7 +330,7 @@ def exact_raster(coverage: np.ndarray) -> Raster:
     return raster
 
 
-def run_panes(panes, primitives: Primitives, step_cap: int = STEP_CAP) -> list[Run]:
+def run_panes(panes, primitives: Scene, step_cap: int = STEP_CAP) -> list[Run]:
     return [Run(pane, primitives, step_cap) for pane in panes]
 
 
@@ -485,22 +461,22 @@ class Preset:
     title: str
     description: str
     panes: tuple
-    example: object = None  # a Primitives, or a callable making one
+    example: object = None  # a Scene, or a callable making one
     follows: tuple = ()
     diff: tuple = (0, 1)  # the two panes the diff shows
 
-    def primitives(self, window_primitives: Primitives | None = None) -> Primitives:
+    def primitives(self, window_primitives: Scene | None = None) -> Scene:
         if window_primitives is not None and self.uses_window(window_primitives):
             return window_primitives
         example = self.example
         return example() if callable(example) else example
 
-    def uses_window(self, window_primitives: Primitives) -> bool:
-        spec = registry.get(window_primitives.source)
+    def uses_window(self, window_primitives: Scene) -> bool:
+        spec = window_primitives.spec
         return spec.name in self.follows or spec.family in self.follows
 
 
-def _mesh() -> Primitives:
+def _mesh() -> Scene:
     """A 4 x 3 block of squares, each cut along a diagonal: every vertex
     on a pixel centre, so that many centres lie exactly on shared edges."""
     points = []
@@ -510,13 +486,12 @@ def _mesh() -> Primitives:
             a, b = (xs[i], ys[j]), (xs[i + 1], ys[j])
             c, d = (xs[i + 1], ys[j + 1]), (xs[i], ys[j + 1])
             points += [a, b, c, a, c, d]
-    return Primitives("triangle-bbox", tuple(points), (), (32, 24), (),
-                      "a mesh of 24 triangles, vertices on pixel centres")
+    return Scene(algorithm="triangle-bbox", points=points,
+                 title="a mesh of 24 triangles, vertices on pixel centres")
 
 
-def _painter_scene() -> Primitives:
-    from app.model import scene
-    return Primitives.of_scene(scene.load(SCENES / "painter-cyclic.json"))
+def _painter_scene() -> Scene:
+    return file_primitives(load(SHIPPED / "painter-cyclic.json"))
 
 
 PRESETS = (
@@ -524,30 +499,30 @@ PRESETS = (
            "Slope 5/12 passes exactly half-way between two pixels twice: the rounding DDA "
            "goes up there, Bresenham's d <= 0 goes east.",
            (Pane.of("line-dda"), Pane.of("line-bresenham")),
-           Primitives("line-bresenham", ((4, 5), (28, 15)), (), (32, 24), (),
-                      "a segment of slope 5/12"),
+           Scene(algorithm="line-bresenham", points=((4, 5), (28, 15)),
+                 title="a segment of slope 5/12"),
            follows=("lines",)),
     Preset("dda-precision", "DDA float32 vs float64 on a long line",
            "Adding a float32 slope 4095 times drifts: some pixels land one row off the "
            "float64 result.",
            (Pane.of("line-dda", dtype="float32"), Pane.of("line-dda", dtype="float64")),
-           Primitives("line-dda", ((0, 0), (4095, 192)), (), (4096, 200), (),
-                      "a long shallow segment")),
+           Scene(algorithm="line-dda", points=((0, 0), (4095, 192)), width=4096, height=200,
+                 title="a long shallow segment")),
     Preset("circles", "Midpoint vs square-root circles",
            "The midpoint circle against y = sqrt(r^2 - x^2) with 8-way and 4-way symmetry "
            "(the 4-way one leaves gaps where the circle is steep).",
            (Pane.of("circle-midpoint"), Pane.of("circle-sqrt8"), Pane.of("circle-sqrt4")),
-           Primitives("circle-midpoint", ((16, 12),), (), (32, 24), (("radius", 10),),
-                      "a circle of radius 10"),
+           Scene(algorithm="circle-midpoint", points=((16, 12),), options={"radius": 10},
+                 title="a circle of radius 10"),
            follows=("circles",)),
     Preset("scanline-edge", "Scan-line fill vs edge-function fill",
            "The ET/AET scan line on two contours against the bounding-box edge-function "
            "fill on the same two triangles. Both follow the top-left rule, so they agree; "
            "set arithmetic=float32 or fill_rule=inclusive on a pane to see them part.",
            (Pane.of("polygon-scanline"), Pane.of("triangle-bbox")),
-           Primitives("triangle-bbox", ((3.5, 2.5), (27.5, 5.5), (12.5, 21.5),
-                                        (27.5, 5.5), (29.5, 19.5), (12.5, 21.5)), (), (32, 24),
-                      (), "two triangles sharing an edge"),
+           Scene(algorithm="triangle-bbox", points=((3.5, 2.5), (27.5, 5.5), (12.5, 21.5),
+                                                    (27.5, 5.5), (29.5, 19.5), (12.5, 21.5)),
+                 title="two triangles sharing an edge"),
            follows=("polygons", "triangles")),
     Preset("fill-rule", "Top-left vs inclusive fill rule on a mesh",
            "With the top-left rule every pixel centre on a shared edge goes to exactly one "
@@ -563,8 +538,8 @@ PRESETS = (
     Preset("supersample", "Supersampling n = 1 vs 4 vs exact",
            "One sample per pixel, 4 x 4 samples, and the exact area each pixel covers.",
            (Pane.of("aa-supersample", n=1), Pane.of("aa-supersample", n=4), Pane.of(EXACT)),
-           Primitives("aa-supersample", ((3.3, 2.6), (28.7, 8.2), (11.4, 21.1)), (), (32, 24),
-                      (), "a triangle"),
+           Scene(algorithm="aa-supersample", points=((3.3, 2.6), (28.7, 8.2), (11.4, 21.1)),
+                 title="a triangle"),
            follows=("aa-supersample", "aa-adaptive"), diff=(1, 2)),
 )
 

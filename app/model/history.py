@@ -1,7 +1,8 @@
 """Undo and redo of every scene edit: points (drawn, dragged, typed),
 contours, the algorithm, every option, the grid size and the origin.
 
-An entry holds the whole scene as it was before an edit (a ``Snapshot``),
+An entry holds the whole scene as it was before an edit (a ``Scene``; its
+title, description, view and bookmarks are no edits and stay at their defaults),
 and the name of the edit for the Edit menu ("Undo move point"). Edits that
 share a merge key while the entry is still open (one drag of a handle, one
 spin box stepped by its arrows) collapse into one entry, so one undo takes
@@ -13,37 +14,22 @@ from __future__ import annotations
 import time
 from dataclasses import dataclass
 
+from app.model.scene import Scene
+
 LIMIT = 200  # entries kept; the oldest go first
 MERGE_SECONDS = 1.5  # typed or stepped edits of one field this close together merge
 
 
-@dataclass(frozen=True)
-class Snapshot:
-    """The whole scene: what a saved scene file holds, minus the view."""
-
-    algorithm: str
-    points: tuple
-    breaks: tuple
-    options: tuple  # (name, value) pairs of every option, sorted by name
-    grid: tuple
-    y_down: bool
-
-    @classmethod
-    def of(cls, algorithm: str, points, breaks, options: dict, grid, y_down: bool) -> "Snapshot":
-        return cls(algorithm, tuple(tuple(p) for p in points), tuple(breaks),
-                   tuple(sorted(options.items())), tuple(grid), bool(y_down))
-
-
-def describe(before: Snapshot, after: Snapshot) -> str:
+def describe(before: Scene, after: Scene) -> str:
     """What changed from ``before`` to ``after``, in a few words."""
     if before.algorithm != after.algorithm:
         return "algorithm switch"
     if before.grid != after.grid:
         return "grid size"
-    if before.y_down != after.y_down:
+    if before.origin != after.origin:
         return "origin"
-    if before.points != after.points:
-        return _describe_points(len(before.points), len(after.points))
+    if before.flat != after.flat:
+        return _describe_points(len(before.flat), len(after.flat))
     if before.breaks != after.breaks:
         return "contours"
     old, new = dict(before.options), dict(after.options)
@@ -65,7 +51,7 @@ def _describe_points(before: int, after: int) -> str:
 
 @dataclass
 class Entry:
-    snapshot: Snapshot
+    snapshot: Scene
     label: str
     key: object = None
     until: float | None = None  # merging with this entry is open until then (None: always)
@@ -78,7 +64,7 @@ class EditHistory:
         self._redo: list[Entry] = []
         self._open = False  # may the next edit merge with the top entry?
 
-    def push(self, before: Snapshot, after: Snapshot, key=None, seconds: float | None = None):
+    def push(self, before: Scene, after: Scene, key=None, seconds: float | None = None):
         """Record an edit from ``before`` to ``after``. With a ``key`` equal to
         the top entry's, and within its time (``seconds`` after the last
         merged edit; None: no limit), the edit merges into that entry."""
@@ -102,13 +88,13 @@ class EditHistory:
         """The next edit starts a new entry, whatever its key."""
         self._open = False
 
-    def undo(self, current: Snapshot) -> Snapshot | None:
+    def undo(self, current: Scene) -> Scene | None:
         return self._move(self._undo, self._redo, current)
 
-    def redo(self, current: Snapshot) -> Snapshot | None:
+    def redo(self, current: Scene) -> Scene | None:
         return self._move(self._redo, self._undo, current)
 
-    def _move(self, source: list, target: list, current: Snapshot) -> Snapshot | None:
+    def _move(self, source: list, target: list, current: Scene) -> Scene | None:
         self._open = False
         while source and source[-1].snapshot == current:
             source.pop()

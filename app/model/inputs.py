@@ -1,6 +1,6 @@
 """The points an algorithm takes, kept flat with contour breaks: whether
 they are complete, what of them can run, contours cut and joined. Nothing
-here imports Qt, so the player and the compare logic share it."""
+here imports Qt, so the session, the scene and the compare logic share it."""
 from __future__ import annotations
 
 
@@ -63,3 +63,19 @@ def flatten(spec, points) -> tuple[list[tuple], tuple[int, ...]]:
 
 def _is_contour(item) -> bool:
     return isinstance(item, (list, tuple)) and bool(item) and isinstance(item[0], (list, tuple))
+
+
+def open_ended(spec) -> bool:
+    """Does the algorithm take any number of points (a polygon's contour,
+    k triangles) rather than exactly ``inputs.count``?"""
+    inputs = spec.inputs
+    return bool(getattr(inputs, "contours", False) or getattr(inputs, "multiple", False))
+
+
+def clamp(point, width: int, height: int, integer: bool):
+    """The point moved onto the grid: into its last pixel (whole-pixel
+    inputs) or onto its edge (real ones)."""
+    x, y = point
+    if integer:
+        return (min(max(int(x), 0), width - 1), min(max(int(y), 0), height - 1))
+    return (min(max(float(x), 0.0), float(width)), min(max(float(y), 0.0), float(height)))

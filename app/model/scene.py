@@ -7,17 +7,22 @@ that fails leaves the old file as it was.
 """
 from __future__ import annotations
 
+import dataclasses
 import json
 import math
+import numbers
 import os
 import reprlib
 import tempfile
 from dataclasses import dataclass, field
+from functools import cached_property
 from pathlib import Path
 
 from algorithms import registry
 from algorithms.raster import MAX_GRID
 from algorithms.registry import InputError
+
+from app.model.inputs import complete, flatten, runnable_input, split_contours
 
 VERSION = 1
 ORIGINS = ("bottom-left", "top-left")
@@ -57,23 +62,103 @@ class SceneError(ValueError):
         super().__init__(one_line(message))
 
 
-@dataclass
+class Frozen(dict):
+    """A dict that cannot change after it is made: the options, the view
+    and each bookmark of a frozen Scene. It reads, compares and writes to
+    JSON as a dict does."""
+
+    def _refuse(self, *args, **kwargs):
+        raise TypeError("a scene's mappings cannot change; make a new scene with replace()")
+
+    __setitem__ = __delitem__ = __ior__ = _refuse
+    clear = pop = popitem = setdefault = update = _refuse
+
+    def __hash__(self):
+        return hash(tuple(sorted(self.items(), key=repr)))
+
+
+@dataclass(frozen=True)
 class Scene:
+    """What a person set up: the algorithm, its points and options, the grid
+    and its origin, and what a scene file adds (title, description, view,
+    bookmarks). Frozen and checked when made; ``replace`` makes a changed
+    copy, checked again.
+
+    ``points`` are as the algorithm takes them: a tuple of (x, y), or for
+    contour inputs a tuple of contours. A scene being drawn may hold fewer
+    points than its algorithm runs on (a contour still open, one end of a
+    line): ``complete`` says whether it can run.
+    """
+
     algorithm: str = "line-bresenham"
-    # Points as the algorithm takes them: a flat list, or a list of contours.
-    points: list = field(default_factory=lambda: [[3, 4], [27, 15]])
-    options: dict = field(default_factory=dict)
+    points: tuple = ((3, 4), (27, 15))
+    options: Frozen = field(default_factory=Frozen)
     width: int = 32
     height: int = 24
     origin: str = "bottom-left"
     title: str = ""
     description: str = ""
-    view: dict = field(default_factory=dict)
-    bookmarks: list = field(default_factory=list)  # [{"name": str, "step": int}]
+    view: Frozen = field(default_factory=Frozen)
+    bookmarks: tuple = ()  # ({"name": str, "step": int}, ...)
+
+    def __post_init__(self):
+        spec = _spec(self.algorithm)
+        _grid_size(self.width, "width")
+        _grid_size(self.height, "height")
+        if self.origin not in ORIGINS:
+            raise SceneError(f"origin: expected one of {', '.join(ORIGINS)}, "
+                             f"got {show(self.origin)}")
+        set_field = object.__setattr__
+        set_field(self, "points", _frozen_points(spec, self.points))
+        set_field(self, "options", Frozen(_options(spec, self.options)))
+        set_field(self, "view", Frozen(self.view))
+        set_field(self, "bookmarks", tuple(Frozen(b) for b in self.bookmarks))
+
+    @classmethod
+    def of_flat(cls, algorithm: str, points, breaks=(), **fields) -> "Scene":
+        """A scene from flat points and the indices where contours 2, 3, ...
+        start (as the grid and the points editor keep them)."""
+        spec = _spec(algorithm)
+        points = [tuple(p) for p in points]
+        if spec.inputs.contours:
+            points = split_contours(points, breaks) if points else []
+        return cls(algorithm=algorithm, points=points, **fields)
+
+    def replace(self, **changes) -> "Scene":
+        """A copy with ``changes``, checked as a new scene is."""
+        return dataclasses.replace(self, **changes)
 
     @property
     def spec(self):
         return registry.get(self.algorithm)
+
+    @property
+    def grid(self) -> tuple[int, int]:
+        return (self.width, self.height)
+
+    @property
+    def y_down(self) -> bool:
+        return self.origin == "top-left"
+
+    @cached_property
+    def flat(self) -> tuple:
+        """Every point in one tuple, whatever the nesting."""
+        return tuple(self.spec.inputs.flat(self.points))
+
+    @cached_property
+    def breaks(self) -> tuple[int, ...]:
+        """Where contours 2, 3, ... start in ``flat`` (none but for contour inputs)."""
+        return flatten(self.spec, self.points)[1]
+
+    @property
+    def complete(self) -> bool:
+        """Is there enough to run (see ``inputs.complete``)?"""
+        return complete(self.spec, self.flat, self.breaks)
+
+    def runnable(self):
+        """The points as the algorithm takes them, without anything still
+        being drawn (see ``inputs.runnable_input``)."""
+        return runnable_input(self.spec, self.flat, self.breaks)
 
     def to_json(self) -> dict:
         return {
@@ -88,6 +173,32 @@ class Scene:
             "view": dict(self.view),
             "bookmarks": [dict(b) for b in self.bookmarks],
         }
+
+
+def _spec(algorithm):
+    try:
+        return registry.get(algorithm)
+    except InputError as error:
+        raise SceneError(f"algorithm: {error}") from None
+
+
+def _frozen_points(spec, points) -> tuple:
+    """The points as tuples, each two finite numbers, nested as ``spec`` takes them."""
+    try:
+        if spec.inputs.contours:
+            return tuple(tuple(_pair(p) for p in contour) for contour in points)
+        return tuple(_pair(p) for p in points)
+    except (TypeError, ValueError):
+        raise SceneError(f"primitives: expected {spec.inputs.text()} "
+                         "of two finite numbers each") from None
+
+
+def _pair(point) -> tuple:
+    x, y = point
+    if not all(isinstance(v, numbers.Real) and not isinstance(v, bool) and _finite(v)
+               for v in (x, y)):
+        raise ValueError("not two finite numbers")
+    return (x, y)
 
 
 def _json_options(options: dict) -> dict:
@@ -181,8 +292,8 @@ def from_json(data) -> Scene:
     if version != VERSION:
         raise SceneError(f"version: this RasterLab reads version {VERSION}, not {show(version)}")
     grid = _field(data, "grid", dict)
-    width = _grid_size(grid, "width")
-    height = _grid_size(grid, "height")
+    width = _grid_size(grid.get("width"), "width")
+    height = _grid_size(grid.get("height"), "height")
     origin = data.get("origin", "bottom-left")
     if origin not in ORIGINS:
         raise SceneError(f"origin: expected one of {', '.join(ORIGINS)}, got {show(origin)}")
@@ -221,8 +332,7 @@ def _text(data: dict, name: str) -> str:
     return value
 
 
-def _grid_size(grid: dict, name: str) -> int:
-    value = grid.get(name)
+def _grid_size(value, name: str) -> int:
     if isinstance(value, bool) or not isinstance(value, int) or not 1 <= value <= MAX_GRID:
         raise SceneError(f"grid.{name}: expected a whole number 1..{MAX_GRID}, got {show(value)}")
     return value

@@ -8,8 +8,7 @@ Nothing here imports Qt.
 """
 from __future__ import annotations
 
-from widgets.drawing import CIRCLE, CONTOURS, FIXED, GROUPS
-
+from app.model.drawing import CIRCLE, CONTOURS, FIXED, GROUPS
 from app.render.frame import ideal_paths, scene_paths, takes_circle
 from app.model.inputs import contour_sizes, runnable_input
 

@@ -15,9 +15,6 @@ from PySide6.QtCore import QSettings  # noqa: E402
 from PySide6.QtWidgets import QApplication  # noqa: E402
 
 from app.gui.appdata import data_dir  # noqa: E402
-from app.gui.crash import install_crash_handler  # noqa: E402
-from app.gui.file_actions import install_file_actions  # noqa: E402
-from app.gui.recovery import install_recovery  # noqa: E402
 from app.gui.window import APP_NAME, MainWindow  # noqa: E402
 
 
@@ -27,9 +24,9 @@ def main() -> None:
     app.setApplicationName(APP_NAME)
     window = MainWindow()
     settings = QSettings(str(data_dir() / "settings.ini"), QSettings.Format.IniFormat)
-    files = install_file_actions(window, settings)
-    install_crash_handler(window)
-    recovery = install_recovery(window, delay_ms=100)
+    files = window.add_file_actions(settings)
+    window.add_crash_handler()
+    recovery = window.add_recovery(delay_ms=100)
     window.show()
     if not files.open_path(scene_path):
         sys.exit("cannot open the scene")

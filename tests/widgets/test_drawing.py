@@ -1,7 +1,7 @@
 """The drawing tools' rules (no Qt needed)."""
 import pytest
 
-from widgets.drawing import CIRCLE, CONTOURS, FIXED, GROUPS, Drawing, point_labels
+from app.model.drawing import CIRCLE, CONTOURS, FIXED, GROUPS, Drawing, point_labels
 
 
 def test_fixed_set_starts_anew_once_complete():

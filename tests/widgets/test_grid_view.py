@@ -5,7 +5,8 @@ from PySide6.QtCore import Qt
 from PySide6.QtTest import QTest
 
 from app.render.compose import OUTLINE_STYLE, PALETTE
-from widgets.grid_view import MIN_CELL_PX, PixelGridView, visible_grid_lines
+from widgets.grid_items import MIN_CELL_PX, visible_grid_lines
+from widgets.grid_view import PixelGridView
 
 LEFT = Qt.MouseButton.LeftButton
 NONE = Qt.KeyboardModifier.NoModifier

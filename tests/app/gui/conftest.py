@@ -8,8 +8,6 @@ scene.
 import pytest
 from PySide6.QtCore import QSettings
 
-from app.gui.file_actions import install_file_actions
-from app.gui.recovery import install_recovery
 from app.gui.window import MainWindow
 from tests.support.gui import settle
 
@@ -35,7 +33,7 @@ def make_window(request, qtbot, tmp_path):
     ``shown`` puts it on screen; ``settled`` also waits until its grid view
     has taken its final place. ``files`` installs the file actions with a
     settings file of the test's own. ``recovery`` installs them and the
-    recovery of unsaved work in the test's data folder (install_recovery's
+    recovery of unsaved work in the test's data folder (add_recovery's
     ``delay_ms`` and ``poll_ms`` may be given): such a window is closed at the
     end without the question about unsaved work, so it is not given to qtbot,
     which would close it with the question still armed. ``sync_wait`` is how
@@ -50,11 +48,11 @@ def make_window(request, qtbot, tmp_path):
         if sync_wait is not None:
             window.player.sync_wait = sync_wait
         if files or recovery:
-            install_file_actions(window, QSettings(str(tmp_path / "settings.ini"),
-                                                   QSettings.Format.IniFormat))
+            window.add_file_actions(QSettings(str(tmp_path / "settings.ini"),
+                                              QSettings.Format.IniFormat))
         if recovery:
             timing = {"delay_ms": delay_ms} | ({} if poll_ms is None else {"poll_ms": poll_ms})
-            install_recovery(window, request.getfixturevalue("data") / "recovery", **timing)
+            window.add_recovery(request.getfixturevalue("data") / "recovery", **timing)
             made.append(window)
         else:
             qtbot.addWidget(window)

@@ -5,8 +5,6 @@ from PySide6.QtTest import QTest
 from PySide6.QtWidgets import QApplication, QInputDialog
 
 from app.model import scene as scenes
-from app.gui.file_actions import install_file_actions
-from app.gui.recovery import install_recovery
 
 from tests.support.gui import settle
 from tests.support.breakpoint_oracles import (POLYGON, ZBUFFER, depth_fail_events, first_after,
@@ -194,17 +192,17 @@ def test_bookmarks_are_saved_and_loaded_with_the_scene(window, qtbot, tmp_path):
     window.player.seek(7)
     marks.add_bookmark("first tie")
     # The file actions come later (as when the program starts) and take them over.
-    files = install_file_actions(window, QSettings(str(tmp_path / "s.ini"),
-                                                   QSettings.Format.IniFormat))
+    files = window.add_file_actions(QSettings(str(tmp_path / "s.ini"),
+                                              QSettings.Format.IniFormat))
     assert files.bookmarks == [{"name": "first tie", "step": 7}]
     window.player.seek(19)
     marks.add_bookmark("second tie")
     path = tmp_path / "ties.json"
     assert files.save_to(path)
-    assert scenes.load(path).bookmarks == [{"name": "first tie", "step": 7},
-                                           {"name": "second tie", "step": 19}]
+    assert scenes.load(path).bookmarks == ({"name": "first tie", "step": 7},
+                                           {"name": "second tie", "step": 19})
     # A bookmark is part of the unsaved work.
-    recovery = install_recovery(window, tmp_path / "recovery", delay_ms=10_000)
+    recovery = window.add_recovery(tmp_path / "recovery", delay_ms=10_000)
     assert not recovery.dirty
     marks.delete_bookmark(0)
     assert recovery.dirty

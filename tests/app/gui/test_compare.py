@@ -15,8 +15,8 @@ from tests.support.compare_oracles import (FLOAT32_BITS, FLOAT64_BITS, bresenham
 
 @pytest.fixture
 def comparing(window, qtbot):
-    window.compare_action.trigger()
-    c = window.compare_window
+    window.compare_entry.action.trigger()
+    c = window.compare_entry.window
     qtbot.waitExposed(c)
     return c
 
@@ -36,7 +36,7 @@ def shown_counts(c) -> dict:
 
 
 def test_view_menu_opens_compare_mode_with_ctrl_k(window):
-    action = window.compare_action
+    action = window.compare_entry.action
     assert action in window.menus["view"].actions()
     assert action.shortcut().toString() == "Ctrl+K"
     assert action.toolTip()
@@ -188,8 +188,8 @@ def test_reopening_catches_up_with_the_main_window(window, comparing, qtbot):
     window.set_algorithm("line-dda")
     window.set_points([(1, 1), (25, 9)])
     window.set_y_down(True)
-    window.compare_action.trigger()
-    assert window.compare_window is c and c.isVisible()
+    window.compare_entry.action.trigger()
+    assert window.compare_entry.window is c and c.isVisible()
     # The algorithm the main window shows now, against the one before it.
     assert [pane.algorithm for pane in c.panes] == ["line-dda", "line-bresenham"]
     assert all(run.points == [(1, 1), (25, 9)] for run in c.runs)

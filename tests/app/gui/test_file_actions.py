@@ -12,7 +12,6 @@ from PySide6.QtWidgets import QApplication, QFileDialog, QMessageBox
 from app.render import export as ex
 from app.gui import file_actions as fa
 from app.model import scene as scenes
-from app.gui.file_actions import install_file_actions
 from app.gui.window import MainWindow
 from tests.support import ROOT
 
@@ -29,7 +28,7 @@ pytestmark = pytest.mark.window(shown=False)
 
 @pytest.fixture
 def files(window, settings):
-    return install_file_actions(window, settings)
+    return window.add_file_actions(settings)
 
 
 @pytest.fixture
@@ -144,7 +143,7 @@ def test_open_and_save_as_through_the_file_dialogs(window, files, tmp_path, monk
                         lambda *a, **k: pytest.fail("Save asked for a name"))
     window.set_scene("line-bresenham", [(1, 1), (15, 2)], None, (24, 16))
     files.save_action.trigger()
-    assert scenes.load(path).points == [[1, 1], [15, 2]]
+    assert scenes.load(path).points == ((1, 1), (15, 2))
 
     window.set_scene("line-dda", [(0, 0), (3, 3)], None, (8, 8))
     monkeypatch.setattr(QFileDialog, "getOpenFileName", lambda *a, **k: (str(path), ""))
@@ -198,7 +197,7 @@ def test_recent_files_newest_first_and_capped(window, files, tmp_path, settings)
     other = MainWindow()
     try:
         # Opening it made it the newest.
-        assert install_file_actions(other, settings).recent()[0] == paths[2]
+        assert other.add_file_actions(settings).recent()[0] == paths[2]
     finally:
         other.deleteLater()
 

@@ -29,7 +29,7 @@ pytestmark = pytest.mark.window(shown=False, files=True)
 
 @pytest.fixture
 def dialog(window, qtbot):
-    found = gal.show_gallery(window)
+    found = window.gallery_entry.open()
     qtbot.waitUntil(lambda: found.thumbnails_done, timeout=10000)
     return found
 
@@ -63,7 +63,7 @@ def test_every_hard_case_opens_in_the_window_and_runs_to_the_end(window, dialog,
         assert player.grid == (case.scene.width, case.scene.height), case.name
         player.to_last()
         assert len(player) > 1 and player.index == player.last, case.name
-        assert player.error == "" and window._error == "", (case.name, window._error)
+        assert window._error == "", (case.name, window._error)
         assert not player.trace.truncated, case.name
         # The command line runs the same scene to the same pixels.
         assert cli.main(["run", "--scene", str(case.path), "--json"]) == 0, case.name
@@ -83,9 +83,9 @@ def test_run_scene_exits_0_with_json_for_every_scene_as_a_program():
 def test_the_help_menu_opens_one_dialog_and_a_double_click_opens_a_scene(window, qtbot):
     action = next(a for a in window.menus["help"].actions() if "Hard cases" in a.text())
     action.trigger()
-    first = window.gallery
+    first = window.gallery_entry.window
     action.trigger()
-    assert window.gallery is first and first.isVisible()
+    assert window.gallery_entry.window is first and first.isVisible()
     row = next(n for n, c in enumerate(first.cases) if c.name == "triangle-behind-eye")
     item = first.list.item(row)
     first.list.scrollToItem(item)
@@ -95,7 +95,7 @@ def test_the_help_menu_opens_one_dialog_and_a_double_click_opens_a_scene(window,
     scene = first.cases[row].scene
     assert window.player.spec.name == "triangle-perspective"
     assert window.player.options["near"] == scene.options["near"]
-    assert [list(p) for p in window.player.input_points()] == scene.points
+    assert tuple(window.player.input_points()) == scene.points
     assert first.isVisible()  # non-modal: it stays open beside the window
     # Its pictures are drawn one per turn of the event loop: all drawn before
     # qtbot deletes the dialog, so none is drawn into a deleted label later.

@@ -12,8 +12,7 @@ from PySide6.QtCore import QSettings
 
 from app.gui import recovery as recovery_module
 from app.model import scene as scenes
-from app.gui.file_actions import install_file_actions
-from app.gui.recovery import content, install_recovery, pending_recoveries
+from app.gui.recovery import content, pending_recoveries
 from app.gui.window import MainWindow
 from tests.support import ROOT
 
@@ -94,8 +93,8 @@ def test_an_edit_survives_sigkill(qtbot, tmp_path, monkeypatch):
     monkeypatch.setattr(recovery_module, "ask_restore", answer)
     window = MainWindow()
     qtbot.addWidget(window)
-    install_file_actions(window, QSettings(str(tmp_path / "s.ini"), QSettings.Format.IniFormat))
-    recovery = install_recovery(window)
+    window.add_file_actions(QSettings(str(tmp_path / "s.ini"), QSettings.Format.IniFormat))
+    recovery = window.add_recovery()
     try:
         assert recovery.offer()
         assert len(asked) == 1 and asked[0].count(":") == 2  # the time of the copy

@@ -5,7 +5,8 @@ import pytest
 from algorithms import registry
 from algorithms.registry import InputError
 from app.model.inputs import complete, flatten, runnable_input
-from app.gui.player import Player, default_scene
+from app.gui.player import Player
+from app.model.examples import default_scene
 
 OUTER = [(2.0, 2.0), (20.0, 2.0), (20.0, 16.0), (2.0, 16.0)]
 HOLE = [(6.0, 6.0), (12.0, 6.0), (9.0, 11.0)]

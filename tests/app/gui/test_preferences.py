@@ -16,9 +16,7 @@ from PySide6.QtWidgets import (QAbstractButton, QAbstractSpinBox, QApplication, 
 from algorithms.raster import MAX_GRID
 from algorithms.trace import DEFAULT_STEP_CAP
 from app.gui import about, appdata, preferences
-from app.gui.file_actions import install_file_actions
 from app.gui.preferences import Preferences, apply_theme, default_values
-from app.gui.report_window import install_report_action
 from app.gui.window import GESTURES, MainWindow, ShortcutsDialog
 from tests.support import ROOT
 
@@ -37,8 +35,8 @@ def settings_file(tmp_path, monkeypatch):
 def open_window(qtbot) -> MainWindow:
     window = MainWindow()
     qtbot.addWidget(window)
-    install_file_actions(window)
-    install_report_action(window)
+    window.add_file_actions()
+    window.add_report_entry()
     window.show()
     qtbot.waitExposed(window)
     return window

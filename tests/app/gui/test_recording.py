@@ -13,7 +13,8 @@ from PySide6.QtCore import Qt
 from PySide6.QtTest import QTest
 
 from algorithms import registry
-from app.gui.player import CANCELLED_MESSAGE, Player
+from app.gui.player import Player
+from app.model.session import CANCELLED_MESSAGE
 from app.gui.recording import GapMeter, seek_when_recorded
 from app.gui.window import MainWindow
 
@@ -136,7 +137,7 @@ def test_cancel_keeps_the_previous_scene_and_run(qtbot, window):
     assert status.bar.isVisible() and player.recording
     assert status.button.toolTip() and status.bar.toolTip()
     assert status.label.isVisible() and status.label.text().startswith("Recording\u2026")
-    job = player._job
+    job = player.session.job
     QTest.keyClick(window, Qt.Key.Key_Escape)
     assert not player.recording
     assert player.points == old_points and player.trace is old_trace
@@ -171,7 +172,7 @@ def test_cancel_button_stops_the_recording(qtbot, window):
 def test_a_second_edit_while_recording_wins(qtbot, player):
     heard = Signals(player)
     player.set_points(SQUARE)
-    first = player._job
+    first = player.session.job
     narrow = [(0, 0), (BIG, 0), (BIG, 300), (0, 300)]
     player.set_points(narrow)
     assert first.monitor.cancelled and player.recording
@@ -187,8 +188,9 @@ def test_a_run_refused_in_the_background_keeps_the_scene(qtbot, window, monkeypa
     old_trace, old_options = player.trace, dict(player.options)
     # Hold the worker until the edit has returned, so that the refusal
     # surely comes from the background.
-    gate, record = threading.Event(), player._outcome
-    monkeypatch.setattr(player, "_outcome", lambda *a, **k: gate.wait(10) and record(*a, **k))
+    gate, record = threading.Event(), player.session.outcome
+    monkeypatch.setattr(player.session, "outcome",
+                        lambda *a, **k: gate.wait(10) and record(*a, **k))
     window.set_points(SQUARE)
     window.set_option("seed", (0, 5))  # on the outline: the fill refuses it
     assert player.recording and player.options["seed"] == (0, 5)
@@ -208,7 +210,7 @@ def test_the_event_loop_stays_responsive_while_recording(qtbot, window):
     qtbot.wait(30)
     started = meter.restart()
     window.set_points(SQUARE)
-    job = window.player._job
+    job = window.player.session.job
     qtbot.waitUntil(lambda: not window.player.recording, timeout=60_000)
     qtbot.wait(30)  # the installed trace is shown within these ticks
     meter.stop()
@@ -229,7 +231,7 @@ def test_closing_the_window_stops_the_recording(qtbot):
     w.show()
     w.player.sync_wait = 0.0
     w.set_points(SQUARE)
-    job = w.player._job
+    job = w.player.session.job
     assert job is not None
     w.close()
     assert job.done and job.cancelled and not w.player.recording
@@ -271,8 +273,9 @@ def test_an_algorithm_switch_refused_in_the_background_shows_an_example(
     window.set_points(notched)
     player.sync_wait = 0.0
     old_trace = player.trace
-    gate, record = threading.Event(), player._outcome
-    monkeypatch.setattr(player, "_outcome", lambda *a, **k: gate.wait(10) and record(*a, **k))
+    gate, record = threading.Event(), player.session.outcome
+    monkeypatch.setattr(player.session, "outcome",
+                        lambda *a, **k: gate.wait(10) and record(*a, **k))
     window.set_algorithm("polygon-convex")
     # The editors follow the switch at once; the fill's run stays on show.
     assert player.recording and player.spec.name == "polygon-convex"

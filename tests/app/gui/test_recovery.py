@@ -7,7 +7,7 @@ from PySide6.QtWidgets import QFileDialog, QMessageBox
 
 from app.gui import recovery as recovery_module
 from app.model import scene as scenes
-from app.gui.crash import CrashHandler, install_crash_handler
+from app.gui.crash import CrashHandler
 from app.gui.recovery import PREFIX, content, pending_recoveries
 from app.gui.window import DEMO_POINTS
 
@@ -72,12 +72,12 @@ def test_autosave_writes_a_loadable_file(window, qtbot):
     window.set_points([(1, 2), (20, 9)])
     qtbot.waitUntil(recovery.path.exists, timeout=2000)
     loaded = scenes.load(recovery.path)
-    assert (loaded.algorithm, loaded.points) == ("line-bresenham", [[1, 2], [20, 9]])
+    assert (loaded.algorithm, loaded.points) == ("line-bresenham", ((1, 2), (20, 9)))
     assert (loaded.width, loaded.height) == (32, 24)
     # A scene with a point still missing is not written over the good copy.
     window.set_points([(5, 5)])
     recovery.autosave()
-    assert points_in(recovery.path) == [[1, 2], [20, 9]]
+    assert points_in(recovery.path) == ((1, 2), (20, 9))
 
 
 def test_the_slow_look_does_not_put_off_the_autosave(make_window, qtbot):
@@ -86,7 +86,7 @@ def test_the_slow_look_does_not_put_off_the_autosave(make_window, qtbot):
     window = make_window(delay_ms=300, poll_ms=40)
     window.set_points([(1, 2), (20, 9)])
     qtbot.waitUntil(window.recovery.path.exists, timeout=3000)
-    assert points_in(window.recovery.path) == [[1, 2], [20, 9]]
+    assert points_in(window.recovery.path) == ((1, 2), (20, 9))
 
 
 def test_a_clean_save_removes_the_recovery_file(window, qtbot, tmp_path):
@@ -146,7 +146,7 @@ def test_save_on_close_and_a_cancelled_save_dialog(window, answers, monkeypatch,
     assert window.isVisible() and not target.exists()
     queue.append(BUTTONS.Save)
     assert window.close()
-    assert points_in(target) == [[1, 2], [20, 9]]
+    assert points_in(target) == ((1, 2), (20, 9))
 
 
 # -------------------------------------------------------------- restore
@@ -168,7 +168,7 @@ def test_restore_offers_the_scene_and_marks_it_unsaved(make_window, data, answer
     assert window.recovery.dirty and window.isWindowModified()
     # The restored scene is in this program's own file now; the old one is gone.
     assert not left.exists()
-    assert points_in(window.recovery.path) == [[2, 3], [25, 20]]
+    assert points_in(window.recovery.path) == ((2, 3), (25, 20))
     queue.append(BUTTONS.Discard)
     assert window.close()
 
@@ -241,7 +241,7 @@ def shown(monkeypatch):
 
 @pytest.fixture
 def handler(window, data):
-    installed = install_crash_handler(window, data)
+    installed = window.add_crash_handler(data)
     yield installed
     installed.uninstall()
 

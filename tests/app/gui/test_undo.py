@@ -8,7 +8,6 @@ from PySide6.QtTest import QTest
 from PySide6.QtWidgets import QApplication
 
 from algorithms import registry
-from app.gui.file_actions import install_file_actions
 from app.model.history import MERGE_SECONDS
 from app.gui.window import MainWindow
 from tests.support.gui import drag, settle
@@ -33,7 +32,7 @@ def make(qtbot, tmp_path):
     def build(algorithm="line-bresenham"):
         w = MainWindow(algorithm)
         qtbot.addWidget(w)
-        install_file_actions(w, QSettings(str(tmp_path / "s.ini"), QSettings.Format.IniFormat))
+        w.add_file_actions(QSettings(str(tmp_path / "s.ini"), QSettings.Format.IniFormat))
         w.clock = Clock()
         w.history.clock = w.clock
         w.show()
@@ -150,19 +149,19 @@ EDITS = (edit_typed_point, edit_attribute, edit_algorithm, edit_option, edit_gri
 def test_random_edits_undo_and_redo_restore_scenes_exactly(make, qtbot, seed):
     w = make("line-bresenham")
     rng = random.Random(seed)
-    first, first_json, first_pixels = w.edits.snapshot(), scene_json(w), final_pixels(w)
+    first, first_json, first_pixels = w.player.scene, scene_json(w), final_pixels(w)
     # A drag on the grid (a real gesture) among the random edits.
     drag(qtbot, w, (28.5, 15.5), (24.5, 18.5))
     kinds = set()
     for _ in range(26):
         edit = rng.choice(EDITS)
-        before = w.edits.snapshot()
+        before = w.player.scene
         edit(w, rng)
-        if w.edits.snapshot() != before:
+        if w.player.scene != before:
             kinds.add(edit.__name__)
         w.clock.now += 2 * MERGE_SECONDS  # every edit its own entry
     assert len(kinds) >= 6, kinds
-    last, last_json, last_pixels = w.edits.snapshot(), scene_json(w), final_pixels(w)
+    last, last_json, last_pixels = w.player.scene, scene_json(w), final_pixels(w)
     assert last != first
 
     undos = 0
@@ -170,7 +169,7 @@ def test_random_edits_undo_and_redo_restore_scenes_exactly(make, qtbot, seed):
         w.undo()
         undos += 1
     assert undos >= len(kinds)
-    assert w.edits.snapshot() == first
+    assert w.player.scene == first
     assert scene_json(w) == first_json
     assert final_pixels(w) == first_pixels == fresh_pixels(w)
     assert w.picker.current_name() == first.algorithm
@@ -178,7 +177,7 @@ def test_random_edits_undo_and_redo_restore_scenes_exactly(make, qtbot, seed):
 
     while w.history.can_redo:
         w.redo()
-    assert w.edits.snapshot() == last
+    assert w.player.scene == last
     assert scene_json(w) == last_json
     assert final_pixels(w) == last_pixels == fresh_pixels(w)
     assert not w.actions_["redo"].isEnabled()
@@ -187,12 +186,12 @@ def test_random_edits_undo_and_redo_restore_scenes_exactly(make, qtbot, seed):
 def test_algorithm_switch_is_undone_with_its_points_and_options(make):
     w = make("line-bresenham")
     w.points.type_value(1, "x", "20")
-    line = w.edits.snapshot()
+    line = w.player.scene
     w.picker.setCurrentItem(w.picker.item_for("polygon-scanline"))
     assert w.player.spec.name == "polygon-scanline"
     assert w.actions_["undo"].text() == "&Undo algorithm switch"
     w.undo()
-    assert w.edits.snapshot() == line
+    assert w.player.scene == line
     assert w.player.points == [(4, 5), (20, 15)]
     assert w.picker.current_name() == "line-bresenham"
     assert "Bresenham" in w.windowTitle()
@@ -288,13 +287,13 @@ def test_every_registered_algorithm_switch_undoes(make):
     """Each switch (with its fallback shapes) comes back exactly."""
     w = make("line-bresenham")
     names = [spec.name for spec in registry.all_specs()][::5]
-    states = [w.edits.snapshot()]
+    states = [w.player.scene]
     for name in names:
         w.picker.setCurrentItem(w.picker.item_for(name))
-        states.append(w.edits.snapshot())
+        states.append(w.player.scene)
     for state in reversed(states[:-1]):
         w.undo()
-        assert w.edits.snapshot() == state
+        assert w.player.scene == state
 
 
 def test_ctrl_z_in_a_spin_box_stays_in_the_box(make, qtbot):
@@ -311,10 +310,11 @@ def test_ctrl_z_in_a_spin_box_stays_in_the_box(make, qtbot):
 
 
 def test_history_merges_by_key_within_its_time():
-    from app.model.history import EditHistory, Snapshot
+    from app.model.history import EditHistory
+    from app.model.scene import Scene
 
     def scene(x):
-        return Snapshot.of("line-dda", [(x, 0), (5, 5)], (), {}, (32, 24), False)
+        return Scene(algorithm="line-dda", points=[(x, 0), (5, 5)])
     clock = Clock()
     history = EditHistory(clock)
     history.push(scene(0), scene(1), ("option", "a"), 1.5)

@@ -9,7 +9,8 @@ from algorithms.errors import InputError
 from algorithms.raster import Raster
 from app.model import compare
 from app.render import compose as render
-from app.model.compare import EXACT, FRAME, PROGRESS, Pane, Primitives
+from app.model.compare import EXACT, FRAME, PROGRESS, Pane
+from app.model.scene import Scene
 from tests.support import ROOT
 from tests.support.compare_oracles import (FLOAT32_BITS, FLOAT64_BITS, bresenham_pixels,
                                            dda_pixels, diff_counts, round_to_float)
@@ -182,11 +183,12 @@ def test_every_preset_runs_every_pane():
 
 
 def test_panes_that_do_not_take_the_primitives_say_why():
-    line = Primitives("line-bresenham", DEMO, (), (32, 24))
+    line = Scene(algorithm="line-bresenham", points=DEMO)
     circle = compare.Run(Pane("circle-midpoint"), line)
     assert not circle.ok and "takes 1 point" in circle.error and "2 points" in circle.error
     assert circle.raster_at(0) is None and len(circle) == 0
-    quad = Primitives("polygon-scanline", ((2.0, 2.0), (20.0, 3.0), (22.0, 15.0), (3.0, 14.0)))
+    quad = Scene(algorithm="polygon-scanline",
+                 points=[((2.0, 2.0), (20.0, 3.0), (22.0, 15.0), (3.0, 14.0))])
     triangles = compare.Run(Pane("triangle-bbox"), quad)
     assert not triangles.ok and "3k points" in triangles.error
     unknown = compare.Run(Pane("no-such-thing"), line)
@@ -203,11 +205,11 @@ def test_points_fit_between_triangles_and_contours():
 
 
 def test_scene_options_carry_over_and_the_pane_options_win():
-    scene = Primitives("circle-midpoint", ((16, 12),), (), (32, 24), (("radius", 7),))
+    scene = Scene(algorithm="circle-midpoint", points=((16, 12),), options={"radius": 7})
     assert compare.pane_options(Pane("circle-sqrt8"), scene)["radius"] == 7
     assert compare.pane_options(Pane.of("circle-sqrt8", radius=5), scene)["radius"] == 5
-    exact = compare.Run(Pane(EXACT), Primitives("aa-supersample", ((3.3, 2.6), (28.7, 8.2),
-                                                                     (11.4, 21.1))))
+    exact = compare.Run(Pane(EXACT), Scene(algorithm="aa-supersample",
+                                            points=((3.3, 2.6), (28.7, 8.2), (11.4, 21.1))))
     assert exact.ok and len(exact) == 1 and exact.value_kind == "coverage"
 
 

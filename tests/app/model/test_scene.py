@@ -21,7 +21,7 @@ def test_round_trip(tmp_path):
     scenes.save(scenes.from_json(good()), path)
     loaded = scenes.load(path)
     assert loaded.to_json() == good()
-    assert loaded.points == [[1, 2], [20, 9]] and loaded.options == {"dtype": "float32"}
+    assert loaded.points == ((1, 2), (20, 9)) and loaded.options == {"dtype": "float32"}
 
 
 def test_every_shipped_scene_round_trips(tmp_path):
@@ -97,8 +97,7 @@ def test_failed_save_leaves_the_old_file(tmp_path, monkeypatch):
     def explode(*args):
         raise OSError(28, "No space left on device")
     monkeypatch.setattr(os, "replace", explode)
-    changed = scenes.from_json(good())
-    changed.title = "changed"
+    changed = scenes.from_json(good()).replace(title="changed")
     with pytest.raises(SceneError, match="No space left"):
         scenes.save(changed, path)
     assert path.read_bytes() == before
@@ -121,3 +120,35 @@ def test_cli_runs_a_scene(tmp_path, capsys):
     assert main(["run", "--scene", str(path)]) == 2
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and "not valid JSON" in err[0]
+
+
+def test_a_scene_is_frozen_and_replace_checks_again():
+    scene = scenes.from_json(good())
+    with pytest.raises(AttributeError):
+        scene.title = "changed"
+    with pytest.raises(TypeError):
+        scene.options["dtype"] = "float64"
+    with pytest.raises(TypeError):
+        scene.bookmarks[0]["step"] = 9
+    moved = scene.replace(points=[[2, 3], [21, 9]])
+    assert moved.points == ((2, 3), (21, 9)) and scene.points == ((1, 2), (20, 9))
+    assert moved == scene.replace(points=((2, 3), (21, 9)))
+    with pytest.raises(SceneError, match="grid.width"):
+        scene.replace(width=0)
+    with pytest.raises(SceneError, match="origin"):
+        scene.replace(origin="middle")
+    with pytest.raises(SceneError, match="options.dtype"):
+        scene.replace(options={"dtype": "int3"})
+    with pytest.raises(SceneError, match="primitives"):
+        scene.replace(points=[[1, float("nan")], [2, 2]])
+    with pytest.raises(SceneError, match="algorithm"):
+        scene.replace(algorithm="no-such-thing")
+
+
+def test_flat_points_and_breaks_round_trip_for_contours():
+    scene = Scene.of_flat("polygon-scanline", [(1, 1), (9, 1), (5, 8), (3, 3), (4, 3)], (3,))
+    assert scene.points == (((1, 1), (9, 1), (5, 8)), ((3, 3), (4, 3)))
+    assert scene.flat == ((1, 1), (9, 1), (5, 8), (3, 3), (4, 3)) and scene.breaks == (3,)
+    assert scene.complete and scene.runnable() == [[(1, 1), (9, 1), (5, 8)]]
+    assert not Scene.of_flat("line-dda", [(1, 1)]).complete
+    assert Scene.of_flat("polygon-scanline", []).points == ()

@@ -20,7 +20,7 @@ Modes
               that very vertex, which is how a mesh shares its corners.
 
 Points are one flat list; ``breaks`` holds the indices where contours 2,
-3, ... start, as the player keeps them.
+3, ... start, as the session keeps them.
 """
 from __future__ import annotations
 

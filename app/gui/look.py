@@ -1,0 +1,128 @@
+"""How the main window looks: its style sheet, the section titles and
+colour legends of the Scene dock, and the program's icon."""
+from __future__ import annotations
+
+from PySide6.QtCore import QRect, Qt
+from PySide6.QtGui import QColor, QIcon, QPainter, QPixmap
+from PySide6.QtWidgets import QHBoxLayout, QLabel, QVBoxLayout, QWidget
+
+from app.render.compose import COVERAGE_LEVELS, PALETTE
+
+STYLE = """
+QLabel#section { color: #55606d; font-weight: bold; padding-top: 8px; }
+QLabel#summary { color: #55606d; }
+QLabel#stepCaption { color: #1d2733; padding: 2px 0 4px 0; }
+QLabel#seriesTitle { color: #55606d; }
+QLabel#codeNotes { color: #4b5563; background: #f3f5f8; border: 1px solid #dde2e8;
+                   border-radius: 4px; padding: 6px; }
+QLabel#stepCounter { font-weight: bold; }
+QTableWidget#codeLines { background: #ffffff; border: 1px solid #dde2e8; }
+QTreeWidget#algorithmPicker { border: 1px solid #dde2e8; }
+QTableWidget#variables { border: 1px solid #dde2e8; }
+QWidget#transport { background: #f3f5f8; border-top: 1px solid #d5dbe2; }
+QLabel#legend { color: #3d4754; }
+QStatusBar QLabel#differences { color: #b0245f; padding: 0 10px; }
+QStatusBar QLabel#cursor { color: #3d4754; padding: 0 6px 0 10px; border-left: 1px solid #cfd5dc; }
+QStatusBar QLabel#coverage { color: #c2255c; padding: 0 10px; }
+QToolBar#drawingTools { spacing: 2px; padding: 1px 4px; }
+"""
+ERROR_STYLE = "color: #c92a2a;"
+
+
+def section(text: str, parent=None) -> QLabel:
+    label = QLabel(text.upper(), parent)
+    label.setObjectName("section")
+    font = label.font()
+    if font.pointSizeF() > 0:
+        font.setPointSizeF(font.pointSizeF() * 0.85)
+    font.setLetterSpacing(font.SpacingType.PercentageSpacing, 108)
+    label.setFont(font)
+    return label
+
+
+def legend_chip(color: str, fill: bool) -> QLabel:
+    label = QLabel()
+    label.setPixmap(chip_pixmap(color, fill))
+    return label
+
+
+def chip_pixmap(color: str, fill: bool) -> QPixmap:
+    pixmap = QPixmap(14, 14)
+    pixmap.fill(Qt.GlobalColor.transparent)
+    painter = QPainter(pixmap)
+    if fill:
+        painter.fillRect(1, 1, 12, 12, QColor(color))
+    else:
+        pen = painter.pen()
+        pen.setColor(QColor(color))
+        pen.setWidth(3)
+        painter.setPen(pen)
+        painter.drawRect(2, 2, 10, 10)
+    painter.end()
+    return pixmap
+
+
+def legend(rows) -> QWidget:
+    """Chips with their meaning: (colour, filled?, text) per row;
+    ``widget.chips`` keeps (chip, filled?) to recolour them."""
+    widget = QWidget()
+    widget.chips = []
+    box = QVBoxLayout(widget)
+    box.setSpacing(2)
+    box.setContentsMargins(0, 4, 0, 0)
+    for color, fill, text in rows:
+        row = QHBoxLayout()
+        row.setSpacing(6)
+        chip = legend_chip(color, fill)
+        widget.chips.append((chip, fill))
+        row.addWidget(chip)
+        label = QLabel(text)
+        label.setObjectName("legend")
+        row.addWidget(label, 1)
+        box.addLayout(row)
+    return widget
+
+
+# The highlight legend: (Palette field, filled chip?, meaning).
+LEGEND = (("current", False, "pixel or span of this step"),
+          ("candidate", False, "candidates of the decision"),
+          ("difference", False, "differs from previous algorithm"),
+          ("overdraw", True, "written more than once"))
+
+
+def legend_rows(palette) -> list:
+    return [(getattr(palette, field), fill, text) for field, fill, text in LEGEND]
+
+
+def coverage_rows(palette) -> list:
+    return [(color, True, text) for color, text in zip(palette.coverage, COVERAGE_LEVELS)]
+
+
+def recolor(legend, rows) -> None:
+    for (chip, fill), (color, _fill, _text) in zip(legend.chips, rows):
+        chip.setPixmap(chip_pixmap(color, fill))
+
+
+def app_icon() -> QIcon:
+    """A staircase of pixels under a thin ideal line."""
+    icon = QIcon()
+    for size in (16, 32, 64, 128):
+        pixmap = QPixmap(size, size)
+        pixmap.fill(QColor(PALETTE.background))
+        painter = QPainter(pixmap)
+        cell = size / 8
+        ink = QColor(PALETTE.ink)
+        for k in range(8):
+            y = round(k * 5 / 8)
+            painter.fillRect(QRect(round(k * cell), round(size - (y + 2) * cell - cell),
+                                   max(1, round(cell)), max(1, round(cell))), ink)
+        pen = painter.pen()
+        pen.setColor(QColor(PALETTE.primitive))
+        pen.setWidthF(max(1.0, size / 24))
+        painter.setPen(pen)
+        painter.setRenderHint(QPainter.RenderHint.Antialiasing)
+        painter.drawLine(round(cell / 2), round(size - 2.5 * cell),
+                         round(size - cell / 2), round(size - 2.5 * cell - 7 * cell * 5 / 8))
+        painter.end()
+        icon.addPixmap(pixmap)
+    return icon
