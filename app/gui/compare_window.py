@@ -434,7 +434,7 @@ class CompareWindow(QMainWindow):
                                                  "the two panes have different grids"), True)
             view.legend.set_counts(None)
             return
-        view.diff.show_frame(compare.diff_image(d, self.colours))
+        view.diff.show_frame(compose.diff_image(d, self.colours))
         view.diff.grid.show_paths(run_a.paths())
         view.diff.set_title(f"Diff: A = {a + 1}, B = {b + 1}",
                             f"A: {run_a.title}\nB: {run_b.title}")

@@ -8,7 +8,7 @@ circle's radius, a triangle's colours and depths), as they do when the
 main window switches algorithm; the pane's own options win.
 
 Besides the registered algorithms a pane may be ``EXACT``: the exact
-coverage of the shapes an antialiasing run draws (``frame_view.
+coverage of the shapes an antialiasing run draws (``geometry.
 exact_reference``), a run of one frame that the estimates aim at.
 
 ``diff`` sorts the cells of two rasters into only in A, only in B and in
@@ -36,7 +36,7 @@ from algorithms import registry
 from algorithms.errors import InputError
 from algorithms.raster import Raster, check_grid
 
-from app.render import frame as frame_view, compose as render
+from app.model.geometry import exact_reference, final_coverage, scene_paths
 from app.model.inputs import split_contours
 from app.model.scene import SHIPPED, Scene, load
 
@@ -233,7 +233,7 @@ class Run:
             self.trace = self.spec.record(self.points, self.options, self.grid, step_cap)
             return
         self.spec.inputs.check(self.points)
-        exact = frame_view.exact_reference(self.spec, self.points, self.options, self.grid)
+        exact = exact_reference(self.spec, self.points, self.options, self.grid)
         if exact is None or exact.shape != (height, width):
             raise InputError("no exact coverage for this input")
         self.exact = np.asarray(exact, dtype=np.float64)
@@ -261,7 +261,7 @@ class Run:
         """The ideal primitive, as the main grid draws it."""
         if self.points is None:
             return []
-        return frame_view.scene_paths(self.spec, self.points, self.options)
+        return scene_paths(self.spec, self.points, self.options)
 
     def state_at(self, i: int):
         """The replayed FrameState at step i (None for the exact pane or a failed run).
@@ -313,7 +313,7 @@ class Run:
             self._writes = self.trace.written()
         writes = self._writes
         n = int(np.searchsorted(writes.steps, i, side="right"))
-        return render.final_coverage(self.trace.width, self.trace.height, writes.pixels[:n],
+        return final_coverage(self.trace.width, self.trace.height, writes.pixels[:n],
                                      writes.values[:n])
 
 
@@ -416,14 +416,6 @@ def diff_runs(a: Run, b: Run, index_a: int, index_b: int) -> Diff | None:
 # the two runs, a quiet grey for agreement, a strong magenta for a value
 # that differs.
 DIFF_COLOURS = ("#f08c00", "#1c7ed6", "#adb5bd", "#c2255c")
-
-
-def diff_image(d: Diff, palette=render.PALETTE) -> np.ndarray:
-    """The diff as a uint8 RGBA image (H, W, 4), row 0 at y = 0."""
-    lut = np.array([render.packed_rgba(palette.background)]
-                   + [render.packed_rgba(c) for c in DIFF_COLOURS], dtype="<u4")
-    cells = lut[d.classes()]
-    return cells.view(np.uint8).reshape(cells.shape[0], cells.shape[1], 4)
 
 
 # --------------------------------------------------------------- stepping

@@ -38,7 +38,7 @@ from algorithms.interpolate import affine_value, barycentric_weights, per_vertex
 from algorithms.registry import InputError, format_value
 from algorithms.steps import PLOT, VISIT, Vars
 
-from app.render import frame as frame_view
+from app.model.geometry import exact_reference
 
 MAX_SAMPLE_ROWS = 16  # sample positions listed one per row, at most
 MAX_DEPTH_ROWS = 6  # depth tests listed, the latest ones
@@ -305,7 +305,7 @@ class PixelInspector:
     def exact_coverage(self, pixel) -> float | None:
         """Exact area of the pixel square the shape covers, or None."""
         x, y = pixel
-        exact = frame_view.exact_reference(self.spec, self.points, self.options,
+        exact = exact_reference(self.spec, self.points, self.options,
                                            (x, y, x + 1, y + 1))
         return None if exact is None or exact.shape != (1, 1) else float(exact[0, 0])
 

@@ -63,7 +63,7 @@ from app.model.inputs import (clamp, clean_breaks, complete, contour_sizes, flat
                               open_ended, runnable_input)
 from app.model.recording import Job
 from app.model.scene import Scene, SceneError
-from app.render.compose import differences
+from app.model.geometry import differences
 
 # How long an edit waits for its recording before it goes on in the
 # background (seconds); RASTERLAB_RECORD_WAIT overrides it ("inf": always

@@ -9,7 +9,7 @@ Nothing here imports Qt.
 from __future__ import annotations
 
 from app.model.drawing import CIRCLE, CONTOURS, FIXED, GROUPS
-from app.render.frame import ideal_paths, scene_paths, takes_circle
+from app.model.geometry import ideal_paths, scene_paths, takes_circle
 from app.model.inputs import contour_sizes, runnable_input
 
 

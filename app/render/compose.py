@@ -26,12 +26,15 @@ from typing import Sequence
 
 import numpy as np
 
+from app.model import compare
+from app.model.geometry import differences  # noqa: F401 (part of this module's interface)
+
 # Little-endian so that the bytes of each cell read R, G, B, A on any machine.
 _RGBA = np.dtype("<u4")
 
 __all__ = ["Palette", "PALETTE", "Overlay", "OUTLINE_STYLE", "compose", "top_down",
            "packed_rgba", "differences", "coverage_counts", "COVERAGE_LEVELS", "depth_image",
-           "depth_range", "error_image", "error_stats", "final_coverage"]
+           "depth_range", "error_image", "error_stats", "diff_image"]
 
 # What the coverage colours stand for, in Palette.coverage order.
 COVERAGE_LEVELS = ("not covered", "covered once", "covered twice", "covered 3+ times")
@@ -173,22 +176,6 @@ def coverage_counts(raster) -> tuple[int, int, int, int]:
     """How many cells are covered 0, 1, 2 and 3 or more times."""
     levels = np.minimum(raster.counts, 3).ravel()
     return tuple(int(n) for n in np.bincount(levels, minlength=4)[:4])
-
-
-def differences(before, after) -> np.ndarray:
-    """(n, 2) array of cells (x, y) where two final rasters differ.
-
-    A cell differs when one run wrote it and the other did not, or when
-    both wrote a value (a colour) and the values differ.
-    """
-    if before is None or after is None or before.counts.shape != after.counts.shape:
-        return np.zeros((0, 2), dtype=np.int64)
-    differ = before.written() != after.written()
-    if before.colors is not None and after.colors is not None:
-        both = before.written() & after.written()
-        differ |= both & (before.colors != after.colors)
-    ys, xs = np.nonzero(differ)
-    return np.stack([xs, ys], axis=1).astype(np.int64)
 
 
 # ------------------------------------------------------------------ parts
@@ -354,22 +341,6 @@ def depth_image(depth, clear: float, near: float, far: float) -> np.ndarray:
     return image
 
 
-def final_coverage(width: int, height: int, pixels, values) -> np.ndarray:
-    """(H, W) coverage a run ends with: the value written last to each
-    pixel (``pixels`` (n, 2) cells x, y in emission order), 0 elsewhere."""
-    result = np.zeros((int(height), int(width)))
-    pixels = np.asarray(pixels, dtype=np.int64).reshape(-1, 2)
-    values = np.asarray(values, dtype=np.float64).ravel()
-    if not len(pixels):
-        return result
-    x, y = pixels[:, 0], pixels[:, 1]
-    keep = (x >= 0) & (x < width) & (y >= 0) & (y < height) & np.isfinite(values)
-    flat = (y * width + x)[keep][::-1]
-    flat, first = np.unique(flat, return_index=True)  # first of the reversed: the last write
-    result.ravel()[flat] = values[keep][::-1][first]
-    return result
-
-
 def error_stats(estimate, exact) -> tuple[float, float, np.ndarray]:
     """(RMS, max, per-pixel error) of |estimate - exact|. The RMS is taken
     over the pixels either one covers (the others are right trivially and
@@ -393,3 +364,11 @@ def error_image(error, top: float | None = None) -> np.ndarray:
     image[..., 1] = image[..., 2] = np.rint(255 * (1 - t)).astype(np.uint8)
     image[..., 3] = 255
     return image
+
+
+def diff_image(d, palette=PALETTE) -> np.ndarray:
+    """The diff as a uint8 RGBA image (H, W, 4), row 0 at y = 0."""
+    lut = np.array([packed_rgba(palette.background)]
+                   + [packed_rgba(c) for c in compare.DIFF_COLOURS], dtype="<u4")
+    cells = lut[d.classes()]
+    return cells.view(np.uint8).reshape(cells.shape[0], cells.shape[1], 4)

@@ -24,64 +24,10 @@ import numpy as np
 from algorithms import registry
 from algorithms.steps import PLOT, VISIT, Span
 
+from app.model.geometry import (exact_reference, final_coverage, ideal_paths,  # noqa: F401
+                                scene_paths, takes_circle)
 from app.render import compose as render
 from app.render.compose import PALETTE, Overlay, Palette, compose
-
-
-# ------------------------------------------------------------ ideal primitive
-def takes_circle(spec) -> bool:
-    """One centre and a radius (or radii): a circle, an ellipse, a seed fill
-    inside a circle."""
-    names = {option.name for option in spec.options}
-    inputs = spec.inputs
-    return (inputs.count == 1 and not inputs.contours and not inputs.multiple
-            and bool(names & {"radius", "rx"}))
-
-
-def ideal_paths(spec, points, options) -> list:
-    """The ideal primitive as [(points, closed), ...] in grid units.
-
-    A whole-pixel point (i, j) stands for its pixel's centre (i + 1/2,
-    j + 1/2). Lines: the segment between the end pixels' centres. Circles
-    and ellipses: the exact curve of the radius options around the centre.
-    Triangles given in threes: each triangle. Polygons and outlines: the
-    closed polygon through the points. An antialiasing run's ``shape``
-    option says how its points group: in threes, one polygon, or a segment.
-    """
-    inputs = spec.inputs
-    if inputs.integer:
-        centres = [(x + 0.5, y + 0.5) for x, y in points]
-    else:
-        centres = [(float(x), float(y)) for x, y in points]
-    if not centres:
-        return []
-    if takes_circle(spec):
-        rx = options.get("rx", options.get("radius"))
-        ry = options.get("ry", options.get("radius"))
-        if len(centres) != 1 or not all(isinstance(r, (int, float)) and not isinstance(r, bool)
-                                        for r in (rx, ry)):
-            return []
-        (cx, cy), angles = centres[0], np.linspace(0, 2 * np.pi, 241)
-        return [(list(zip(cx + rx * np.cos(angles), cy + ry * np.sin(angles))), False)]
-    shape = options.get("shape")
-    if shape == "triangles":
-        return [(centres[k:k + 3], True) for k in range(0, len(centres) - 2, 3)]
-    if shape in ("polygon", "thick-line"):
-        return [(centres, shape == "polygon")]
-    if getattr(inputs, "multiple", False):
-        count = inputs.count
-        return [(centres[k:k + count], True) for k in range(0, len(centres) - count + 1, count)]
-    closed = getattr(inputs, "contours", False) or inputs.count >= 3
-    return [(centres, closed and len(centres) >= 3)]
-
-
-def scene_paths(spec, points, options) -> list:
-    """``ideal_paths`` for points as a scene file holds them: a polygon's
-    points are a list of contours there, each its own closed path."""
-    if getattr(spec.inputs, "contours", False) and points and isinstance(points[0][0],
-                                                                         (list, tuple)):
-        return [path for contour in points for path in ideal_paths(spec, contour, options)]
-    return ideal_paths(spec, points, options)
 
 
 # ------------------------------------------------------------ highlights
@@ -394,35 +340,10 @@ def pixel_samples(trace, index: int, limit: int = 4096) -> PixelSamples | None:
     return PixelSamples((cx, cy), sx[rows].copy(), sy[rows].copy(), hits, current)
 
 
-# ------------------------------------------------------------ exact coverage
-def exact_reference(spec, points, options, grid) -> np.ndarray | None:
-    """(H, W) exact coverage of the primitive an antialiasing run draws, or
-    None where there is no single one (not antialiasing; a moving shape).
-    ``grid`` is (W, H), or a window (x0, y0, x1, y1) of the grid's cells."""
-    if spec is None or spec.family != "antialias" or not points:
-        return None
-    from algorithms import antialias
-    from algorithms.exact import coverage as exact_coverage
-    window = tuple(int(v) for v in grid)
-    if spec.name in ("line-wu", "line-area"):
-        if len(points) != 2:
-            return None
-        (px, py), (qx, qy) = points
-        return exact_coverage.segment_coverage(
-            (px + 0.5, py + 0.5), (qx + 0.5, qy + 0.5), float(options.get("width", 1.0)),
-            window, options.get("caps", "butt"))
-    if spec.name == "aa-temporal":
-        return None
-    try:
-        return antialias.reference_coverage(points, options, window)
-    except (ValueError, ArithmeticError):
-        return None
-
-
 def run_coverage(trace) -> np.ndarray | None:
     """(H, W) coverage a run ends with (its ``pixel_value`` written last to
     each pixel, 0 elsewhere), or None for a run that writes no values."""
     if trace is None or trace.start.pixel_value is None:
         return None
     values = trace.pixel_values()
-    return render.final_coverage(trace.width, trace.height, trace.written_pixels(), values)
+    return final_coverage(trace.width, trace.height, trace.written_pixels(), values)

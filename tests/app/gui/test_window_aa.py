@@ -9,7 +9,8 @@ from PySide6.QtCore import Qt
 
 from algorithms.exact import coverage as exact_coverage
 from app.render import frame as frame_view
-from app.render.compose import depth_image, error_image, error_stats, final_coverage
+from app.model.geometry import final_coverage
+from app.render.compose import depth_image, error_image, error_stats
 
 
 TRIANGLE = [(3.25, 2.5), (20.5, 6.75), (9.125, 17.25)]

@@ -136,7 +136,7 @@ def test_diff_image_colours_each_class():
     a.write(1, 0)
     b.write(1, 0)
     b.write(2, 0)
-    image = compare.diff_image(compare.diff(a, b))
+    image = render.diff_image(compare.diff(a, b))
     for x, colour in enumerate((compare.DIFF_COLOURS[0], compare.DIFF_COLOURS[2],
                                 compare.DIFF_COLOURS[1])):
         value = int(colour[1:], 16)
