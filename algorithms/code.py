@@ -35,3 +35,11 @@ def nonzero(counts: dict) -> dict:
         if count:
             merged[name] = merged.get(name, 0) + count
     return merged
+
+
+def listing(build):
+    """A spec's ``code(points, options)`` from a function that builds a Code."""
+    def code(points, options):
+        return tuple(build(points, options).lines)
+    code.__name__ = build.__name__
+    return code

@@ -10,8 +10,9 @@ import math
 
 import numpy as np
 
+from .code import Code, listing
 from .registry import AlgorithmSpec, InputError, Inputs, Option, register
-from .steps import NO_PIXEL, PLOT, VISIT, CodeLine, Start, Vars
+from .steps import NO_PIXEL, PLOT, VISIT, Start, Vars
 
 NAN = math.nan
 
@@ -98,25 +99,28 @@ def _with_color(ramp, names):
 
 
 # ---------------------------------------------------------------- Bresenham
-def bresenham_code(points, options):
+def bresenham_listing(points, options) -> Code:
     ties_to_e = _bresenham_ties_to_e(points, options)
     test = "d <= 0" if ties_to_e else "d < 0"
-    # Operation counts (CodeLine.ops): the first frame stands on line 1, so
-    # the octant mapping of line 0 (two subtractions, three tests) is
-    # counted there; doubling is an addition. The loop test of line 3 is
-    # counted on the E and NE lines, one of which every iteration runs.
-    return (
-        CodeLine("map P, Q into octant 1 (swap x and y if steep, mirror negative steps)"),
-        CodeLine("dx = x1 - x0;  dy = y1 - y0;  incrE = 2*dy;  incrNE = 2*(dy - dx)",
-                 ops={"int_add": 5, "compare": 3}),
-        CodeLine("d = 2*dy - dx;  x, y = x0, y0;  plot(x, y)", PLOT, ops={"int_add": 2}),
-        CodeLine("while x < x1:        (the loop runs to x1, so Q is plotted)"),
-        CodeLine(f"    if {test}:  d += incrE;  x += 1;  plot(x, y)", PLOT, "E",
-                 ops={"int_add": 2, "compare": 2}),
-        CodeLine("    else:  d += incrNE;  x += 1;  y += 1;  plot(x, y)", PLOT, "NE",
-                 ops={"int_add": 3, "compare": 2}),
-        CodeLine("done"),
-    )
+    # Operation counts (CodeLine.ops): the first frame stands on the setup
+    # line, so the octant mapping (two subtractions, three tests) is counted
+    # there; doubling is an addition. The loop test is counted on the E and
+    # NE lines, one of which every iteration runs.
+    code = Code()
+    code.add("map", "map P, Q into octant 1 (swap x and y if steep, mirror negative steps)")
+    code.add("setup", "dx = x1 - x0;  dy = y1 - y0;  incrE = 2*dy;  incrNE = 2*(dy - dx)",
+             ops={"int_add": 5, "compare": 3})
+    code.add("plot_first", "d = 2*dy - dx;  x, y = x0, y0;  plot(x, y)", PLOT, ops={"int_add": 2})
+    code.add("loop", "while x < x1:        (the loop runs to x1, so Q is plotted)")
+    code.add("plot_e", f"    if {test}:  d += incrE;  x += 1;  plot(x, y)", PLOT, "E",
+             ops={"int_add": 2, "compare": 2})
+    code.add("plot_ne", "    else:  d += incrNE;  x += 1;  y += 1;  plot(x, y)", PLOT, "NE",
+             ops={"int_add": 3, "compare": 2})
+    code.add("done", "done")
+    return code
+
+
+bresenham_code = listing(bresenham_listing)
 
 
 def _bresenham_ties_to_e(points, options) -> bool:
@@ -132,52 +136,52 @@ def bresenham(points, options):
     p, q = points
     octant = Octant(p, q)
     dx, dy = octant.dx, octant.dy
-    incr_e, incr_ne = 2 * dy, 2 * (dy - dx)
+    at = bresenham_listing(points, options).at
+    ramp = color_ramp(options)
+    yield Start(line=at["setup"], values=_with_color(ramp, ("d",)),
+                constants={"dx": dx, "dy": dy, "incrE": 2 * dy, "incrNE": 2 * (dy - dx),
+                           "octant": octant.number, "steep": octant.steep},
+                pixel_value="rgb" if ramp else None,
+                candidates=(octant.major, (octant.major[0] + octant.minor[0],
+                                           octant.major[1] + octant.minor[1])),
+                decision="d")
     # d is an integer, so "d < 0" is "d <= -1".
     limit = 0 if _bresenham_ties_to_e(points, options) else -1
-    ramp = color_ramp(options)
-    yield Start(1, _with_color(ramp, ("d",)),
-                {"dx": dx, "dy": dy, "incrE": incr_e, "incrNE": incr_ne,
-                 "octant": octant.number, "steep": octant.steep},
-                "rgb" if ramp else None,
-                (octant.major, (octant.major[0] + octant.minor[0], octant.major[1] + octant.minor[1])),
-                "d")
-    if ramp:
-        yield from _bresenham_colored(p, octant, limit, ramp)
-        return
+    frames = _bresenham_frames(p, octant, limit, at)
+    yield from _colored(frames, ramp, dx) if ramp else frames
+
+
+def _bresenham_frames(p, octant, limit, at):
+    """The textbook loop in octant 1, each pixel mapped back as it is plotted."""
+    dx, dy = octant.dx, octant.dy
+    incr_e, incr_ne = 2 * dy, 2 * (dy - dx)
     (ex, ey), (nx, ny) = octant.major, octant.minor
     nx, ny = nx + ex, ny + ey
+    east, north_east = at["plot_e"], at["plot_ne"]
     x, y = p
     d = 2 * dy - dx
-    yield (2, x, y, d)
+    yield (at["plot_first"], x, y, d)
     # Each frame carries the d that decided it (d_i); d_i+1 is the next frame's.
     for _ in range(dx):
         if d <= limit:
             x += ex
             y += ey
-            yield (4, x, y, d)
+            yield (east, x, y, d)
             d += incr_e
         else:
             x += nx
             y += ny
-            yield (5, x, y, d)
+            yield (north_east, x, y, d)
             d += incr_ne
-    yield (6, NO_PIXEL, NO_PIXEL, d)
+    yield (at["done"], NO_PIXEL, NO_PIXEL, d)
 
 
-def _bresenham_colored(p, octant, limit, ramp):
-    dx, dy = octant.dx, octant.dy
-    d = 2 * dy - dx
-    v = 0
-    yield (2, p[0], p[1], d, ramp.at(0.0))
-    for u in range(1, dx + 1):
-        before = d
-        if d <= limit:
-            line, d = 4, d + 2 * dy
-        else:
-            line, d, v = 5, d + 2 * (dy - dx), v + 1
-        yield (line, *octant.to_grid(p, u, v), before, ramp.at(u / dx))
-    yield (6, NO_PIXEL, NO_PIXEL, d, NAN)
+def _colored(frames, ramp, steps: int):
+    """The frames with each plot's colour appended: step k of ``steps`` takes
+    the ramp at t = k / steps; a frame with no pixel takes no colour."""
+    for k, frame in enumerate(frames):
+        color = NAN if frame[1] == NO_PIXEL else ramp.at(_t(k, steps))
+        yield (*frame, color)
 
 
 def bresenham_pixels(points, options) -> np.ndarray:
@@ -229,19 +233,21 @@ register(AlgorithmSpec(
 
 
 # ---------------------------------------------------------------------- DDA
-def dda_code(points, options):
-    # Operation counts: line 0 runs before the first frame (on line 1) and
-    # is counted there; the loop counter and test of line 3 on line 4.
-    return (
-        CodeLine("dx = x1 - x0;  dy = y1 - y0;  steps = max(|dx|, |dy|)"),
-        CodeLine(f"x_inc = dx / steps;  y_inc = dy / steps   (one is +-1, the other m or 1/m; {options['dtype']})",
-                 ops={"int_add": 2, "compare": 3, "div": 2}),
-        CodeLine("x, y = x0, y0;  plot(round(x), round(y))", PLOT, ops={"round": 2}),
-        CodeLine("repeat steps times:"),
-        CodeLine("    x += x_inc;  y += y_inc;  plot(round(x), round(y))", PLOT,
-                 ops={"float_add": 2, "round": 2, "int_add": 1, "compare": 1}),
-        CodeLine("done"),
-    )
+def dda_listing(points, options) -> Code:
+    # Operation counts: the first line runs before the first frame (on the
+    # increments line) and is counted there; the loop's counter and test on
+    # the loop body's line.
+    code = Code()
+    code.add("setup", "dx = x1 - x0;  dy = y1 - y0;  steps = max(|dx|, |dy|)")
+    code.add("increments", "x_inc = dx / steps;  y_inc = dy / steps   (one is +-1, the other m "
+                           f"or 1/m; {options['dtype']})",
+             ops={"int_add": 2, "compare": 3, "div": 2})
+    code.add("plot_first", "x, y = x0, y0;  plot(round(x), round(y))", PLOT, ops={"round": 2})
+    code.add("loop", "repeat steps times:")
+    code.add("plot_step", "    x += x_inc;  y += y_inc;  plot(round(x), round(y))", PLOT,
+             ops={"float_add": 2, "round": 2, "int_add": 1, "compare": 1})
+    code.add("done", "done")
+    return code
 
 
 def dda(points, options):
@@ -251,19 +257,25 @@ def dda(points, options):
     x_inc = real(x1 - x0) / real(steps) if steps else real(0)
     y_inc = real(y1 - y0) / real(steps) if steps else real(0)
     ramp = color_ramp(options)
-    yield Start(1, _with_color(ramp, ("x", "y")),
-                {"dx": x1 - x0, "dy": y1 - y0, "steps": steps,
-                 "x_inc": float(x_inc), "y_inc": float(y_inc), "dtype": options["dtype"]},
-                "rgb" if ramp else None)
+    at = dda_listing(points, options).at
+    yield Start(line=at["increments"], values=_with_color(ramp, ("x", "y")),
+                constants={"dx": x1 - x0, "dy": y1 - y0, "steps": steps, "x_inc": float(x_inc),
+                           "y_inc": float(y_inc), "dtype": options["dtype"]},
+                pixel_value="rgb" if ramp else None)
+    frames = _dda_frames(points, real, steps, x_inc, y_inc, at)
+    yield from _colored(frames, ramp, steps) if ramp else frames
+
+
+def _dda_frames(points, real, steps, x_inc, y_inc, at):
+    (x0, y0), _ = points
     x, y = real(x0), real(y0)
-    color = (ramp.at(0.0),) if ramp else ()
-    yield (2, x0, y0, float(x), float(y), *color)
-    for k in range(1, steps + 1):
+    yield (at["plot_first"], x0, y0, float(x), float(y))
+    step = at["plot_step"]
+    for _ in range(steps):
         x = real(x + x_inc)
         y = real(y + y_inc)
-        color = (ramp.at(k / steps),) if ramp else ()
-        yield (4, round_half_up(float(x)), round_half_up(float(y)), float(x), float(y), *color)
-    yield (5, NO_PIXEL, NO_PIXEL, float(x), float(y), *((NAN,) if ramp else ()))
+        yield (step, round_half_up(float(x)), round_half_up(float(y)), float(x), float(y))
+    yield (at["done"], NO_PIXEL, NO_PIXEL, float(x), float(y))
 
 
 def dda_pixels(points, options) -> np.ndarray:
@@ -290,7 +302,7 @@ register(AlgorithmSpec(
     inputs=SEGMENT,
     options=(Option("dtype", "choice", "float64", "float type of the accumulators",
                     choices=("float64", "float32")), COLORS),
-    code=dda_code,
+    code=listing(dda_listing),
     generator=dda,
     kernel=dda_pixels,
     notes=("round(v) is floor(v + 1/2): halves round up.",),
@@ -325,25 +337,28 @@ ROUNDING = Option("rounding", "choice", "floor",
                   "the nearest pixel", choices=("floor", "round"))
 
 
-def incremental_code(points, options):
+Q_AS_GIVEN = ("plot(x1, y1)   (the loop stops one short of Q, as in the notes; "
+              "Q is plotted as given)")
+
+
+def incremental_listing(points, options) -> Code:
     steep, *_ = _major_axis(points)
     a, b = ("y", "x") if steep else ("x", "y")
     slope, ratio = ("1/m", "dx / dy") if steep else ("m", "dy / dx")
     rounding = options["rounding"]
-    # Operation counts: the loop's step and test (line 2) are counted on
-    # line 3, whose frame every iteration yields.
-    return (
-        CodeLine(f"dx = x1 - x0;  dy = y1 - y0;  {a} is the major axis "
-                 f"(|d{a}| {'>' if steep else '>='} |d{b}|)", ops={"int_add": 2, "compare": 3}),
-        CodeLine(f"{slope} = {ratio}  (a float);  s = sign(d{a})", ops={"div": 1, "compare": 1}),
-        CodeLine(f"for {a} = {a}0, {a}0 + s, ... while {a} != {a}1:"),
-        CodeLine(f"    {b}_real = {slope} * ({a} - {a}0) + {b}0;  "
-                 f"plot({rounding}({b}_real)) in {'row' if steep else 'column'} {a}", PLOT,
-                 ops={"int_add": 2, "mul": 1, "float_add": 1, "round": 1, "compare": 1}),
-        CodeLine("plot(x1, y1)   (the loop stops one short of Q, as in the notes; "
-                 "Q is plotted as given)", PLOT),
-        CodeLine("done"),
-    )
+    # Operation counts: the loop's step and test are counted on the loop
+    # body's line, whose frame every iteration yields.
+    code = Code()
+    code.add("setup", f"dx = x1 - x0;  dy = y1 - y0;  {a} is the major axis "
+                      f"(|d{a}| {'>' if steep else '>='} |d{b}|)", ops={"int_add": 2, "compare": 3})
+    code.add("slope", f"{slope} = {ratio}  (a float);  s = sign(d{a})", ops={"div": 1, "compare": 1})
+    code.add("loop", f"for {a} = {a}0, {a}0 + s, ... while {a} != {a}1:")
+    code.add("plot_step", f"    {b}_real = {slope} * ({a} - {a}0) + {b}0;  "
+                          f"plot({rounding}({b}_real)) in {'row' if steep else 'column'} {a}", PLOT,
+             ops={"int_add": 2, "mul": 1, "float_add": 1, "round": 1, "compare": 1})
+    code.add("plot_q", Q_AS_GIVEN, PLOT)
+    code.add("done", "done")
+    return code
 
 
 def _incremental_setup(points):
@@ -357,24 +372,26 @@ def incremental(points, options):
     steep, a0, b0, a1, b1, n, s, slope = _incremental_setup(points)
     rounder = math.floor if options["rounding"] == "floor" else round_half_up
     ramp = color_ramp(options)
+    at = incremental_listing(points, options).at
     real_name = "x_real" if steep else "y_real"
     (x0, y0), (x1, y1) = points
     nothing = (NAN, NAN) if ramp else (NAN,)
-    yield Start(0, _with_color(ramp, (real_name,)),
-                {"dx": x1 - x0, "dy": y1 - y0, ("1/m" if steep else "m"): slope,
-                 "major": "y" if steep else "x", "rounding": options["rounding"]},
-                "rgb" if ramp else None)
-    yield (1, NO_PIXEL, NO_PIXEL, *nothing)
+    yield Start(line=at["setup"], values=_with_color(ramp, (real_name,)),
+                constants={"dx": x1 - x0, "dy": y1 - y0, ("1/m" if steep else "m"): slope,
+                           "major": "y" if steep else "x", "rounding": options["rounding"]},
+                pixel_value="rgb" if ramp else None)
+    yield (at["slope"], NO_PIXEL, NO_PIXEL, *nothing)
+    step = at["plot_step"]
     for k in range(n):
         a = a0 + s * k
         # Evaluated anew from the line equation in every column (not added up).
         real = slope * (a - a0) + b0
         color = (ramp.at(k / n),) if ramp else ()
-        yield (3, *_pixel(steep, a, rounder(real)), real, *color)
+        yield (step, *_pixel(steep, a, rounder(real)), real, *color)
     # Floor of a float m*dx + y0 can land one below y1 (1/49 * 49 is
     # 0.999...), so Q is plotted as given, not from the formula.
-    yield (4, x1, y1, float(b1), *((ramp.at(_t(n, n)),) if ramp else ()))
-    yield (5, NO_PIXEL, NO_PIXEL, *nothing)
+    yield (at["plot_q"], x1, y1, float(b1), *((ramp.at(_t(n, n)),) if ramp else ()))
+    yield (at["done"], NO_PIXEL, NO_PIXEL, *nothing)
 
 
 def incremental_pixels(points, options) -> np.ndarray:
@@ -406,7 +423,7 @@ def _rounding_explain(trace, i, rounding):
 
 
 def incremental_explain(trace, i):
-    if int(trace.line[i]) == 4:
+    if trace.code[int(trace.line[i])].text == Q_AS_GIVEN:
         return [("rounding", "none: Q is plotted as given")]
     return _rounding_explain(trace, i, trace.start.constants["rounding"])
 
@@ -418,7 +435,7 @@ register(AlgorithmSpec(
     summary="evaluate y = m*x + b anew in every column and round it",
     inputs=SEGMENT,
     options=(ROUNDING, COLORS),
-    code=incremental_code,
+    code=listing(incremental_listing),
     generator=incremental,
     kernel=incremental_pixels,
     explain=incremental_explain,
@@ -432,31 +449,30 @@ register(AlgorithmSpec(
 
 
 # ---------------------------------------------------------- explicit form
-def explicit_code(points, options):
-    return (
-        CodeLine("run = x1 - x0;  rise = y1 - y0", ops={"int_add": 2}),
-        CodeLine("if |run| >= |rise|:       (x is the major axis; also a point or a flat line)",
-                 branch="x major", ops={"compare": 3}),
-        CodeLine("    m = rise / run  (0 when run = 0);  c = y0 - m*x0",
-                 ops={"compare": 1, "div": 1, "mul": 1, "float_add": 1}),
-        CodeLine("    if run >= 0:  for x = x0, x0 + 1, ..., x1   (up to x1 itself, so Q is plotted)",
-                 branch="ascending", ops={"compare": 1}),
-        CodeLine("    else:         for x = x0, x0 - 1, ..., x1   (descending loop)", branch="descending",
-                 ops={"compare": 1}),
-        # The loop's step and test are counted with the body's frame.
-        CodeLine("        y = m*x + c;  setPixel(x, round(y))", PLOT,
-                 ops={"mul": 1, "float_add": 1, "round": 1, "int_add": 1, "compare": 1}),
-        CodeLine("else:                     (y is the major axis: x = n*y + d)", branch="y major",
-                 ops={"compare": 3}),
-        CodeLine("    n = run / rise;  d = x0 - n*y0", ops={"div": 1, "mul": 1, "float_add": 1}),
-        CodeLine("    if rise > 0:  for y = y0, y0 + 1, ..., y1   (up to y1 itself)", branch="ascending",
-                 ops={"compare": 1}),
-        CodeLine("    else:         for y = y0, y0 - 1, ..., y1   (descending loop)", branch="descending",
-                 ops={"compare": 1}),
-        CodeLine("        x = n*y + d;  setPixel(round(x), y)", PLOT,
-                 ops={"mul": 1, "float_add": 1, "round": 1, "int_add": 1, "compare": 1}),
-        CodeLine("done"),
-    )
+def explicit_listing(points, options) -> Code:
+    code = Code()
+    code.add("setup", "run = x1 - x0;  rise = y1 - y0", ops={"int_add": 2})
+    code.add("x_major", "if |run| >= |rise|:       (x is the major axis; also a point or a flat line)",
+             branch="x major", ops={"compare": 3})
+    code.add("x_setup", "    m = rise / run  (0 when run = 0);  c = y0 - m*x0",
+             ops={"compare": 1, "div": 1, "mul": 1, "float_add": 1})
+    code.add("x_up", "    if run >= 0:  for x = x0, x0 + 1, ..., x1   (up to x1 itself, so Q is plotted)",
+             branch="ascending", ops={"compare": 1})
+    code.add("x_down", "    else:         for x = x0, x0 - 1, ..., x1   (descending loop)",
+             branch="descending", ops={"compare": 1})
+    # The loop's step and test are counted with the body's frame.
+    plot = {"mul": 1, "float_add": 1, "round": 1, "int_add": 1, "compare": 1}
+    code.add("plot_x", "        y = m*x + c;  setPixel(x, round(y))", PLOT, ops=plot)
+    code.add("y_major", "else:                     (y is the major axis: x = n*y + d)",
+             branch="y major", ops={"compare": 3})
+    code.add("y_setup", "    n = run / rise;  d = x0 - n*y0", ops={"div": 1, "mul": 1, "float_add": 1})
+    code.add("y_up", "    if rise > 0:  for y = y0, y0 + 1, ..., y1   (up to y1 itself)",
+             branch="ascending", ops={"compare": 1})
+    code.add("y_down", "    else:         for y = y0, y0 - 1, ..., y1   (descending loop)",
+             branch="descending", ops={"compare": 1})
+    code.add("plot_y", "        x = n*y + d;  setPixel(round(x), y)", PLOT, ops=plot)
+    code.add("done", "done")
+    return code
 
 
 def _explicit_setup(points):
@@ -475,14 +491,17 @@ def explicit(points, options):
     (x0, y0), (x1, y1) = points
     ramp = color_ramp(options)
     nothing = (NAN, NAN) if ramp else (NAN,)
+    at = explicit_listing(points, options).at
     if steep:
         constants = {"run": x1 - x0, "rise": y1 - y0, "n": slope, "d": intercept}
-        case, setup, loop, plot = 6, 7, 8 if step > 0 else 9, 10
+        case, setup, plot = at["y_major"], at["y_setup"], at["plot_y"]
+        loop = at["y_up"] if step > 0 else at["y_down"]
     else:
         constants = {"run": x1 - x0, "rise": y1 - y0, "m": slope, "c": intercept}
-        case, setup, loop, plot = 1, 2, 3 if step > 0 else 4, 5
-    yield Start(0, _with_color(ramp, ("x_real" if steep else "y_real",)), constants,
-                "rgb" if ramp else None)
+        case, setup, plot = at["x_major"], at["x_setup"], at["plot_x"]
+        loop = at["x_up"] if step > 0 else at["x_down"]
+    yield Start(line=at["setup"], values=_with_color(ramp, ("x_real" if steep else "y_real",)),
+                constants=constants, pixel_value="rgb" if ramp else None)
     yield (case, NO_PIXEL, NO_PIXEL, *nothing)
     yield (setup, NO_PIXEL, NO_PIXEL, *nothing)
     yield (loop, NO_PIXEL, NO_PIXEL, *nothing)
@@ -493,7 +512,7 @@ def explicit(points, options):
         real = slope * a + intercept
         color = (ramp.at(_t(k, n)),) if ramp else ()
         yield (plot, *_pixel(steep, a, round_half_up(real)), real, *color)
-    yield (11, NO_PIXEL, NO_PIXEL, *nothing)
+    yield (at["done"], NO_PIXEL, NO_PIXEL, *nothing)
 
 
 def explicit_pixels(points, options) -> np.ndarray:
@@ -516,7 +535,7 @@ register(AlgorithmSpec(
     summary="y = m*x + c with a case for each slope and direction",
     inputs=SEGMENT,
     options=(COLORS,),
-    code=explicit_code,
+    code=listing(explicit_listing),
     generator=explicit,
     kernel=explicit_pixels,
     explain=explicit_explain,
@@ -527,25 +546,25 @@ register(AlgorithmSpec(
 
 
 # ---------------------------------------------------------- implicit form
-def implicit_code(points, options):
-    # Operation counts: every pixel of the box yields one frame, on line 4
-    # or 5, so each of them carries the whole test: the inner loop's step
-    # and condition, and the distance of line 3 as the exact integer test
+def implicit_listing(points, options) -> Code:
+    # Operation counts: every pixel of the box yields one frame, on the skip
+    # or the plot line, so each of them carries the whole test: the inner
+    # loop's step and condition, and the distance as the exact integer test
     # does it (w = X - P; along = w.D; two range tests; cross = D x w;
     # 4 cross^2 against |PQ|^2). No square root is needed for the verdict.
     test = {"int_add": 5, "mul": 6, "compare": 4, "pixels_tested": 1}
-    return (
-        CodeLine("the bounding box of P and Q, edges included (a loop with '<' would miss "
-                 "Q's column and row); walk it from P's corner to Q's",
-                 ops={"int_add": 3, "mul": 2, "compare": 2}),
-        CodeLine("for x = x0 .. x1:"),
-        CodeLine("    for y = y0 .. y1:"),
-        CodeLine("        dist = distance from (x, y) to the segment PQ  "
-                 "(to P or Q where (x, y) lies beyond an end)"),
-        CodeLine("        if dist >= 1/2:  skip", VISIT, ops=test),
-        CodeLine("        else:  setPixel(x, y)", PLOT, ops=test),
-        CodeLine("done"),
-    )
+    code = Code()
+    code.add("box", "the bounding box of P and Q, edges included (a loop with '<' would miss "
+                    "Q's column and row); walk it from P's corner to Q's",
+             ops={"int_add": 3, "mul": 2, "compare": 2})
+    code.add("columns", "for x = x0 .. x1:")
+    code.add("rows", "    for y = y0 .. y1:")
+    code.add("distance", "        dist = distance from (x, y) to the segment PQ  "
+                         "(to P or Q where (x, y) lies beyond an end)")
+    code.add("skip", "        if dist >= 1/2:  skip", VISIT, ops=test)
+    code.add("plot", "        else:  setPixel(x, y)", PLOT, ops=test)
+    code.add("done", "done")
+    return code
 
 
 def _segment_test(p, dx, dy, length_sq, x, y):
@@ -570,19 +589,21 @@ def implicit(points, options):
     length_sq = dx * dx + dy * dy
     sx, sy = _sign(dx), _sign(dy)
     ramp = color_ramp(options)
-    yield Start(0, _with_color(ramp, ("dist",)),
-                {"x0": p[0], "y0": p[1], "x1": q[0], "y1": q[1], "|PQ|^2": length_sq},
-                "rgb" if ramp else None)
+    at = implicit_listing(points, options).at
+    yield Start(line=at["box"], values=_with_color(ramp, ("dist",)),
+                constants={"x0": p[0], "y0": p[1], "x1": q[0], "y1": q[1], "|PQ|^2": length_sq},
+                pixel_value="rgb" if ramp else None)
+    skip, plot = at["skip"], at["plot"]
     for x in range(p[0], q[0] + sx, sx):
         for y in range(p[1], q[1] + sy, sy):
             num, den, _ = _segment_test(p, dx, dy, length_sq, x, y)
             dist = math.sqrt(num / den) / 2
             if num >= den:
-                yield (4, x, y, dist, *((NAN,) if ramp else ()))
+                yield (skip, x, y, dist, *((NAN,) if ramp else ()))
                 continue
             color = (ramp.at(_projection(p, dx, dy, length_sq, x, y)),) if ramp else ()
-            yield (5, x, y, dist, *color)
-    yield (6, NO_PIXEL, NO_PIXEL, NAN, *((NAN,) if ramp else ()))
+            yield (plot, x, y, dist, *color)
+    yield (at["done"], NO_PIXEL, NO_PIXEL, NAN, *((NAN,) if ramp else ()))
 
 
 def _projection(p, dx, dy, length_sq, x, y) -> float:
@@ -642,7 +663,7 @@ register(AlgorithmSpec(
     summary="test every pixel of the bounding box: distance to PQ below 1/2",
     inputs=SEGMENT,
     options=(COLORS,),
-    code=implicit_code,
+    code=listing(implicit_listing),
     generator=implicit,
     kernel=implicit_pixels,
     explain=implicit_explain,
@@ -664,24 +685,24 @@ DT = Option("dt", "float", 0.001,
             "along the major axis", minimum=1e-6, maximum=1.0, choices=("auto",))
 
 
-def parametric_code(points, options):
+def parametric_listing(points, options) -> Code:
     dt = "1 / max(|dx|, |dy|)" if options["dt"] == "auto" else f"{options['dt']:g}"
     auto = options["dt"] == "auto"
-    # Operation counts: each step yields one frame, on line 3, which carries
-    # the step's whole work: k += 1 and its test, t = k*dt (k/n for auto),
-    # p = P + t*D and the two roundings.
+    # Operation counts: each step yields one frame, on the plot line, which
+    # carries the step's whole work: k += 1 and its test, t = k*dt (k/n for
+    # auto), p = P + t*D and the two roundings.
     step = {"int_add": 1, "compare": 1, "mul": 2 if auto else 3, "float_add": 2, "round": 2}
     if auto:
         step["div"] = 1
-    return (
-        CodeLine(f"dt = {dt};  D = Q - P", ops={"int_add": 2, **({"div": 1} if auto else {})}),
-        CodeLine("for k = 0, 1, 2, ...:  t = min(k*dt, 1)   "
-                 "(a whole counter k, so t does not drift; the last t is exactly 1)"),
-        CodeLine("    p = P + t*D"),
-        CodeLine("    plot(round(p.x), round(p.y))", PLOT, ops=step),
-        CodeLine("    stop after t = 1   (so Q is always plotted)"),
-        CodeLine("done"),
-    )
+    code = Code()
+    code.add("setup", f"dt = {dt};  D = Q - P", ops={"int_add": 2, **({"div": 1} if auto else {})})
+    code.add("loop", "for k = 0, 1, 2, ...:  t = min(k*dt, 1)   "
+                     "(a whole counter k, so t does not drift; the last t is exactly 1)")
+    code.add("point", "    p = P + t*D")
+    code.add("plot", "    plot(round(p.x), round(p.y))", PLOT, ops=step)
+    code.add("stop", "    stop after t = 1   (so Q is always plotted)")
+    code.add("done", "done")
+    return code
 
 
 def _parametric_steps(points, options):
@@ -706,11 +727,14 @@ def parametric(points, options):
     dx, dy = x1 - x0, y1 - y0
     below, time, dt = _parametric_steps(points, options)
     ramp = color_ramp(options)
-    yield Start(0, _with_color(ramp, ("t", "duplicates", "gaps")),
-                {"x0": x0, "y0": y0, "dx": dx, "dy": dy, "dt": dt}, "rgb" if ramp else None)
+    at = parametric_listing(points, options).at
+    yield Start(line=at["setup"], values=_with_color(ramp, ("t", "duplicates", "gaps")),
+                constants={"x0": x0, "y0": y0, "dx": dx, "dy": dy, "dt": dt},
+                pixel_value="rgb" if ramp else None)
     seen = set()
     previous = None
     duplicates = gaps = 0
+    plot = at["plot"]
     for k in range(below + 1):
         t = time(k) if k < below else 1.0
         pixel = (round_half_up(x0 + t * dx), round_half_up(y0 + t * dy))
@@ -721,9 +745,9 @@ def parametric(points, options):
             gaps += 1
         seen.add(pixel)
         previous = pixel
-        yield (3, *pixel, t, duplicates, gaps, *((ramp.at(t),) if ramp else ()))
-    yield Vars(5, {"plots": below + 1, "pixels": len(seen),
-                   "duplicates": duplicates, "gaps": gaps})
+        yield (plot, *pixel, t, duplicates, gaps, *((ramp.at(t),) if ramp else ()))
+    yield Vars(line=at["done"], values={"plots": below + 1, "pixels": len(seen),
+                                        "duplicates": duplicates, "gaps": gaps})
 
 
 def parametric_pixels(points, options) -> np.ndarray:
@@ -766,7 +790,7 @@ register(AlgorithmSpec(
     summary="p = P + t (Q - P) for t in steps of dt; plot round(p)",
     inputs=SEGMENT,
     options=(DT, COLORS),
-    code=parametric_code,
+    code=listing(parametric_listing),
     generator=parametric,
     kernel=parametric_pixels,
     explain=parametric_explain,
