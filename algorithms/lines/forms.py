@@ -1,334 +1,15 @@
-"""The line family: step generators (and fast kernels) for segments P -> Q.
-
-Points are integer pixel coordinates; pixel (i, j) is the ideal line's
-sample point at (i + 1/2, j + 1/2), so the ideal segment runs between the
-centres of the two end pixels. Every algorithm plots both end pixels.
-"""
+"""The line from its equations: basic incremental, explicit, implicit and parametric forms."""
 from __future__ import annotations
 
 import math
 
 import numpy as np
 
-from .code import Code, listing
-from .registry import AlgorithmSpec, InputError, Inputs, Option, register
-from .steps import NO_PIXEL, PLOT, VISIT, Start, Vars
-
-NAN = math.nan
-
-COLORS = Option("colors", "colors", (), "endpoint colours #rrggbb,#rrggbb; the colour "
-                "of each pixel is interpolated linearly in t along the segment")
-SEGMENT = Inputs(2, integer=True, names=("P", "Q"))
-
-
-# ------------------------------------------------------------- shared parts
-class ColorRamp:
-    """Linear interpolation between two colours, packed as 0xRRGGBB."""
-
-    def __init__(self, first: str, last: str):
-        self.first = _unpack_hex(first)
-        self.last = _unpack_hex(last)
-
-    def at(self, t: float) -> int:
-        channels = [round(a + (b - a) * t) for a, b in zip(self.first, self.last)]
-        return (channels[0] << 16) | (channels[1] << 8) | channels[2]
-
-
-def _unpack_hex(text: str) -> tuple[int, int, int]:
-    value = int(text[1:], 16)
-    return (value >> 16) & 255, (value >> 8) & 255, value & 255
-
-
-def color_ramp(options: dict) -> ColorRamp | None:
-    colors = options.get("colors") or ()
-    if not colors:
-        return None
-    if len(colors) != 2:
-        raise InputError("option colors: give two colours, one for each endpoint")
-    return ColorRamp(*colors)
-
-
-def hex_color(packed: float) -> str:
-    return f"#{int(packed):06x}"
-
-
-def round_half_up(value: float) -> int:
-    """Nearest integer, halves rounded up (floor(v + 1/2))."""
-    return math.floor(value + 0.5)
-
-
-class Octant:
-    """How a segment maps into the first octant (0 <= slope <= 1, left to right).
-
-    The major axis is the one with the larger extent. ``major`` and
-    ``minor`` are unit steps in the original grid; the mapped segment runs
-    from (0, 0) to (dx, dy) with 0 <= dy <= dx.
-    """
-
-    def __init__(self, p, q):
-        ddx, ddy = q[0] - p[0], q[1] - p[1]
-        self.steep = abs(ddy) > abs(ddx)
-        sx = 1 if ddx >= 0 else -1
-        sy = 1 if ddy >= 0 else -1
-        if self.steep:
-            self.dx, self.dy = abs(ddy), abs(ddx)
-            self.major, self.minor = (0, sy), (sx, 0)
-        else:
-            self.dx, self.dy = abs(ddx), abs(ddy)
-            self.major, self.minor = (sx, 0), (0, sy)
-        # +1 when the minor coordinate grows from P towards Q.
-        self.minor_sign = self.minor[0] + self.minor[1]
-        self.number = _octant_number(ddx, ddy)
-
-    def to_grid(self, p, u, v):
-        """Mapped (u, v) back to the original grid, from P."""
-        return (p[0] + u * self.major[0] + v * self.minor[0],
-                p[1] + u * self.major[1] + v * self.minor[1])
-
-
-def _octant_number(ddx: int, ddy: int) -> int:
-    """Octant 1..8 counter-clockwise from the +x axis (0 for a point)."""
-    if ddx == 0 and ddy == 0:
-        return 0
-    angle = math.atan2(ddy, ddx) % (2 * math.pi)
-    return min(8, int(angle // (math.pi / 4)) + 1)
-
-
-def _with_color(ramp, names):
-    return names + ("rgb",) if ramp else names
-
-
-# ---------------------------------------------------------------- Bresenham
-def bresenham_listing(points, options) -> Code:
-    ties_to_e = _bresenham_ties_to_e(points, options)
-    test = "d <= 0" if ties_to_e else "d < 0"
-    # Operation counts (CodeLine.ops): the first frame stands on the setup
-    # line, so the octant mapping (two subtractions, three tests) is counted
-    # there; doubling is an addition. The loop test is counted on the E and
-    # NE lines, one of which every iteration runs.
-    code = Code()
-    code.add("map", "map P, Q into octant 1 (swap x and y if steep, mirror negative steps)")
-    code.add("setup", "dx = x1 - x0;  dy = y1 - y0;  incrE = 2*dy;  incrNE = 2*(dy - dx)",
-             ops={"int_add": 5, "compare": 3})
-    code.add("plot_first", "d = 2*dy - dx;  x, y = x0, y0;  plot(x, y)", PLOT, ops={"int_add": 2})
-    code.add("loop", "while x < x1:        (the loop runs to x1, so Q is plotted)")
-    code.add("plot_e", f"    if {test}:  d += incrE;  x += 1;  plot(x, y)", PLOT, "E",
-             ops={"int_add": 2, "compare": 2})
-    code.add("plot_ne", "    else:  d += incrNE;  x += 1;  y += 1;  plot(x, y)", PLOT, "NE",
-             ops={"int_add": 3, "compare": 2})
-    code.add("done", "done")
-    return code
-
-
-bresenham_code = listing(bresenham_listing)
-
-
-def _bresenham_ties_to_e(points, options) -> bool:
-    # The textbook sends a tie (d = 0) to E. Mirrored back, that rounds the
-    # minor coordinate towards P's side, so P->Q and Q->P can differ. With
-    # `symmetric`, ties always round the minor coordinate down instead.
-    if not options.get("symmetric"):
-        return True
-    return Octant(*points).minor_sign > 0
-
-
-def bresenham(points, options):
-    p, q = points
-    octant = Octant(p, q)
-    dx, dy = octant.dx, octant.dy
-    at = bresenham_listing(points, options).at
-    ramp = color_ramp(options)
-    yield Start(line=at["setup"], values=_with_color(ramp, ("d",)),
-                constants={"dx": dx, "dy": dy, "incrE": 2 * dy, "incrNE": 2 * (dy - dx),
-                           "octant": octant.number, "steep": octant.steep},
-                pixel_value="rgb" if ramp else None,
-                candidates=(octant.major, (octant.major[0] + octant.minor[0],
-                                           octant.major[1] + octant.minor[1])),
-                decision="d")
-    # d is an integer, so "d < 0" is "d <= -1".
-    limit = 0 if _bresenham_ties_to_e(points, options) else -1
-    frames = _bresenham_frames(p, octant, limit, at)
-    yield from _colored(frames, ramp, dx) if ramp else frames
-
-
-def _bresenham_frames(p, octant, limit, at):
-    """The textbook loop in octant 1, each pixel mapped back as it is plotted."""
-    dx, dy = octant.dx, octant.dy
-    incr_e, incr_ne = 2 * dy, 2 * (dy - dx)
-    (ex, ey), (nx, ny) = octant.major, octant.minor
-    nx, ny = nx + ex, ny + ey
-    east, north_east = at["plot_e"], at["plot_ne"]
-    x, y = p
-    d = 2 * dy - dx
-    yield (at["plot_first"], x, y, d)
-    # Each frame carries the d that decided it (d_i); d_i+1 is the next frame's.
-    for _ in range(dx):
-        if d <= limit:
-            x += ex
-            y += ey
-            yield (east, x, y, d)
-            d += incr_e
-        else:
-            x += nx
-            y += ny
-            yield (north_east, x, y, d)
-            d += incr_ne
-    yield (at["done"], NO_PIXEL, NO_PIXEL, d)
-
-
-def _colored(frames, ramp, steps: int):
-    """The frames with each plot's colour appended: step k of ``steps`` takes
-    the ramp at t = k / steps; a frame with no pixel takes no colour."""
-    for k, frame in enumerate(frames):
-        color = NAN if frame[1] == NO_PIXEL else ramp.at(_t(k, steps))
-        yield (*frame, color)
-
-
-def bresenham_pixels(points, options) -> np.ndarray:
-    """Fast kernel: the same pixels in closed form, (n, 2) int64."""
-    p, q = points
-    octant = Octant(p, q)
-    dx, dy = octant.dx, octant.dy
-    u = np.arange(dx + 1, dtype=np.int64)
-    if dx == 0:
-        v = np.zeros(1, dtype=np.int64)
-    elif _bresenham_ties_to_e(points, options):
-        v = -((dx - 2 * dy * u) // (2 * dx))  # ceil(dy*u/dx - 1/2): ties round down
-    else:
-        v = (2 * dy * u + dx) // (2 * dx)  # floor(dy*u/dx + 1/2): ties round up
-    x = p[0] + u * octant.major[0] + v * octant.minor[0]
-    y = p[1] + u * octant.major[1] + v * octant.minor[1]
-    return np.stack([x, y], axis=1)
-
-
-def bresenham_explain(trace, i):
-    """The decision at step i and the update it makes to d."""
-    step = trace.step(i)
-    if not step.branch or "d" not in step.values:
-        return []
-    d = int(step.values["d"])
-    constants = trace.start.constants
-    name = "incrE" if step.branch == "E" else "incrNE"
-    increment = constants[name]
-    relation = ">" if d > 0 else ("<" if d < 0 else "=")
-    return [("decision", f"d_i = {d} {relation} 0, so {step.branch}"),
-            ("update", f"d_i+1 = d_i + {name} = {d} + ({increment}) = {d + increment}")]
-
-
-register(AlgorithmSpec(
-    name="line-bresenham",
-    title="Bresenham",
-    family="lines",
-    summary="integer decision variable d; E or NE at each step",
-    inputs=SEGMENT,
-    options=(Option("symmetric", "bool", False,
-                    "break ties so that P->Q and Q->P give the same pixels"), COLORS),
-    code=bresenham_code,
-    generator=bresenham,
-    kernel=bresenham_pixels,
-    explain=bresenham_explain,
-    notes=("The textbook loop is written for octant 1; other octants are mapped "
-           "there and each plotted pixel is mapped back.",),
-))
-
-
-# ---------------------------------------------------------------------- DDA
-def dda_listing(points, options) -> Code:
-    # Operation counts: the first line runs before the first frame (on the
-    # increments line) and is counted there; the loop's counter and test on
-    # the loop body's line.
-    code = Code()
-    code.add("setup", "dx = x1 - x0;  dy = y1 - y0;  steps = max(|dx|, |dy|)")
-    code.add("increments", "x_inc = dx / steps;  y_inc = dy / steps   (one is +-1, the other m "
-                           f"or 1/m; {options['dtype']})",
-             ops={"int_add": 2, "compare": 3, "div": 2})
-    code.add("plot_first", "x, y = x0, y0;  plot(round(x), round(y))", PLOT, ops={"round": 2})
-    code.add("loop", "repeat steps times:")
-    code.add("plot_step", "    x += x_inc;  y += y_inc;  plot(round(x), round(y))", PLOT,
-             ops={"float_add": 2, "round": 2, "int_add": 1, "compare": 1})
-    code.add("done", "done")
-    return code
-
-
-def dda(points, options):
-    (x0, y0), (x1, y1) = points
-    real = np.float32 if options["dtype"] == "float32" else np.float64
-    steps = max(abs(x1 - x0), abs(y1 - y0))
-    x_inc = real(x1 - x0) / real(steps) if steps else real(0)
-    y_inc = real(y1 - y0) / real(steps) if steps else real(0)
-    ramp = color_ramp(options)
-    at = dda_listing(points, options).at
-    yield Start(line=at["increments"], values=_with_color(ramp, ("x", "y")),
-                constants={"dx": x1 - x0, "dy": y1 - y0, "steps": steps, "x_inc": float(x_inc),
-                           "y_inc": float(y_inc), "dtype": options["dtype"]},
-                pixel_value="rgb" if ramp else None)
-    frames = _dda_frames(points, real, steps, x_inc, y_inc, at)
-    yield from _colored(frames, ramp, steps) if ramp else frames
-
-
-def _dda_frames(points, real, steps, x_inc, y_inc, at):
-    (x0, y0), _ = points
-    x, y = real(x0), real(y0)
-    yield (at["plot_first"], x0, y0, float(x), float(y))
-    step = at["plot_step"]
-    for _ in range(steps):
-        x = real(x + x_inc)
-        y = real(y + y_inc)
-        yield (step, round_half_up(float(x)), round_half_up(float(y)), float(x), float(y))
-    yield (at["done"], NO_PIXEL, NO_PIXEL, float(x), float(y))
-
-
-def dda_pixels(points, options) -> np.ndarray:
-    """Fast kernel: sequential float accumulation with np.add.accumulate."""
-    (x0, y0), (x1, y1) = points
-    real = np.float32 if options["dtype"] == "float32" else np.float64
-    steps = max(abs(x1 - x0), abs(y1 - y0))
-    if steps == 0:
-        return np.array([[x0, y0]], dtype=np.int64)
-    columns = []
-    for start, delta in ((x0, x1 - x0), (y0, y1 - y0)):
-        terms = np.full(steps + 1, real(delta) / real(steps), dtype=real)
-        terms[0] = real(start)
-        # add.accumulate adds left to right, exactly as the loop does.
-        columns.append(np.floor(np.add.accumulate(terms).astype(np.float64) + 0.5))
-    return np.stack(columns, axis=1).astype(np.int64)
-
-
-register(AlgorithmSpec(
-    name="line-dda",
-    title="DDA",
-    family="lines",
-    summary="digital differential analyser: add the slope, round each step",
-    inputs=SEGMENT,
-    options=(Option("dtype", "choice", "float64", "float type of the accumulators",
-                    choices=("float64", "float32")), COLORS),
-    code=listing(dda_listing),
-    generator=dda,
-    kernel=dda_pixels,
-    notes=("round(v) is floor(v + 1/2): halves round up.",),
-))
-
-
-# ------------------------------------------------------- shared for the rest
-def _t(k: int, n: int) -> float:
-    """Where step k of n lies along the segment; 0 for a point."""
-    return k / n if n else 0.0
-
-
-def _major_axis(points):
-    """(steep, a0, b0, a1, b1): major coordinates a, minor b; x is major at 45 degrees."""
-    (x0, y0), (x1, y1) = points
-    if abs(y1 - y0) > abs(x1 - x0):
-        return True, y0, x0, y1, x1
-    return False, x0, y0, x1, y1
-
-
-def _pixel(steep: bool, a: int, b: int) -> tuple[int, int]:
-    return (b, a) if steep else (a, b)
-
-
-def _sign(value: int) -> int:
-    return 1 if value >= 0 else -1
+from ..code import Code, listing
+from ..registry import AlgorithmSpec, InputError, Option, register
+from ..steps import NO_PIXEL, PLOT, VISIT, Start, Vars
+from .common import (COLORS, NAN, SEGMENT, color_ramp, fraction_of, major_axis, pixel_at,
+                     round_half_up, sign, with_color)
 
 
 # ------------------------------------------------------ basic incremental
@@ -342,7 +23,7 @@ Q_AS_GIVEN = ("plot(x1, y1)   (the loop stops one short of Q, as in the notes; "
 
 
 def incremental_listing(points, options) -> Code:
-    steep, *_ = _major_axis(points)
+    steep, *_ = major_axis(points)
     a, b = ("y", "x") if steep else ("x", "y")
     slope, ratio = ("1/m", "dx / dy") if steep else ("m", "dy / dx")
     rounding = options["rounding"]
@@ -362,10 +43,10 @@ def incremental_listing(points, options) -> Code:
 
 
 def _incremental_setup(points):
-    steep, a0, b0, a1, b1 = _major_axis(points)
+    steep, a0, b0, a1, b1 = major_axis(points)
     n = abs(a1 - a0)
     slope = (b1 - b0) / (a1 - a0) if n else 0.0
-    return steep, a0, b0, a1, b1, n, _sign(a1 - a0), slope
+    return steep, a0, b0, a1, b1, n, sign(a1 - a0), slope
 
 
 def incremental(points, options):
@@ -376,7 +57,7 @@ def incremental(points, options):
     real_name = "x_real" if steep else "y_real"
     (x0, y0), (x1, y1) = points
     nothing = (NAN, NAN) if ramp else (NAN,)
-    yield Start(line=at["setup"], values=_with_color(ramp, (real_name,)),
+    yield Start(line=at["setup"], values=with_color(ramp, (real_name,)),
                 constants={"dx": x1 - x0, "dy": y1 - y0, ("1/m" if steep else "m"): slope,
                            "major": "y" if steep else "x", "rounding": options["rounding"]},
                 pixel_value="rgb" if ramp else None)
@@ -387,10 +68,10 @@ def incremental(points, options):
         # Evaluated anew from the line equation in every column (not added up).
         real = slope * (a - a0) + b0
         color = (ramp.at(k / n),) if ramp else ()
-        yield (step, *_pixel(steep, a, rounder(real)), real, *color)
+        yield (step, *pixel_at(steep, a, rounder(real)), real, *color)
     # Floor of a float m*dx + y0 can land one below y1 (1/49 * 49 is
     # 0.999...), so Q is plotted as given, not from the formula.
-    yield (at["plot_q"], x1, y1, float(b1), *((ramp.at(_t(n, n)),) if ramp else ()))
+    yield (at["plot_q"], x1, y1, float(b1), *((ramp.at(fraction_of(n, n)),) if ramp else ()))
     yield (at["done"], NO_PIXEL, NO_PIXEL, *nothing)
 
 
@@ -481,9 +162,9 @@ def _explicit_setup(points):
     run, rise = x1 - x0, y1 - y0
     if abs(run) >= abs(rise):
         m = rise / run if run else 0.0
-        return False, m, y0 - m * x0, x0, x1, _sign(run)
+        return False, m, y0 - m * x0, x0, x1, sign(run)
     n = run / rise
-    return True, n, x0 - n * y0, y0, y1, _sign(rise)
+    return True, n, x0 - n * y0, y0, y1, sign(rise)
 
 
 def explicit(points, options):
@@ -500,7 +181,7 @@ def explicit(points, options):
         constants = {"run": x1 - x0, "rise": y1 - y0, "m": slope, "c": intercept}
         case, setup, plot = at["x_major"], at["x_setup"], at["plot_x"]
         loop = at["x_up"] if step > 0 else at["x_down"]
-    yield Start(line=at["setup"], values=_with_color(ramp, ("x_real" if steep else "y_real",)),
+    yield Start(line=at["setup"], values=with_color(ramp, ("x_real" if steep else "y_real",)),
                 constants=constants, pixel_value="rgb" if ramp else None)
     yield (case, NO_PIXEL, NO_PIXEL, *nothing)
     yield (setup, NO_PIXEL, NO_PIXEL, *nothing)
@@ -510,8 +191,8 @@ def explicit(points, options):
         a = first + step * k
         # The line equation in absolute coordinates, as the notes write it.
         real = slope * a + intercept
-        color = (ramp.at(_t(k, n)),) if ramp else ()
-        yield (plot, *_pixel(steep, a, round_half_up(real)), real, *color)
+        color = (ramp.at(fraction_of(k, n)),) if ramp else ()
+        yield (plot, *pixel_at(steep, a, round_half_up(real)), real, *color)
     yield (at["done"], NO_PIXEL, NO_PIXEL, *nothing)
 
 
@@ -587,10 +268,10 @@ def implicit(points, options):
     p, q = points
     dx, dy = q[0] - p[0], q[1] - p[1]
     length_sq = dx * dx + dy * dy
-    sx, sy = _sign(dx), _sign(dy)
+    sx, sy = sign(dx), sign(dy)
     ramp = color_ramp(options)
     at = implicit_listing(points, options).at
-    yield Start(line=at["box"], values=_with_color(ramp, ("dist",)),
+    yield Start(line=at["box"], values=with_color(ramp, ("dist",)),
                 constants={"x0": p[0], "y0": p[1], "x1": q[0], "y1": q[1], "|PQ|^2": length_sq},
                 pixel_value="rgb" if ramp else None)
     skip, plot = at["skip"], at["plot"]
@@ -625,8 +306,8 @@ def implicit_pixels(points, options) -> np.ndarray:
         raise InputError(f"line-implicit: the bounding box is larger than "
                          f"{IMPLICIT_MAX_SIDE} pixels on a side")
     length_sq = dx * dx + dy * dy
-    wx = (_sign(dx) * np.arange(abs(dx) + 1, dtype=np.int64))[:, None]
-    wy = (_sign(dy) * np.arange(abs(dy) + 1, dtype=np.int64))[None, :]
+    wx = (sign(dx) * np.arange(abs(dx) + 1, dtype=np.int64))[:, None]
+    wy = (sign(dy) * np.arange(abs(dy) + 1, dtype=np.int64))[None, :]
     along = wx * dx + wy * dy
     to_p = 4 * (wx * wx + wy * wy)
     to_q = 4 * ((wx - dx) ** 2 + (wy - dy) ** 2)
@@ -635,7 +316,7 @@ def implicit_pixels(points, options) -> np.ndarray:
                       np.where(along >= length_sq, to_q < 1, 4 * cross * cross < length_sq))
     # Row-major order of the (x, y) box is x outer, y inner, as the loops.
     xs, ys = np.nonzero(inside)
-    return np.stack([p[0] + _sign(dx) * xs, p[1] + _sign(dy) * ys], axis=1).astype(np.int64)
+    return np.stack([p[0] + sign(dx) * xs, p[1] + sign(dy) * ys], axis=1).astype(np.int64)
 
 
 def implicit_explain(trace, i):
@@ -728,7 +409,7 @@ def parametric(points, options):
     below, time, dt = _parametric_steps(points, options)
     ramp = color_ramp(options)
     at = parametric_listing(points, options).at
-    yield Start(line=at["setup"], values=_with_color(ramp, ("t", "duplicates", "gaps")),
+    yield Start(line=at["setup"], values=with_color(ramp, ("t", "duplicates", "gaps")),
                 constants={"x0": x0, "y0": y0, "dx": dx, "dy": dy, "dt": dt},
                 pixel_value="rgb" if ramp else None)
     seen = set()
