@@ -12,6 +12,7 @@ from .common import (HALF_PIXEL, NAN, ONE, POLYGON, as_pixels, cross, first_colu
                      signed_area2, single_contour, snap_contours, table_number, without_repeats)
 from .scanline import scanline_pixels
 
+
 # ---------------------------------------------------------- convex polygon
 def convexity_problem(contour) -> str:
     """Why a contour (snapped, without repeats) is not convex, or ''."""

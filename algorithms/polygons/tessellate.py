@@ -7,6 +7,7 @@ from ..steps import NO_PIXEL, PER_PIXEL, PER_ROW, PLOT, VISIT, Note, Span, Start
 from .common import (HALF_PIXEL, NAN, ONE, POLYGON, cross, first_index, pixel_of, signed_area2,
                      single_contour, snap_contours, without_repeats)
 
+
 # ------------------------------------------------------------ tessellation
 def _segments_meet(p, q, r, s) -> bool:
     """Do the closed segments pq and rs share a point? (exact)"""
