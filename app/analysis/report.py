@@ -32,7 +32,6 @@ from app.analysis import measure
 
 from app.progress import TerminalBar
 
-from .report_figures import charts
 from .report_findings import View, findings, table
 from .report_sections import (section_antialias, section_circles, section_fill,
                               section_interpolation, section_lines, section_precision)
@@ -148,6 +147,7 @@ def write_files(out, config, rows: list, seconds: dict, started: float | None = 
     started = time.perf_counter() if started is None else started
     missing_aa = measure.antialias_available()
     view = View(rows)
+    from .report_figures import charts  # Pillow loads only when figures are drawn
     images = charts(view)
     documents = {
         "report.md": markdown(view, config, seconds, missing_aa, images).encode("utf-8"),

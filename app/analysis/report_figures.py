@@ -3,15 +3,20 @@ from __future__ import annotations
 
 import numpy as np
 
+from .charts import PALETTE, Chart, figure, palette
 from .report_findings import View, aa_front, fmt
 
 
-# ============================================================ charts
 def charts(view: View) -> dict:
-    """Family name -> Pillow image."""
-    from app.analysis.charts import Chart, figure, palette
+    """Family name -> Pillow image, for every family that was measured."""
+    drawn = {"lines": _lines(view), "circles": _circles(view),
+             "polygons": _meshes(view, "polygons"), "triangles": _meshes(view, "triangles"),
+             "fill": _fill(view), "interpolation": _interpolation(view),
+             "antialiasing": _antialiasing(view)}
+    return {family: image for family, image in drawn.items() if image is not None}
 
-    images = {}
+
+def _lines(view: View):
     lengths = view.values("lines", "length sweep", "missed columns")
     if lengths:
         costs = view.values("lines", "length sweep", "ops")
@@ -42,7 +47,11 @@ def charts(view: View) -> dict:
                                                   "missed columns") is not None]
             if any(y > 0 for _, y in curve):
                 right.add(v, curve)
-        images["lines"] = figure("Lines: cost against error", [left, middle, right])
+        return figure("Lines: cost against error", [left, middle, right])
+    return None
+
+
+def _circles(view: View):
     radii = [r for r in view.values("circles", "radius sweep", "gaps")]
     if radii:
         costs = view.values("circles", "radius sweep", "ops")
@@ -65,11 +74,13 @@ def charts(view: View) -> dict:
                 right.add(v, [(t, worst)], line=False, labels=[v])
             middle.add(v, [(r, view.get("circles", "radius sweep", v, r, "gaps"))
                            for r in radii if r > 0])
-        images["circles"] = figure("Circles: cost against error", [left, middle, right])
-    for family in ("polygons", "triangles"):
-        magnitudes = [m for m in view.values(family, "precision", "misclassified fraction")]
-        if not magnitudes:
-            continue
+        return figure("Circles: cost against error", [left, middle, right])
+    return None
+
+
+def _meshes(view: View, family: str):
+    magnitudes = [m for m in view.values(family, "precision", "misclassified fraction")]
+    if magnitudes:
         colors = palette(view.variants(family, "precision"))
         left = Chart("Cost against error", "kernel time, ns per covered pixel",
                      "pixels unlike the true shapes, % (mean)", xlog=True, legend=False, palette=colors)
@@ -87,21 +98,29 @@ def charts(view: View) -> dict:
                 right.add(v, curve)
         shapes = view.values(family, "traversal", "tested per filled")
         if shapes:
-            traversal = Chart("Traversal: work against waste", "operations per filled pixel",
-                              "pixels tested per pixel filled", xlog=True, ylog=True,
-                              legend=False, palette=palette(view.variants(family, "traversal")))
-            for v in view.variants(family, "traversal"):
-                # Over all shapes: tested and operations per filled pixel, each shape's
-                # triangles weighted by the pixels they fill.
-                filled = [view.get(family, "traversal", v, s, "filled") or 0 for s in shapes]
-                tested = [view.get(family, "traversal", v, s, "tested") or 0 for s in shapes]
-                ops = [view.get(family, "traversal", v, s, "ops") or 0 for s in shapes]
-                if sum(filled):
-                    traversal.add(v, [(sum(o * f for o, f in zip(ops, filled)) / sum(filled),
-                                       sum(tested) / sum(filled))], line=False, labels=[v])
-            traversal.note = "all shapes together: " + ", ".join(str(s) for s in shapes)
-            panels.append(traversal)
-        images[family] = figure(f"{family.capitalize()}: cost against error", panels)
+            panels.append(_traversal(view, family, shapes))
+        return figure(f"{family.capitalize()}: cost against error", panels)
+    return None
+
+
+def _traversal(view: View, family: str, shapes) -> Chart:
+    traversal = Chart("Traversal: work against waste", "operations per filled pixel",
+                      "pixels tested per pixel filled", xlog=True, ylog=True,
+                      legend=False, palette=palette(view.variants(family, "traversal")))
+    for v in view.variants(family, "traversal"):
+        # Over all shapes: tested and operations per filled pixel, each shape's
+        # triangles weighted by the pixels they fill.
+        filled = [view.get(family, "traversal", v, s, "filled") or 0 for s in shapes]
+        tested = [view.get(family, "traversal", v, s, "tested") or 0 for s in shapes]
+        ops = [view.get(family, "traversal", v, s, "ops") or 0 for s in shapes]
+        if sum(filled):
+            traversal.add(v, [(sum(o * f for o, f in zip(ops, filled)) / sum(filled),
+                               sum(tested) / sum(filled))], line=False, labels=[v])
+    traversal.note = "all shapes together: " + ", ".join(str(s) for s in shapes)
+    return traversal
+
+
+def _fill(view: View):
     if view.variants("fill", "disc"):
         r = view.values("fill", "disc")[0]
         colors = palette(view.variants("fill", "disc"))
@@ -116,8 +135,11 @@ def charts(view: View) -> dict:
             timing.add(v, [(view.get("fill", "disc", v, r, "generator time"),
                             view.get("fill", "disc", v, r, "largest pending"))], line=False,
                        labels=[v])
-        images["fill"] = figure("Seed fill: cost against memory (every order is exact)",
-                                [chart, timing])
+        return figure("Seed fill: cost against memory (every order is exact)", [chart, timing])
+    return None
+
+
+def _interpolation(view: View):
     ratios = view.values("interpolation", "w ratio", "max error")
     if ratios:
         left = Chart("Cost against error", "w ratio (largest / smallest w)",
@@ -137,10 +159,12 @@ def charts(view: View) -> dict:
             right.add(k, [(f, view.get("interpolation", "depth precision", k, f,
                                        "z-fighting fraction")) for f in depths],
                       marker="s" if fixed else "o", width=6 if fixed else 2)
-        images["interpolation"] = figure("Interpolation and depth: cost against error",
-                                         [left, right])
+        return figure("Interpolation and depth: cost against error", [left, right])
+    return None
+
+
+def _antialiasing(view: View):
     if view.values("antialiasing", "supersampling", "rms error"):
-        from app.analysis.charts import PALETTE
         variants = view.variants("antialiasing", "supersampling")
         patterns = list(dict.fromkeys(v.split()[0] for v in variants))
         filters = list(dict.fromkeys(v.split()[1] for v in variants if " " in v))
@@ -174,6 +198,5 @@ def charts(view: View) -> dict:
             chart.add("Pareto front", [(c, e) for c, e, _ in front], color="#000000",
                       marker="", width=4)
             panels.append(chart)
-        images["antialiasing"] = figure("Antialiasing: cost against error", panels,
-                                        panel_size=(640, 560))
-    return images
+        return figure("Antialiasing: cost against error", panels, panel_size=(640, 560))
+    return None

@@ -86,31 +86,32 @@ class View:
 # ============================================================ findings
 def findings(view: View) -> list[tuple[str, str, str]]:
     """(topic, finding, measured) for the headline table, from whatever was measured."""
-    found = []
+    parts = (_line_findings, _circle_findings, _mesh_findings, _traversal_findings,
+             _interpolation_findings, _antialias_findings)
+    return [(topic, text, value) for part in parts for topic, text, value in part(view)
+            if value is not None]
 
-    def add(topic, text, value):
-        if value is not None:
-            found.append((topic, text, value))
 
+def _line_findings(view: View):
     lengths = view.values("lines", "length sweep", "differing pixels")
     if lengths:
         longest = lengths[-1]
         exact = [v for v in view.variants("lines", "length sweep")
                  if all(view.get("lines", "length sweep", v, n, "differing pixels", 1) == 0
                         for n in lengths)]
-        add("lines", "variants on the exact nearest-pixel line at every length",
-            ", ".join(exact) or "none")
+        yield ("lines", "variants on the exact nearest-pixel line at every length",
+               ", ".join(exact) or "none")
         first = view.get("lines", "DDA precision", "DDA float32", "all", "first wrong length")
         if first is not None:
-            add("lines", "shortest segment on which float32 DDA misses a nearest pixel",
-                f"{fmt(first)} px" if first else "none found")
+            yield ("lines", "shortest segment on which float32 DDA misses a nearest pixel",
+                   f"{fmt(first)} px" if first else "none found")
         first64 = view.get("lines", "DDA precision", "DDA float64", "all", "first wrong length")
         if first64 is not None:
-            add("lines", "float64 DDA up to the longest length tried",
-                "never wrong" if not first64 else f"first wrong at {fmt(first64)} px")
+            yield ("lines", "float64 DDA up to the longest length tried",
+                   "never wrong" if not first64 else f"first wrong at {fmt(first64)} px")
         deviation = view.get("lines", "length sweep", "DDA float32", longest, "max deviation")
-        add("lines", f"float32 DDA at {fmt(longest)} px: largest distance of a pixel from the line",
-            None if deviation is None else f"{fmt(deviation)} px (exact: <= 0.5)")
+        yield ("lines", f"float32 DDA at {fmt(longest)} px: largest distance of a pixel from the line",
+               None if deviation is None else f"{fmt(deviation)} px (exact: <= 0.5)")
         costs = view.values("lines", "length sweep", "ops")
         if costs:
             at = costs[-1]
@@ -118,23 +119,29 @@ def findings(view: View) -> list[tuple[str, str, str]]:
                      for name in ("Bresenham", "DDA float64", "incremental (round)", "explicit",
                                   "parametric dt=auto")
                      if view.get("lines", "length sweep", name, at, "ops") is not None]
-            add("lines", f"operations per pixel at {fmt(at)} px", ", ".join(parts))
+            yield ("lines", f"operations per pixel at {fmt(at)} px", ", ".join(parts))
+
+
+def _circle_findings(view: View):
     radii = view.values("circles", "radius sweep", "gaps")
     if radii:
         r = max(v for v in radii if isinstance(v, (int, float)))
         gaps = view.get("circles", "radius sweep", "sqrt4 (4-way)", r, "gaps")
         skipped = view.get("circles", "radius sweep", "sqrt4 (4-way)", r, "skipped")
-        add("circles", f"sqrt4 circle of radius {fmt(r)}: gaps (pixels skipped)",
-            None if gaps is None else f"{fmt(gaps)} ({fmt(skipped)})")
+        yield ("circles", f"sqrt4 circle of radius {fmt(r)}: gaps (pixels skipped)",
+               None if gaps is None else f"{fmt(gaps)} ({fmt(skipped)})")
         dev = view.get("circles", "radius sweep", "midpoint", r, "max deviation")
         dev8 = view.get("circles", "radius sweep", "sqrt8 (8-way)", r, "max deviation")
-        add("circles", f"largest distance from the true radius at r = {fmt(r)}: midpoint / sqrt8",
-            None if dev is None else f"{fmt(dev)} / {fmt(dev8)} px")
+        yield ("circles", f"largest distance from the true radius at r = {fmt(r)}: midpoint / sqrt8",
+               None if dev is None else f"{fmt(dev)} / {fmt(dev8)} px")
         rings = view.values("circles", "concentric rings", "holes")
         if rings:
             holes = view.get("circles", "concentric rings", "midpoint", rings[0], "holes")
-            add("circles", f"holes between concentric midpoint rings, radii {rings[0]}",
-                None if holes is None else f"{fmt(holes)} px")
+            yield ("circles", f"holes between concentric midpoint rings, radii {rings[0]}",
+                   None if holes is None else f"{fmt(holes)} px")
+
+
+def _mesh_findings(view: View):
     for family in ("triangles", "polygons"):
         magnitudes = view.values(family, "precision", "misclassified vs true")
         if not magnitudes:
@@ -145,23 +152,26 @@ def findings(view: View) -> list[tuple[str, str, str]]:
                               or 0) > 0), None)
             accepted = [m for m in magnitudes
                         if view.get(family, "precision", variant, m, "rejected") == 0]
-            add(family, f"{variant} edge tests: first coordinate magnitude with a wrong pixel",
-                f"{fmt(first)} px" if first is not None else
-                f"none up to {fmt(max(accepted, default=0))} px")
+            yield (family, f"{variant} edge tests: first coordinate magnitude with a wrong pixel",
+                   f"{fmt(first)} px" if first is not None else
+                   f"none up to {fmt(max(accepted, default=0))} px")
         overlaps = sum(view.get(family, "precision", "fixed 8 bits", m, "overlaps", 0)
                        + view.get(family, "precision", "fixed 8 bits", m, "cracks", 0)
                        for m in magnitudes)
-        add(family, "fixed 8-bit meshes: overlaps + cracks over all magnitudes", fmt(overlaps))
+        yield (family, "fixed 8-bit meshes: overlaps + cracks over all magnitudes", fmt(overlaps))
         shares = [view.get(family, "precision", "fixed 0 bits", m, "misclassified fraction")
                   for m in magnitudes]
         shares = [s for s in shares if s is not None]
         if shares:
-            add(family, "whole-pixel snapping (0 bits): pixels unlike the unsnapped shape",
-                f"{fmt(100 * float(np.mean(shares)))} % of covered")
+            yield (family, "whole-pixel snapping (0 bits): pixels unlike the unsnapped shape",
+                   f"{fmt(100 * float(np.mean(shares)))} % of covered")
         rejected = [m for m in magnitudes if view.get(family, "precision", "fixed 8 bits", m,
                                                      "rejected") == 1]
         if rejected:
-            add(family, "coordinates refused (InputError)", f">= {fmt(min(rejected))} px")
+            yield (family, "coordinates refused (InputError)", f">= {fmt(min(rejected))} px")
+
+
+def _traversal_findings(view: View):
     shapes = view.values("triangles", "traversal", "tested per filled")
     if shapes:
         parts = []
@@ -171,33 +181,38 @@ def findings(view: View) -> list[tuple[str, str, str]]:
             ratios = [r for r in ratios if r is not None]
             if ratios:
                 parts.append(f"{variant} {fmt(min(ratios))}-{fmt(max(ratios))}")
-        add("triangles", "pixels tested per pixel filled, over the shapes", ", ".join(parts))
+        yield ("triangles", "pixels tested per pixel filled, over the shapes", ", ".join(parts))
+
+
+def _interpolation_findings(view: View):
     ratios = view.values("interpolation", "w ratio", "max error")
     if ratios:
         for ratio in (10, ratios[-1]):
             err = view.get("interpolation", "w ratio", "affine", ratio, "max error")
             persp = view.get("interpolation", "w ratio", "perspective-correct", ratio, "max error")
-            add("interpolation", f"w ratio {fmt(ratio)}: largest error, affine / perspective-correct",
-                None if err is None else f"{fmt(err)} / {fmt(persp)} (of the attribute's range)")
+            yield ("interpolation", f"w ratio {fmt(ratio)}: largest error, affine / perspective-correct",
+                   None if err is None else f"{fmt(err)} / {fmt(persp)} (of the attribute's range)")
     ratios = view.values("interpolation", "depth precision", "first fighting depth")
     if ratios:
         far = ratios[-1]
         parts = [f"{kind}: " + fmt(view.get("interpolation", "depth precision", kind, far,
                                             "first fighting depth"))
                  for kind in measure.DEPTH_BUFFERS]
-        add("depth", f"far/near {fmt(far)}: first depth (x near) where a 0.1 % gap z-fights "
-                     "(0: never)", ", ".join(parts))
+        yield ("depth", f"far/near {fmt(far)}: first depth (x near) where a 0.1 % gap z-fights "
+                        "(0: never)", ", ".join(parts))
+
+
+def _antialias_findings(view: View):
     samples = view.values("antialiasing", "supersampling", "rms error", "grid box")
     if samples:
         parts = [f"{fmt(n)}: " + fmt(view.get("antialiasing", "supersampling", "grid box", n,
                                               "rms error"))
                  for n in samples]
-        add("antialiasing", "grid box supersampling, RMS coverage error by samples per pixel",
-            ", ".join(parts))
+        yield ("antialiasing", "grid box supersampling, RMS coverage error by samples per pixel",
+               ", ".join(parts))
         front = aa_front(view, "samples")
-        add("antialiasing", "Pareto front (samples per pixel against RMS error)",
-            ", ".join(f"{label} ({fmt(cost)})" for cost, _, label in front))
-    return found
+        yield ("antialiasing", "Pareto front (samples per pixel against RMS error)",
+               ", ".join(f"{label} ({fmt(cost)})" for cost, _, label in front))
 
 
 def aa_front(view: View, cost: str):
