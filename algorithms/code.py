@@ -4,7 +4,7 @@ A family writes its pseudo-code once with ``Code.add(key, text, ...)`` and
 its generator yields ``code.at[key]`` (or a local bound to it before a hot
 loop): inserting a line then never shifts the lines the generator names.
 A line that writes pixels is named ``plot...`` and only such lines are of
-kind PLOT, so a yield says where it reads whether its frame plots.
+kind PLOT, so the name a generator yields says whether the frame plots.
 
 ``check_family`` holds a family's source to that convention when its
 algorithms are registered: it reads the source text, so it costs a file
@@ -56,8 +56,8 @@ def listing(build):
 
 
 PLOT_PREFIX = "plot"
-# Each pattern starts with a literal (or a choice of them), so the regular
-# expression engine skips to candidates instead of trying every position.
+# Each pattern starts with a literal, so the regular expression engine
+# skips to candidates instead of trying every position.
 _DEFINED = re.compile(r'code\.add\(\s*"([^"]+)"')
 _USED = re.compile(r'at\["([^"]*)"\]')
 _NUMBER_FIRST = re.compile(r"\((?:line=)?\s*\d")  # a call or tuple that starts with a number
@@ -101,11 +101,11 @@ def check_sources(sources: dict[str, str]) -> None:
                              "pseudo-code line by number; name it code.at[\"key\"]")
     if not coded:
         return
-    kinds: dict[str, set] = {}
+    defined = set()
     for name, text in sources.items():
         for match in _DEFINED.finditer(text):
             key, kind = match.group(1), _kind(_arguments(text, match.end()))
-            kinds.setdefault(key, set()).add(kind)
+            defined.add(key)
             if kind is not None and (kind == PLOT) != key.startswith(PLOT_PREFIX):
                 raise ValueError(f"{_where(name, text, match.start())}: line {key!r} is of kind "
                                  f"{kind}; lines named {PLOT_PREFIX}... and only they are PLOT")
@@ -114,13 +114,14 @@ def check_sources(sources: dict[str, str]) -> None:
             before = text[match.start() - 1]
             if before.isalnum() or before == "_":
                 continue  # another name that ends in "at", such as format["x"]
-            if match.group(1) not in kinds:
+            if match.group(1) not in defined:
                 raise ValueError(f"{_where(name, text, match.start())}: no pseudo-code line is "
                                  f"named {match.group(1)!r}")
 
 
 def _where(name: str, text: str, offset: int) -> str:
-    return f"{name}:{text.count(chr(10), 0, offset) + 1}"
+    line = text.count("\n", 0, offset) + 1
+    return f"{name}:{line}"
 
 
 def _kind(arguments: list[str]):
