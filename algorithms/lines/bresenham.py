@@ -1,6 +1,8 @@
 """Bresenham's integer line and the DDA: incremental steps along the major axis."""
 from __future__ import annotations
 
+from itertools import chain
+
 import numpy as np
 
 from ..code import Code, listing
@@ -44,22 +46,25 @@ def _bresenham_ties_to_e(points, options) -> bool:
 
 
 def bresenham(points, options):
+    """The Start record, then the loop's frames (each plot with its colour
+    when colours are given). Chained, not yielded from a generator, so a
+    million-step line pays nothing per frame for the two parts."""
     p, q = points
     octant = Octant(p, q)
     dx, dy = octant.dx, octant.dy
     at = bresenham_listing(points, options).at
     ramp = color_ramp(options)
-    yield Start(line=at["setup"], values=with_color(ramp, ("d",)),
-                constants={"dx": dx, "dy": dy, "incrE": 2 * dy, "incrNE": 2 * (dy - dx),
-                           "octant": octant.number, "steep": octant.steep},
-                pixel_value="rgb" if ramp else None,
-                candidates=(octant.major, (octant.major[0] + octant.minor[0],
-                                           octant.major[1] + octant.minor[1])),
-                decision="d")
+    start = Start(line=at["setup"], values=with_color(ramp, ("d",)),
+                  constants={"dx": dx, "dy": dy, "incrE": 2 * dy, "incrNE": 2 * (dy - dx),
+                             "octant": octant.number, "steep": octant.steep},
+                  pixel_value="rgb" if ramp else None,
+                  candidates=(octant.major, (octant.major[0] + octant.minor[0],
+                                             octant.major[1] + octant.minor[1])),
+                  decision="d")
     # d is an integer, so "d < 0" is "d <= -1".
     limit = 0 if _bresenham_ties_to_e(points, options) else -1
     frames = _bresenham_frames(p, octant, limit, at)
-    yield from colored(frames, ramp, dx) if ramp else frames
+    return chain((start,), colored(frames, ramp, dx) if ramp else frames)
 
 
 def _bresenham_frames(p, octant, limit, at):
@@ -154,6 +159,7 @@ def dda_listing(points, options) -> Code:
 
 
 def dda(points, options):
+    """The Start record, then the loop's frames, chained as Bresenham's are."""
     (x0, y0), (x1, y1) = points
     real = np.float32 if options["dtype"] == "float32" else np.float64
     steps = max(abs(x1 - x0), abs(y1 - y0))
@@ -161,12 +167,12 @@ def dda(points, options):
     y_inc = real(y1 - y0) / real(steps) if steps else real(0)
     ramp = color_ramp(options)
     at = dda_listing(points, options).at
-    yield Start(line=at["increments"], values=with_color(ramp, ("x", "y")),
-                constants={"dx": x1 - x0, "dy": y1 - y0, "steps": steps, "x_inc": float(x_inc),
-                           "y_inc": float(y_inc), "dtype": options["dtype"]},
-                pixel_value="rgb" if ramp else None)
+    start = Start(line=at["increments"], values=with_color(ramp, ("x", "y")),
+                  constants={"dx": x1 - x0, "dy": y1 - y0, "steps": steps, "x_inc": float(x_inc),
+                             "y_inc": float(y_inc), "dtype": options["dtype"]},
+                  pixel_value="rgb" if ramp else None)
     frames = _dda_frames(points, real, steps, x_inc, y_inc, at)
-    yield from colored(frames, ramp, steps) if ramp else frames
+    return chain((start,), colored(frames, ramp, steps) if ramp else frames)
 
 
 def _dda_frames(points, real, steps, x_inc, y_inc, at):
