@@ -14,8 +14,9 @@ from fractions import Fraction
 
 import numpy as np
 
+from .code import Code, listing
 from .registry import AlgorithmSpec, Inputs, Option, register
-from .steps import NO_PIXEL, PLOT, CodeLine, Start, Vars
+from .steps import NO_PIXEL, PLOT, Start, Vars
 
 NAN = math.nan
 MAX_RADIUS = 4096
@@ -96,39 +97,42 @@ class ArcWatch:
 
 
 # -------------------------------------------------- 4-way symmetry (sqrt)
-def sqrt4_code(points, options):
+def sqrt4_listing(points, options) -> Code:
     # Operation counts: a plot adds the offset to the centre (two
-    # additions); the loop's step and test are counted on line 3.
-    return (
-        CodeLine("r2 = r*r   (offsets (x, y) from the centre)", ops={"mul": 1}),
-        CodeLine("plot (0, r) and (0, -r)", PLOT, ops=PLOT_OPS),
-        CodeLine("for x = 1 .. r:"),
-        CodeLine("    y = floor(sqrt(r2 - x*x))      (the cast to int)",
-                 ops={"mul": 1, "int_add": 2, "sqrt": 1, "round": 1, "compare": 1}),
-        CodeLine("    plot (x, y), (x, -y), (-x, y), (-x, -y)", PLOT, ops=PLOT_OPS),
-        CodeLine("done"),
-    )
+    # additions); the loop's step and test are counted on the root's line.
+    code = Code()
+    code.add("setup", "r2 = r*r   (offsets (x, y) from the centre)", ops={"mul": 1})
+    code.add("plot_poles", "plot (0, r) and (0, -r)", PLOT, ops=PLOT_OPS)
+    code.add("loop", "for x = 1 .. r:")
+    code.add("root", "    y = floor(sqrt(r2 - x*x))      (the cast to int)",
+             ops={"mul": 1, "int_add": 2, "sqrt": 1, "round": 1, "compare": 1})
+    code.add("plot_mirrors", "    plot (x, y), (x, -y), (-x, y), (-x, -y)", PLOT, ops=PLOT_OPS)
+    code.add("done", "done")
+    return code
 
 
 def sqrt4(points, options):
     xc, yc = _centre(points)
     r = options["radius"]
     watch = ArcWatch()
-    yield Start(0, ("x", "y", "gaps", "duplicates"), {"xc": xc, "yc": yc, "r": r, "r2": r * r})
+    at = sqrt4_listing(points, options).at
+    yield Start(line=at["setup"], values=("x", "y", "gaps", "duplicates"),
+                constants={"xc": xc, "yc": yc, "r": r, "r2": r * r})
     for offset in ((0, r), (0, -r)):
         watch.plot(offset)
-        yield (1, xc + offset[0], yc + offset[1], 0, r, 0, watch.duplicates)
+        yield (at["plot_poles"], xc + offset[0], yc + offset[1], 0, r, 0, watch.duplicates)
     before = (0, r)
+    root, mirror = at["root"], at["plot_mirrors"]
     for x in range(1, r + 1):
         y = root_floor(r * r - x * x)
-        yield (3, xc + x, yc + y, x, y, watch.gaps, watch.duplicates)
+        yield (root, xc + x, yc + y, x, y, watch.gaps, watch.duplicates)
         # Each of the four arcs makes the same step, mirrored.
         for k, offset in enumerate(((x, y), (x, -y), (-x, y), (-x, -y))):
             watch.step(before, (x, y), 1, k == 0)
             watch.plot(offset)
-            yield (4, xc + offset[0], yc + offset[1], x, y, watch.gaps, watch.duplicates)
+            yield (mirror, xc + offset[0], yc + offset[1], x, y, watch.gaps, watch.duplicates)
         before = (x, y)
-    yield Vars(5, watch.summary())
+    yield Vars(line=at["done"], values=watch.summary())
 
 
 def sqrt4_pixels(points, options) -> np.ndarray:
@@ -175,7 +179,7 @@ register(AlgorithmSpec(
     summary="y = floor(sqrt(r^2 - x^2)) for x = 0..r, mirrored into the four quadrants",
     inputs=CENTRE,
     options=(RADIUS,),
-    code=sqrt4_code,
+    code=listing(sqrt4_listing),
     generator=sqrt4,
     kernel=sqrt4_pixels,
     explain=sqrt_explain,
@@ -191,19 +195,20 @@ register(AlgorithmSpec(
 
 
 # -------------------------------------------------- 8-way symmetry (sqrt)
-def sqrt8_code(points, options):
+def sqrt8_listing(points, options) -> Code:
     root = {"mul": 1, "int_add": 1, "sqrt": 1, "round": 1}
-    return (
-        CodeLine("r2 = r*r   (offsets (x, y) from the centre)", ops={"mul": 1}),
-        CodeLine("plot (0, r), (0, -r), (r, 0), (-r, 0)", PLOT, ops=PLOT_OPS),
-        CodeLine("x = 1;  y = floor(sqrt(r2 - x*x))", ops=root),
-        CodeLine("while x < y:", ops={"compare": 1}),
-        CodeLine("    plot (x, y), (x, -y), (-x, y), (-x, -y), (y, x), (y, -x), (-y, x), (-y, -x)",
-                 PLOT, ops=PLOT_OPS),
-        CodeLine("    x += 1;  y = floor(sqrt(r2 - x*x))", ops={**root, "int_add": 2}),
-        CodeLine("if x == y:  plot (x, y), (x, -y), (-x, y), (-x, -y)", PLOT, ops=PLOT_OPS),
-        CodeLine("done"),
-    )
+    code = Code()
+    code.add("setup", "r2 = r*r   (offsets (x, y) from the centre)", ops={"mul": 1})
+    code.add("plot_axes", "plot (0, r), (0, -r), (r, 0), (-r, 0)", PLOT, ops=PLOT_OPS)
+    code.add("first", "x = 1;  y = floor(sqrt(r2 - x*x))", ops=root)
+    code.add("loop", "while x < y:", ops={"compare": 1})
+    code.add("plot_mirrors", "    plot (x, y), (x, -y), (-x, y), (-x, -y), (y, x), (y, -x), (-y, x), "
+                             "(-y, -x)", PLOT, ops=PLOT_OPS)
+    code.add("next", "    x += 1;  y = floor(sqrt(r2 - x*x))", ops={**root, "int_add": 2})
+    code.add("plot_diagonal", "if x == y:  plot (x, y), (x, -y), (-x, y), (-x, -y)", PLOT,
+             ops=PLOT_OPS)
+    code.add("done", "done")
+    return code
 
 
 def _sqrt8_y(r: int, x: int) -> int:
@@ -216,37 +221,41 @@ def sqrt8(points, options):
     xc, yc = _centre(points)
     r = options["radius"]
     watch = ArcWatch()
-    yield Start(0, ("x", "y", "gaps", "duplicates"), {"xc": xc, "yc": yc, "r": r, "r2": r * r})
+    at = sqrt8_listing(points, options).at
+    yield Start(line=at["setup"], values=("x", "y", "gaps", "duplicates"),
+                constants={"xc": xc, "yc": yc, "r": r, "r2": r * r})
     for offset in ((0, r), (0, -r), (r, 0), (-r, 0)):
         watch.plot(offset)
-        yield (1, xc + offset[0], yc + offset[1], 0, r, 0, watch.duplicates)
+        yield (at["plot_axes"], xc + offset[0], yc + offset[1], 0, r, 0, watch.duplicates)
     x, before = 1, (0, r)
     y = _sqrt8_y(r, x)
-    yield (2, xc + x, yc + y, x, y, 0, watch.duplicates)
+    yield (at["first"], xc + x, yc + y, x, y, 0, watch.duplicates)
+    loop, mirror, step = at["loop"], at["plot_mirrors"], at["next"]
     while True:
-        yield (3, xc + x, yc + y, x, y, watch.gaps, watch.duplicates)
+        yield (loop, xc + x, yc + y, x, y, watch.gaps, watch.duplicates)
         if not x < y:
             break
         for k, offset in enumerate(((x, y), (x, -y), (-x, y), (-x, -y),
                                     (y, x), (y, -x), (-y, x), (-y, -x))):
             watch.step(before, (x, y), 1, k == 0)
             watch.plot(offset)
-            yield (4, xc + offset[0], yc + offset[1], x, y, watch.gaps, watch.duplicates)
+            yield (mirror, xc + offset[0], yc + offset[1], x, y, watch.gaps, watch.duplicates)
         before = (x, y)
         x += 1
         y = _sqrt8_y(r, x)
-        yield (5, xc + x, yc + y, x, y, watch.gaps, watch.duplicates)
+        yield (step, xc + x, yc + y, x, y, watch.gaps, watch.duplicates)
     if x == y:
         for k, offset in enumerate(((x, y), (x, -y), (-x, y), (-x, -y))):
             # The diagonal pixel ends two arcs, one from each side.
             watch.step(before, (x, y), 2, k == 0)
             watch.plot(offset)
-            yield (6, xc + offset[0], yc + offset[1], x, y, watch.gaps, watch.duplicates)
+            yield (at["plot_diagonal"], xc + offset[0], yc + offset[1], x, y, watch.gaps,
+                   watch.duplicates)
     elif r > 0:
         # The last pixel of the arc and its mirror across the diagonal meet
         # (or fail to) on each of the four diagonals.
         watch.step(before, before[::-1], 4)
-    yield Vars(7, watch.summary())
+    yield Vars(line=at["done"], values=watch.summary())
 
 
 def sqrt8_pixels(points, options) -> np.ndarray:
@@ -274,7 +283,7 @@ register(AlgorithmSpec(
     summary="y = floor(sqrt(r^2 - x^2)) while x < y, mirrored into all eight octants",
     inputs=CENTRE,
     options=(RADIUS,),
-    code=sqrt8_code,
+    code=listing(sqrt8_listing),
     generator=sqrt8,
     kernel=sqrt8_pixels,
     explain=sqrt_explain,
@@ -292,30 +301,30 @@ START = Option("start", "choice", "integer",
                "both choose the same pixels", choices=("integer", "fraction"))
 
 
-def midpoint_code(points, options):
+def midpoint_listing(points, options) -> Code:
     if options["start"] == "fraction":
         first = "d = 5/4 - R   (F at the first midpoint (1, R - 1/2), kept exact)"
     else:
         first = ("d = 1 - R   (5/4 - R less 1/4: d then stays a whole number and "
                  "has the same sign test)")
-    # Operation counts: 2x is an addition; the diagonal test of line 5
-    # runs every iteration and is counted on the E and SE lines (line 5
-    # has a frame only when it stops the loop).
-    return (
-        CodeLine(f"x = 0;  y = R;  {first}", ops={"int_add": 1}),
-        CodeLine("plot (0, R), (0, -R), (R, 0), (-R, 0)   (offsets; one pixel when R = 0)", PLOT,
-                 ops=PLOT_OPS),
-        CodeLine("while y > x:", ops={"compare": 1}),
-        CodeLine("    if d < 0:  d += 2x + 3;  x += 1            (midpoint inside: E)",
-                 branch="E", ops={"compare": 2, "int_add": 4}),
-        CodeLine("    else:  d += 2(x - y) + 5;  x += 1;  y -= 1   (on or outside: SE)",
-                 branch="SE", ops={"compare": 2, "int_add": 6}),
-        CodeLine("    if x > y:  stop   (SE crossed the diagonal: these pixels are "
-                 "mirrors of the last ones)"),
-        CodeLine("    plot (x, y), (y, x), (y, -x), (x, -y), (-x, -y), (-y, -x), (-y, x), (-x, y)"
-                 "   (four when x == y)", PLOT, ops=PLOT_OPS),
-        CodeLine("done"),
-    )
+    # Operation counts: 2x is an addition; the diagonal test runs every
+    # iteration and is counted on the E and SE lines (its own line has a
+    # frame only when it stops the loop).
+    code = Code()
+    code.add("setup", f"x = 0;  y = R;  {first}", ops={"int_add": 1})
+    code.add("plot_axes", "plot (0, R), (0, -R), (R, 0), (-R, 0)   (offsets; one pixel when R = 0)",
+             PLOT, ops=PLOT_OPS)
+    code.add("loop", "while y > x:", ops={"compare": 1})
+    code.add("east", "    if d < 0:  d += 2x + 3;  x += 1            (midpoint inside: E)",
+             branch="E", ops={"compare": 2, "int_add": 4})
+    code.add("south_east", "    else:  d += 2(x - y) + 5;  x += 1;  y -= 1   (on or outside: SE)",
+             branch="SE", ops={"compare": 2, "int_add": 6})
+    code.add("crossed", "    if x > y:  stop   (SE crossed the diagonal: these pixels are "
+                        "mirrors of the last ones)")
+    code.add("plot_mirrors", "    plot (x, y), (y, x), (y, -x), (x, -y), (-x, -y), (-y, -x), "
+                             "(-y, x), (-x, y)   (four when x == y)", PLOT, ops=PLOT_OPS)
+    code.add("done", "done")
+    return code
 
 
 def _number(value):
@@ -328,34 +337,36 @@ def midpoint_circle(points, options):
     r = options["radius"]
     fraction = options["start"] == "fraction"
     d = Fraction(5, 4) - r if fraction else 1 - r
-    yield Start(0, ("d", "x", "y"),
-                {"xc": xc, "yc": yc, "R": r, "start": "5/4 - R" if fraction else "1 - R",
-                 "d0": _number(d)},
+    at = midpoint_listing(points, options).at
+    yield Start(line=at["setup"], values=("d", "x", "y"),
+                constants={"xc": xc, "yc": yc, "R": r, "start": "5/4 - R" if fraction else "1 - R",
+                           "d0": _number(d)},
                 candidates=E_SE, decision="d")
     x, y = 0, r
     plotted = 0
     for dx, dy in mirrors8(0, r):
         plotted += 1
-        yield (1, xc + dx, yc + dy, _number(d), x, y)
+        yield (at["plot_axes"], xc + dx, yc + dy, _number(d), x, y)
+    loop, east, south_east, mirror = at["loop"], at["east"], at["south_east"], at["plot_mirrors"]
     while True:
         # The loop test sits on the current pixel, so that E and SE are
         # offsets from it at the decision that follows.
-        yield (2, xc + x, yc + y, _number(d), x, y)
+        yield (loop, xc + x, yc + y, _number(d), x, y)
         if not y > x:
             break
         tested = d
         if d < 0:
-            line, d, x = 3, d + 2 * x + 3, x + 1
+            line, d, x = east, d + 2 * x + 3, x + 1
         else:
-            line, d, x, y = 4, d + 2 * (x - y) + 5, x + 1, y - 1
+            line, d, x, y = south_east, d + 2 * (x - y) + 5, x + 1, y - 1
         yield (line, xc + x, yc + y, _number(tested), x, y)
         if x > y:
-            yield (5, NO_PIXEL, NO_PIXEL, _number(d), x, y)
+            yield (at["crossed"], NO_PIXEL, NO_PIXEL, _number(d), x, y)
             break
         for dx, dy in mirrors8(x, y):
             plotted += 1
-            yield (6, xc + dx, yc + dy, _number(d), x, y)
-    yield Vars(7, {"pixels": plotted})
+            yield (mirror, xc + dx, yc + dy, _number(d), x, y)
+    yield Vars(line=at["done"], values={"pixels": plotted})
 
 
 def midpoint_circle_pixels(points, options) -> np.ndarray:
@@ -424,7 +435,7 @@ register(AlgorithmSpec(
     summary="integer decision variable d = F(midpoint); E or SE, mirrored 8 ways",
     inputs=CENTRE,
     options=(RADIUS, START),
-    code=midpoint_code,
+    code=listing(midpoint_listing),
     generator=midpoint_circle,
     kernel=midpoint_circle_pixels,
     explain=midpoint_explain,
@@ -447,34 +458,34 @@ RY = Option("ry", "int", 6, "half height in pixels (0: a horizontal segment)",
             minimum=0, maximum=MAX_RADIUS)
 
 
-def ellipse_code(points, options):
+def ellipse_listing(points, options) -> Code:
     # Operation counts: rx^2, ry^2 and their multiples 4ry^2, 8rx^2, ...
-    # are computed once, on line 0; doubling is an addition. The tail loop
-    # of line 11 plots two pixels per step and counts plotting only.
-    return (
-        CodeLine("x = 0;  y = ry;  d = 4F(x + 1, y - 1/2) = 4ry^2 - 4rx^2*ry + rx^2   "
-                 "(F = ry^2 x^2 + rx^2 y^2 - rx^2 ry^2; 4F keeps d whole)",
-                 ops={"mul": 6, "int_add": 2}),
-        CodeLine("plot (0, ry), (0, -ry)", PLOT, ops=PLOT_OPS),
-        CodeLine("while ry^2 * x < rx^2 * y:     (region 1: slope above -1, one pixel per column)",
-                 ops={"mul": 2, "compare": 1}),
-        CodeLine("    if d < 0:  d += 4ry^2(2x + 3);  x += 1", branch="E",
-                 ops={"compare": 1, "mul": 1, "int_add": 4}),
-        CodeLine("    else:  d += 4ry^2(2x + 3) - 8rx^2(y - 1);  x += 1;  y -= 1", branch="SE",
-                 ops={"compare": 1, "mul": 2, "int_add": 7}),
-        CodeLine("    plot (x, y), (x, -y), (-x, y), (-x, -y)", PLOT, ops=PLOT_OPS),
-        CodeLine("d = 4F(x + 1/2, y - 1)         (region 2: one pixel per row)",
-                 ops={"mul": 4, "int_add": 5}),
-        CodeLine("while y > 0:", ops={"compare": 1}),
-        CodeLine("    if d > 0:  d += 4rx^2(3 - 2y);  y -= 1", branch="S", candidates=S_SW,
-                 ops={"compare": 1, "mul": 1, "int_add": 4}),
-        CodeLine("    else:  d += 8ry^2(x + 1) + 4rx^2(3 - 2y);  x += 1;  y -= 1",
-                 branch="SW", candidates=S_SW, ops={"compare": 1, "mul": 2, "int_add": 7}),
-        CodeLine("    plot (x, y), (x, -y), (-x, y), (-x, -y)", PLOT, ops=PLOT_OPS),
-        CodeLine("while x < rx:  x += 1;  plot (x, 0), (-x, 0)   (a flat ellipse reaches "
-                 "y = 0 before x = rx)", PLOT, ops=PLOT_OPS),
-        CodeLine("done"),
-    )
+    # are computed once, on the first line; doubling is an addition. The
+    # tail loop plots two pixels per step and counts plotting only.
+    code = Code()
+    code.add("setup", "x = 0;  y = ry;  d = 4F(x + 1, y - 1/2) = 4ry^2 - 4rx^2*ry + rx^2   "
+                      "(F = ry^2 x^2 + rx^2 y^2 - rx^2 ry^2; 4F keeps d whole)",
+             ops={"mul": 6, "int_add": 2})
+    code.add("plot_poles", "plot (0, ry), (0, -ry)", PLOT, ops=PLOT_OPS)
+    code.add("region1", "while ry^2 * x < rx^2 * y:     (region 1: slope above -1, one pixel per "
+                        "column)", ops={"mul": 2, "compare": 1})
+    code.add("east", "    if d < 0:  d += 4ry^2(2x + 3);  x += 1", branch="E",
+             ops={"compare": 1, "mul": 1, "int_add": 4})
+    code.add("south_east", "    else:  d += 4ry^2(2x + 3) - 8rx^2(y - 1);  x += 1;  y -= 1",
+             branch="SE", ops={"compare": 1, "mul": 2, "int_add": 7})
+    code.add("plot_region1", "    plot (x, y), (x, -y), (-x, y), (-x, -y)", PLOT, ops=PLOT_OPS)
+    code.add("switch", "d = 4F(x + 1/2, y - 1)         (region 2: one pixel per row)",
+             ops={"mul": 4, "int_add": 5})
+    code.add("region2", "while y > 0:", ops={"compare": 1})
+    code.add("south", "    if d > 0:  d += 4rx^2(3 - 2y);  y -= 1", branch="S", candidates=S_SW,
+             ops={"compare": 1, "mul": 1, "int_add": 4})
+    code.add("south_west", "    else:  d += 8ry^2(x + 1) + 4rx^2(3 - 2y);  x += 1;  y -= 1",
+             branch="SW", candidates=S_SW, ops={"compare": 1, "mul": 2, "int_add": 7})
+    code.add("plot_region2", "    plot (x, y), (x, -y), (-x, y), (-x, -y)", PLOT, ops=PLOT_OPS)
+    code.add("plot_tail", "while x < rx:  x += 1;  plot (x, 0), (-x, 0)   (a flat ellipse reaches "
+                          "y = 0 before x = rx)", PLOT, ops=PLOT_OPS)
+    code.add("done", "done")
+    return code
 
 
 def ellipse_f4(rx: int, ry: int, x2: int, y2: int) -> int:
@@ -488,50 +499,56 @@ def midpoint_ellipse(points, options):
     a2, b2 = rx * rx, ry * ry
     x, y = 0, ry
     d = ellipse_f4(rx, ry, 2 * x + 2, 2 * y - 1)
-    yield Start(0, ("d", "x", "y"), {"xc": xc, "yc": yc, "rx": rx, "ry": ry, "region": 1},
+    at = ellipse_listing(points, options).at
+    yield Start(line=at["setup"], values=("d", "x", "y"),
+                constants={"xc": xc, "yc": yc, "rx": rx, "ry": ry, "region": 1},
                 candidates=E_SE, decision="d")
     plotted = 0
     for dx, dy in mirrors4(x, y):
         plotted += 1
-        yield (1, xc + dx, yc + dy, d, x, y)
+        yield (at["plot_poles"], xc + dx, yc + dy, d, x, y)
+    loop, east, south_east, mirror = at["region1"], at["east"], at["south_east"], at["plot_region1"]
     while True:
-        yield (2, xc + x, yc + y, d, x, y)
+        yield (loop, xc + x, yc + y, d, x, y)
         if not b2 * x < a2 * y:
             break
         tested = d
         if d < 0:
-            line, d = 3, d + 4 * b2 * (2 * x + 3)
+            line, d = east, d + 4 * b2 * (2 * x + 3)
         else:
-            line, d = 4, d + 4 * b2 * (2 * x + 3) - 8 * a2 * (y - 1)
+            line, d = south_east, d + 4 * b2 * (2 * x + 3) - 8 * a2 * (y - 1)
             y -= 1
         x += 1
         yield (line, xc + x, yc + y, tested, x, y)
         for dx, dy in mirrors4(x, y):
             plotted += 1
-            yield (5, xc + dx, yc + dy, d, x, y)
+            yield (mirror, xc + dx, yc + dy, d, x, y)
     d = ellipse_f4(rx, ry, 2 * x + 1, 2 * y - 2)
-    yield Vars(6, {"region": 2, "d": d, "x": x, "y": y}, (xc + x, yc + y))
+    yield Vars(line=at["switch"], values={"region": 2, "d": d, "x": x, "y": y},
+               pixel=(xc + x, yc + y))
+    loop, south, south_west, mirror = at["region2"], at["south"], at["south_west"], at["plot_region2"]
     while True:
-        yield (7, xc + x, yc + y, d, x, y)
+        yield (loop, xc + x, yc + y, d, x, y)
         if not y > 0:
             break
         tested = d
         if d > 0:
-            line, d = 8, d + 4 * a2 * (3 - 2 * y)
+            line, d = south, d + 4 * a2 * (3 - 2 * y)
         else:
-            line, d = 9, d + 8 * b2 * (x + 1) + 4 * a2 * (3 - 2 * y)
+            line, d = south_west, d + 8 * b2 * (x + 1) + 4 * a2 * (3 - 2 * y)
             x += 1
         y -= 1
         yield (line, xc + x, yc + y, tested, x, y)
         for dx, dy in mirrors4(x, y):
             plotted += 1
-            yield (10, xc + dx, yc + dy, d, x, y)
+            yield (mirror, xc + dx, yc + dy, d, x, y)
+    tail = at["plot_tail"]
     while x < rx:
         x += 1
         for dx, dy in mirrors4(x, 0):
             plotted += 1
-            yield (11, xc + dx, yc + dy, d, x, 0)
-    yield Vars(12, {"pixels": plotted})
+            yield (tail, xc + dx, yc + dy, d, x, 0)
+    yield Vars(line=at["done"], values={"pixels": plotted})
 
 
 def ellipse_explain(trace, i):
@@ -552,7 +569,7 @@ register(AlgorithmSpec(
     summary="two regions: a pixel per column while the slope is above -1, then one per row",
     inputs=CENTRE,
     options=(RX, RY),
-    code=ellipse_code,
+    code=listing(ellipse_listing),
     generator=midpoint_ellipse,
     explain=ellipse_explain,
     notes=("Axis-aligned, mirrored four ways; each pixel is plotted once (on the axes "

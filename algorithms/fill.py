@@ -25,8 +25,9 @@ from collections import deque
 from fractions import Fraction
 
 from .circles import CENTRE, RADIUS, midpoint_circle_pixels
+from .code import Code, listing
 from .registry import AlgorithmSpec, InputError, Inputs, Option, register
-from .steps import PER_PIXEL, PLOT, VISIT, CodeLine, Note, Span, Start, Vars
+from .steps import PER_PIXEL, PLOT, VISIT, Note, Span, Start, Vars
 
 NAN = math.nan
 
@@ -225,13 +226,13 @@ def _neighbour_names(options) -> str:
 
 
 # ------------------------------------------------------------ pseudo-code
-def fill_code(points, options):
-    return _code(_outline_line("draw each outline segment as Bresenham does, closing each "
-                               "outline", options), options)
+def fill_listing(points, options) -> Code:
+    return _listing(_outline_line("draw each outline segment as Bresenham does, closing each "
+                                  "outline", options), options)
 
 
-def circle_fill_code(points, options):
-    return _code(_outline_line("draw the midpoint circle of radius R around C", options), options)
+def circle_fill_listing(points, options) -> Code:
+    return _listing(_outline_line("draw the midpoint circle of radius R around C", options), options)
 
 
 def _outline_line(what: str, options) -> str:
@@ -240,60 +241,56 @@ def _outline_line(what: str, options) -> str:
     return f"{what}, with a corner pixel at each diagonal step (4-connected)"
 
 
-def _code(outline, options):
+def _listing(outline, options) -> Code:
     free = ("free: inside the grid, not boundary, not filled" if options["mode"] == "boundary"
             else "free: inside the grid and still the seed's colour")
-    names = _neighbour_names(options)
     # Operation counts. An outline pixel costs what a Bresenham step does.
     # Every pixel pushed is popped once, so a push (one addition to the
     # stack pointer) is counted with its pop; a pop is an addition and the
     # loop's emptiness test. pixels_tested counts reads of a pixel's state.
-    outline_ops = {"int_add": 3, "compare": 2}
-    pop = {"int_add": 2, "compare": 1}
+    code = Code()
+    code.add("plot_outline", outline, PLOT, ops={"int_add": 3, "compare": 2})
+    code.add("push", "push(seed)")
     if options["order"] == "span":
-        # The "filled already" test runs at every pop; its line has a frame
-        # only when it skips, so the test is counted on the pop's line.
-        return (
-            CodeLine(outline, PLOT, ops=outline_ops),
-            CodeLine("push(seed)"),
-            CodeLine("while the stack is not empty:"),
-            CodeLine("    (x, y) = pop()", VISIT,
-                     ops={"int_add": 2, "compare": 2, "pixels_tested": 1}),
-            CodeLine("    if (x, y) is filled already:  continue", VISIT),
-            CodeLine(f"    widen x to the run xl .. xr of free pixels on row y;  fill xl .. xr   "
-                     f"({free})", PLOT,
-                     ops={"compare": 2, "pixels_tested": 2},
-                     per={PER_PIXEL: {"int_add": 1, "compare": 1, "pixels_tested": 1}}),
-            CodeLine("    for the rows y + 1 and y - 1, over " +
-                     ("xl - 1 .. xr + 1" if options["connectivity"] == "8" else "xl .. xr") +
-                     ":  push the leftmost pixel of each run of free pixels", VISIT,
-                     ops={"compare": 1},
-                     per={PER_PIXEL: {"int_add": 1, "compare": 2, "pixels_tested": 1}}),
-            CodeLine("done"),
-        )
-    take = ("pop()   (the top: last pushed, first out)" if options["order"] == "stack"
+        _span_lines(code, free, options)
+    else:
+        _pixel_lines(code, free, options)
+    code.add("done", "done")
+    return code
+
+
+def _span_lines(code: Code, free: str, options) -> None:
+    # The "filled already" test runs at every pop; its line has a frame
+    # only when it skips, so the test is counted on the pop's line.
+    code.add("loop", "while the stack is not empty:")
+    code.add("pop", "    (x, y) = pop()", VISIT, ops={"int_add": 2, "compare": 2, "pixels_tested": 1})
+    code.add("skip", "    if (x, y) is filled already:  continue", VISIT)
+    code.add("plot_run", f"    widen x to the run xl .. xr of free pixels on row y;  fill xl .. xr   "
+                         f"({free})", PLOT, ops={"compare": 2, "pixels_tested": 2},
+             per={PER_PIXEL: {"int_add": 1, "compare": 1, "pixels_tested": 1}})
+    code.add("push_runs", "    for the rows y + 1 and y - 1, over " +
+             ("xl - 1 .. xr + 1" if options["connectivity"] == "8" else "xl .. xr") +
+             ":  push the leftmost pixel of each run of free pixels", VISIT, ops={"compare": 1},
+             per={PER_PIXEL: {"int_add": 1, "compare": 2, "pixels_tested": 1}})
+
+
+def _pixel_lines(code: Code, free: str, options) -> None:
+    names = _neighbour_names(options)
+    stack = options["order"] == "stack"
+    take = ("pop()   (the top: last pushed, first out)" if stack
             else "take()   (the front: first pushed, first out)")
-    container = "stack" if options["order"] == "stack" else "queue"
     push = (f"push the free neighbours among {names}, in reverse, so {names.split(',')[0]} "
-            f"comes out first" if options["order"] == "stack"
-            else f"push the free neighbours among {names}")
-    # The pop of line 3 has a frame only for the first pops (its panel
-    # detail); every pop ends on line 4 or 5, so it is counted there. A
-    # fill reads each neighbour's state (an address addition and a test).
+            f"comes out first" if stack else f"push the free neighbours among {names}")
+    # The pop has a frame only for the first pops (its panel detail); every
+    # pop ends on the skip or the fill line, so it is counted there. A fill
+    # reads each neighbour's state (an address addition and a test).
     k = len(NEIGHBOURS[options["connectivity"]])
-    return (
-        CodeLine(outline, PLOT, ops=outline_ops),
-        CodeLine("push(seed)"),
-        CodeLine(f"while the {container} is not empty:"),
-        CodeLine(f"    p = {take}", VISIT),
-        CodeLine("    if p is filled already:  continue   (pushed twice before it was filled)", VISIT,
-                 ops={"int_add": pop["int_add"], "compare": pop["compare"] + 1,
-                      "pixels_tested": 1}),
-        CodeLine(f"    fill p;  {push}   ({free})", PLOT,
-                 ops={"int_add": pop["int_add"] + k, "compare": pop["compare"] + 1 + k,
-                      "pixels_tested": 1 + k}),
-        CodeLine("done"),
-    )
+    code.add("loop", f"while the {'stack' if stack else 'queue'} is not empty:")
+    code.add("pop", f"    p = {take}", VISIT)
+    code.add("skip", "    if p is filled already:  continue   (pushed twice before it was filled)",
+             VISIT, ops={"int_add": 2, "compare": 2, "pixels_tested": 1})
+    code.add("plot_fill", f"    fill p;  {push}   ({free})", PLOT,
+             ops={"int_add": 2 + k, "compare": 2 + k, "pixels_tested": 1 + k})
 
 
 # -------------------------------------------------------------- generator
@@ -306,7 +303,7 @@ def flood_fill(points, options, grid):
     outline = outline_pixels(points, four=options["outline"] == "4")
     region = Region(*grid, outline)
     seed = _seed("flood-fill", options, lambda: inside_pixel(points, region.free), region)
-    return _fill(outline, region, seed, options, {})
+    return _fill(outline, region, seed, options, {}, fill_listing(points, options).at)
 
 
 def circle_fill(points, options, grid):
@@ -316,53 +313,56 @@ def circle_fill(points, options, grid):
     outline = circle_outline(centre, radius, four=options["outline"] == "4")
     region = Region(*grid, outline)
     shape = {"C": tuple(centre), "R": radius}
+    at = circle_fill_listing(points, options).at
     if options["seed"] == "auto" and not region.free(*centre):
-        return _outline_only(outline, options, shape)
+        return _outline_only(outline, options, shape, at)
     seed = _seed("flood-fill-circle", options, lambda: _circle_seed(centre, region), region)
-    return _fill(outline, region, seed, options, shape)
+    return _fill(outline, region, seed, options, shape, at)
 
 
-def _outline_only(outline, options, shape):
+def _outline_only(outline, options, shape, at):
     """A circle with no free pixel inside (radius 0, or its centre off the
     grid): the outline is drawn and nothing is filled."""
     boundary_color, fill_color = _colors(options)
-    yield Start(0, ("rgb", "size"), {**shape, "seed": "none", "mode": options["mode"],
-                                     "boundary colour": boundary_color,
-                                     "fill colour": fill_color}, pixel_value="rgb")
-    yield from _outline_frames(outline, _packed(boundary_color), 0)
-    yield Note(0, "The circle has no free pixel inside it to start from, so nothing is "
-                  "filled; give a seed outside it to fill the rest of the grid.")
-    done = 7 if options["order"] == "span" else 6
-    yield Vars(done, {"filled": 0, "boundary": len(outline), "pops": 0})
+    yield Start(line=at["plot_outline"], values=("rgb", "size"),
+                constants={**shape, "seed": "none", "mode": options["mode"],
+                           "boundary colour": boundary_color, "fill colour": fill_color},
+                pixel_value="rgb")
+    yield from _outline_frames(outline, _packed(boundary_color), at, 0)
+    yield Note(line=at["plot_outline"],
+               text="The circle has no free pixel inside it to start from, so nothing is "
+                    "filled; give a seed outside it to fill the rest of the grid.")
+    yield Vars(line=at["done"], values={"filled": 0, "boundary": len(outline), "pops": 0})
 
 
-def _fill(outline, region, seed, options, shape: dict):
+def _fill(outline, region, seed, options, shape: dict, at):
     boundary_color, fill_color = _colors(options)
     # The fill spreads over the pixels in the seed's state: free ones, or
     # the outline's when a region fill starts on it.
     target = region.cells[region.index(*seed)]
-    start = Start(0, ("rgb", "size"),
-                  {**shape, "seed": seed, "connectivity": int(options["connectivity"]),
-                   "order": options["order"], "mode": options["mode"],
-                   "spreads over": "the outline" if target == BOUNDARY else "free pixels",
-                   "grid": f"{region.width}x{region.height}",
-                   "boundary colour": boundary_color, "fill colour": fill_color},
-                  pixel_value="rgb")
+    constants = {**shape, "seed": seed, "connectivity": int(options["connectivity"]),
+                 "order": options["order"], "mode": options["mode"],
+                 "spreads over": "the outline" if target == BOUNDARY else "free pixels",
+                 "grid": f"{region.width}x{region.height}",
+                 "boundary colour": boundary_color, "fill colour": fill_color}
     run = _span_frames if options["order"] == "span" else _pixel_frames
-    return run(start, outline, region, seed, options, target,
-               _packed(boundary_color), _packed(fill_color))
+    return run(constants, outline, region, seed, options, target,
+               (_packed(boundary_color), _packed(fill_color)), at)
 
 
-def _outline_frames(outline, boundary_rgb, *size):
+def _outline_frames(outline, boundary_rgb, at, *size):
+    line = at["plot_outline"]
     for x, y in outline:
-        yield (0, x, y, boundary_rgb, *size)
+        yield (line, x, y, boundary_rgb, *size)
 
 
-def _pixel_frames(start, outline, region, seed, options, target, boundary_rgb, fill_rgb):
+def _pixel_frames(constants, outline, region, seed, options, target, rgb, at):
     """Stack or queue order: one pixel per pop."""
-    yield start
-    yield from _outline_frames(outline, boundary_rgb, 0)
-    cells = region.cells
+    boundary_rgb, fill_rgb = rgb
+    yield Start(line=at["plot_outline"], values=("rgb", "size"), constants=constants,
+                pixel_value="rgb")
+    yield from _outline_frames(outline, boundary_rgb, at, 0)
+    cells, stride = region.cells, region.stride
     offsets = region.offsets(options["connectivity"])
     stack = options["order"] == "stack"
     if stack:
@@ -374,40 +374,29 @@ def _pixel_frames(start, outline, region, seed, options, target, boundary_rgb, f
         pending = deque()
         take = pending.popleft
     push = pending.append
-    first = region.index(*seed)
-    push(first)
-    yield (1, seed[0], seed[1], NAN, 1)
+    push(region.index(*seed))
+    yield (at["push"], seed[0], seed[1], NAN, 1)
     filled = skipped = 0
     largest = 1
-    # The first pops show the next entries in the panel.
-    while pending and filled + skipped < DETAIL_POPS:
-        p = take()
-        x, y = region.pixel(p)
-        yield Vars(3, {"size": len(pending), "next": _entries(pending, stack, region)}, (x, y))
-        if cells[p] != target:
-            skipped += 1
-            yield (4, x, y, NAN, len(pending))
-            continue
-        cells[p] = FILLED
-        filled += 1
-        for offset in offsets:
-            if cells[p + offset] == target:
-                push(p + offset)
-        largest = max(largest, len(pending))
-        yield (5, x, y, fill_rgb, len(pending))
-    if pending:
-        x, y = region.pixel(pending[-1] if stack else pending[0])
-        yield Note(3, f"From here on the panel keeps only the size of the "
-                      f"{'stack' if stack else 'queue'}; its entries are listed for the "
-                      f"first {DETAIL_POPS:,} pops.", (x, y))
-    # The same loop without the panel's entries, kept lean for large regions.
-    stride = region.stride
+    pop, skip, fill = at["pop"], at["skip"], at["plot_fill"]
     while pending:
+        # The first pops show the next entries in the panel; past them the
+        # loop stays lean for large regions.
+        pops = filled + skipped
+        if pops == DETAIL_POPS:
+            y, x = divmod(pending[-1] if stack else pending[0], stride)
+            yield Note(line=pop, text=f"From here on the panel keeps only the size of the "
+                                      f"{'stack' if stack else 'queue'}; its entries are listed "
+                                      f"for the first {DETAIL_POPS:,} pops.", pixel=(x - 1, y - 1))
         p = take()
         y, x = divmod(p, stride)
+        x, y = x - 1, y - 1
+        if pops < DETAIL_POPS:
+            yield Vars(line=pop, values={"size": len(pending),
+                                         "next": _entries(pending, stack, region)}, pixel=(x, y))
         if cells[p] != target:
             skipped += 1
-            yield (4, x - 1, y - 1, NAN, len(pending))
+            yield (skip, x, y, NAN, len(pending))
             continue
         cells[p] = FILLED
         filled += 1
@@ -417,26 +406,28 @@ def _pixel_frames(start, outline, region, seed, options, target, boundary_rgb, f
         size = len(pending)
         if size > largest:
             largest = size
-        yield (5, x - 1, y - 1, fill_rgb, size)
-    pops = filled + skipped
-    yield Vars(6, {"filled": filled, "boundary": len(outline), "pops": pops,
-                   "skipped": skipped, "largest": largest, "next": "(empty)"})
+        yield (fill, x, y, fill_rgb, size)
+    yield Vars(line=at["done"], values={"filled": filled, "boundary": len(outline),
+                                        "pops": filled + skipped, "skipped": skipped,
+                                        "largest": largest, "next": "(empty)"})
 
 
-def _span_frames(start, outline, region, seed, options, target, boundary_rgb, fill_rgb):
+def _span_frames(constants, outline, region, seed, options, target, rgb, at):
     """Scan-line seed fill: a run of free pixels per pop.
 
     Frames are few here (one per run), so the stack's size goes into a Vars
     record at every pop rather than into a value of every frame.
     """
-    yield Start(start.line, ("rgb",), start.constants, start.pixel_value)
-    yield from _outline_frames(outline, boundary_rgb)
+    boundary_rgb, fill_rgb = rgb
+    yield Start(line=at["plot_outline"], values=("rgb",), constants=constants, pixel_value="rgb")
+    yield from _outline_frames(outline, boundary_rgb, at)
     cells = region.cells
     eight = options["connectivity"] == "8"
     pending = [region.index(*seed)]
-    yield Vars(1, {"size": 1, "next": f"({seed[0]}, {seed[1]})"}, seed)
+    yield Vars(line=at["push"], values={"size": 1, "next": f"({seed[0]}, {seed[1]})"}, pixel=seed)
     pops = skipped = filled = runs = 0
     largest = 1
+    pop, skip, fill, push = at["pop"], at["skip"], at["plot_run"], at["push_runs"]
     while pending:
         p = pending.pop()
         pops += 1
@@ -444,10 +435,10 @@ def _span_frames(start, outline, region, seed, options, target, boundary_rgb, fi
         values = {"size": len(pending)}
         if pops <= DETAIL_POPS:
             values["next"] = _entries(pending, True, region)
-        yield Vars(3, values, (x, y))
+        yield Vars(line=pop, values=values, pixel=(x, y))
         if cells[p] != target:
             skipped += 1
-            yield (4, x, y, NAN)
+            yield (skip, x, y, NAN)
             continue
         left = right = p
         while cells[left - 1] == target:
@@ -458,7 +449,7 @@ def _span_frames(start, outline, region, seed, options, target, boundary_rgb, fi
         filled += right - left + 1
         runs += 1
         xl, xr = x - (p - left), x + (right - p)
-        yield Span(5, y, xl, xr + 1, fill_rgb)
+        yield Span(line=fill, y=y, x_start=xl, x_end=xr + 1, value=fill_rgb)
         for row in (y + 1, y - 1):
             if not 0 <= row < region.height:
                 continue
@@ -470,9 +461,10 @@ def _span_frames(start, outline, region, seed, options, target, boundary_rgb, fi
             # Pushed right to left, so the leftmost run is popped first.
             pending.extend(reversed(seeds))
             largest = max(largest, len(pending))
-            yield Span(6, row, lo, hi + 1)
-    yield Vars(7, {"filled": filled, "boundary": len(outline), "pops": pops, "runs": runs,
-                   "skipped": skipped, "largest": largest, "size": 0, "next": "(empty)"})
+            yield Span(line=push, y=row, x_start=lo, x_end=hi + 1)
+    yield Vars(line=at["done"], values={"filled": filled, "boundary": len(outline), "pops": pops,
+                                        "runs": runs, "skipped": skipped, "largest": largest,
+                                        "size": 0, "next": "(empty)"})
 
 
 def _entries(pending, stack: bool, region) -> str:
@@ -533,7 +525,7 @@ register(AlgorithmSpec(
     summary="draw the outline, then grow a region from a seed pixel: stack, queue or spans",
     inputs=OUTLINE,
     options=(SEED, CONNECTIVITY, ORDER, MODE, OUTLINE_STEPS, COLORS),
-    code=fill_code,
+    code=listing(fill_listing),
     generator=flood_fill,
     explain=fill_explain,
     uses_grid=True,
@@ -560,7 +552,7 @@ register(AlgorithmSpec(
     summary="draw a midpoint circle, then grow a region from a seed pixel: stack, queue or spans",
     inputs=CENTRE,
     options=(RADIUS, SEED, CONNECTIVITY, ORDER, MODE, OUTLINE_STEPS, COLORS),
-    code=circle_fill_code,
+    code=listing(circle_fill_listing),
     generator=circle_fill,
     explain=fill_explain,
     uses_grid=True,

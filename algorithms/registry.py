@@ -6,6 +6,7 @@ import re
 from dataclasses import dataclass, field
 from typing import Callable
 
+from .code import check_family
 from .errors import InputError
 from .steps import CodeLine
 from .trace import DEFAULT_STEP_CAP, Trace
@@ -332,13 +333,17 @@ def format_value(value) -> str:
 
 
 _REGISTRY: dict[str, AlgorithmSpec] = {}
+_CHECKED_FAMILIES: set = set()  # sources already held to the pseudo-code naming convention
 
 
 def register(spec: AlgorithmSpec) -> AlgorithmSpec:
+    """Add a spec, once its family's source names every line it yields (see
+    code.check_family)."""
     if spec.name in _REGISTRY:
         raise ValueError(f"algorithm {spec.name!r} registered twice")
     if spec.family not in FAMILIES:
         raise ValueError(f"unknown family {spec.family!r}")
+    check_family(spec.generator, _CHECKED_FAMILIES)
     _REGISTRY[spec.name] = spec
     return spec
 

@@ -46,7 +46,7 @@ def copy(tmp_path):
     ("layers", [("app/render/frame.py", "from app.gui import window")]),
     ("layers", [("app/model/scene.py", "from app.render import compose")]),
     ("no cycles", [("algorithms/exact/planted.py", "from algorithms import lines"),
-                   ("algorithms/lines.py", "from algorithms.exact import planted")]),
+                   ("algorithms/lines/__init__.py", "from algorithms.exact import planted")]),
 ], ids=["algorithms-qt", "algorithms-widgets", "model-qt", "analysis-widgets", "widgets-gui",
         "render-gui", "model-render", "cycle"])
 def test_a_planted_forbidden_import_breaks_its_contract(copy, contract, plants):

@@ -90,43 +90,47 @@ class Chart:
         small, normal, bold = font(12), font(14), font(15)
         xs = [x for s in self.series for x, _ in s.points]
         ys = [y for s in self.series for _, y in s.points]
-        xlo, xhi = self._range(xs, self.xlog)
-        ylo, yhi = self._range(ys, self.ylog)
-        left, right, top = 78, width - 16, 34
         listed = [s for s in self.series if s.in_legend] if self.legend else []
         legend_rows = math.ceil(len(listed) / 2)
         bottom = height - 56 - 17 * legend_rows - (16 if self.note else 0)
+        frame = Frame(78, 34, width - 16, bottom, self._range(xs, self.xlog), self.xlog,
+                      self._range(ys, self.ylog), self.ylog)
+        draw.text((frame.left, 8), self.title, fill=INK, font=bold)
+        self._axes(image, draw, frame, (xs, ys), (small, normal))
+        labels = []  # (x, y, text, colour) of point labels, merged where points coincide
+        for series in self.series:
+            placed = [(frame.sx(x), frame.sy(y)) for x, y in series.points]
+            if series.line and len(placed) > 1:
+                draw.line(placed, fill=series.color, width=series.width)
+            for (x, y) in placed:
+                _marker(draw, x, y, series.marker, series.color)
+            if series.labels:
+                for (x, y), text in zip(placed, series.labels):
+                    if text:
+                        labels.append((x, y, str(text), series.color))
+        _draw_labels(draw, labels, small, (frame.left, frame.top, frame.right, frame.bottom))
+        _legend(draw, frame, listed, small)
+        if self.note:
+            draw.text((frame.left, height - 18), self.note, fill="#555555", font=small)
+        return image
 
-        def sx(x):
-            if self.xlog:
-                x = max(x, xlo)
-                t = (math.log10(x) - math.log10(xlo)) / (math.log10(xhi) - math.log10(xlo))
-            else:
-                t = (x - xlo) / (xhi - xlo)
-            return left + t * (right - left)
-
-        def sy(y):
-            if self.ylog:
-                y = max(y, ylo)
-                t = (math.log10(y) - math.log10(ylo)) / (math.log10(yhi) - math.log10(ylo))
-            else:
-                t = (y - ylo) / (yhi - ylo)
-            return bottom - t * (bottom - top)
-
-        draw.text((left, 8), self.title, fill=INK, font=bold)
-        for value in _ticks(xlo, xhi, self.xlog):
-            x = sx(value)
+    def _axes(self, image, draw, frame: Frame, values, fonts) -> None:
+        """Grid lines, ticks, the frame and both axis labels."""
+        (xs, ys), (small, normal) = values, fonts
+        left, top, right, bottom = frame.left, frame.top, frame.right, frame.bottom
+        for value in _ticks(*frame.x_range, self.xlog):
+            x = frame.sx(value)
             draw.line([(x, top), (x, bottom)], fill=GRID)
             text = _tick_text(value, self.xlog)
-            if self.xlog and value == xlo and any(v <= 0 for v in xs):
+            if self.xlog and value == frame.x_range[0] and any(v <= 0 for v in xs):
                 text = "<=" + text
             w = draw.textlength(text, font=small)
             draw.text((x - w / 2, bottom + 4), text, fill=INK, font=small)
-        for value in _ticks(ylo, yhi, self.ylog):
-            y = sy(value)
+        for value in _ticks(*frame.y_range, self.ylog):
+            y = frame.sy(value)
             draw.line([(left, y), (right, y)], fill=GRID)
             text = _tick_text(value, self.ylog)
-            if self.ylog and value == ylo and any(v <= 0 for v in ys):
+            if self.ylog and value == frame.y_range[0] and any(v <= 0 for v in ys):
                 text = "<=" + text
             w = draw.textlength(text, font=small)
             draw.text((left - 6 - w, y - 7), text, fill=INK, font=small)
@@ -139,31 +143,47 @@ class Chart:
         rotated = label.rotate(90, expand=True)
         image.paste(rotated, (4, int((top + bottom) / 2 - rotated.height / 2)), rotated)
 
-        labels = []  # (x, y, text, colour) of point labels, merged where points coincide
-        for series in self.series:
-            placed = [(sx(x), sy(y)) for x, y in series.points]
-            if series.line and len(placed) > 1:
-                draw.line(placed, fill=series.color, width=series.width)
-            for (x, y) in placed:
-                _marker(draw, x, y, series.marker, series.color)
-            if series.labels:
-                for (x, y), text in zip(placed, series.labels):
-                    if text:
-                        labels.append((x, y, str(text), series.color))
-        _draw_labels(draw, labels, small, (left, top, right, bottom))
-        # Legend: two columns under the axis label.
-        y0 = bottom + 40
-        column = (right - left) / 2
-        for n, series in enumerate(listed):
-            x = left + (n % 2) * column
-            y = y0 + 17 * (n // 2)
-            if series.line:
-                draw.line([(x, y + 7), (x + 18, y + 7)], fill=series.color, width=2)
-            _marker(draw, x + 9, y + 7, series.marker or "o", series.color)
-            draw.text((x + 24, y), series.label, fill=INK, font=small)
-        if self.note:
-            draw.text((left, height - 18), self.note, fill="#555555", font=small)
-        return image
+
+@dataclass(frozen=True)
+class Frame:
+    """A panel's plotting area and its scales, from data (x, y) to image pixels."""
+
+    left: float
+    top: float
+    right: float
+    bottom: float
+    x_range: tuple
+    xlog: bool
+    y_range: tuple
+    ylog: bool
+
+    def sx(self, x: float) -> float:
+        return self.left + _share(x, self.x_range, self.xlog) * (self.right - self.left)
+
+    def sy(self, y: float) -> float:
+        return self.bottom - _share(y, self.y_range, self.ylog) * (self.bottom - self.top)
+
+
+def _share(value: float, limits: tuple, log: bool) -> float:
+    """Where value lies between the limits, 0 to 1 (log: on a log scale, clamped below)."""
+    lo, hi = limits
+    if log:
+        value = max(value, lo)
+        return (math.log10(value) - math.log10(lo)) / (math.log10(hi) - math.log10(lo))
+    return (value - lo) / (hi - lo)
+
+
+def _legend(draw, frame: Frame, listed, small) -> None:
+    """Two columns under the axis label."""
+    y0 = frame.bottom + 40
+    column = (frame.right - frame.left) / 2
+    for n, series in enumerate(listed):
+        x = frame.left + (n % 2) * column
+        y = y0 + 17 * (n // 2)
+        if series.line:
+            draw.line([(x, y + 7), (x + 18, y + 7)], fill=series.color, width=2)
+        _marker(draw, x + 9, y + 7, series.marker or "o", series.color)
+        draw.text((x + 24, y), series.label, fill=INK, font=small)
 
 
 def _draw_labels(draw, labels, small, box, near: float = 3.0) -> None:

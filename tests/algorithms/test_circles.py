@@ -11,7 +11,7 @@ from hypothesis import strategies as st
 
 from algorithms.exact import circles as exact
 from algorithms import trace as trace_module
-from algorithms.circles import mirrors8
+from algorithms.circles import midpoint_listing, mirrors8
 from algorithms.registry import InputError, get
 from tests.support.trace_oracle import slow_replay
 from tests.support import record
@@ -134,13 +134,14 @@ def test_each_decision_is_f_at_the_midpoint(start, r):
 
 def test_each_step_plots_its_distinct_mirrors_once():
     trace = circle("circle-midpoint", 30)
+    mirror = midpoint_listing(((0, 0),), {"start": "integer"}).at["plot_mirrors"]
     groups, current = [], None
     for i in range(1, len(trace)):
         step = trace.step(i)
         if step.branch:
             current = (int(step.values["x"]), int(step.values["y"]))
             groups.append((current, []))
-        elif step.writes and step.line == 6:
+        elif step.writes and step.line == mirror:
             groups[-1][1].append(step.pixel)
     assert groups
     for (x, y), plotted in groups:

@@ -294,8 +294,9 @@ def test_auto_seed_is_inside_the_first_outline():
 # ------------------------------------------------------------- frames
 def test_panel_shows_size_and_next_entries():
     trace = flood(SHAPES[0], order="queue")
+    pop = fill_module.fill_listing(SHAPES[0], get("flood-fill").resolve({"order": "queue"})).at["pop"]
     pops = [(i, trace.step(i)) for i in range(len(trace)) if isinstance(trace.step(i).record, Vars)
-            and "next" in trace.step(i).record.values and trace.step(i).line == 3]
+            and "next" in trace.step(i).record.values and trace.step(i).line == pop]
     assert pops
     for (i, a), (j, b) in zip(pops, pops[1:]):
         listed = a.record.values["next"]

@@ -3,6 +3,7 @@ import json
 
 import pytest
 
+from algorithms.lines.forms import explicit_listing
 from algorithms.registry import get
 from algorithms.steps import PLOT, VISIT
 from tests.support.linecases import LINE_ALGORITHMS, NAMED_CASES, trace_of
@@ -58,4 +59,4 @@ def test_explicit_shows_the_case_it_takes():
     trace = trace_of("line-explicit", (7, 3), (0, 0))
     assert trace.variables_at(1)["choice"] == "x major"
     assert trace.variables_at(3)["choice"] == "descending"
-    assert trace.step(3).line == 4
+    assert trace.step(3).line == explicit_listing(((7, 3), (0, 0)), {}).at["x_down"]

@@ -2,7 +2,7 @@
 
 The oracle (algorithms/exact/polygons.py) decides every pixel centre of the
 bounding box on its own, with integer orientation tests and half-open
-rules; it shares no code with algorithms/polygons.py.
+rules; it shares no code with the algorithms/polygons package.
 """
 from fractions import Fraction
 

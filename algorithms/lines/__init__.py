@@ -1,0 +1,15 @@
+"""The line family: step generators (and fast kernels) for segments P -> Q.
+
+Points are integer pixel coordinates; pixel (i, j) is the ideal line's
+sample point at (i + 1/2, j + 1/2), so the ideal segment runs between the
+centres of the two end pixels. Every algorithm plots both end pixels.
+"""
+from __future__ import annotations
+
+# Imported in this order, so the algorithms are listed in this order.
+from .common import COLORS, SEGMENT, Octant
+from .bresenham import bresenham, bresenham_code, bresenham_pixels
+from .forms import explicit, implicit, incremental, parametric
+
+__all__ = ["COLORS", "SEGMENT", "Octant", "bresenham", "bresenham_code", "bresenham_pixels",
+           "explicit", "implicit", "incremental", "parametric"]
