@@ -75,7 +75,7 @@ class CodeLine:
                     raise ValueError(f"operation {name}: {count!r} is not a count")
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True, slots=True, kw_only=True)
 class Start:
     """First frame of every run: names the values of the lean frames."""
 
@@ -102,7 +102,7 @@ class Start:
     replaces: bool = False
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True, slots=True, kw_only=True)
 class Vars:
     """A batch of named variables set at this frame."""
 
@@ -111,7 +111,7 @@ class Vars:
     pixel: tuple[int, int] | None = None
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True, slots=True, kw_only=True)
 class Table:
     """A snapshot of a table (edge table, active edge table, ...)."""
 
@@ -122,7 +122,7 @@ class Table:
     pixel: tuple[int, int] | None = None
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True, slots=True, kw_only=True)
 class Note:
     """A sentence worth showing at this frame."""
 
@@ -131,7 +131,7 @@ class Note:
     pixel: tuple[int, int] | None = None
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True, slots=True, kw_only=True)
 class Span:
     """A run of pixels x_start .. x_end - 1 on row y, written at once.
 

@@ -216,7 +216,7 @@ def zbuffer_code(points, options) -> Code:
              ops=TRIANGLE_OPS)
     code.add("fragments", "    for each fragment (x, y) of T   (pixel centres T covers, fill "
                           "rule):")
-    code.add("pass", f"        z = alpha z0 + beta z1 + gamma z2;  if z {test} ZB[x, y]:  "
+    code.add("plot_pass", f"        z = alpha z0 + beta z1 + gamma z2;  if z {test} ZB[x, y]:  "
                      "CB[x, y] = colour;  ZB[x, y] = z", PLOT, "pass", ops=fragment)
     code.add("fail", f"        else (z {'>=' if test == '<' else '>'} ZB[x, y]): hidden, keep "
                      "CB and ZB", VISIT, "fail", ops=fragment)
@@ -239,7 +239,7 @@ def zbuffer(points, options, grid):
     depth = np.full((scene.height, scene.width), clear)
     fragments = passed = overdraw = 0
     written = np.zeros((scene.height, scene.width), bool)
-    pass_line, fail_line = at["pass"], at["fail"]
+    pass_line, fail_line = at["plot_pass"], at["fail"]
     for setup in scene.setups:
         yield from _triangle_vars(scene, setup, at["triangle"])
         if setup.tri is None:
@@ -307,7 +307,7 @@ def painter_code(points, options) -> Code:
     code.add("sort", f"key(T) = the {key} of T's vertex depths;  sort the triangles by key, "
                      "largest (farthest) first", per={PER_ROW: key_ops})
     code.add("triangle", "for each triangle T in that order (back to front):", ops=TRIANGLE_OPS)
-    code.add("paint", "    for each fragment (x, y) of T:  CB[x, y] = colour   (no depth test: "
+    code.add("plot_paint", "    for each fragment (x, y) of T:  CB[x, y] = colour   (no depth test: "
                       "the last triangle drawn wins)", PLOT,
              ops=ops_sum(WALK_OPS, _shade_ops(options)))
     code.add("compare", "compare with the z-buffer: disagree = pixels whose colours differ")
@@ -329,7 +329,7 @@ def painter(points, options, grid):
                 columns=("rank", "triangle", f"{key} z", "z0", "z1", "z2"), rows=rows)
     color = np.full((scene.height, scene.width), -1, np.int64)
     owner = np.full((scene.height, scene.width), -1, np.int64)
-    paint_line = at["paint"]
+    paint_line = at["plot_paint"]
     for setup in order:
         yield from _triangle_vars(scene, setup, at["triangle"])
         k = depth_key(setup)

@@ -51,7 +51,7 @@ def adaptive_code(points, options) -> Code:
     code.add("split", "    else: split the square into four;  value = mean of refine(quarter, "
                       "level + 1)", CALC, "split",
              ops=ops_sum(square, {"int_add": 6, "float_add": 4, "div": 1}))
-    code.add("write", "coverage = value;  if coverage > 0: write (x, y)", PLOT, ops=pixel)
+    code.add("plot_write", "coverage = value;  if coverage > 0: write (x, y)", PLOT, ops=pixel)
     code.add("empty", "else: nothing to write", VISIT, ops=pixel)
     code.add("done", "done")
     return code
@@ -122,7 +122,7 @@ def adaptive(points, options, grid):
             split += spent > 5
             coverage = float(value)
             written += value > 0
-            yield (at["write"] if value > 0 else at["empty"], x, y, NAN, NAN, NAN, NAN, NAN,
+            yield (at["plot_write"] if value > 0 else at["empty"], x, y, NAN, NAN, NAN, NAN, NAN,
                    float(spent), coverage, float(ink_blend(ink, coverage)))
     yield Vars(line=at["done"], values={"pixels": written, "samples": total,
                                         "subdivided": split, "most in a pixel": most})
@@ -134,7 +134,7 @@ def adaptive_image(points, options, grid) -> tuple[np.ndarray, np.ndarray]:
     coverage = np.zeros((int(grid[1]), int(grid[0])))
     spent = np.zeros((int(grid[1]), int(grid[0])), np.int64)
     at = adaptive_code(points, options).at
-    pixel_lines = (at["write"], at["empty"])
+    pixel_lines = (at["plot_write"], at["empty"])
     for frame in adaptive(points, options, grid):
         if type(frame) is tuple and frame[0] in pixel_lines:
             coverage[frame[2], frame[1]] = frame[9]

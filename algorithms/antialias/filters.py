@@ -91,11 +91,11 @@ def filter_code(points, options) -> Code:
     tap = {"int_add": 3, "compare": 6, "pixels_tested": 1}
     code = Code()
     code.add("setup", f"setup: {text}")
-    code.add("aliased", "aliased image: I[x, y] = 1 where the triangles cover the pixel centre",
+    code.add("plot_aliased", "aliased image: I[x, y] = 1 where the triangles cover the pixel centre",
              PLOT, per={"coverage": {"mul": 6, "int_add": 6, "compare": 3, "pixels_tested": 1}})
     code.add("pixels", "for each pixel (x, y) that the kernel reaches from a covered pixel, "
                        "row by row:")
-    code.add("out", "    out[x, y] = sum over (u, v) of K[u, v] * I[x + u, y + v];  write (x, y) "
+    code.add("plot_out", "    out[x, y] = sum over (u, v) of K[u, v] * I[x + u, y + v];  write (x, y) "
                     "with out[x, y]", PLOT, ops=ops_sum(tap, times=taps) | {"div": 1},
              per={"taps": {"int_add": 2}})
     code.add("done", "done")
@@ -122,8 +122,8 @@ def post_filter(points, options, grid):
     height, width = image.shape
     ink = unpack(INK)
     for y, x in np.argwhere(image):
-        yield (at["aliased"], int(x), int(y), 1.0, NAN, float(ink_blend(ink, 1.0)))
-    yield Vars(line=at["aliased"], values={"aliased pixels": int(image.sum())})
+        yield (at["plot_aliased"], int(x), int(y), 1.0, NAN, float(ink_blend(ink, 1.0)))
+    yield Vars(line=at["plot_aliased"], values={"aliased pixels": int(image.sum())})
     reach = filter_sums(image, (kernel > 0).astype(np.int64)) > 0
     written = 0
     for y, x in np.argwhere(reach):
@@ -136,5 +136,5 @@ def post_filter(points, options, grid):
                     taps += 1
         value = acc / total
         written += 1
-        yield (at["out"], x, y, value, float(taps), float(ink_blend(ink, value)))
+        yield (at["plot_out"], x, y, value, float(taps), float(ink_blend(ink, value)))
     yield Vars(line=at["done"], values={"pixels": written})

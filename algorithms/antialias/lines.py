@@ -45,8 +45,8 @@ def wu_code(points, options) -> Code:
                     "y = y0   (the ideal line is at y + e/dx)",
              ops={"int_add": 2, "compare": 3}, per={"dy": {"int_add": 2}})
     code.add("columns", "for x = x0 .. x1:")
-    code.add("near", f"    plot(x, y, 1 - e/dx){scale}", PLOT, "near", ops=ops_sum(pixel, column))
-    code.add("far", f"    plot(x, y + 1, e/dx){scale}", PLOT, "far", ops=pixel)
+    code.add("plot_near", f"    plot(x, y, 1 - e/dx){scale}", PLOT, "near", ops=ops_sum(pixel, column))
+    code.add("plot_far", f"    plot(x, y + 1, e/dx){scale}", PLOT, "far", ops=pixel)
     code.add("zero", "    (intensity 0: the line passes exactly through this centre; nothing "
                      "written)", VISIT, ops=pixel)
     code.add("step", "    e += dy;  if e >= dx:  e -= dx;  y += 1",
@@ -66,12 +66,12 @@ def wu(points, options):
                            "endpoints": options["endpoints"]},
                 pixel_value="intensity", color_value="rgb")
     if dx == 0:
-        yield (at["near"], p[0], p[1], 0.0, 0.0, 1.0, ink_grey(1.0))
+        yield (at["plot_near"], p[0], p[1], 0.0, 0.0, 1.0, ink_grey(1.0))
         yield Vars(line=at["done"], values={"pixels": 1})
         return
     e = v = 0
     written = 0
-    near_line, far_line, zero_line, step_line = at["near"], at["far"], at["zero"], at["step"]
+    near_line, far_line, zero_line, step_line = at["plot_near"], at["plot_far"], at["zero"], at["step"]
     for u in range(dx + 1):
         scale = 0.5 if gap and u in (0, dx) else 1.0
         f = e / dx
@@ -97,7 +97,7 @@ def wu_image(points, options) -> dict:
     """{(x, y): intensity} of Wu's line (the sum where a pixel is written twice)."""
     options = {**{o.name: o.default for o in WU_OPTIONS}, **options}
     at = wu_code(points, options).at
-    plotted = (at["near"], at["far"])
+    plotted = (at["plot_near"], at["plot_far"])
     result = {}
     for frame in wu(points, options):
         if type(frame) is tuple and frame[0] in plotted:
@@ -125,7 +125,7 @@ def area_code(points, options) -> Code:
                           f"widened by w/2 on each side{ends}",
              ops={"mul": 4, "sqrt": 1, "div": 1, "float_add": 8})
     code.add("columns", "for each column along the major axis, from P's side to Q's:")
-    code.add("pixel", "    for each pixel of the column that R reaches:  a = area(R and the pixel "
+    code.add("plot_pixel", "    for each pixel of the column that R reaches:  a = area(R and the pixel "
                       "square);  plot(x, y, a)", PLOT, ops=ops_sum(area, {"float_add": 1}, LOOP))
     code.add("touch", "        (a = 0: R only touches the pixel; nothing written)", VISIT,
              ops=ops_sum(area, LOOP))
@@ -174,7 +174,7 @@ def line_area(points, options):
     columns.sort(key=lambda c: major_sign * c)
     written = 0
     total_area = 0.0
-    pixel_line, touch_line = at["pixel"], at["touch"]
+    pixel_line, touch_line = at["plot_pixel"], at["touch"]
     for c in columns:
         line_values = table[c]
         nonzero = np.flatnonzero(line_values)

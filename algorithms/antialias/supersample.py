@@ -188,7 +188,7 @@ def supersample_code(points, options) -> Code:
              ops=sample_ops(True, hit_test, ops_sum(accumulate, {"int_add": 1})))
     code.add("miss", "        else:  colour += w_s * background", VISIT, "miss",
              ops=sample_ops(False, miss_test, accumulate))
-    code.add("write", "    coverage = cover / W;  if coverage > 0: write (x, y) with coverage and "
+    code.add("plot_write", "    coverage = cover / W;  if coverage > 0: write (x, y) with coverage and "
                       "colour / W", PLOT, ops=pixel)
     code.add("empty", "    else: nothing covers the pixel's samples", VISIT, ops=pixel)
     code.add("done", "done")
@@ -232,7 +232,7 @@ def supersample(points, options, grid):
     tested = written = 0
     area = 0.0
     nothing = (NAN,) * 4
-    hit_line, miss_line, write_line, empty_line = at["hit"], at["miss"], at["write"], at["empty"]
+    hit_line, miss_line, write_line, empty_line = at["hit"], at["miss"], at["plot_write"], at["empty"]
     for y in range(y0, y1):
         kx, ky, big = sample_strata(pattern, n, options["seed"], y, xs)
         weights = sample_weights(kx, ky, big, name, options["sigma"])

@@ -133,7 +133,7 @@ def temporal_code(points, options) -> Code:
     blur = options.get("mode", "instant") == "motion-blur"
     sample = (f"average over {options.get('time_samples', 8)} instants t = k + shutter (s + 1/2) "
               f"/ {options.get('time_samples', 8)}" if blur else "one instant t = k")
-    # Every pixel frame of line "pixels" stands for the pixel's n^2 samples at each
+    # Every pixel frame of line "plot_pixels" stands for the pixel's n^2 samples at each
     # of the frame's instants, each tested against every shape (the images
     # come from the vectorised kernel, which tests them all), at its
     # position (POSITION) and summed (1 int_add); then one division. Pixels
@@ -155,7 +155,7 @@ def temporal_code(points, options) -> Code:
     code = Code()
     code.add("setup", "setup: the primitive, its motion per frame, the n x n samples of a pixel")
     code.add("frames", f"for each animation frame k:  {sample}")
-    code.add("pixels", "    for each pixel (x, y) the primitive reaches in any frame:  coverage = "
+    code.add("plot_pixels", "    for each pixel (x, y) the primitive reaches in any frame:  coverage = "
                        "(samples inside, over all instants) / (instants * n^2);  write it", PLOT,
              ops=pixel)
     code.add("done", "done")
@@ -188,7 +188,7 @@ def temporal(points, options, grid):
         for y, x in cells:
             value = float(image[y, x])
             if value > 0 or previous[y, x] > 0:
-                yield (at["pixels"], int(x), int(y), float(k), value,
+                yield (at["plot_pixels"], int(x), int(y), float(k), value,
                        float(ink_blend(ink, value)))
         previous = image
     yield Vars(line=at["done"], values={"frames": len(images), "apparent speed": apparent})

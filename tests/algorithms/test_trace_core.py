@@ -90,7 +90,7 @@ def test_candidates_are_e_and_ne_of_the_previous_pixel():
 
 # ------------------------------------------------------------------ the cap
 def frames(count):
-    yield Start(0, ("v",))
+    yield Start(line=0, values=("v",))
     for k in range(count - 1):
         yield (1, k, 0, float(k))
 
@@ -115,7 +115,7 @@ def test_the_cap_through_the_registry():
 # ------------------------------------------------------------ the protocol
 def run_bad(*bad):
     def generator():
-        yield Start(0, ("v",))
+        yield Start(line=0, values=("v",))
         yield (1, 0, 0, 1.0)
         yield from bad
     return Trace.record(generator(), CODE, 8, 8)
@@ -129,7 +129,7 @@ def run_bad(*bad):
     ((-1, 0, 0, 1.0), "is not (line, x, y, value)"),
     ((9, 0, 0, 1.0), "pseudo-code line 9 does not exist"),
     ({"line": 1}, "is not a frame steps.py allows here"),
-    (Start(0, ("v",)), "is not a frame steps.py allows here"),
+    (Start(line=0, values=("v",)), "is not a frame steps.py allows here"),
 ])
 def test_malformed_frames_raise_trace_error(bad, words):
     with pytest.raises(TraceError, match="step") as error:
@@ -145,16 +145,16 @@ def test_the_first_frame_must_be_start():
 
 
 def test_rich_records_mid_stream():
-    table = Table(3, "AET", ("x", "dx"), ((1, 0.5),))
+    table = Table(line=3, name="AET", columns=("x", "dx"), rows=((1, 0.5),))
 
     def generator():
-        yield Start(0, ("v",), {"k": 7})
+        yield Start(line=0, values=("v",), constants={"k": 7})
         yield (1, 0, 0, 1.0)                       # 1
-        yield Vars(2, {"a": 1, "b": "two"})        # 2
+        yield Vars(line=2, values={"a": 1, "b": "two"})        # 2
         yield (1, 1, 0, 2.0)                       # 3
-        yield Note(3, "a remark", pixel=(5, 5))    # 4
+        yield Note(line=3, text="a remark", pixel=(5, 5))    # 4
         yield table                                # 5
-        yield Vars(2, {"a": 3})                    # 6
+        yield Vars(line=2, values={"a": 3})                    # 6
         yield (1, 2, 0, 3.0)                       # 7
     trace = Trace.record(generator(), CODE, 8, 8)
     assert len(trace) == 8 and trace.steps_of().tolist() == [0, 2, 4, 5, 6]

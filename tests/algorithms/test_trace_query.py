@@ -109,15 +109,15 @@ lean = st.builds(lambda line, x, y, c, z: (line, x, NO_PIXEL if x == NO_PIXEL el
 rich = st.one_of(
     st.builds(Span, st.integers(1, 3), st.integers(-1, H), st.integers(-2, W),
               st.integers(-2, W + 2), st.one_of(st.none(), st.integers(0, 0xFFFFFF))),
-    st.builds(lambda line, a: Vars(line, {"a": a}), st.integers(1, 3), st.integers(0, 9)),
-    st.builds(lambda line, n: Table(line, "T", ("k",), tuple((k,) for k in range(n))),
+    st.builds(lambda line, a: Vars(line=line, values={"a": a}), st.integers(1, 3), st.integers(0, 9)),
+    st.builds(lambda line, n: Table(line=line, name="T", columns=("k",), rows=tuple((k,) for k in range(n))),
               st.integers(1, 3), st.integers(0, 3)),
-    st.builds(lambda line: Note(line, "a remark"), st.integers(1, 3)))
+    st.builds(lambda line: Note(line=line, text="a remark"), st.integers(1, 3)))
 
 
 @st.composite
 def synthetic_runs(draw):
-    start = Start(0, ("c", "z"), pixel_value=draw(st.sampled_from(["c", None])),
+    start = Start(line=0, values=("c", "z"), pixel_value=draw(st.sampled_from(["c", None])),
                   depth_value=draw(st.sampled_from(["z", None])))
     frames = [start] + draw(st.lists(st.one_of(lean, rich), min_size=1, max_size=60))
     return Run(SYNTHETIC_CODE, frames, W, H)

@@ -25,11 +25,11 @@ AET = ("edge", "ymax", "x")
 
 
 def aet(index_rows):
-    return Table(6, "AET", AET, tuple(index_rows))
+    return Table(line=6, name="AET", columns=AET, rows=tuple(index_rows))
 
 
 def test_snapshot_at_or_before_the_step_and_its_changes():
-    et = Table(1, "ET", ("ymin", "edge"), ((2, "P1P2"), (3, "P2P3")))
+    et = Table(line=1, name="ET", columns=("ymin", "edge"), rows=((2, "P1P2"), (3, "P2P3")))
     first = aet((("P1P2", 9, Fraction(5, 2)),))
     second = aet((("P1P2", 9, Fraction(3)), ("P2P3", 9, Fraction(7, 3))))
     index = TableIndex(FakeTrace({2: et, 6: first, 12: second}))
@@ -49,8 +49,8 @@ def test_snapshot_at_or_before_the_step_and_its_changes():
 
 
 def test_changes_without_a_key_column():
-    before = Table(0, "stack", ("x", "y"), ((1, 2), (3, 4)))
-    after = Table(0, "stack", ("x", "y"), ((1, 2), (5, 6)))
+    before = Table(line=0, name="stack", columns=("x", "y"), rows=((1, 2), (3, 4)))
+    after = Table(line=0, name="stack", columns=("x", "y"), rows=((1, 2), (5, 6)))
     assert changes(after, before) == ({1}, set())
 
 
