@@ -107,10 +107,11 @@ value = st.one_of(st.integers(0, 0xFFFFFF).map(float), st.just(math.nan))
 lean = st.builds(lambda line, x, y, c, z: (line, x, NO_PIXEL if x == NO_PIXEL else y, c, z),
                  st.integers(1, 3), coordinate, st.integers(-2, H + 2), value, value)
 rich = st.one_of(
-    st.builds(Span, st.integers(1, 3), st.integers(-1, H), st.integers(-2, W),
-              st.integers(-2, W + 2), st.one_of(st.none(), st.integers(0, 0xFFFFFF))),
+    st.builds(Span, line=st.integers(1, 3), y=st.integers(-1, H), x_start=st.integers(-2, W),
+              x_end=st.integers(-2, W + 2), value=st.one_of(st.none(), st.integers(0, 0xFFFFFF))),
     st.builds(lambda line, a: Vars(line=line, values={"a": a}), st.integers(1, 3), st.integers(0, 9)),
-    st.builds(lambda line, n: Table(line=line, name="T", columns=("k",), rows=tuple((k,) for k in range(n))),
+    st.builds(lambda line, n: Table(line=line, name="T", columns=("k",),
+                                    rows=tuple((k,) for k in range(n))),
               st.integers(1, 3), st.integers(0, 3)),
     st.builds(lambda line: Note(line=line, text="a remark"), st.integers(1, 3)))
 
