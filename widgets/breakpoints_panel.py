@@ -42,21 +42,7 @@ class BreakpointsPanel(QWidget):
             self.unit.addItem(title, key)
             self.unit.setItemData(self.unit.count() - 1, tip, Qt.ItemDataRole.ToolTipRole)
         self.unit.currentIndexChanged.connect(lambda _i: self.unitChanged.emit(self.unit_key()))
-        self.boxes: dict[str, QCheckBox] = {}
-        self._tips: dict[str, str] = {}
-        conditions_grid = QGridLayout()
-        conditions_grid.setContentsMargins(0, 0, 0, 0)
-        conditions_grid.setVerticalSpacing(2)
-        for row, (key, title, tip) in enumerate(conditions):
-            box = QCheckBox(title, self)
-            box.setToolTip(tip)
-            box.toggled.connect(lambda _on: self.conditionsChanged.emit())
-            self.boxes[key] = box
-            self._tips[key] = tip
-            conditions_grid.addWidget(box, row, 0)
-            if key == pixel_kind:
-                conditions_grid.addWidget(self._pixel_fields(), row, 1)
-        conditions_grid.setColumnStretch(2, 1)
+        conditions_grid = self._conditions_grid(conditions, pixel_kind)
 
         self.run_back = _no_focus(QPushButton("\u25c0 Run back", self))
         self.run_back.setToolTip("Go back to the nearest earlier frame where a ticked "
@@ -89,6 +75,25 @@ class BreakpointsPanel(QWidget):
         layout.addStretch(1)
         # The dock takes no more height than the controls need.
         self.setSizePolicy(QSizePolicy.Policy.Preferred, QSizePolicy.Policy.Maximum)
+
+    def _conditions_grid(self, conditions, pixel_kind: str) -> QGridLayout:
+        """A check box per stop condition; the pixel fields beside the pixel's."""
+        self.boxes: dict[str, QCheckBox] = {}
+        self._tips: dict[str, str] = {}
+        conditions_grid = QGridLayout()
+        conditions_grid.setContentsMargins(0, 0, 0, 0)
+        conditions_grid.setVerticalSpacing(2)
+        for row, (key, title, tip) in enumerate(conditions):
+            box = QCheckBox(title, self)
+            box.setToolTip(tip)
+            box.toggled.connect(lambda _on: self.conditionsChanged.emit())
+            self.boxes[key] = box
+            self._tips[key] = tip
+            conditions_grid.addWidget(box, row, 0)
+            if key == pixel_kind:
+                conditions_grid.addWidget(self._pixel_fields(), row, 1)
+        conditions_grid.setColumnStretch(2, 1)
+        return conditions_grid
 
     def _pixel_fields(self) -> QWidget:
         fields = QWidget(self)

@@ -40,7 +40,30 @@ class ExportDialog(QDialog):
         self._last = 0
         self._current = 0
 
-        # Which steps.
+        steps = self._steps_box()
+        timing = self._timing_box(max_fps, max_scale, max_hold)
+        drawn = self._drawn_box()
+        output = self._output_box()
+        buttons = self._buttons()
+        main = QVBoxLayout(self)
+        top = QHBoxLayout()
+        left, right = QVBoxLayout(), QVBoxLayout()
+        left.addWidget(steps)
+        left.addWidget(timing)
+        right.addWidget(drawn)
+        right.addWidget(output)
+        top.addLayout(left)
+        top.addLayout(right)
+        main.addLayout(top)
+        main.addWidget(self.size_label)
+        main.addWidget(self.progress)
+        main.addWidget(self.message)
+        main.addLayout(buttons)
+        self._inputs: list[QWidget] = [steps, timing, drawn, output]
+        self._connect_changes()
+
+    def _steps_box(self) -> QGroupBox:
+        """Which steps: all, from the current one, a range or two bookmarks."""
         steps = QGroupBox("Steps", self)
         self.range_all = QRadioButton("All steps", steps)
         self.range_current = QRadioButton("From the current step to the end", steps)
@@ -66,7 +89,12 @@ class ExportDialog(QDialog):
         layout.addWidget(self.range_all)
         layout.addWidget(self.range_current)
         layout.addLayout(custom)
-        # The scene's bookmarks as ends of the range (shown when it has any).
+        self._bookmark_row(steps, layout)
+        self._per_row(steps, layout)
+        return steps
+
+    def _bookmark_row(self, steps, layout) -> None:
+        """The scene's bookmarks as ends of the range (shown when it has any)."""
         self.mark_first = QComboBox(steps)
         self.mark_last = QComboBox(steps)
         self.mark_first.setToolTip("Start the range at a bookmark of the scene")
@@ -83,6 +111,9 @@ class ExportDialog(QDialog):
         marks.addStretch(1)
         layout.addWidget(self.marks_row)
         self.marks_row.hide()
+
+    def _per_row(self, steps, layout) -> None:
+        """One frame per step or per animation frame."""
         self.per = QComboBox(steps)
         for key, text in PER:
             self.per.addItem(text, key)
@@ -95,7 +126,8 @@ class ExportDialog(QDialog):
         per_row.addStretch(1)
         layout.addLayout(per_row)
 
-        # Timing and size.
+    def _timing_box(self, max_fps, max_scale, max_hold) -> QGroupBox:
+        """Speed, the hold of the last frame, the scale, looping."""
         timing = QGroupBox("Timing and size", self)
         self.fps = QDoubleSpinBox(timing)
         self.fps.setRange(0.1, max_fps)
@@ -121,8 +153,10 @@ class ExportDialog(QDialog):
         form.addRow("Hold last frame", self.hold)
         form.addRow("Scale", self.scale)
         form.addRow("", self.loop)
+        return timing
 
-        # What is drawn.
+    def _drawn_box(self) -> QGroupBox:
+        """What is drawn into the frames."""
         drawn = QGroupBox("Drawn into the frames", self)
         self.grid_lines = QCheckBox("Grid lines", drawn)
         self.primitive = QCheckBox("Ideal primitive", drawn)
@@ -145,8 +179,10 @@ class ExportDialog(QDialog):
         grid.addWidget(self.panel, 2, 1)
         grid.addWidget(QLabel("Theme", drawn), 3, 0)
         grid.addWidget(self.theme, 3, 1)
+        return drawn
 
-        # Where.
+    def _output_box(self) -> QGroupBox:
+        """Where: the GIF file and an optional folder of PNG frames."""
         output = QGroupBox("Output", self)
         self.path = QLineEdit(output)
         self.path.setPlaceholderText("animation.gif")
@@ -163,8 +199,10 @@ class ExportDialog(QDialog):
         where.addWidget(QLabel("PNG frames", output), 1, 0)
         where.addWidget(self.frames_dir, 1, 1)
         where.addWidget(self.browse_frames, 1, 2)
+        return output
 
-        # Progress and buttons.
+    def _buttons(self) -> QHBoxLayout:
+        """Progress, the message line and the Export, Cancel and Close buttons."""
         self.progress = QProgressBar(self)
         self.progress.setRange(0, 1)
         self.progress.setValue(0)
@@ -186,22 +224,10 @@ class ExportDialog(QDialog):
         buttons.addWidget(self.export_button)
         buttons.addWidget(self.cancel_button)
         buttons.addWidget(self.close_button)
+        return buttons
 
-        main = QVBoxLayout(self)
-        top = QHBoxLayout()
-        left, right = QVBoxLayout(), QVBoxLayout()
-        left.addWidget(steps)
-        left.addWidget(timing)
-        right.addWidget(drawn)
-        right.addWidget(output)
-        top.addLayout(left)
-        top.addLayout(right)
-        main.addLayout(top)
-        main.addWidget(self.size_label)
-        main.addWidget(self.progress)
-        main.addWidget(self.message)
-        main.addLayout(buttons)
-        self._inputs: list[QWidget] = [steps, timing, drawn, output]
+    def _connect_changes(self) -> None:
+        """Every choice that changes what is exported emits ``changed``."""
         def changed(*_args):
             self.changed.emit()
 

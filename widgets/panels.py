@@ -175,27 +175,51 @@ class VariablesPanel(QWidget):
         self.chips.setWordWrap(True)
         self.chips.setTextFormat(Qt.TextFormat.RichText)
         self.chips.hide()
-        self.table = QTableWidget(0, 2, self)
-        self.table.setObjectName("variables")
-        self.table.setHorizontalHeaderLabels(["Name", "Value"])
-        self.table.verticalHeader().setVisible(False)
-        self.table.horizontalHeader().setSectionResizeMode(0, QHeaderView.ResizeMode.ResizeToContents)
-        self.table.horizontalHeader().setSectionResizeMode(1, QHeaderView.ResizeMode.Stretch)
-        self.table.horizontalHeader().setDefaultAlignment(Qt.AlignmentFlag.AlignLeft)
-        self.table.setEditTriggers(QAbstractItemView.EditTrigger.NoEditTriggers)
-        self.table.setSelectionMode(QAbstractItemView.SelectionMode.NoSelection)
-        self.table.setFocusPolicy(Qt.FocusPolicy.NoFocus)
-        self.table.setAlternatingRowColors(True)
-        self.table.setShowGrid(False)
-        self.table.verticalHeader().setDefaultSectionSize(self.fontMetrics().height() + 6)
+        self.table = self._make_table()
         self._value_font = monospace_font()
 
-        self.plot = pg.PlotWidget(self)
-        self.plot.setObjectName("series")
-        self.plot.setBackground("#ffffff")
-        self.plot.setMinimumHeight(120)
-        self.plot.setMaximumHeight(190)
-        item = self.plot.getPlotItem()
+        self.plot = self._make_plot()
+        self.plot_title = QLabel(self)
+        self.plot_title.setObjectName("seriesTitle")
+
+        layout = QVBoxLayout(self)
+        layout.setContentsMargins(6, 6, 6, 6)
+        layout.setSpacing(6)
+        layout.addWidget(self.caption)
+        layout.addWidget(self.chips)
+        layout.addWidget(self.table, 1)
+        layout.addWidget(self.plot_title)
+        layout.addWidget(self.plot)
+        self._rows: list[tuple[str, str]] = []
+        self._chips: list[tuple[str, str, str]] = []
+        self._series: np.ndarray | None = None
+        self.set_series(None)
+
+    def _make_table(self) -> QTableWidget:
+        """The name/value table of the step's variables."""
+        table = QTableWidget(0, 2, self)
+        table.setObjectName("variables")
+        table.setHorizontalHeaderLabels(["Name", "Value"])
+        table.verticalHeader().setVisible(False)
+        table.horizontalHeader().setSectionResizeMode(0, QHeaderView.ResizeMode.ResizeToContents)
+        table.horizontalHeader().setSectionResizeMode(1, QHeaderView.ResizeMode.Stretch)
+        table.horizontalHeader().setDefaultAlignment(Qt.AlignmentFlag.AlignLeft)
+        table.setEditTriggers(QAbstractItemView.EditTrigger.NoEditTriggers)
+        table.setSelectionMode(QAbstractItemView.SelectionMode.NoSelection)
+        table.setFocusPolicy(Qt.FocusPolicy.NoFocus)
+        table.setAlternatingRowColors(True)
+        table.setShowGrid(False)
+        table.verticalHeader().setDefaultSectionSize(self.fontMetrics().height() + 6)
+        return table
+
+    def _make_plot(self):
+        """The plot of the decision variable over the run, with the step's marker."""
+        plot = pg.PlotWidget(self)
+        plot.setObjectName("series")
+        plot.setBackground("#ffffff")
+        plot.setMinimumHeight(120)
+        plot.setMaximumHeight(190)
+        item = plot.getPlotItem()
         item.hideButtons()
         item.setMenuEnabled(False)
         # No background grid: pyqtgraph redraws it whole whenever the
@@ -215,24 +239,10 @@ class VariablesPanel(QWidget):
         self.point = pg.ScatterPlotItem(size=9, brush=pg.mkBrush("#f08c00"),
                                         pen=pg.mkPen("#ffffff", width=1.5))
         for part in (self.zero, self.curve, self.marker, self.point):
-            self.plot.addItem(part)
+            plot.addItem(part)
         self.marker.setZValue(10)
         self.point.setZValue(11)
-        self.plot_title = QLabel(self)
-        self.plot_title.setObjectName("seriesTitle")
-
-        layout = QVBoxLayout(self)
-        layout.setContentsMargins(6, 6, 6, 6)
-        layout.setSpacing(6)
-        layout.addWidget(self.caption)
-        layout.addWidget(self.chips)
-        layout.addWidget(self.table, 1)
-        layout.addWidget(self.plot_title)
-        layout.addWidget(self.plot)
-        self._rows: list[tuple[str, str]] = []
-        self._chips: list[tuple[str, str, str]] = []
-        self._series: np.ndarray | None = None
-        self.set_series(None)
+        return plot
 
     # ----------------------------------------------------------- table
     def set_caption(self, text: str) -> None:

@@ -33,6 +33,19 @@ class TransportBar(QWidget):
             "pause": style.standardIcon(QStyle.StandardPixmap.SP_MediaPause),
         }
 
+        self._make_buttons(style)
+        self._make_timeline()
+        speed_label = self._make_speed()
+        self._lay_out(speed_label)
+
+        self._last = 0
+        self._position = 0
+        self.set_speed(8)
+        self.set_range(0)
+
+    def _make_buttons(self, style) -> None:
+        """First, back, play, forward and last."""
+
         def button(icon, tip, signal):
             b = QToolButton(self)
             b.setIcon(style.standardIcon(icon))
@@ -57,6 +70,8 @@ class TransportBar(QWidget):
         self.last_button = button(QStyle.StandardPixmap.SP_MediaSkipForward, "Last step (End)",
                                   self.lastRequested)
 
+    def _make_timeline(self) -> None:
+        """The scrub slider and the step counter."""
         self.timeline = QSlider(Qt.Orientation.Horizontal, self)
         self.timeline.setToolTip("Drag to scrub through the run")
         self.timeline.setFocusPolicy(Qt.FocusPolicy.NoFocus)
@@ -69,6 +84,8 @@ class TransportBar(QWidget):
         self.counter.setAlignment(Qt.AlignmentFlag.AlignLeft | Qt.AlignmentFlag.AlignVCenter)
         self.counter.setToolTip("The step on show and the last step of the run")
 
+    def _make_speed(self) -> QLabel:
+        """The speed slider and the steps-per-second box beside it."""
         speed_label = QLabel("Speed", self)
         self.speed_slider = QSlider(Qt.Orientation.Horizontal, self)
         self.speed_slider.setRange(0, _SPEED_TICKS)
@@ -83,7 +100,9 @@ class TransportBar(QWidget):
                                   "frames are skipped to keep up")
         self.speed_slider.valueChanged.connect(self._speed_slid)
         self.speed_box.valueChanged.connect(self._speed_typed)
+        return speed_label
 
+    def _lay_out(self, speed_label) -> None:
         # The timeline takes the whole width above the buttons: scrubbing
         # wants every pixel it can get.
         top = QHBoxLayout()
@@ -108,11 +127,6 @@ class TransportBar(QWidget):
         layout.setSpacing(2)
         layout.addLayout(top)
         layout.addLayout(row)
-
-        self._last = 0
-        self._position = 0
-        self.set_speed(8)
-        self.set_range(0)
 
     # ------------------------------------------------------------ shown state
     def set_range(self, last: int) -> None:
