@@ -96,7 +96,7 @@ OUTLINE_STYLE = {
 }
 
 # Tints used at scale 1, where there is no room for outlines.
-_TINT = {"difference": 0.55, "candidate": 0.45, "current": 0.7}
+TINT = {"difference": 0.55, "candidate": 0.45, "current": 0.7}
 
 
 @dataclass(frozen=True)
@@ -158,8 +158,8 @@ def compose(raster, overlay: Overlay | None = None, palette: Palette = PALETTE,
             cells[scale::scale, :] = grid
             cells[:, scale::scale] = grid
         if overlay is not None and scale >= 3:
-            _draw_primitive(cells, overlay, palette, scale)
-            _draw_outlines(cells, overlay, palette, scale)
+            draw_primitive(cells, overlay, palette, scale)
+            draw_outlines(cells, overlay, palette, scale)
     return cells.view(np.uint8).reshape(cells.shape[0], cells.shape[1], 4)
 
 
@@ -213,14 +213,14 @@ def _darken(packed: np.ndarray, factor: float) -> np.ndarray:
     return rgba.astype(np.uint8).view(_RGBA).reshape(-1)
 
 
-def _mix(packed: np.uint32, color: str, amount: float) -> np.uint32:
+def mix(packed: np.uint32, color: str, amount: float) -> np.uint32:
     rgba = np.array([packed], dtype=_RGBA).view(np.uint8).astype(np.float32)
     target = np.array(_channels(color), dtype=np.float32)
     rgba[:3] = rgba[:3] * (1 - amount) + target * amount
     return rgba.round().astype(np.uint8).view(_RGBA)[0]
 
 
-def _layers(overlay: Overlay):
+def overlay_layers(overlay: Overlay):
     """(name, cells) from the bottom layer to the top one."""
     diff = overlay.differences
     yield "difference", [] if diff is None else [tuple(int(v) for v in cell) for cell in diff]
@@ -236,17 +236,17 @@ def _span_cells(overlay: Overlay):
 
 def _tint(cells: np.ndarray, overlay: Overlay, palette: Palette) -> None:
     height, width = cells.shape
-    layers = list(_layers(overlay)) + [("current", list(_span_cells(overlay)))]
+    layers = list(overlay_layers(overlay)) + [("current", list(_span_cells(overlay)))]
     for name, layer in layers:
         color = getattr(palette, name)
         for x, y in layer:
             if 0 <= x < width and 0 <= y < height:
-                cells[y, x] = _mix(cells[y, x], color, _TINT[name])
+                cells[y, x] = mix(cells[y, x], color, TINT[name])
 
 
-def _draw_outlines(image: np.ndarray, overlay: Overlay, palette: Palette, scale: int) -> None:
+def draw_outlines(image: np.ndarray, overlay: Overlay, palette: Palette, scale: int) -> None:
     height, width = image.shape[0] // scale, image.shape[1] // scale
-    for name, layer in _layers(overlay):
+    for name, layer in overlay_layers(overlay):
         style = OUTLINE_STYLE[name]
         color = packed_rgba(getattr(palette, name))
         thick = max(1, round(scale * style.width / 36))
@@ -286,7 +286,7 @@ def _draw_span_boxes(image: np.ndarray, overlay: Overlay, palette: Palette, scal
         image[r0:r1, c1 - thick:c1] = color
 
 
-def _draw_primitive(image: np.ndarray, overlay: Overlay, palette: Palette, scale: int) -> None:
+def draw_primitive(image: np.ndarray, overlay: Overlay, palette: Palette, scale: int) -> None:
     points = [(float(x) * scale, float(y) * scale) for x, y in overlay.primitive]
     if len(points) < 2:
         return

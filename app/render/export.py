@@ -86,7 +86,7 @@ class FrameRenderer:
                               f"{MAX_SIDE}x{MAX_SIDE}: choose a smaller scale or no side panel")
         self.colours = build_palette(self.theme, trace)
         self._outside = self.colours.index_of(self.theme.palette.outside)
-        self._grid_lines = settings.grid_lines and scale >= 4
+        self.grid_lines = settings.grid_lines and scale >= 4
         self._grid = _GridPart(self, incremental)
         self._states = _States(trace, incremental)
         self._text.allocate()
@@ -194,11 +194,11 @@ class _GridPart:
         if self.incremental and self.indices is not None and written is not None:
             box = self._changed(written, highlights)
         if box == "all":
-            rgba = compose_frame(raster, marks, palette, scale, r._grid_lines)
+            rgba = compose_frame(raster, marks, palette, scale, r.grid_lines)
             self.indices = r.colours.indices(rgba)
         elif box is not None:
             x0, y0, x1, y1 = box
-            rgba = compose_region(raster, marks, box, palette, scale, r._grid_lines,
+            rgba = compose_region(raster, marks, box, palette, scale, r.grid_lines,
                                   self.primitive)
             self.indices[y0 * scale:y1 * scale, x0 * scale:x1 * scale] = r.colours.indices(rgba)
         self.highlights = highlights

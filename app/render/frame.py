@@ -145,9 +145,9 @@ def compose_frame(raster, marks: FrameMarks | None, palette: Palette = PALETTE,
     image = compose(raster, paths[0] if paths else None, palette, scale, grid_lines)
     packed = image.view(render._RGBA).reshape(image.shape[:2])
     for layer in paths[1:]:
-        render._draw_primitive(packed, layer, palette, scale)
+        render.draw_primitive(packed, layer, palette, scale)
     for layer in outlines:
-        render._draw_outlines(packed, layer, palette, scale)
+        render.draw_outlines(packed, layer, palette, scale)
     return image
 
 
@@ -207,7 +207,7 @@ def compose_region(raster, marks: FrameMarks | None, box, palette: Palette = PAL
             packed[inside] = render.packed_rgba(palette.primitive)
         if moved is not None:
             for layer in moved.outline_overlays():
-                render._draw_outlines(packed, layer, palette, scale)
+                render.draw_outlines(packed, layer, palette, scale)
     left = (x0 - ox) * scale
     return image[my * scale:, left:left + (x1 - x0) * scale]
 
@@ -218,13 +218,13 @@ def _tint_cells(packed, layer, palette, scale) -> None:
     # block at a time; a block's last pixel is never on a grid line, and
     # grid-line pixels keep their colour.
     height, width = packed.shape[0] // scale, packed.shape[1] // scale
-    for name, cells in render._layers(layer):
+    for name, cells in render.overlay_layers(layer):
         color = getattr(palette, name)
         for x, y in cells:
             if 0 <= x < width and 0 <= y < height:
                 block = packed[y * scale:(y + 1) * scale, x * scale:(x + 1) * scale]
                 cell = block[-1, -1]
-                block[block == cell] = render._mix(cell, color, render._TINT[name])
+                block[block == cell] = render.mix(cell, color, render.TINT[name])
 
 
 # ------------------------------------------------------------ caption
