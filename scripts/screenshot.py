@@ -161,7 +161,7 @@ def save(app, scene: str, out: Path, size, step: int) -> None:
     window = SCENES[scene](app, size, step)
     # The status bar as if the cursor rested on the step's pixel.
     state = window.player.state()
-    window._hover(state.pixel if state is not None else None)
+    window.grid.hoverChanged.emit(state.pixel if state is not None else None)
     for _ in range(10):
         app.processEvents()
     window.grab().save(str(out))
