@@ -36,9 +36,10 @@ from PySide6.QtCore import QPointF, QRectF, Qt, Signal
 from PySide6.QtGui import QColor, QCursor
 from PySide6.QtWidgets import QMenu
 
-from app.model import drawing
 from app.model.drawing import (CIRCLE, CONTOURS, FIXED, GROUPS, Close, Move, Place, Remove,
-                               Sketch, Tool)
+                               Sketch, Tool, all_placed, can_close, closes_at, pending)
+from app.model.drawing import labels as point_names
+from app.model.inputs import clamp
 
 from .grid_items import (CellOutlines, GridLinesItem, PixelAxis, handle_items, number_text,
                          path_xy, primitive_curves, translucent)
@@ -120,6 +121,20 @@ class PixelGridView(pg.PlotWidget):
         super().__init__(parent, viewBox=self._box,
                          axisItems={"bottom": PixelAxis("bottom"), "left": PixelAxis("left")})
         self.palette = palette
+        self._style_plot(palette)
+        self._add_items(palette, outline_styles)
+        self._init_state()
+        # The view keeps the whole grid in sight as the widget resizes until
+        # the person pans or zooms.
+        self._auto_fit = True
+        self._box.sigRangeChangedManually.connect(self._manual_range)
+
+        self.scene().sigMouseMoved.connect(self._mouse_moved)
+        self.viewport().setMouseTracking(True)
+        self.setCursor(QCursor(Qt.CursorShape.CrossCursor))
+        self.set_grid(32, 24)
+
+    def _style_plot(self, palette) -> None:
         self.setBackground(palette.outside)
         plot = self.getPlotItem()
         plot.hideButtons()
@@ -131,6 +146,8 @@ class PixelGridView(pg.PlotWidget):
         self._box.setBackgroundColor(palette.outside)
         self._box.setDefaultPadding(0.02)
 
+    def _add_items(self, palette, outline_styles) -> None:
+        """The image and everything drawn over it, bottom to top."""
         self.image = pg.ImageItem(axisOrder="row-major")
         self.image.setZValue(0)
         self.grid_lines = GridLinesItem(palette.grid)
@@ -150,10 +167,10 @@ class PixelGridView(pg.PlotWidget):
         self._labels: list[pg.TextItem] = []
         self._marker_label = self._make_label(palette.seed)
 
+    def _init_state(self) -> None:
         self._size = (0, 0)
         self._rules = Tool()
         self._sketch = Sketch()  # the points on show, as last given
-        self._count = 2
         self._integer = True
         self._names: tuple[str, ...] = ()
         self._closed = False
@@ -168,15 +185,6 @@ class PixelGridView(pg.PlotWidget):
         self._marker_automatic = False
         self._tool = DRAW
         self._cursor_at = None  # where the pointer is, in grid units
-        # The view keeps the whole grid in sight as the widget resizes until
-        # the person pans or zooms.
-        self._auto_fit = True
-        self._box.sigRangeChangedManually.connect(self._manual_range)
-
-        self.scene().sigMouseMoved.connect(self._mouse_moved)
-        self.viewport().setMouseTracking(True)
-        self.setCursor(QCursor(Qt.CursorShape.CrossCursor))
-        self.set_grid(32, 24)
 
     # --------------------------------------------------------- set-up
     @property
@@ -231,7 +239,7 @@ class PixelGridView(pg.PlotWidget):
         Without a ``mode``: ``open_ended`` inputs are contours when
         ``closed`` and groups of ``count`` otherwise; the rest a fixed set.
         """
-        self._count, self._integer, self._names = count, integer, tuple(names)
+        self._integer, self._names = integer, tuple(names)
         self._closed = count >= 3 if closed is None else closed
         if mode is None:
             mode = (CONTOURS if self._closed else GROUPS) if open_ended else FIXED
@@ -341,8 +349,8 @@ class PixelGridView(pg.PlotWidget):
         return self._sketch
 
     def labels(self) -> list[str]:
-        return drawing.labels(self._rules, len(self._sketch.points), self._sketch.breaks,
-                              self._names)
+        return point_names(self._rules, len(self._sketch.points), self._sketch.breaks,
+                           self._names)
 
     # ---------------------------------------------------------- frames
     def set_image(self, rgba: np.ndarray) -> None:
@@ -409,27 +417,21 @@ class PixelGridView(pg.PlotWidget):
         hit and to read, or with ``fine`` (Ctrl) to the 1/256 px sub-pixel
         grid the algorithms themselves use.
         """
-        width, height = self._size
+        x, y = view_pos.x(), view_pos.y()
         if self._integer:
-            x = min(max(math.floor(view_pos.x()), 0), width - 1)
-            y = min(max(math.floor(view_pos.y()), 0), height - 1)
-            return (x, y)
+            return clamp((math.floor(x), math.floor(y)), *self._size, True)
         steps = FINE_SNAP if fine else COARSE_SNAP
-        x = min(max(round(view_pos.x() * steps) / steps, 0.0), float(width))
-        y = min(max(round(view_pos.y() * steps) / steps, 0.0), float(height))
-        return (x, y)
+        return clamp((round(x * steps) / steps, round(y * steps) / steps), *self._size, False)
 
     def pixel_at(self, scene_pos) -> tuple[int, int]:
         """The pixel under a scene position, clamped to the grid."""
         where = self._box.mapSceneToView(scene_pos)
-        width, height = self._size
-        return (min(max(math.floor(where.x()), 0), width - 1),
-                min(max(math.floor(where.y()), 0), height - 1))
+        return clamp((math.floor(where.x()), math.floor(where.y())), *self._size, True)
 
     # ------------------------------------------------------------ edits
     def close_contour(self) -> bool:
         """Finish the contour being drawn (Enter, double-click)."""
-        if not drawing.can_close(self._rules, self._sketch):
+        if not can_close(self._rules, self._sketch):
             return False
         self.gestured.emit(Close())
         return True
@@ -556,7 +558,7 @@ class PixelGridView(pg.PlotWidget):
         if self._tool == MARKER:
             return Qt.CursorShape.PointingHandCursor
         handle = self._handle_at(scene_pos)
-        if drawing.closes_at(self._rules, self._sketch, handle):
+        if closes_at(self._rules, self._sketch, handle):
             return Qt.CursorShape.PointingHandCursor  # a click here closes the contour
         if handle is not None or self._on_marker(scene_pos) or self._on_rim(scene_pos):
             return Qt.CursorShape.OpenHandCursor
@@ -621,7 +623,7 @@ class PixelGridView(pg.PlotWidget):
             return [], []
         paths = self._shape
         if paths is None:
-            if not (drawing.all_placed(self._rules, self._sketch) and len(anchors) >= 2):
+            if not (all_placed(self._rules, self._sketch) and len(anchors) >= 2):
                 return [], []
             paths = [([(a.x(), a.y()) for a in anchors], self._closed)]
         return path_xy(paths)
@@ -685,11 +687,11 @@ class PixelGridView(pg.PlotWidget):
     def _draw_preview(self) -> None:
         """Dashed lines through the points of the primitive being drawn and
         on to the pointer, closing back to its first point for polygons."""
-        pending = drawing.pending(self._rules, self._sketch)
-        if not pending or not self._show_primitive or self._tool == MARKER:
+        waiting = pending(self._rules, self._sketch)
+        if not waiting or not self._show_primitive or self._tool == MARKER:
             self.preview.setData([], [])
             return
-        anchors = [self.anchor(self._sketch.points[k]) for k in pending]
+        anchors = [self.anchor(self._sketch.points[k]) for k in waiting]
         if self._cursor_at is not None:
             anchors.append(self.anchor(self.snap(self._cursor_at)))
         if self._rules.mode in (CONTOURS, GROUPS) and len(anchors) > 2:
