@@ -341,10 +341,6 @@ class PixelGridView(pg.PlotWidget):
         return list(self._sketch.points)
 
     @property
-    def breaks(self) -> tuple[int, ...]:
-        return self._sketch.breaks
-
-    @property
     def sketch(self) -> Sketch:
         return self._sketch
 
@@ -526,7 +522,8 @@ class PixelGridView(pg.PlotWidget):
             if kind == "circle" and not target[2]:
                 target[2] = True
                 self.gestured.emit(Place(target[1]))
-            self.radiusDragged.emit(*self._radii_to(where, modifiers))
+            if self._sketch.points:  # the centre, once the model placed it
+                self.radiusDragged.emit(*self._radii_to(where, modifiers))
 
     def _radii_to(self, where: QPointF, modifiers) -> tuple[float, float]:
         centre = self.anchor(self._sketch.points[0])

@@ -140,8 +140,7 @@ class Session:
         self._state: FrameState | None = None
         self._final: Raster | None = None
         self._edit_depth = 0  # nested edits count as the outer one
-        # (tool, points, breaks) of a contour left open by the last gesture:
-        # it stays open while the points are those (see ``sketch``).
+        # (tool, points, breaks) a gesture left with a contour open (``sketch``).
         self._open_sketch = None
 
     # ------------------------------------------------------- the scene
@@ -256,24 +255,21 @@ class Session:
     @property
     def sketch(self) -> drawing.Sketch:
         """The points as the grid draws them: a contour is still being drawn
-        while the points are the ones the gesture that opened it left."""
-        key = self._sketch_key()
+        while the points are those the gesture that opened it left."""
+        key = (drawing_tool(self.spec), tuple(self.points), self.breaks)
         return drawing.Sketch(key[1], key[2], key == self._open_sketch)
 
-    def _sketch_key(self):
-        return (drawing_tool(self.spec), tuple(self.points), self.breaks)
-
     def draw(self, gesture) -> None:
-        """Apply a gesture on the grid (app/model/drawing.py) to the points.
-        Raises InputError when the run refuses the new points; they stay as
-        they were then, and so does a contour being drawn."""
+        """Apply a gesture on the grid (app/model/drawing.py) to the points;
+        InputError when the run refuses them: nothing changes then."""
         before = self.sketch
         after = drawing.apply(drawing_tool(self.spec), before, gesture)
         try:
             if (after.points, after.breaks) != (before.points, before.breaks):
                 self.set_points(after.points, after.breaks)
         finally:
-            self._open_sketch = self._sketch_key() if after.open and self.points else None
+            key = (drawing_tool(self.spec), tuple(self.points), self.breaks)
+            self._open_sketch = key if after.open and self.points else None
 
     def restore(self, points, breaks, options: dict, algorithm: str | None = None,
                 grid=None) -> None:
