@@ -8,10 +8,11 @@ the view's y axis is inverted, so the same numbers are drawn top-down and a
 click reads its coordinates in that frame.
 
 The view only displays: it is handed an RGBA image of the grid (row 0 at
-y = 0), the cells to outline, and the points; it reports points the person
-places or drags, radii dragged out, a marker (a seed) placed, and the pixel
-under the cursor. What a click does to the points is decided by
-``app.model.drawing``.
+y = 0), the cells to outline, and the points; it reports what the person
+did as gestures (``app.model.drawing``: a point placed, moved or removed, a
+contour closed), radii dragged out, a marker (a seed) placed, and the pixel
+under the cursor. What a gesture does to the points is decided by the
+model; the view is given the result.
 
 Mouse and keys (the window's Help lists them too):
 
@@ -35,7 +36,10 @@ from PySide6.QtCore import QPointF, QRectF, Qt, Signal
 from PySide6.QtGui import QColor, QCursor
 from PySide6.QtWidgets import QMenu
 
-from app.model.drawing import CIRCLE, CONTOURS, FIXED, GROUPS, Drawing
+from app.model.drawing import (CIRCLE, CONTOURS, FIXED, GROUPS, Close, Move, Place, Remove,
+                               Sketch, Tool, all_placed, can_close, closes_at, pending)
+from app.model.drawing import labels as point_names
+from app.model.inputs import clamp
 
 from .grid_items import (CellOutlines, GridLinesItem, PixelAxis, handle_items, number_text,
                          path_xy, primitive_curves, translucent)
@@ -94,10 +98,9 @@ class PixelGridView(pg.PlotWidget):
     """The grid of pixels, with everything drawn over it, and the drawing
     tools (see ``app.model.drawing``)."""
 
-    #: The points after a click, a drag or a key (a list of (x, y), possibly
-    #: fewer than the algorithm takes while the person is still placing
-    #: them). Contour inputs: ``breaks`` says where each contour starts.
-    pointsEdited = Signal(list)
+    #: What a click, a drag or a key did to the points: a gesture of
+    #: ``app.model.drawing`` (Place, Move, Remove, Close).
+    gestured = Signal(object)
     #: The pixel under the cursor, (x, y) in the current frame, or None.
     hoverChanged = Signal(object)
     #: The person asked to clear the points (context menu).
@@ -118,6 +121,20 @@ class PixelGridView(pg.PlotWidget):
         super().__init__(parent, viewBox=self._box,
                          axisItems={"bottom": PixelAxis("bottom"), "left": PixelAxis("left")})
         self.palette = palette
+        self._style_plot(palette)
+        self._add_items(palette, outline_styles)
+        self._init_state()
+        # The view keeps the whole grid in sight as the widget resizes until
+        # the person pans or zooms.
+        self._auto_fit = True
+        self._box.sigRangeChangedManually.connect(self._manual_range)
+
+        self.scene().sigMouseMoved.connect(self._mouse_moved)
+        self.viewport().setMouseTracking(True)
+        self.setCursor(QCursor(Qt.CursorShape.CrossCursor))
+        self.set_grid(32, 24)
+
+    def _style_plot(self, palette) -> None:
         self.setBackground(palette.outside)
         plot = self.getPlotItem()
         plot.hideButtons()
@@ -129,6 +146,8 @@ class PixelGridView(pg.PlotWidget):
         self._box.setBackgroundColor(palette.outside)
         self._box.setDefaultPadding(0.02)
 
+    def _add_items(self, palette, outline_styles) -> None:
+        """The image and everything drawn over it, bottom to top."""
         self.image = pg.ImageItem(axisOrder="row-major")
         self.image.setZValue(0)
         self.grid_lines = GridLinesItem(palette.grid)
@@ -148,9 +167,10 @@ class PixelGridView(pg.PlotWidget):
         self._labels: list[pg.TextItem] = []
         self._marker_label = self._make_label(palette.seed)
 
+    def _init_state(self) -> None:
         self._size = (0, 0)
-        self._drawing = Drawing()
-        self._count = 2
+        self._rules = Tool()
+        self._sketch = Sketch()  # the points on show, as last given
         self._integer = True
         self._names: tuple[str, ...] = ()
         self._closed = False
@@ -165,15 +185,6 @@ class PixelGridView(pg.PlotWidget):
         self._marker_automatic = False
         self._tool = DRAW
         self._cursor_at = None  # where the pointer is, in grid units
-        # The view keeps the whole grid in sight as the widget resizes until
-        # the person pans or zooms.
-        self._auto_fit = True
-        self._box.sigRangeChangedManually.connect(self._manual_range)
-
-        self.scene().sigMouseMoved.connect(self._mouse_moved)
-        self.viewport().setMouseTracking(True)
-        self.setCursor(QCursor(Qt.CursorShape.CrossCursor))
-        self.set_grid(32, 24)
 
     # --------------------------------------------------------- set-up
     @property
@@ -228,19 +239,20 @@ class PixelGridView(pg.PlotWidget):
         Without a ``mode``: ``open_ended`` inputs are contours when
         ``closed`` and groups of ``count`` otherwise; the rest a fixed set.
         """
-        self._count, self._integer, self._names = count, integer, tuple(names)
+        self._integer, self._names = integer, tuple(names)
         self._closed = count >= 3 if closed is None else closed
         if mode is None:
             mode = (CONTOURS if self._closed else GROUPS) if open_ended else FIXED
-        if (mode, count) != (self._drawing.mode, self._drawing.count):
-            self._drawing.set_mode(mode, count)
+        self._rules = Tool(mode, count)
+        if mode != CONTOURS:
+            self._sketch = Sketch(self._sketch.points)
         if mode != CIRCLE:
             self._circle = None
         self._refresh_points()
 
     @property
     def mode(self) -> str:
-        return self._drawing.mode
+        return self._rules.mode
 
     def set_circle(self, kind: str | None, rx: float = 0.0, ry: float = 0.0) -> None:
         """The radius the centre's rim handle shows: ``"radius"`` (one, a
@@ -316,32 +328,25 @@ class PixelGridView(pg.PlotWidget):
     def set_grid_lines_visible(self, visible: bool) -> None:
         self.grid_lines.setVisible(bool(visible))
 
-    def set_points(self, points, breaks=None, keep_open: bool = False) -> None:
-        """Points set from outside; ``breaks`` (contour starts) stay as they
-        are when not given. A contour being drawn stays open when the points
-        are the ones this view reported, or with ``keep_open`` (the same
-        drawing after a refused edit)."""
-        points = [tuple(p) for p in points]
-        breaks = self._drawing.breaks if breaks is None else tuple(breaks)
-        if points == self._drawing.points and breaks == self._drawing.breaks:
-            return
-        self._drawing.reset(points, breaks, keep_open)
-        self._refresh_points()
+    def set_points(self, points, breaks=(), open_contour: bool = False) -> None:
+        """Show these points; ``breaks``: where contours 2, 3, ... start;
+        ``open_contour``: the last contour is still being drawn."""
+        sketch = Sketch.of(points, breaks if self._rules.mode == CONTOURS else (), open_contour)
+        if sketch != self._sketch:
+            self._sketch = sketch
+            self._refresh_points()
 
     @property
     def points(self) -> list[tuple]:
-        return list(self._drawing.points)
+        return list(self._sketch.points)
 
     @property
-    def breaks(self) -> tuple[int, ...]:
-        return self._drawing.breaks
-
-    @property
-    def drawing(self) -> Drawing:
-        return self._drawing
+    def sketch(self) -> Sketch:
+        return self._sketch
 
     def labels(self) -> list[str]:
-        return self._drawing.labels(self._names)
+        return point_names(self._rules, len(self._sketch.points), self._sketch.breaks,
+                           self._names)
 
     # ---------------------------------------------------------- frames
     def set_image(self, rgba: np.ndarray) -> None:
@@ -408,39 +413,31 @@ class PixelGridView(pg.PlotWidget):
         hit and to read, or with ``fine`` (Ctrl) to the 1/256 px sub-pixel
         grid the algorithms themselves use.
         """
-        width, height = self._size
+        x, y = view_pos.x(), view_pos.y()
         if self._integer:
-            x = min(max(math.floor(view_pos.x()), 0), width - 1)
-            y = min(max(math.floor(view_pos.y()), 0), height - 1)
-            return (x, y)
+            return clamp((math.floor(x), math.floor(y)), *self._size, True)
         steps = FINE_SNAP if fine else COARSE_SNAP
-        x = min(max(round(view_pos.x() * steps) / steps, 0.0), float(width))
-        y = min(max(round(view_pos.y() * steps) / steps, 0.0), float(height))
-        return (x, y)
+        return clamp((round(x * steps) / steps, round(y * steps) / steps), *self._size, False)
 
     def pixel_at(self, scene_pos) -> tuple[int, int]:
         """The pixel under a scene position, clamped to the grid."""
         where = self._box.mapSceneToView(scene_pos)
-        width, height = self._size
-        return (min(max(math.floor(where.x()), 0), width - 1),
-                min(max(math.floor(where.y()), 0), height - 1))
+        return clamp((math.floor(where.x()), math.floor(where.y())), *self._size, True)
 
     # ------------------------------------------------------------ edits
     def close_contour(self) -> bool:
         """Finish the contour being drawn (Enter, double-click)."""
-        closed = self._drawing.close()
-        if closed:
-            self._refresh_points()
-        return closed
+        if not can_close(self._rules, self._sketch):
+            return False
+        self.gestured.emit(Close())
+        return True
 
     def remove_last_point(self) -> bool:
         """Take the last point away (Backspace)."""
-        if not self._drawing.points:
+        if not self._sketch.points:
             return False
         self.editStarted.emit()
-        if not self._drawing.remove_last():
-            return False
-        self._edited()
+        self.gestured.emit(Remove(len(self._sketch.points) - 1))
         return True
 
     def keyPressEvent(self, event):  # noqa: N802
@@ -452,14 +449,10 @@ class PixelGridView(pg.PlotWidget):
         else:
             super().keyPressEvent(event)
 
-    def _edited(self) -> None:
-        self._refresh_points()
-        self.pointsEdited.emit(list(self._drawing.points))
-
     # ----------------------------------------------------------- mouse
     def _handle_at(self, scene_pos) -> int | None:
         best, best_distance = None, HANDLE_HIT
-        for index, point in enumerate(self._drawing.points):
+        for index, point in enumerate(self._sketch.points):
             distance = self._screen_distance(self.anchor(point), scene_pos)
             if distance <= best_distance:
                 best, best_distance = index, distance
@@ -494,11 +487,7 @@ class PixelGridView(pg.PlotWidget):
             return
         self.editStarted.emit()
         point = self.snap(self._box.mapSceneToView(scene_pos), bool(modifiers & FINE))
-        new_contour = bool(modifiers & NEW_CONTOUR)
-        if self._drawing.click(point, self._handle_at(scene_pos), new_contour):
-            self._edited()
-        else:
-            self._refresh_points()  # closing a contour changes how it is drawn
+        self.gestured.emit(Place(point, self._handle_at(scene_pos), bool(modifiers & NEW_CONTOUR)))
 
     def _drag_target(self, scene_pos, modifiers):
         """What a left-drag starting here moves: a point, the marker, the
@@ -509,9 +498,9 @@ class PixelGridView(pg.PlotWidget):
             return ("marker",)
         if handle is not None:
             return ("point", handle)
-        if self._circle and self._drawing.points and self._on_rim(scene_pos):
+        if self._circle and self._sketch.points and self._on_rim(scene_pos):
             return ("rim",)
-        if self._drawing.mode == CIRCLE and self._circle and self._tool == DRAW:
+        if self._rules.mode == CIRCLE and self._circle and self._tool == DRAW:
             # The press point becomes the centre; the drag is the radius.
             return ["circle", self.snap(self._box.mapSceneToView(scene_pos)), False]
         return None
@@ -522,8 +511,9 @@ class PixelGridView(pg.PlotWidget):
                                           else Qt.CursorShape.ClosedHandCursor))
         where = self._box.mapSceneToView(scene_pos)
         if kind == "point":
-            if self._drawing.move(target[1], self.snap(where, bool(modifiers & FINE))):
-                self._edited()
+            point = self.snap(where, bool(modifiers & FINE))
+            if self._sketch.points[target[1]] != point:
+                self.gestured.emit(Move(target[1], point))
         elif kind == "marker":
             pixel = self.pixel_at(scene_pos)
             if pixel != self._marker_point:
@@ -531,12 +521,12 @@ class PixelGridView(pg.PlotWidget):
         else:
             if kind == "circle" and not target[2]:
                 target[2] = True
-                if self._drawing.click(target[1]):
-                    self._edited()
-            self.radiusDragged.emit(*self._radii_to(where, modifiers))
+                self.gestured.emit(Place(target[1]))
+            if self._sketch.points:  # the centre, once the model placed it
+                self.radiusDragged.emit(*self._radii_to(where, modifiers))
 
     def _radii_to(self, where: QPointF, modifiers) -> tuple[float, float]:
-        centre = self.anchor(self._drawing.points[0])
+        centre = self.anchor(self._sketch.points[0])
         dx, dy = where.x() - centre.x(), where.y() - centre.y()
         if self._circle == "radius":
             radius = math.hypot(dx, dy)
@@ -565,7 +555,7 @@ class PixelGridView(pg.PlotWidget):
         if self._tool == MARKER:
             return Qt.CursorShape.PointingHandCursor
         handle = self._handle_at(scene_pos)
-        if self._drawing.closes_at(handle):
+        if closes_at(self._rules, self._sketch, handle):
             return Qt.CursorShape.PointingHandCursor  # a click here closes the contour
         if handle is not None or self._on_marker(scene_pos) or self._on_rim(scene_pos):
             return Qt.CursorShape.OpenHandCursor
@@ -588,9 +578,9 @@ class PixelGridView(pg.PlotWidget):
             pixel = self.pixel_at(scene_pos)
             menu.addAction(f"Place the {self._marker_name} at ({pixel[0]}, {pixel[1]})",
                            lambda: (self.editStarted.emit(), self.markerPlaced.emit(pixel)))
-        if self._drawing.mode == CONTOURS and self._drawing.open:
+        if self._rules.mode == CONTOURS and self._sketch.open:
             menu.addAction("Close the contour", self.close_contour)
-        if self._drawing.points:
+        if self._sketch.points:
             menu.addAction("Remove the last point", self.remove_last_point)
         menu.addAction("Clear points", self.clearRequested.emit)
         menu.addSeparator()
@@ -611,7 +601,7 @@ class PixelGridView(pg.PlotWidget):
         return label
 
     def _refresh_points(self) -> None:
-        points = self._drawing.points
+        points = self._sketch.points
         anchors = [self.anchor(p) for p in points]
         self.handles.setData(pos=[(a.x(), a.y()) for a in anchors])
         shown = len(anchors) if len(anchors) <= MAX_LABELS else 0
@@ -630,20 +620,20 @@ class PixelGridView(pg.PlotWidget):
             return [], []
         paths = self._shape
         if paths is None:
-            if not (self._drawing.complete() and len(anchors) >= 2):
+            if not (all_placed(self._rules, self._sketch) and len(anchors) >= 2):
                 return [], []
             paths = [([(a.x(), a.y()) for a in anchors], self._closed)]
         return path_xy(paths)
 
     def _place_labels(self) -> None:
-        points = self._drawing.points
+        points = self._sketch.points
         anchors = [self.anchor(p) for p in points]
         if not anchors or not self._labels:
             return
-        names = self._drawing.labels(self._names)
+        names = self.labels()
         # Coordinates in the label while there are few points; with many the
         # points editor lists them and the labels only name them.
-        with_numbers = self._drawing.mode in (FIXED, CIRCLE)
+        with_numbers = self._rules.mode in (FIXED, CIRCLE)
         cx = sum(a.x() for a in anchors) / len(anchors)
         cy = sum(a.y() for a in anchors) / len(anchors)
         for label, name, point, at in zip(self._labels, names, points, anchors):
@@ -662,9 +652,9 @@ class PixelGridView(pg.PlotWidget):
             label.setPos(at)
 
     def _rim_position(self) -> QPointF | None:
-        if not self._circle or not self._drawing.points:
+        if not self._circle or not self._sketch.points:
             return None
-        centre = self.anchor(self._drawing.points[0])
+        centre = self.anchor(self._sketch.points[0])
         rx, ry = self._radii
         if self._circle == "radius":
             # On the circle, up and to the right of the centre.
@@ -694,13 +684,13 @@ class PixelGridView(pg.PlotWidget):
     def _draw_preview(self) -> None:
         """Dashed lines through the points of the primitive being drawn and
         on to the pointer, closing back to its first point for polygons."""
-        pending = self._drawing.pending()
-        if not pending or not self._show_primitive or self._tool == MARKER:
+        waiting = pending(self._rules, self._sketch)
+        if not waiting or not self._show_primitive or self._tool == MARKER:
             self.preview.setData([], [])
             return
-        anchors = [self.anchor(self._drawing.points[k]) for k in pending]
+        anchors = [self.anchor(self._sketch.points[k]) for k in waiting]
         if self._cursor_at is not None:
             anchors.append(self.anchor(self.snap(self._cursor_at)))
-        if self._drawing.mode in (CONTOURS, GROUPS) and len(anchors) > 2:
+        if self._rules.mode in (CONTOURS, GROUPS) and len(anchors) > 2:
             anchors.append(anchors[0])
         self.preview.setData([a.x() for a in anchors], [a.y() for a in anchors])

@@ -49,8 +49,7 @@ class SceneEdits(QObject):
         """Route every scene editor of ``window`` through the history."""
         g = window.grid
         g.editStarted.connect(self.start_gesture)
-        g.pointsEdited.connect(lambda points: self.gesture(
-            lambda: window.set_points(points, g.breaks)))
+        g.gestured.connect(lambda gesture: self.gesture(lambda: window.draw(gesture)))
         g.radiusDragged.connect(lambda rx, ry: self.gesture(lambda: window.drag_radius(rx, ry)))
         g.markerPlaced.connect(lambda pixel: self.gesture(lambda: window.place_marker(pixel)))
         g.clearRequested.connect(window.clear_points)

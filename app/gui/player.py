@@ -83,6 +83,7 @@ class Player(QObject):
     options = _forward("options")
     points = _forward("points")
     breaks = _forward("breaks")
+    sketch = _forward("sketch")
     grid = _forward("grid")
     trace = _forward("trace")
     index = _forward("index")
@@ -119,6 +120,9 @@ class Player(QObject):
 
     def set_points(self, points, breaks=None) -> None:
         self.session.set_points(points, breaks)
+
+    def draw(self, gesture) -> None:
+        self.session.draw(gesture)
 
     def restore(self, points, breaks, options: dict, algorithm: str | None = None,
                 grid=None) -> None:

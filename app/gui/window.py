@@ -228,14 +228,23 @@ class MainWindow(WindowLayout, WindowMenus, DepthAndAccuracy, QMainWindow):
             self.player.set_points(points, breaks)
         except InputError as error:
             self.say_error(str(error))
-        self.sync_points(keep_open=True)
+        self.sync_points()
+
+    def draw(self, gesture) -> None:
+        """A gesture on the grid (app/model/drawing.py) applied to the points."""
+        try:
+            self.player.draw(gesture)
+        except InputError as error:
+            self.say_error(str(error))
+        self.sync_points()
 
     def clear_points(self) -> None:
         self.edits.once(lambda: self.set_points([], ()))
 
-    def sync_points(self, keep_open: bool = False) -> None:
+    def sync_points(self) -> None:
         player = self.player
-        self.grid.set_points(player.points, player.breaks, keep_open)
+        sketch = player.sketch
+        self.grid.set_points(sketch.points, sketch.breaks, sketch.open)
         self.points.set_points(player.points, self._labels(), player.breaks)
         self.edits.sync_table()
 

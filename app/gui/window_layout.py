@@ -41,7 +41,22 @@ class WindowLayout:
         layout = QVBoxLayout(panel)
         layout.setContentsMargins(10, 4, 10, 10)
         layout.setSpacing(6)
+        self._add_input_sections(panel, layout)
+        self._add_grid_section(panel, layout)
+        self._add_display_section(panel, layout)
+        layout.addStretch(1)
 
+        scroll = QScrollArea()
+        scroll.setWidget(panel)
+        scroll.setWidgetResizable(True)
+        scroll.setFrameShape(QFrame.Shape.NoFrame)
+        scroll.setHorizontalScrollBarPolicy(Qt.ScrollBarPolicy.ScrollBarAlwaysOff)
+        self.scene_dock = panel_dock("Scene", "sceneDock", scroll, self)
+        self.addDockWidget(Qt.DockWidgetArea.LeftDockWidgetArea, self.scene_dock)
+        panel.setMinimumWidth(240)
+
+    def _add_input_sections(self, panel, layout) -> None:
+        """Algorithm, Options and Points: what the run takes."""
         layout.addWidget(section("Algorithm"))
         self.picker = AlgorithmPicker(panel)
         self.picker.setMinimumHeight(150)
@@ -60,6 +75,7 @@ class WindowLayout:
         self.hint.setWordWrap(True)
         layout.addWidget(self.hint)
 
+    def _add_grid_section(self, panel, layout) -> None:
         layout.addWidget(section("Grid"))
         self.grid_editor = GridEditor(MAX_GRID, panel)
         layout.addWidget(self.grid_editor)
@@ -69,6 +85,7 @@ class WindowLayout:
         fit.clicked.connect(self.grid.fit)
         layout.addWidget(fit)
 
+    def _add_display_section(self, panel, layout) -> None:
         layout.addWidget(section("Display"))
         self.show_primitive = QCheckBox("Ideal primitive", panel)
         self.show_primitive.setChecked(True)
@@ -87,16 +104,6 @@ class WindowLayout:
         self.coverage_legend.hide()
         layout.addWidget(self.legend)
         layout.addWidget(self.coverage_legend)
-        layout.addStretch(1)
-
-        scroll = QScrollArea()
-        scroll.setWidget(panel)
-        scroll.setWidgetResizable(True)
-        scroll.setFrameShape(QFrame.Shape.NoFrame)
-        scroll.setHorizontalScrollBarPolicy(Qt.ScrollBarPolicy.ScrollBarAlwaysOff)
-        self.scene_dock = panel_dock("Scene", "sceneDock", scroll, self)
-        self.addDockWidget(Qt.DockWidgetArea.LeftDockWidgetArea, self.scene_dock)
-        panel.setMinimumWidth(240)
 
     def _build_code_dock(self) -> None:
         self.code = CodePanel(self)

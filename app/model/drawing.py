@@ -1,8 +1,10 @@
 """What clicks, keys and drags on the grid do to the points being drawn.
 
-The rules of the drawing tools live here, apart from Qt, so that they read
-(and are tested) as plain Python; the grid view turns mouse events into
-calls on a ``Drawing`` and draws what it holds.
+The grid view only displays the points it is given and reports what the
+person did as a gesture (``Place``, ``Move``, ``Remove``, ``Close``). The
+rules that turn a gesture into new points live here, apart from Qt, as
+pure functions of (sketch, gesture) -> sketch; the session applies them
+(``Session.draw``) and the grid shows the result.
 
 Modes
 -----
@@ -19,144 +21,187 @@ Modes
               adds a point; a click on an existing vertex adds a point at
               that very vertex, which is how a mesh shares its corners.
 
-Points are one flat list; ``breaks`` holds the indices where contours 2,
-3, ... start, as the session keeps them.
+Points are one flat tuple; ``breaks`` holds the indices where contours 2,
+3, ... start, as the session keeps them; ``open`` says whether the last
+contour is still being drawn.
+
+Two questions about "complete" have two names: ``all_placed`` here (does
+nothing on the grid wait for more points?) and ``app.model.inputs.complete``
+(is there enough for the algorithm to run?).
 """
 from __future__ import annotations
+
+from dataclasses import dataclass, replace
 
 FIXED, CIRCLE, CONTOURS, GROUPS = "fixed", "circle", "contours", "groups"
 MODES = (FIXED, CIRCLE, CONTOURS, GROUPS)
 
 
-class Drawing:
-    """The points on the grid and the state of the drawing tool."""
+@dataclass(frozen=True)
+class Tool:
+    """The drawing tool: its mode and how many points a primitive takes."""
+    mode: str = FIXED
+    count: int = 2
 
-    def __init__(self, mode: str = FIXED, count: int = 2):
-        self.mode, self.count = FIXED, 2
-        self.points: list[tuple] = []
-        self.breaks: tuple[int, ...] = ()
-        # Contours: is the last contour still being drawn?
-        self.open = False
-        self.set_mode(mode, count)
+    def __post_init__(self):
+        if self.mode not in MODES:
+            raise ValueError(f"unknown drawing mode {self.mode!r}")
+        object.__setattr__(self, "count", max(1, int(self.count)))
 
-    def set_mode(self, mode: str, count: int) -> None:
-        if mode not in MODES:
-            raise ValueError(f"unknown drawing mode {mode!r}")
-        self.mode, self.count = mode, max(1, int(count))
-        if mode != CONTOURS:
-            self.breaks, self.open = (), False
 
-    def reset(self, points, breaks=(), keep_open: bool = False) -> None:
-        """Points set from outside (an editor, undo, another algorithm):
-        every contour counts as finished, unless ``keep_open`` (the same
-        drawing, put back after the algorithm refused an edit)."""
-        self.points = [tuple(p) for p in points]
-        n = len(self.points)
-        self.breaks = tuple(b for b in breaks if 0 < b < n) if self.mode == CONTOURS else ()
-        self.open = keep_open and self.open and n > 0
+@dataclass(frozen=True)
+class Sketch:
+    """The points on the grid, where contours start, and whether the last
+    contour is still being drawn."""
+    points: tuple = ()
+    breaks: tuple[int, ...] = ()
+    open: bool = False
 
-    # ------------------------------------------------------------ queries
-    def contours(self) -> list[range]:
-        """Index ranges of the contours (one range outside contour mode)."""
-        edges = [0, *self.breaks, len(self.points)]
-        return [range(a, b) for a, b in zip(edges, edges[1:])]
+    @classmethod
+    def of(cls, points, breaks=(), open_: bool = False) -> "Sketch":
+        points = tuple(tuple(p) for p in points)
+        breaks = tuple(b for b in breaks if 0 < b < len(points))
+        return cls(points, breaks, bool(open_ and points))
 
-    def complete(self) -> bool:
-        """Is everything placed (nothing waits for more points)?"""
-        n = len(self.points)
-        if self.mode in (FIXED, CIRCLE):
-            return n >= self.count
-        if self.mode == GROUPS:
-            return n > 0 and n % self.count == 0
-        return n > 0 and not self.open
 
-    def pending(self) -> list[int]:
-        """Indices of the points of a primitive still being drawn, in order:
-        the open contour, the last triangle's first one or two points, the
-        first end of a segment."""
-        n = len(self.points)
-        if self.mode == CONTOURS:
-            return list(self.contours()[-1]) if self.open and n else []
-        if self.mode == GROUPS:
-            return list(range(n - n % self.count, n))
-        return list(range(n)) if 0 < n < self.count else []
+# ------------------------------------------------------------ gestures
+@dataclass(frozen=True)
+class Place:
+    """A click at ``point`` (already snapped), possibly on the handle of
+    point ``on_handle``; ``new_contour``: Shift was held."""
+    point: tuple
+    on_handle: int | None = None
+    new_contour: bool = False
 
-    def closes_at(self, index: int | None) -> bool:
-        """Would a click on handle ``index`` close the open contour?"""
-        if self.mode != CONTOURS or not self.open or index is None:
-            return False
-        last = self.contours()[-1]
-        return index == last.start and len(last) >= self.count
 
-    def labels(self, names=()) -> list[str]:
-        """A short name for every point (see ``point_labels``)."""
-        return point_labels(self.mode, self.count, len(self.points), self.breaks, names)
+@dataclass(frozen=True)
+class Move:
+    """Point ``index`` dragged to ``point``."""
+    index: int
+    point: tuple
 
-    # ------------------------------------------------------------ edits
-    def click(self, point, on_handle: int | None = None, new_contour: bool = False) -> bool:
-        """A click at ``point`` (already snapped), possibly on the handle of
-        point ``on_handle``. Returns whether the points changed."""
-        point = tuple(point)
-        if self.mode == CONTOURS:
-            return self._click_contour(point, on_handle, new_contour)
-        if self.mode == GROUPS:
-            # On a vertex: share it exactly (a mesh's common corner).
-            self.points.append(self.points[on_handle] if on_handle is not None else point)
-            return True
-        if on_handle is not None and self.complete():
-            return False  # a press on a handle that did not become a drag
-        if len(self.points) >= self.count:
-            self.points = [point]
-        else:
-            self.points.append(point)
-        return True
 
-    def _click_contour(self, point, on_handle, new_contour) -> bool:
-        if self.closes_at(on_handle):
-            self.open = False
-            return False
-        if on_handle is not None and not new_contour:
-            return False  # a press on a vertex that did not become a drag
-        if new_contour and self.points:
-            self.breaks = self.breaks + (len(self.points),)
-        elif not self.open:
-            self.points, self.breaks = [], ()  # a finished polygon: start a new one
-        self.points.append(point)
-        self.open = True
-        return True
+@dataclass(frozen=True)
+class Remove:
+    """Point ``index`` taken away (Backspace takes the last one)."""
+    index: int
 
-    def close(self) -> bool:
-        """Finish the contour being drawn, if it has enough vertices."""
-        if self.mode != CONTOURS or not self.open:
-            return False
-        if len(self.contours()[-1]) < self.count:
-            return False
-        self.open = False
-        return True
 
-    def remove_last(self) -> bool:
-        """Take the last point away; in contour mode its contour is open
-        again, to go on drawing it."""
-        if not self.points:
-            return False
-        self.points.pop()
-        n = len(self.points)
-        if self.breaks and self.breaks[-1] >= n:
-            self.breaks = self.breaks[:-1]
-        self.open = self.mode == CONTOURS and n > 0
-        return True
+@dataclass(frozen=True)
+class Close:
+    """Finish the contour being drawn (Enter, double-click)."""
 
-    def move(self, index: int, point) -> bool:
-        point = tuple(point)
-        if not 0 <= index < len(self.points) or self.points[index] == point:
-            return False
-        self.points[index] = point
-        return True
 
-    def clear(self) -> bool:
-        changed = bool(self.points)
-        self.points, self.breaks, self.open = [], (), False
-        return changed
+# ------------------------------------------------------------- queries
+def contours(sketch: Sketch) -> list[range]:
+    """Index ranges of the contours (one range without breaks)."""
+    edges = [0, *sketch.breaks, len(sketch.points)]
+    return [range(a, b) for a, b in zip(edges, edges[1:])]
+
+
+def all_placed(tool: Tool, sketch: Sketch) -> bool:
+    """Does nothing wait for more points (no segment, triangle or contour
+    half drawn)?"""
+    n = len(sketch.points)
+    if tool.mode in (FIXED, CIRCLE):
+        return n >= tool.count
+    if tool.mode == GROUPS:
+        return n > 0 and n % tool.count == 0
+    return n > 0 and not sketch.open
+
+
+def pending(tool: Tool, sketch: Sketch) -> list[int]:
+    """Indices of the points of a primitive still being drawn, in order:
+    the open contour, the last triangle's first one or two points, the
+    first end of a segment."""
+    n = len(sketch.points)
+    if tool.mode == CONTOURS:
+        return list(contours(sketch)[-1]) if sketch.open and n else []
+    if tool.mode == GROUPS:
+        return list(range(n - n % tool.count, n))
+    return list(range(n)) if 0 < n < tool.count else []
+
+
+def closes_at(tool: Tool, sketch: Sketch, index: int | None) -> bool:
+    """Would a click on handle ``index`` close the open contour?"""
+    if tool.mode != CONTOURS or not sketch.open or index is None:
+        return False
+    last = contours(sketch)[-1]
+    return index == last.start and len(last) >= tool.count
+
+
+def can_close(tool: Tool, sketch: Sketch) -> bool:
+    """Is there an open contour with enough vertices to close?"""
+    return (tool.mode == CONTOURS and sketch.open
+            and len(contours(sketch)[-1]) >= tool.count)
+
+
+# --------------------------------------------------------------- rules
+def apply(tool: Tool, sketch: Sketch, gesture) -> Sketch:
+    """The sketch after ``gesture``; the same sketch when it changes nothing."""
+    if isinstance(gesture, Place):
+        return _place(tool, sketch, tuple(gesture.point), gesture.on_handle,
+                      gesture.new_contour)
+    if isinstance(gesture, Move):
+        return _move(sketch, gesture.index, tuple(gesture.point))
+    if isinstance(gesture, Remove):
+        return _remove(tool, sketch, gesture.index)
+    if isinstance(gesture, Close):
+        return replace(sketch, open=False) if can_close(tool, sketch) else sketch
+    raise TypeError(f"not a drawing gesture: {gesture!r}")
+
+
+def _place(tool: Tool, sketch: Sketch, point, on_handle, new_contour) -> Sketch:
+    points = sketch.points
+    if tool.mode == CONTOURS:
+        return _place_on_contour(tool, sketch, point, on_handle, new_contour)
+    if tool.mode == GROUPS:
+        # On a vertex: share it exactly (a mesh's common corner).
+        return replace(sketch, points=points + (points[on_handle] if on_handle is not None
+                                                else point,))
+    if on_handle is not None and all_placed(tool, sketch):
+        return sketch  # a press on a handle that did not become a drag
+    if len(points) >= tool.count:
+        return replace(sketch, points=(point,))
+    return replace(sketch, points=points + (point,))
+
+
+def _place_on_contour(tool: Tool, sketch: Sketch, point, on_handle, new_contour) -> Sketch:
+    if closes_at(tool, sketch, on_handle):
+        return replace(sketch, open=False)
+    if on_handle is not None and not new_contour:
+        return sketch  # a press on a vertex that did not become a drag
+    points, breaks = sketch.points, sketch.breaks
+    if new_contour and points:
+        breaks = breaks + (len(points),)
+    elif not sketch.open:
+        points, breaks = (), ()  # a finished polygon: start a new one
+    return Sketch(points + (point,), breaks, True)
+
+
+def _move(sketch: Sketch, index: int, point) -> Sketch:
+    points = sketch.points
+    if not 0 <= index < len(points) or points[index] == point:
+        return sketch
+    return replace(sketch, points=points[:index] + (point,) + points[index + 1:])
+
+
+def _remove(tool: Tool, sketch: Sketch, index: int) -> Sketch:
+    """Take a point away; in contour mode the contour is open again, to
+    go on drawing it, and a contour left empty disappears."""
+    points = sketch.points
+    if not 0 <= index < len(points):
+        return sketch
+    points = points[:index] + points[index + 1:]
+    n = len(points)
+    breaks = sorted({b - 1 if b > index else b for b in sketch.breaks})
+    breaks = tuple(b for b in breaks if 0 < b < n)
+    return Sketch(points, breaks if tool.mode == CONTOURS else (), tool.mode == CONTOURS and n > 0)
+
+
+def labels(tool: Tool, n: int, breaks=(), names=()) -> list[str]:
+    """A short name for every point (see ``point_labels``)."""
+    return point_labels(tool.mode, tool.count, n, breaks, names)
 
 
 def point_labels(mode: str, count: int, n: int, breaks=(), names=()) -> list[str]:

@@ -57,6 +57,7 @@ from algorithms.raster import MAX_GRID, Raster, check_grid
 from algorithms.registry import InputError
 from algorithms.trace import DEFAULT_STEP_CAP, Cancelled, FrameState, Trace
 
+from app.model import drawing
 from app.model.history import EditHistory
 from app.model.examples import default_scene
 from app.model.inputs import (clamp, clean_breaks, complete, contour_sizes, flatten,
@@ -64,6 +65,7 @@ from app.model.inputs import (clamp, clean_breaks, complete, contour_sizes, flat
 from app.model.recording import Job
 from app.model.scene import Scene, SceneError
 from app.model.geometry import differences
+from app.model.tools import drawing_tool
 
 # How long an edit waits for its recording before it goes on in the
 # background (seconds); RASTERLAB_RECORD_WAIT overrides it ("inf": always
@@ -138,6 +140,8 @@ class Session:
         self._state: FrameState | None = None
         self._final: Raster | None = None
         self._edit_depth = 0  # nested edits count as the outer one
+        # (tool, points, breaks) a gesture left with a contour open (``sketch``).
+        self._open_sketch = None
 
     # ------------------------------------------------------- the scene
     @property
@@ -247,6 +251,25 @@ class Session:
             return
         scene = self._flat_scene(spec.name, points, breaks, self.options, self.grid)
         self._change(scene, self.previous)
+
+    @property
+    def sketch(self) -> drawing.Sketch:
+        """The points as the grid draws them: a contour is still being drawn
+        while the points are those the gesture that opened it left."""
+        key = (drawing_tool(self.spec), tuple(self.points), self.breaks)
+        return drawing.Sketch(key[1], key[2], key == self._open_sketch)
+
+    def draw(self, gesture) -> None:
+        """Apply a gesture on the grid (app/model/drawing.py) to the points;
+        InputError when the run refuses them: nothing changes then."""
+        before = self.sketch
+        after = drawing.apply(drawing_tool(self.spec), before, gesture)
+        try:
+            if (after.points, after.breaks) != (before.points, before.breaks):
+                self.set_points(after.points, after.breaks)
+        finally:
+            key = (drawing_tool(self.spec), tuple(self.points), self.breaks)
+            self._open_sketch = key if after.open and self.points else None
 
     def restore(self, points, breaks, options: dict, algorithm: str | None = None,
                 grid=None) -> None:
@@ -364,6 +387,8 @@ class Session:
     def _go_to(self, scene: Scene | None) -> Scene | None:
         if scene is None:
             return None
+        if (tuple(scene.flat), scene.breaks) != (tuple(self.points), self.breaks):
+            self._open_sketch = None  # the history's points count as finished
         try:
             self.restore(scene.flat, scene.breaks, dict(scene.options), scene.algorithm,
                          scene.grid)

@@ -8,7 +8,7 @@ Nothing here imports Qt.
 """
 from __future__ import annotations
 
-from app.model.drawing import CIRCLE, CONTOURS, FIXED, GROUPS
+from app.model.drawing import CIRCLE, CONTOURS, FIXED, GROUPS, Tool
 from app.model.geometry import ideal_paths, scene_paths, takes_circle
 from app.model.inputs import contour_sizes, runnable_input
 
@@ -22,6 +22,11 @@ def drawing_mode(spec) -> str:
     if takes_circle(spec):
         return CIRCLE
     return FIXED
+
+
+def drawing_tool(spec) -> Tool:
+    """The drawing tool that places this algorithm's points."""
+    return Tool(drawing_mode(spec), spec.inputs.count)
 
 
 def circle_options(spec) -> tuple[str, ...]:

@@ -4,6 +4,7 @@ import pytest
 from PySide6.QtCore import Qt
 from PySide6.QtTest import QTest
 
+from app.model.drawing import Move, Place, Tool, apply
 from app.render.compose import OUTLINE_STYLE, PALETTE
 from widgets.grid_items import MIN_CELL_PX, visible_grid_lines
 from widgets.grid_view import PixelGridView
@@ -30,6 +31,19 @@ def view(qtbot):
     return v
 
 
+def edits(view, tool=Tool()):
+    """Apply the view's gestures as the window does and give it the
+    result back; returns the list of points after each gesture."""
+    seen = []
+
+    def gestured(gesture):
+        sketch = apply(tool, view.sketch, gesture)
+        view.set_points(sketch.points, sketch.breaks, sketch.open)
+        seen.append(list(sketch.points))
+    view.gestured.connect(gestured)
+    return seen
+
+
 def click(view, grid_pos):
     QTest.mouseClick(view.viewport(), LEFT, NONE, view.widget_pos_of(grid_pos))
 
@@ -43,38 +57,49 @@ def drag(view, start, end, steps=6):
 
 
 def test_two_clicks_place_a_segment_and_a_third_starts_anew(view):
-    edited = []
-    view.pointsEdited.connect(edited.append)
+    gestures = []
+    view.gestured.connect(gestures.append)
+    edited = edits(view)
     click(view, (5.5, 3.5))
     click(view, (20.2, 10.9))  # anywhere inside pixel (20, 10)
     assert edited == [[(5, 3)], [(5, 3), (20, 10)]]
+    assert gestures == [Place((5, 3)), Place((20, 10))]
     click(view, (1.5, 1.5))
     assert edited[-1] == [(1, 1)]
     assert view.points == [(1, 1)]
 
 
+def test_the_view_shows_only_the_points_it_is_given(view):
+    view.set_points([(5, 3), (20, 10)])
+    gestures = []
+    view.gestured.connect(gestures.append)
+    click(view, (1.5, 1.5))
+    assert gestures == [Place((1, 1))]
+    assert view.points == [(5, 3), (20, 10)]  # nobody applied the gesture
+
+
 def test_clicks_are_clamped_to_the_grid(view):
     view.set_grid(10, 8)
-    edited = []
-    view.pointsEdited.connect(edited.append)
+    edited = edits(view)
     click(view, (-0.6, 3.5))
     assert edited[-1] == [(0, 3)]
 
 
 def test_dragging_a_handle_moves_its_point(view):
     view.set_points([(5, 3), (20, 10)])
-    edited = []
-    view.pointsEdited.connect(edited.append)
+    gestures = []
+    view.gestured.connect(gestures.append)
+    edited = edits(view)
     drag(view, (20.5, 10.5), (25.5, 12.5))
     assert edited and edited[-1] == [(5, 3), (25, 12)]
+    assert gestures[-1] == Move(1, (25, 12))
     assert view.points == [(5, 3), (25, 12)]
 
 
 def test_dragging_empty_space_pans_instead(view):
     view.set_points([(5, 3), (20, 10)])
     before = view.view_box.viewRect()
-    edited = []
-    view.pointsEdited.connect(edited.append)
+    edited = edits(view)
     drag(view, (12.5, 18.5), (8.5, 14.5))
     assert edited == []
     assert view.view_box.viewRect() != before
@@ -82,8 +107,7 @@ def test_dragging_empty_space_pans_instead(view):
 
 def test_y_down_origin_maps_clicks_in_that_frame(view):
     view.set_y_down(True)
-    edited = []
-    view.pointsEdited.connect(edited.append)
+    edited = edits(view)
     click(view, (3.5, 2.5))
     assert edited[-1] == [(3, 2)]
     # Pixel (3, 2) is near the top of the widget, pixel (3, 21) near the bottom.

@@ -100,7 +100,7 @@ def test_polygon_with_a_hole_and_its_tables(open_window, qtbot):
     for point in outer[:-1]:
         click(w, point)
     double_click(w, outer[-1])  # places the last vertex and closes the polygon
-    assert not w.grid.drawing.open
+    assert not w.player.sketch.open
     hole = [(6, 5), (12, 5), (9.125, 9.25)]
     click(w, hole[0], SHIFT)  # Shift+click: a new contour
     click(w, hole[1])
@@ -109,7 +109,7 @@ def test_polygon_with_a_hole_and_its_tables(open_window, qtbot):
     assert w.player.points[:7] == [tuple(map(float, p)) for p in outer] + [(6.0, 5.0), (12.0, 5.0)]
     fine = w.player.points[7]  # as near as a screen pixel allows, on the 1/256 px grid
     assert all((v * 256).is_integer() and abs(v - t) < 0.1 for v, t in zip(fine, (9.13, 9.26)))
-    assert w.player.breaks == (5,) and not w.grid.drawing.open
+    assert w.player.breaks == (5,) and not w.player.sketch.open
     contours = w.player.input_points()
     assert len(contours) == 2
     trace = expected("polygon-scanline", contours)
@@ -147,7 +147,7 @@ def test_backspace_and_a_refused_vertex(open_window, qtbot):
     click(w, (15, 10))  # would make it concave: refused, the last good run stays
     assert w.player.points == good and w.player.trace is not None
     assert "convex" in w.message.text()
-    assert w.grid.drawing.open  # still drawing the same contour
+    assert w.player.sketch.open  # still drawing the same contour
     click(w, (4, 18))
     assert len(w.player.points) == 4 and w.message.text() == ""
     key(w, Qt.Key.Key_Backspace)
