@@ -234,6 +234,7 @@ class CompareView(QWidget):
         super().__init__(parent)
         self._palette, self._styles = palette, outline_styles
         self.panes: list[ComparePane] = []
+        self._linked: list = []  # grids whose view range the others follow
         self._row = QHBoxLayout(self)
         self._row.setContentsMargins(0, 0, 0, 0)
         self._row.setSpacing(6)
@@ -270,8 +271,8 @@ class CompareView(QWidget):
         # and the aspect lock then shrinks the other, so a fitted wide grid
         # ends up cropped. Copying the whole range keeps both axes.)
         for grid in self.grids():
-            if not getattr(grid, "_compare_linked", False):
-                grid._compare_linked = True
+            if grid not in self._linked:
+                self._linked.append(grid)
                 box = grid.view_box
                 box.sigRangeChanged.connect(lambda *_args, b=box: self._follow(b))
                 box.sigRangeChangedManually.connect(self._zoomed_by_hand)
@@ -292,7 +293,7 @@ class CompareView(QWidget):
         # A zoom or pan by hand holds in every view: none of them fits the
         # grid again on its own when the window is resized.
         for grid in self.grids():
-            grid._auto_fit = False
+            grid.set_auto_fit(False)
 
     def set_grid(self, width: int, height: int) -> None:
         for grid in self.grids():
@@ -302,14 +303,14 @@ class CompareView(QWidget):
         # The first view fits; the rest follow it.
         grids = self.grids()
         for grid in grids:
-            grid._auto_fit = True
+            grid.set_auto_fit(True)
         grids[0].fit()
 
     def show_region(self, x0: float, y0: float, x1: float, y1: float) -> None:
         """Zoom every view to the cells [x0, x1) x [y0, y1) (grid units)."""
         from PySide6.QtCore import QRectF
         for grid in self.grids():
-            grid._auto_fit = False
+            grid.set_auto_fit(False)
         self.grids()[0].view_box.setRange(QRectF(x0, y0, x1 - x0, y1 - y0), padding=0)
 
     def set_y_down(self, y_down: bool) -> None:

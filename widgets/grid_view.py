@@ -213,6 +213,11 @@ class PixelGridView(pg.PlotWidget):
         self._auto_fit = True
         self._box.setRange(QRectF(0, 0, width, height), padding=0.02)
 
+    def set_auto_fit(self, on: bool) -> None:
+        """Whether the view fits the whole grid again when the widget resizes
+        (off after a zoom or pan by hand)."""
+        self._auto_fit = on
+
     def resizeEvent(self, event):  # noqa: N802
         super().resizeEvent(event)
         if getattr(self, "_auto_fit", False) and self._size[0] > 0:
