@@ -40,6 +40,7 @@ class CompareWindow(QMainWindow):
         self.setWindowTitle("Compare \u2014 RasterLab")
         self.panes: list[Pane] = []
         self.runs: list[compare.Run] = []
+        self._wired_headers: list = []  # pane headers whose signals are connected
         self.primitives: Scene | None = None
         self.preset_key = WINDOW_KEY
         self.link = FRAME
@@ -255,9 +256,9 @@ class CompareWindow(QMainWindow):
         items = [(name, compare.algorithm_title(name)) for name in compare.algorithm_names()]
         for k, pane in enumerate(self.view.panes):
             header = pane.header
-            if getattr(header, "_wired", False):
+            if header in self._wired_headers:
                 continue
-            header._wired = True
+            self._wired_headers.append(header)
             header.set_algorithms(items)
             header.algorithmChosen.connect(lambda name, p=pane: self._header_algorithm(p, name))
             header.optionsTyped.connect(lambda text, p=pane: self._header_options(p, text))
