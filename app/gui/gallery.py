@@ -117,7 +117,7 @@ class GalleryDialog(QDialog):
         layout.addWidget(buttons)
         self._pending = list(range(len(self.cases)))
         self.thumbnails_done = not self._pending
-        QTimer.singleShot(0, self._next_thumbnail)
+        QTimer.singleShot(0, self, self._next_thumbnail)
 
     def _add_row(self, case: HardCase) -> None:
         """One row: the picture (drawn later) beside the title, the explanation and the
@@ -158,7 +158,7 @@ class GalleryDialog(QDialog):
             self.pictures[row].setPixmap(QPixmap.fromImage(picture))
         else:
             self.pictures[row].setText("(large grid)")
-        QTimer.singleShot(0, self._next_thumbnail)
+        QTimer.singleShot(0, self, self._next_thumbnail)
 
     def open_row(self, row: int) -> bool:
         if not 0 <= row < len(self.cases):
