@@ -29,6 +29,7 @@ from pathlib import Path
 import numpy as np
 
 from app.analysis import measure
+from app.model.files import write_atomically
 
 from app.progress import TerminalBar
 
@@ -62,33 +63,6 @@ def check_folder(out) -> Path:
         raise ReportError(f"--out {out}: cannot write in the folder "
                           f"({error.strerror or error})") from None
     return path
-
-
-def write_atomically(path: Path, data: bytes) -> None:
-    """Write to a temporary file in the same folder, then rename over the target."""
-    try:
-        handle, temporary = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp",
-                                             dir=path.parent)
-    except OSError as error:
-        raise ReportError(f"{path}: cannot write ({error.strerror or error})") from None
-    try:
-        with os.fdopen(handle, "wb") as stream:
-            stream.write(data)
-            stream.flush()
-            os.fsync(stream.fileno())
-        os.chmod(temporary, 0o666 & ~_umask())  # mkstemp makes it private
-        os.replace(temporary, path)
-    except BaseException as error:
-        Path(temporary).unlink(missing_ok=True)
-        if isinstance(error, OSError):
-            raise ReportError(f"{path}: cannot write ({error.strerror or error})") from None
-        raise
-
-
-def _umask() -> int:
-    mask = os.umask(0)
-    os.umask(mask)
-    return mask
 
 
 # ============================================================ the report
@@ -164,7 +138,7 @@ def write_files(out, config, rows: list, seconds: dict, started: float | None = 
         image.save(buffer, format="PNG", optimize=True)
         documents[f"{family}.png"] = buffer.getvalue()
     for name, data in documents.items():
-        write_atomically(folder / name, data)
+        write_atomically(folder / name, data, ReportError)
     return {"folder": str(folder), "files": sorted(documents), "rows": len(rows),
             "seconds": time.perf_counter() - started}
 

@@ -13,7 +13,6 @@ import math
 import numbers
 import os
 import reprlib
-import tempfile
 from dataclasses import dataclass, field
 from functools import cached_property
 from pathlib import Path
@@ -22,6 +21,7 @@ from algorithms import registry
 from algorithms.raster import MAX_GRID
 from algorithms.registry import InputError
 
+from app.model.files import write_atomically
 from app.model.inputs import complete, flatten, runnable_input, split_contours
 
 VERSION = 1
@@ -432,32 +432,4 @@ def _bookmarks(bookmarks) -> list:
 def save(scene: Scene, path: str | os.PathLike) -> None:
     """Write the scene atomically: the old file survives any failure."""
     text = json.dumps(scene.to_json(), indent=2, allow_nan=False) + "\n"
-    write_atomically(Path(path), text.encode("utf-8"))
-
-
-def write_atomically(path: Path, data: bytes) -> None:
-    directory = path.parent if str(path.parent) else Path(".")
-    if not directory.is_dir():
-        raise SceneError(f"{path}: the folder {directory} does not exist")
-    try:
-        handle, temporary = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=directory)
-    except OSError as error:
-        raise SceneError(f"{path}: cannot write in {directory} "
-                         f"({error.strerror or error})") from None
-    try:
-        try:
-            stream = os.fdopen(handle, "wb")
-        except BaseException:
-            os.close(handle)  # fdopen failed, so nothing else will close it
-            raise
-        with stream:
-            stream.write(data)
-            stream.flush()
-            os.fsync(stream.fileno())
-        os.replace(temporary, path)
-    except BaseException as error:
-        Path(temporary).unlink(missing_ok=True)
-        if isinstance(error, OSError):
-            # An OSError made in code may carry a message but no strerror.
-            raise SceneError(f"{path}: cannot write the file ({error.strerror or error})") from None
-        raise
+    write_atomically(Path(path), text.encode("utf-8"), SceneError, keep_private=True)
