@@ -214,8 +214,7 @@ class PixelGridView(pg.PlotWidget):
         self._box.setRange(QRectF(0, 0, width, height), padding=0.02)
 
     def set_auto_fit(self, on: bool) -> None:
-        """Whether the view fits the whole grid again when the widget resizes
-        (off after a zoom or pan by hand)."""
+        """Fit the whole grid again whenever the widget resizes (or not)."""
         self._auto_fit = on
 
     def resizeEvent(self, event):  # noqa: N802
