@@ -74,7 +74,8 @@ class StagedFolder:
         handled = []
         for leftover in sorted(self.target.glob(self.prefix + "*")):
             pid = owner_pid(leftover.name, self.prefix)
-            if not leftover.is_dir() or (pid is not None and process_alive(pid)):
+            if (leftover.is_symlink() or not leftover.is_dir()
+                    or (pid is not None and process_alive(pid))):
                 continue
             journal = leftover / JOURNAL
             if journal.is_file():
@@ -95,6 +96,9 @@ class StagedFolder:
         for name in names + remove:
             if Path(name).name != name or name.startswith(self.prefix):
                 raise ValueError(f"not a plain file name: {name!r}")
+        blocked = [name for name in names if (self.target / name).is_dir()]
+        if blocked:  # found now, before anything has moved
+            raise self.error(f"{self.target / blocked[0]} is a folder: cannot put a file there")
         plan = json.dumps({"names": names, "remove": remove}).encode("utf-8")
         try:
             write_atomically(self.stage / JOURNAL, plan, self.error)

@@ -218,3 +218,20 @@ def test_a_live_exports_staging_folder_is_not_taken_for_debris(tmp_path):
     live.mkdir()
     ex.export(line_scene(), ex.ExportSettings(scale=2, first=0, last=1), frames_dir=folder)
     assert live.is_dir()
+
+
+def test_cleaning_up_follows_no_link_and_a_folder_in_the_way_stops_before_moving(tmp_path):
+    elsewhere = tmp_path / "elsewhere"
+    elsewhere.mkdir()
+    (elsewhere / "precious.txt").write_text("keep")
+    (elsewhere / ".commit.json").write_text('{"names": ["precious.txt"], "remove": []}')
+    folder = tmp_path / "frames"
+    folder.mkdir()
+    (folder / ".rasterlab-frames-999999999-x").symlink_to(elsewhere)
+    (folder / "frame_0001.png").mkdir()
+    with pytest.raises(ex.ExportError, match="frame_0001.png is a folder"):
+        ex.export(line_scene(), ex.ExportSettings(scale=2, first=0, last=2), frames_dir=folder)
+    assert (elsewhere / "precious.txt").read_text() == "keep"
+    assert not (folder / "precious.txt").exists()
+    assert sorted(p.name for p in folder.iterdir()) == [".rasterlab-frames-999999999-x",
+                                                        "frame_0001.png"]
