@@ -10,8 +10,9 @@ measures every algorithm family (app/analysis/measure.py) and writes into DIR
   (columns: measure.COLUMNS), the JSON with the settings and timings too;
 * <family>.png: cost against error, one figure per family.
 
-Every file is written to a temporary name beside it and renamed, so a
-reader never sees half a file. ``--quick`` measures fewer and smaller
+The files are written into a staging folder inside DIR and moved into
+place together (app/model/staging.py), so a reader never sees half a file
+and a full disk or a kill never leaves new files beside old ones. ``--quick`` measures fewer and smaller
 cases (under a minute on a 2-core machine); the full report takes a few
 minutes.
 """
@@ -30,6 +31,7 @@ import numpy as np
 
 from app.analysis import measure
 from app.model.files import write_atomically
+from app.model.staging import StagedFolder
 
 from app.progress import TerminalBar
 
@@ -137,10 +139,28 @@ def write_files(out, config, rows: list, seconds: dict, started: float | None = 
         buffer = io.BytesIO()
         image.save(buffer, format="PNG", optimize=True)
         documents[f"{family}.png"] = buffer.getvalue()
-    for name, data in documents.items():
-        write_atomically(folder / name, data, ReportError)
+    replace_together(folder, documents)
     return {"folder": str(folder), "files": sorted(documents), "rows": len(rows),
             "seconds": time.perf_counter() - started}
+
+
+def replace_together(folder: Path, documents: dict) -> None:
+    """Write ``documents`` (file name -> bytes) into ``folder`` so that
+    they replace its report files together: a full disk or a kill leaves
+    the old report whole, never new files beside old ones."""
+    staged = StagedFolder(folder, "report", ReportError)
+    stage = staged.open()
+    try:
+        for name, data in documents.items():
+            try:
+                write_atomically(stage / name, data, ReportError)
+            except ReportError as error:
+                # Name the file where the person will look for it.
+                raise ReportError(str(error).replace(str(stage), str(folder))) from None
+        staged.commit(sorted(documents))
+    except BaseException:
+        staged.discard()
+        raise
 
 
 class ProgressBar(TerminalBar):

@@ -14,6 +14,7 @@ frames and hands them to the writers.
 """
 from __future__ import annotations
 
+import io
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Callable, Sequence
@@ -31,18 +32,23 @@ from app.render.settings import (MAX_FPS, MAX_HOLD, MAX_SCALE, MIN_FPS, NAMES, E
                                  ExportError, ExportSettings, auto_scale, frame_durations,
                                  frame_range, frame_steps, record)
 from app.render.text import TextParts
-from app.render.writers import FrameWriter, GifWriter, NullWriter, PngFolderWriter, saving
+from app.render.writers import (MANIFEST, FrameWriter, GifWriter, NullWriter, PngFolderWriter,
+                                saving)
 
 # Callers take every export name from here, whichever part defines it.
 __all__ = ["DARK", "LIGHT", "THEMES", "ColourIndex", "Theme", "build_palette", "MAX_FPS",
            "MAX_HOLD", "MAX_SCALE", "MIN_FPS", "ExportCancelled", "ExportError", "ExportSettings",
            "auto_scale", "frame_durations", "frame_range", "frame_steps", "record",
            "FrameWriter", "GifWriter", "NullWriter", "PngFolderWriter", "FrameRenderer",
-           "ExportResult", "export"]
+           "ExportResult", "export", "check_frames_size", "MAX_FRAMES_BYTES",
+           "MANIFEST"]
 
 MAX_SIDE = 4096    # pixels, each side of a frame
 # Pillow holds every frame of a GIF in memory until it writes the file.
 MAX_GIF_PIXELS = 2 ** 30
+# The default limit of a frames folder on disk, as the GIF's above.
+MAX_FRAMES_BYTES = 2 ** 30
+BLOCK = 4096       # bytes a file takes on disk at least
 
 
 # ---------------------------------------------------------------- renderer
@@ -235,7 +241,8 @@ def export(scene, settings: ExportSettings = ExportSettings(), gif=None, frames_
            cancelled: Callable[[], bool] | None = None,
            names: tuple[str, str] = NAMES, trace=None,
            differences: np.ndarray | None = None,
-           writers: Sequence[FrameWriter] = ()) -> ExportResult:
+           writers: Sequence[FrameWriter] = (),
+           frames_limit: int = MAX_FRAMES_BYTES) -> ExportResult:
     """Export the scene's run as a GIF at ``gif``, as PNGs in ``frames_dir``,
     into further ``writers``, or any of them together (each frame is drawn
     once). ``trace`` and ``differences`` are as FrameRenderer takes them.
@@ -243,7 +250,9 @@ def export(scene, settings: ExportSettings = ExportSettings(), gif=None, frames_
     ``progress(done, total)`` is called after each frame; when
     ``cancelled()`` turns true the export stops with ExportCancelled and
     leaves nothing behind. Bad settings, sizes and paths raise ExportError;
-    ``names`` are what its messages call the range's ends.
+    ``names`` are what its messages call the range's ends. PNG frames
+    estimated to take more than ``frames_limit`` bytes are refused before
+    anything is written.
     """
     if gif is None and frames_dir is None and not writers:
         raise ExportError("nothing to write: give a GIF file, a folder for frames, or both")
@@ -256,6 +265,8 @@ def export(scene, settings: ExportSettings = ExportSettings(), gif=None, frames_
         raise ExportError(f"the GIF would hold {len(steps):,} frames of {width}x{height} pixels, "
                           f"more than {MAX_GIF_PIXELS // 2 ** 20:,} MiB: export a shorter range "
                           "or at a smaller scale")
+    if frames_dir is not None:
+        check_frames_size(renderer, steps, frames_limit)
     durations = frame_durations(len(steps), settings.fps, settings.hold)
     outputs = ([GifWriter(gif, durations, settings.loop)] if gif is not None else []) \
         + ([PngFolderWriter(frames_dir)] if frames_dir is not None else []) + list(writers)
@@ -273,8 +284,37 @@ def export(scene, settings: ExportSettings = ExportSettings(), gif=None, frames_
             if cancelled is not None and cancelled():
                 raise ExportCancelled("the export was cancelled")
     except OSError as error:
-        target = gif if gif is not None else frames_dir
-        raise ExportError(f"cannot write {target} ({error.strerror or error})") from None
+        # The writers name their own target; this is for anything else.
+        target = " and ".join(str(path) for path in (gif, frames_dir) if path is not None)
+        raise ExportError(f"cannot write {target or 'the export'} "
+                          f"({error.strerror or error})") from None
     return ExportResult(len(steps), renderer.size, durations,
                         Path(gif) if gif is not None else None,
                         Path(frames_dir) if frames_dir is not None else None)
+
+
+def check_frames_size(renderer: FrameRenderer, steps, limit: int) -> None:
+    """Refuse PNG frames whose estimated size on disk is over ``limit``.
+
+    The estimate is the frame count times the larger of the first and the
+    last frame, compressed as the writer compresses them and rounded up to
+    whole disk blocks (a run's frames fill up as it goes, so the last is
+    usually the largest). A count that cannot fit even at one block a
+    frame is refused without drawing anything.
+    """
+    count = len(steps)
+    if count * BLOCK <= limit:
+        sizes = []
+        for index in {steps[0], steps[-1]}:
+            buffer = io.BytesIO()
+            renderer.image(index).save(buffer, format="PNG", compress_level=3)
+            sizes.append(buffer.tell())
+        per_frame = -(-max(sizes) // BLOCK) * BLOCK
+    else:
+        per_frame = BLOCK
+    if count * per_frame > limit:
+        width, height = renderer.size
+        raise ExportError(f"the frames would take about {count * per_frame / 2 ** 20:,.0f} MiB "
+                          f"on disk ({count:,} PNG frames of {width}x{height} pixels), more "
+                          f"than the limit of {limit / 2 ** 20:,.0f} MiB: export a shorter "
+                          "range or at a smaller scale")

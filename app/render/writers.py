@@ -8,15 +8,19 @@ left behind). ``saving`` does that for several writers at once.
 
 Every writer that writes files writes them atomically: the GIF goes to a
 temporary file beside the target and is renamed over it at the end; PNG
-frames go into a temporary folder inside the target folder and are moved
-into place at the end. A failed or cancelled export leaves neither a
-partial GIF nor a partial set of frames.
+frames go into a staging folder inside the target folder and are moved
+into place together at the end. A failed or cancelled export leaves
+neither a partial GIF nor a partial set of frames, and what a killed one
+left is cleaned up by the next export to the same target. Temporary names
+carry the process id, so a live export's files are never taken for
+leftovers.
 """
 from __future__ import annotations
 
+import glob
+import json
 import os
 import re
-import shutil
 import tempfile
 from collections import deque
 from contextlib import contextmanager
@@ -25,9 +29,11 @@ from typing import Iterator, Protocol, Sequence
 
 from PIL import Image
 
+from app.model.staging import StagedFolder, owner_pid, process_alive
 from app.render.settings import ExportError
 
 FRAME_NAME = "frame_{:0{width}d}.png"
+MANIFEST = ".rasterlab-frames.json"  # what the last export wrote into a frames folder
 _FRAME_FILE = re.compile(r"^frame_\d{4,}\.png$")
 
 
@@ -86,9 +92,10 @@ class GifWriter:
         directory = _folder_of(self.path)
         if self.path.is_dir():
             raise ExportError(f"{self.path}: is a folder, not a file name")
+        remove_leftovers(self.path)
         try:
-            handle, name = tempfile.mkstemp(prefix=f".{self.path.name}.", suffix=".tmp",
-                                            dir=directory)
+            handle, name = tempfile.mkstemp(prefix=f".{self.path.name}.{os.getpid()}.",
+                                            suffix=".tmp", dir=directory)
         except OSError as error:
             raise ExportError(f"cannot write {self.path}: the folder {directory} is not writable "
                               f"({error.strerror or error})") from None
@@ -101,6 +108,12 @@ class GifWriter:
         self._frames.append(image)
 
     def finish(self) -> None:
+        try:
+            self._write()
+        except OSError as error:
+            raise ExportError(f"cannot write {self.path} ({error.strerror or error})") from None
+
+    def _write(self) -> None:
         first = self._frames.popleft()
         extra = {"loop": 0} if self.loop else {}
         with open(self.temporary, "wb") as stream:
@@ -127,16 +140,25 @@ class GifWriter:
 
 
 class PngFolderWriter:
-    """PNG frames frame_0000.png, ... written into a temporary folder
-    inside ``directory`` and moved into place at the end. Frames of an
-    earlier export to the same folder (frame_NNNN.png beyond this export's
-    last) are removed then, so the folder holds one export."""
+    """PNG frames frame_0000.png, ... written into a staging folder inside
+    ``directory`` and moved into place together at the end
+    (``app.model.staging``: a kill leaves either the old frames or, once
+    the next export to the folder has run, the new ones).
+
+    The folder's manifest (MANIFEST) lists the frames the last export
+    wrote; frames of that export beyond this one's last are removed, and
+    nothing else: files the program did not write stay.
+    """
 
     def __init__(self, directory):
         self.directory = Path(directory)
         self.names: list[str] = []
         self.created = False
-        self.temporary: Path | None = None
+        self.staged: StagedFolder | None = None
+
+    @property
+    def temporary(self) -> Path | None:
+        return self.staged.stage if self.staged is not None else None
 
     def setup(self, size, count, palette, transparent) -> None:
         self.width = max(4, len(str(max(0, count - 1))))
@@ -150,35 +172,50 @@ class PngFolderWriter:
                 raise ExportError(f"cannot make the folder {self.directory} in {parent} "
                                   f"({error.strerror or error})") from None
             self.created = True
-        try:
-            self.temporary = Path(tempfile.mkdtemp(prefix=".rasterlab-frames-",
-                                                   dir=self.directory))
-        except OSError as error:
-            raise ExportError(f"cannot write in the folder {self.directory} "
-                              f"({error.strerror or error})") from None
+        self.staged = StagedFolder(self.directory, "frames", ExportError)
+        self.staged.open()
 
     def grab_frame(self, image: Image.Image) -> None:
         name = FRAME_NAME.format(len(self.names), width=self.width)
-        image.save(self.temporary / name, format="PNG", compress_level=3)
+        try:
+            image.save(self.temporary / name, format="PNG", compress_level=3)
+        except OSError as error:
+            raise self._failed(error) from None
         self.names.append(name)
 
     def finish(self) -> None:
-        for name in self.names:
-            os.replace(self.temporary / name, self.directory / name)
-        keep = set(self.names)
-        for old in self.directory.iterdir():
-            if _FRAME_FILE.match(old.name) and old.name not in keep and old.is_file():
-                old.unlink()
-        self.temporary.rmdir()
+        earlier = written_frames(self.directory)
+        manifest = json.dumps({"frames": self.names}, indent=0).encode("utf-8")
+        try:
+            (self.temporary / MANIFEST).write_bytes(manifest)
+        except OSError as error:
+            raise self._failed(error) from None
+        self.staged.commit(self.names + [MANIFEST], remove=earlier)
 
     def abort(self) -> None:
-        if self.temporary is not None:
-            shutil.rmtree(self.temporary, ignore_errors=True)
+        if self.staged is not None:
+            self.staged.discard()
         if self.created:
             try:
                 self.directory.rmdir()
             except OSError:
                 pass
+
+    def _failed(self, error: OSError) -> ExportError:
+        return ExportError(f"cannot write the frames in the folder {self.directory} "
+                           f"({error.strerror or error})")
+
+
+def written_frames(directory: Path) -> list[str]:
+    """The frames the folder's manifest says an export wrote there (none
+    when there is no readable manifest)."""
+    try:
+        names = json.loads((directory / MANIFEST).read_text(encoding="utf-8"))["frames"]
+    except (OSError, ValueError, KeyError, TypeError):
+        return []
+    if not isinstance(names, list):
+        return []
+    return [name for name in names if isinstance(name, str) and _FRAME_FILE.match(name)]
 
 
 class NullWriter:
@@ -200,6 +237,22 @@ class NullWriter:
 
     def abort(self) -> None:
         self.aborted = True
+
+
+def remove_leftovers(path: Path) -> list[Path]:
+    """Delete the temporary files that killed exports to ``path`` left
+    beside it (``.NAME.<pid>.<random>.tmp`` of a process that is gone, or
+    ``.NAME.<random>.tmp`` from before names carried the process id)."""
+    prefix = f".{path.name}."
+    pattern = re.compile(re.escape(prefix) + r"(\d+\.)?[a-z0-9_]{8}\.tmp$")
+    removed = []
+    for leftover in _folder_of(path).glob(glob.escape(prefix) + "*.tmp"):
+        pid = owner_pid(leftover.name, prefix)
+        if (pattern.match(leftover.name) and leftover.is_file() and not leftover.is_symlink()
+                and (pid is None or not process_alive(pid))):
+            leftover.unlink(missing_ok=True)
+            removed.append(leftover)
+    return removed
 
 
 def _readable_by_all(path: Path) -> None:

@@ -222,3 +222,52 @@ def test_an_unwritable_folder_is_refused_before_measuring(tmp_path, monkeypatch)
     with pytest.raises(reporting.ReportError, match="cannot write in the folder"):
         reporting.write_report(tmp_path / "out", quick=True)
     assert not measured
+
+
+@pytest.fixture
+def old_report(tmp_path):
+    """A report folder as an earlier run left it, and a person's file."""
+    folder = tmp_path / "out"
+    folder.mkdir()
+    old = {name: b"old " + name.encode() for name in
+           ("report.md", "measurements.csv", "measurements.json", "lines.png", "notes.txt")}
+    for name, data in old.items():
+        (folder / name).write_bytes(data)
+    return folder, old
+
+
+def test_a_full_disk_leaves_the_old_report_whole(old_report, monkeypatch):
+    from app.analysis import report as reporting
+    folder, old = old_report
+    write = reporting.write_atomically
+    calls = []
+
+    def full_after_one(path, data, error=OSError, **kwargs):
+        calls.append(path)
+        if len(calls) == 2:
+            raise error(f"{path}: cannot write the file (No space left on device)")
+        write(path, data, error, **kwargs)
+
+    monkeypatch.setattr(reporting, "write_atomically", full_after_one)
+    with pytest.raises(reporting.ReportError, match="No space left") as caught:
+        reporting.write_files(folder, measure.settings(True), [], {"lines": 0.1})
+    assert str(folder) in str(caught.value) and ".rasterlab-" not in str(caught.value)
+    assert {p.name: p.read_bytes() for p in folder.iterdir()} == old
+
+
+def test_a_killed_report_is_cleaned_up_by_the_next(old_report):
+    from app.analysis import report as reporting
+    from app.model.staging import StagedFolder
+    folder, old = old_report
+    # What a report killed while writing leaves: a staging folder with no
+    # journal, of a process that is gone.
+    leftover = folder / ".rasterlab-report-999999999-x"
+    leftover.mkdir()
+    (leftover / "report.md").write_text("half")
+    assert StagedFolder(folder, "report").recover() == [leftover]
+    assert {p.name: p.read_bytes() for p in folder.iterdir()} == old
+    reporting.write_files(folder, measure.settings(True), [], {"lines": 0.1})
+    names = {p.name for p in folder.iterdir()}
+    assert names == {"report.md", "measurements.csv", "measurements.json", "lines.png",
+                     "notes.txt"}
+    assert (folder / "report.md").read_bytes() != old["report.md"]

@@ -255,8 +255,9 @@ def test_png_frames_beside_the_gif(tmp_path):
     folder = tmp_path / "frames"
     settings = ex.ExportSettings(scale=6, panel="code", primitive=False)
     result = ex.export(run, settings, gif=tmp_path / "a.gif", frames_dir=folder)
-    names = sorted(p.name for p in folder.iterdir())
+    names = sorted(p.name for p in folder.iterdir() if p.name != ex.MANIFEST)
     assert names == [f"frame_{k:04d}.png" for k in range(steps_of(run))]
+    assert (folder / ex.MANIFEST).is_file()
     renderer = ex.FrameRenderer(run, settings)
     assert result.size == (GRID[0] * 6 + renderer.panel_width,
                            max(GRID[1] * 6, renderer.body_height) + renderer.caption_height)
@@ -280,7 +281,8 @@ def test_a_shorter_export_replaces_the_frames_of_a_longer_one(tmp_path):
     ex.export(line_run(), ex.ExportSettings(scale=2), frames_dir=folder)
     ex.export(line_run(), ex.ExportSettings(scale=2, first=0, last=2), frames_dir=folder)
     assert sorted(p.name for p in folder.iterdir()) == [
-        "frame_0000.png", "frame_0001.png", "frame_0002.png", "notes.txt"]
+        ".rasterlab-frames.json", "frame_0000.png", "frame_0001.png", "frame_0002.png",
+        "notes.txt"]
 
 
 # ------------------------------------------------------------ what's drawn
