@@ -417,6 +417,7 @@ _NEGATIVE_POINT = re.compile(r"^-(?!-).*,", re.DOTALL)
 
 def main(argv: list[str] | None = None) -> int:
     argv = sys.argv[1:] if argv is None else list(argv)
+    args = argparse.Namespace(command=None)
     try:
         args = build_parser().parse_args(_shield_negative_points(argv))
         if args.command is None:
@@ -434,3 +435,19 @@ def main(argv: list[str] | None = None) -> int:
     except BrokenPipeError:
         sys.stderr.close()  # the reader went away (`| head`); nothing to report
         return 0
+    except OSError as error:
+        # A file or folder the system refused (a name too long, no
+        # permission, a full disk) that no command turned into its own line.
+        print(f"rasterlab: {one_line(_os_reason(error))}", file=sys.stderr)
+        return 2
+    except KeyboardInterrupt:
+        # As export and report: Ctrl+C ends with one line and status 130.
+        what = f"{args.command} interrupted" if args.command else "interrupted"
+        print(f"rasterlab: {what}", file=sys.stderr)
+        return 130
+
+
+def _os_reason(error: OSError) -> str:
+    """An OSError as "NAME: reason", the way the commands' own refusals read."""
+    reason = error.strerror or str(error)
+    return f"{error.filename}: {reason}" if error.filename is not None else reason

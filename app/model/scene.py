@@ -38,9 +38,27 @@ MAX_DIGITS = 15
 
 def one_line(text: str, limit: int = MAX_MESSAGE) -> str:
     """The text as one short printable line: line breaks and other control
-    characters escaped as in Python strings, the tail cut past ``limit``."""
+    characters escaped as in Python strings. Past ``limit`` the middle of
+    its longest words (paths, huge values) is cut, then the middle of the
+    line: the end, which says what went wrong, always stays."""
     text = "".join(c if c.isprintable() else repr(c)[1:-1] for c in text)
-    return text if len(text) <= limit else text[:limit - 3] + "..."
+    words = text.split(" ")
+    while len(" ".join(words)) > limit:
+        longest = max(range(len(words)), key=lambda k: len(words[k]))
+        if len(words[longest]) <= MAX_WORD:
+            break
+        words[longest] = _cut_middle(words[longest], MAX_WORD)
+    return _cut_middle(" ".join(words), limit)
+
+
+MAX_WORD = 60  # characters a path or value keeps when a message is too long
+
+
+def _cut_middle(text: str, limit: int) -> str:
+    if len(text) <= limit:
+        return text
+    head = (limit - 3) // 2
+    return text[:head] + "..." + text[len(text) - (limit - 3 - head):]
 
 
 _short = reprlib.Repr()
