@@ -474,4 +474,4 @@ def _bookmarks(bookmarks) -> list:
 def save(scene: Scene, path: str | os.PathLike) -> None:
     """Write the scene atomically: the old file survives any failure."""
     text = json.dumps(scene.to_json(), indent=2, allow_nan=False) + "\n"
-    write_atomically(Path(path), text.encode("utf-8"), SceneError, keep_private=True)
+    write_atomically(Path(path), text.encode("utf-8"), SceneError)

@@ -78,3 +78,45 @@ def test_a_scene_with_a_utf8_bom_is_read(tmp_path):
     path = tmp_path / "bom.json"
     path.write_bytes(b"\xef\xbb\xbf" + json.dumps(SCENE.to_json()).encode("utf-8"))
     assert scenes.load(path) == SCENE
+
+
+# ------------------------------------------------------------------ saving
+@pytest.mark.parametrize("mode", [0o644, 0o640, 0o600])
+def test_a_save_keeps_the_files_permissions(tmp_path, mode):
+    path = tmp_path / "a.json"
+    path.write_text("{}")
+    path.chmod(mode)
+    scenes.save(SCENE, path)
+    assert stat.S_IMODE(path.stat().st_mode) == mode
+    assert scenes.load(path) == SCENE
+
+
+def test_a_new_file_gets_the_umasks_permissions(tmp_path):
+    old = os.umask(0o022)
+    try:
+        scenes.save(SCENE, tmp_path / "new.json")
+    finally:
+        os.umask(old)
+    assert stat.S_IMODE((tmp_path / "new.json").stat().st_mode) == 0o644
+
+
+def test_a_save_through_a_link_writes_its_target(tmp_path):
+    (tmp_path / "real").mkdir()
+    target = tmp_path / "real" / "a.json"
+    target.write_text("{}")
+    target.chmod(0o644)
+    link = tmp_path / "link.json"
+    link.symlink_to(os.path.join("real", "a.json"))  # relative, as links often are
+    scenes.save(SCENE, link)
+    assert link.is_symlink() and os.readlink(link) == os.path.join("real", "a.json")
+    assert scenes.load(target) == SCENE
+    assert stat.S_IMODE(target.stat().st_mode) == 0o644
+    assert sorted(p.name for p in tmp_path.rglob("*")) == ["a.json", "link.json", "real"]
+
+
+def test_a_save_through_a_loop_of_links_is_refused(tmp_path):
+    (tmp_path / "a.json").symlink_to("b.json")
+    (tmp_path / "b.json").symlink_to("a.json")
+    with pytest.raises(SceneError, match="a loop of symbolic links"):
+        scenes.save(SCENE, tmp_path / "a.json")
+    assert (tmp_path / "a.json").is_symlink() and (tmp_path / "b.json").is_symlink()
