@@ -13,14 +13,11 @@ import sys
 from algorithms import registry
 from algorithms.raster import MAX_GRID
 from algorithms.registry import InputError, parse_number
-from algorithms.trace import DEFAULT_STEP_CAP, TraceError
+from algorithms.trace import DEFAULT_STEP_CAP, MAX_STEP_CAP, TraceError
 from app.progress import TerminalBar
 from app.model.scene import one_line
 
 DEFAULT_GRID = (32, 24)
-# Far beyond what memory holds, and below sys.maxsize, which the recorder's
-# islice needs: a larger cap used to end in a traceback.
-MAX_STEP_CAP = 10 ** 12
 
 
 class CommandError(Exception):
@@ -51,7 +48,8 @@ def build_parser() -> Parser:
                      help=f"grid size, at most {MAX_GRID},{MAX_GRID} (default: fits the points, "
                           f"at least {DEFAULT_GRID[0]},{DEFAULT_GRID[1]})")
     run.add_argument("--step-cap", type=str, default=str(DEFAULT_STEP_CAP), metavar="N",
-                     help="stop recording after N steps (default %(default)s)")
+                     help=f"stop recording after N steps, 1 .. {MAX_STEP_CAP:,}: the cap bounds the "
+                          "memory a run takes (default %(default)s)")
     output = run.add_mutually_exclusive_group()
     output.add_argument("--json", action="store_true", help="print one JSON object")
     output.add_argument("--ascii", action="store_true", help="print the grid as text")
