@@ -34,6 +34,9 @@ from .raster import Raster
 from .steps import NO_PIXEL, PLOT, RICH_RECORDS, CodeLine, Span, Start, Step, Vars
 
 DEFAULT_STEP_CAP = 5_000_000
+# The most steps any recording keeps, in the window and on the command line:
+# at about 22 bytes a step (README, "Performance") a trace stays near 1.1 GB.
+MAX_STEP_CAP = 50_000_000
 CHUNK = 1 << 16
 KEYFRAME_BUDGET = 64 * 2 ** 20  # bytes all keyframes of one trace may take
 KEYFRAME_BYTES_PER_STEP = 16  # and no more than this per recorded step

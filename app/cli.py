@@ -13,14 +13,11 @@ import sys
 from algorithms import registry
 from algorithms.raster import MAX_GRID
 from algorithms.registry import InputError, parse_number
-from algorithms.trace import DEFAULT_STEP_CAP, TraceError
+from algorithms.trace import DEFAULT_STEP_CAP, MAX_STEP_CAP, TraceError
 from app.progress import TerminalBar
 from app.model.scene import one_line
 
 DEFAULT_GRID = (32, 24)
-# Far beyond what memory holds, and below sys.maxsize, which the recorder's
-# islice needs: a larger cap used to end in a traceback.
-MAX_STEP_CAP = 10 ** 12
 
 
 class CommandError(Exception):
@@ -51,7 +48,8 @@ def build_parser() -> Parser:
                      help=f"grid size, at most {MAX_GRID},{MAX_GRID} (default: fits the points, "
                           f"at least {DEFAULT_GRID[0]},{DEFAULT_GRID[1]})")
     run.add_argument("--step-cap", type=str, default=str(DEFAULT_STEP_CAP), metavar="N",
-                     help="stop recording after N steps (default %(default)s)")
+                     help=f"stop recording after N steps, 1 .. {MAX_STEP_CAP:,}: the cap bounds the "
+                          "memory a run takes (default %(default)s)")
     output = run.add_mutually_exclusive_group()
     output.add_argument("--json", action="store_true", help="print one JSON object")
     output.add_argument("--ascii", action="store_true", help="print the grid as text")
@@ -417,6 +415,7 @@ _NEGATIVE_POINT = re.compile(r"^-(?!-).*,", re.DOTALL)
 
 def main(argv: list[str] | None = None) -> int:
     argv = sys.argv[1:] if argv is None else list(argv)
+    args = argparse.Namespace(command=None)
     try:
         args = build_parser().parse_args(_shield_negative_points(argv))
         if args.command is None:
@@ -434,3 +433,19 @@ def main(argv: list[str] | None = None) -> int:
     except BrokenPipeError:
         sys.stderr.close()  # the reader went away (`| head`); nothing to report
         return 0
+    except OSError as error:
+        # A file or folder the system refused (a name too long, no
+        # permission, a full disk) that no command turned into its own line.
+        print(f"rasterlab: {one_line(_os_reason(error))}", file=sys.stderr)
+        return 2
+    except KeyboardInterrupt:
+        # As export and report: Ctrl+C ends with one line and status 130.
+        what = f"{args.command} interrupted" if args.command else "interrupted"
+        print(f"rasterlab: {what}", file=sys.stderr)
+        return 130
+
+
+def _os_reason(error: OSError) -> str:
+    """An OSError as "NAME: reason", the way the commands' own refusals read."""
+    reason = error.strerror or str(error)
+    return f"{error.filename}: {reason}" if error.filename is not None else reason

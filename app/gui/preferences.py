@@ -27,14 +27,14 @@ from PySide6.QtWidgets import (QApplication, QCheckBox, QColorDialog, QComboBox,
 
 from algorithms.raster import MAX_GRID
 from algorithms.registry import InputError
-from algorithms.trace import DEFAULT_STEP_CAP
+from algorithms.trace import DEFAULT_STEP_CAP, MAX_STEP_CAP
 from widgets.transport import SPEED_MAX, SPEED_MIN
 
 from app.gui.appdata import open_settings
 from app.render.compose import DARK_PALETTE, PALETTE
 
 THEMES = ("light", "dark")
-STEP_CAP_RANGE = (1_000, 50_000_000)
+STEP_CAP_RANGE = (1_000, MAX_STEP_CAP)
 MIN_GRID = 16
 
 BASE_PALETTES = {"light": PALETTE, "dark": DARK_PALETTE}

@@ -13,6 +13,7 @@ import math
 import numbers
 import os
 import reprlib
+import stat
 from dataclasses import dataclass, field
 from functools import cached_property
 from pathlib import Path
@@ -38,9 +39,27 @@ MAX_DIGITS = 15
 
 def one_line(text: str, limit: int = MAX_MESSAGE) -> str:
     """The text as one short printable line: line breaks and other control
-    characters escaped as in Python strings, the tail cut past ``limit``."""
+    characters escaped as in Python strings. Past ``limit`` the middle of
+    its longest words (paths, huge values) is cut, then the middle of the
+    line: the end, which says what went wrong, always stays."""
     text = "".join(c if c.isprintable() else repr(c)[1:-1] for c in text)
-    return text if len(text) <= limit else text[:limit - 3] + "..."
+    words = text.split(" ")
+    while len(" ".join(words)) > limit:
+        longest = max(range(len(words)), key=lambda k: len(words[k]))
+        if len(words[longest]) <= MAX_WORD:
+            break
+        words[longest] = _cut_middle(words[longest], MAX_WORD)
+    return _cut_middle(" ".join(words), limit)
+
+
+MAX_WORD = 60  # characters a path or value keeps when a message is too long
+
+
+def _cut_middle(text: str, limit: int) -> str:
+    if len(text) <= limit:
+        return text
+    head = (limit - 3) // 2
+    return text[:head] + "..." + text[len(text) - (limit - 3 - head):]
 
 
 _short = reprlib.Repr()
@@ -233,21 +252,44 @@ def load(path: str | os.PathLike) -> Scene:
     """Read and check a scene file; SceneError names what is wrong."""
     path = Path(path)
     name = path.name or str(path)
+    data = _read_regular_file(path, name)
     try:
-        # Read one byte past the limit rather than trust stat(): a device
-        # such as /dev/zero or a pipe has no size and never ends.
-        with path.open("rb") as stream:
-            data = stream.read(MAX_FILE_BYTES + 1)
-    except OSError as error:
-        raise SceneError(f"{name}: cannot read the file ({error.strerror or error})") from None
-    if len(data) > MAX_FILE_BYTES:
-        raise SceneError(f"{name}: the file is larger than {MAX_FILE_BYTES:,} bytes, "
-                         "the most a scene may be")
-    try:
-        text = data.decode("utf-8")
+        # A BOM is no part of the scene: editors on some systems add one.
+        text = data.decode("utf-8-sig")
     except UnicodeDecodeError:
         raise SceneError(f"{name}: not a text file (not UTF-8)") from None
     return parse(text, name)
+
+
+def _read_regular_file(path: Path, name: str) -> bytes:
+    """The bytes of a regular file of at most MAX_FILE_BYTES.
+
+    A FIFO, a device or a folder is refused before a byte is read: opening
+    without blocking keeps a FIFO with no writer from hanging, and a pipe or
+    /dev/zero never ends. A file whose size stat() cannot tell (/proc)
+    is refused when it yields more than its size says.
+    """
+    try:
+        handle = os.open(path, os.O_RDONLY | getattr(os, "O_NONBLOCK", 0))
+    except OSError as error:
+        raise SceneError(f"{name}: cannot read the file ({error.strerror or error})") from None
+    try:
+        status = os.fstat(handle)
+        size, kind = status.st_size, status.st_mode
+        if not stat.S_ISREG(kind):
+            what = "a folder" if stat.S_ISDIR(kind) else "not a regular file"
+            raise SceneError(f"{name}: {what}, not a scene file")
+        if size > MAX_FILE_BYTES:
+            raise SceneError(f"{name}: the file is larger than {MAX_FILE_BYTES:,} bytes, "
+                             "the most a scene may be")
+        data = os.read(handle, size + 1)
+    except OSError as error:
+        raise SceneError(f"{name}: cannot read the file ({error.strerror or error})") from None
+    finally:
+        os.close(handle)
+    if len(data) != size:
+        raise SceneError(f"{name}: not a regular file (it changed size as it was read)")
+    return data
 
 
 def parse(text: str, name: str = "scene") -> Scene:
@@ -432,4 +474,4 @@ def _bookmarks(bookmarks) -> list:
 def save(scene: Scene, path: str | os.PathLike) -> None:
     """Write the scene atomically: the old file survives any failure."""
     text = json.dumps(scene.to_json(), indent=2, allow_nan=False) + "\n"
-    write_atomically(Path(path), text.encode("utf-8"), SceneError, keep_private=True)
+    write_atomically(Path(path), text.encode("utf-8"), SceneError)
