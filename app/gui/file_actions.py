@@ -42,6 +42,9 @@ class FileActions(QObject):
     opened = Signal(object)
     # A scene put in new bookmarks (the list object is replaced).
     bookmarksChanged = Signal()
+    # An open that recorded in the background was cancelled or failed: the
+    # scene on show before it is back.
+    reverted = Signal()
 
     def __init__(self, window, settings: QSettings | None = None):
         super().__init__(window)
@@ -57,6 +60,8 @@ class FileActions(QObject):
         # Bookmarks made before the file actions came keep their place.
         self.bookmarks: list = [dict(b) for b in window.bookmarks]
         self.export_controller: ExportController | None = None
+        # (path, scene, what to put back) of a file whose run still records.
+        self._opening: tuple | None = None
         self._build_menu()
 
     # ------------------------------------------------------------- menu
@@ -163,8 +168,17 @@ class FileActions(QObject):
         return self.open_path(path) if path else False
 
     def open_path(self, path, remember: bool = True) -> bool:
-        """Open a scene file; on failure say why and change nothing."""
+        """Open a scene file; on failure say why and change nothing.
+
+        A scene too large to record at once records in the background: the
+        file counts as opened (its name, the unsaved mark) only once its run
+        is installed. Cancelled or failed, the scene on show, its name and
+        its unsaved mark stay as they were, so a later save cannot write the
+        previous scene over the file."""
         path = Path(path)
+        # A second open while the first still records goes back to what
+        # was on show before the first.
+        before = self._opening[1] if self._opening else self._snapshot()
         try:
             scene = scenes.load(path)
             self.apply_scene(scene)
@@ -172,12 +186,59 @@ class FileActions(QObject):
             QMessageBox.warning(self.window, "Open scene",
                                 f"Cannot open {path.name}:\n{one_line(str(error))}")
             return False
+        if self.window.player.recording:
+            self._open_when_recorded(path, remember, before)
+        else:
+            self._opening = None
+            self._opened(path, remember)
+        return True
+
+    @property
+    def opening(self) -> bool:
+        """Is a file opened whose run still records in the background?"""
+        return self._opening is not None
+
+    def _snapshot(self) -> dict:
+        """What an open changes beside the session's scene, to put back."""
+        window = self.window
+        return {"title": self.title, "description": self.description,
+                "bookmarks": [dict(b) for b in self.bookmarks],
+                "compare": window.compare.isChecked(), "speed": window.player.speed,
+                "y_down": window.grid.y_down}
+
+    def _open_when_recorded(self, path: Path, remember: bool, before: dict) -> None:
+        token = (path, before)
+        self._opening = token
+
+        def done(message: str) -> None:
+            self.window.player.recordingFinished.disconnect(done)
+            if self._opening is not token:
+                return  # a newer open took its place
+            self._opening = None
+            if message:  # cancelled or failed: the previous scene is back
+                self._put_back(before)
+                self._status(f"Not opened {path.name}: {one_line(message)}")
+            else:
+                self._opened(path, remember)
+        self.window.player.recordingFinished.connect(done)
+
+    def _put_back(self, before: dict) -> None:
+        window = self.window
+        self.title, self.description = before["title"], before["description"]
+        self.bookmarks = before["bookmarks"]
+        self.bookmarksChanged.emit()
+        window.compare.setChecked(before["compare"])
+        window.transport.set_speed(before["speed"])
+        # The origin was set on the scene kept on show too: set it back.
+        window.set_y_down(before["y_down"])
+        self.reverted.emit()
+
+    def _opened(self, path: Path, remember: bool) -> None:
         self.path = path if remember else None
         if remember:
             self._remember(path)
         self._status(f"Opened {path.name}")
         self.opened.emit(self.path)
-        return True
 
     def save(self) -> bool:
         if self.path is None:

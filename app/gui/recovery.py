@@ -131,6 +131,7 @@ class Recovery(QObject):
         window.grid_editor.originChanged.connect(lambda _on: self.check())
         files.saved.connect(self.mark_clean)
         files.opened.connect(self.mark_clean)
+        files.reverted.connect(self.check)
         # The window sets its own title on every scene change; ours adds
         # the scene's name and the unsaved mark.
         window.windowTitleChanged.connect(lambda _title: self.update_title())
@@ -145,6 +146,8 @@ class Recovery(QObject):
 
     def check(self) -> None:
         """Compare the scene with the saved one; call after any edit."""
+        if self.files.opening:
+            return  # an opened file still records: neither saved nor edited yet
         current = self._content()
         changed, self._last = current != self._last, current
         dirty = self._forced or current != self._baseline

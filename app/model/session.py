@@ -549,11 +549,13 @@ class Session:
             return  # replaced or cancelled meanwhile
         self._job = None
         if job.error is not None or job.cancelled:
-            self._put_back_shown(CANCELLED_MESSAGE if job.error is None else str(job.error))
+            self._put_back_shown(CANCELLED_MESSAGE if job.error is None else _failure(job.error))
             return
         self._shown = None
         outcome = job.result
-        self._put_scene(outcome.scene, outcome.previous)
+        # The origin may have been set meanwhile (an open sets it after the
+        # scene): it only changes how the run is shown, so it is kept.
+        self._put_scene(outcome.scene.replace(origin=self.scene.origin), outcome.previous)
         self._take(outcome, self._job_at_end)
         self._finished(_finish_note(outcome))
 
@@ -667,6 +669,12 @@ def _finish_note(outcome: _Outcome) -> str:
         return ""
     return (f"{outcome.scene.spec.title} refused the points drawn before "
             f"({outcome.refusal}); showing an example shape instead.")
+
+
+def _failure(error: BaseException) -> str:
+    """A failed recording's message: never empty (empty means installed)."""
+    return str(error) if isinstance(error, InputError) and str(error) else \
+        f"The run failed ({type(error).__name__}: {error}); the previous scene is kept."
 
 
 def _made(make, *args, **fields) -> Scene:

@@ -341,3 +341,100 @@ def test_the_dialog_exports_what_the_command_line_exports(window, files, qtbot, 
             a.seek(k)
             b.seek(k)
             assert np.array_equal(np.asarray(a.convert("RGB")), np.asarray(b.convert("RGB")))
+
+
+# ------------------------------------- an open whose run records in the background
+# A flood fill of a 1024 x 1024 square: far too long to record at once.
+BIG_FILL = {"version": 1, "title": "big fill", "description": "", "grid": {"width": 1030,
+            "height": 1030}, "origin": "top-left", "algorithm": "flood-fill", "options": {},
+            "primitives": [{"points": [[0, 0], [1025, 0], [1025, 1025], [0, 1025]]}],
+            "view": {"compare": True, "speed": 3}, "bookmarks": [{"step": 1, "name": "b"}]}
+
+
+@pytest.fixture
+def held(make_window, tmp_path, monkeypatch, messages):
+    """A window showing a.json, opened and clean, whose next recording waits
+    for ``gate`` (then does ``then``: record, or raise); big.json is beside."""
+    window = make_window(recovery=True, shown=False)
+    small = tmp_path / "a.json"
+    window.set_scene("circle-midpoint", [(12, 10)], {"radius": 7}, (24, 20))
+    assert window.file_actions.save_to(small) and window.file_actions.open_path(small)
+    big = tmp_path / "big.json"
+    big.write_text(json.dumps(BIG_FILL))
+    gate, then = __import__("threading").Event(), {"do": window.player.session.outcome}
+    monkeypatch.setattr(window.player.session, "outcome",
+                        lambda *a, **k: gate.wait(10) and then["do"](*a, **k))
+    window.player.sync_wait = 0.0
+    return window, small, big, gate, then
+
+
+def shown_state(window):
+    files = window.file_actions
+    return (scene_of(window), files.path, files.title, window.recovery.dirty,
+            window.isWindowModified(), window.windowTitle(), window.compare.isChecked(),
+            window.player.speed, list(files.bookmarks))
+
+
+def assert_open_undone(qtbot, window, small, big, before):
+    assert shown_state(window) == before
+    saved_big, saved_small = big.read_bytes(), small.read_bytes()
+    window.recovery.check()
+    assert not window.recovery.dirty and window.file_actions.path == small
+    assert window.file_actions.save()  # Ctrl+S: the scene on show goes to its own file
+    assert big.read_bytes() == saved_big  # never the previous scene over the opened file
+    assert scenes.load(small).algorithm == "circle-midpoint" and saved_small
+
+
+def test_an_open_cancelled_while_recording_changes_nothing(qtbot, held):
+    window, small, big, gate, _then = held
+    before = shown_state(window)
+    assert window.file_actions.open_path(big)
+    assert window.player.recording and window.file_actions.opening
+    window.recovery.check()
+    assert window.file_actions.path == small and not window.recovery.dirty
+    with qtbot.waitSignal(window.player.recordingFinished, timeout=10_000):
+        window.recording_status.shortcut.activated.emit()  # Esc
+    gate.set()
+    assert not window.file_actions.opening
+    assert_open_undone(qtbot, window, small, big, before)
+
+
+def test_an_open_whose_run_fails_changes_nothing(qtbot, held):
+    window, small, big, gate, then = held
+    before = shown_state(window)
+
+    def fail(*_args, **_kwargs):
+        raise MemoryError()
+    then["do"] = fail
+    assert window.file_actions.open_path(big) and window.player.recording
+    with qtbot.waitSignal(window.player.recordingFinished, timeout=10_000) as finished:
+        gate.set()
+    assert "MemoryError" in finished.args[0]
+    assert_open_undone(qtbot, window, small, big, before)
+
+
+def test_a_reopened_last_scene_cancelled_at_start_changes_nothing(qtbot, held, monkeypatch):
+    from app.gui import preferences
+    window, small, big, gate, _then = held
+    window.file_actions._remember(big)  # the last scene opened
+    prefs = window.preferences.prefs
+    get = prefs.get
+    monkeypatch.setattr(prefs, "get", lambda name: True if name == "reopen_last" else get(name))
+    before = shown_state(window)
+    assert preferences.reopen_last_scene(window) and window.player.recording
+    with qtbot.waitSignal(window.player.recordingFinished, timeout=10_000):
+        window.player.cancel_recording()
+    gate.set()
+    assert_open_undone(qtbot, window, small, big, before)
+
+
+def test_an_open_recorded_in_the_background_is_opened_when_done(qtbot, held):
+    window, small, big, gate, _then = held
+    assert window.file_actions.open_path(big) and window.player.recording
+    with qtbot.waitSignal(window.player.recordingFinished, timeout=60_000) as finished:
+        gate.set()
+    assert finished.args[0] == ""
+    assert window.file_actions.path == big and window.file_actions.title == "big fill"
+    window.recovery.check()
+    assert not window.recovery.dirty and window.windowTitle().startswith("big.json")
+    assert window.player.session.scene.origin == "top-left" and window.grid.y_down
