@@ -14,6 +14,7 @@ from algorithms import registry
 from algorithms.raster import MAX_GRID
 from algorithms.registry import InputError, parse_number
 from algorithms.trace import DEFAULT_STEP_CAP, MAX_STEP_CAP, TraceError
+from app.model import budget
 from app.progress import TerminalBar
 from app.model.scene import one_line
 
@@ -47,6 +48,9 @@ def build_parser() -> Parser:
     run.add_argument("--grid", metavar="W,H",
                      help=f"grid size, at most {MAX_GRID},{MAX_GRID} (default: fits the points, "
                           f"at least {DEFAULT_GRID[0]},{DEFAULT_GRID[1]})")
+    run.add_argument("--memory-limit", default="2G", metavar="SIZE",
+                     help="refuse a run whose estimated memory exceeds this (e.g. 512M, 4G; "
+                          "default 2G)")
     run.add_argument("--step-cap", type=str, default=str(DEFAULT_STEP_CAP), metavar="N",
                      help=f"stop recording after N steps, 1 .. {MAX_STEP_CAP:,}: the cap bounds the "
                           "memory a run takes (default %(default)s)")
@@ -164,6 +168,8 @@ def command_run(args) -> int:
     step_cap = parse_step_cap(args.step_cap)
     spec.inputs.check(points)
     grid = fit_grid(spec.inputs.flat(points), args.grid, spec.inputs.integer)
+    budget.check_budget(spec, points, options, grid, step_cap,
+                        memory_limit=budget.parse_size(args.memory_limit))
     trace = spec.record(points, options, grid=grid, step_cap=step_cap)
     return print_run(args, spec, trace, options)
 
@@ -188,6 +194,8 @@ def run_scene(args) -> int:
     except scenes.SceneError as error:
         raise InputError(str(error)) from None
     spec = scene.spec
+    budget.check_budget(spec, scene.points, scene.options, (scene.width, scene.height), step_cap,
+                        memory_limit=budget.parse_size(args.memory_limit))
     trace = spec.record(scene.points, scene.options, grid=(scene.width, scene.height),
                         step_cap=step_cap)
     return print_run(args, spec, trace, scene.options)

@@ -88,5 +88,5 @@ from .supersample import (FILTERS, PATTERNS, SUPERSAMPLE_OPTIONS, lattice, norma
                           random_bits, sample_strata, sample_weights, supersample, supersample_code,
                           supersample_image)
 from .temporal import (TEMPORAL_OPTIONS, animation_frame_steps, apparent_speed, temporal,
-                       temporal_code, temporal_frames, time_samples)
+                       temporal_code, temporal_frames, iter_temporal_frames, time_samples)
 from . import specs  # noqa: F401  (importing it registers the family)

@@ -92,33 +92,50 @@ def time_samples(options, frame: int) -> list[float]:
     return [frame + shutter * (s + 0.5) / count for s in range(count)]
 
 
-def temporal_frames(points, options, grid) -> list[np.ndarray]:
-    """Image k of the animation, coverage (H, W) float64, for k = 0 .. frames - 1."""
+# Samples tested at once: the rows of a frame are tested in bands of about
+# this many samples so that a large grid with n = 8 never needs gigabytes.
+SAMPLES_PER_BAND = 1 << 20
+
+
+def iter_temporal_frames(points, options, grid):
+    """Image k of the animation, coverage (H, W) float64, for k = 0 .. frames - 1,
+    each computed only when asked for, so a step cap or a cancel stops the work."""
     options = {**{o.name: o.default for o in TEMPORAL_OPTIONS}, **options}
     points = [tuple(map(float, p)) for p in points]
     width, height = int(grid[0]), int(grid[1])
     n = options["n"]
-    images = []
     xs = np.arange(width, dtype=np.int64)
     kx, ky, big = sample_strata("grid", n, 0, 0, xs)
-    ox, oy = lattice(kx[0], big), lattice(ky[0], big)
+    offsets = lattice(kx[0], big), lattice(ky[0], big)
     for frame in range(options["frames"]):
         instants = time_samples(options, frame)
         hits = np.zeros((height, width), np.int64)
         for t in instants:
-            shapes = _temporal_shapes(points, options, t)
-            x0, y0, x1, y1 = shapes.window((width, height))
-            if x1 <= x0 or y1 <= y0:
-                continue
-            cols = np.arange(x0, x1, dtype=np.int64)
-            rows = np.arange(y0, y1, dtype=np.int64)
-            sx = cols[None, :, None] * UNIT + ox[None, None, :]
-            sy = rows[:, None, None] * UNIT + oy[None, None, :]
-            sx, sy = np.broadcast_arrays(sx, sy)
-            inside = shapes.owners(sx, sy) >= 0
-            hits[y0:y1, x0:x1] += inside.sum(axis=2)
-        images.append(hits / (len(instants) * n * n))
-    return images
+            _add_hits(hits, _temporal_shapes(points, options, t), offsets)
+        yield hits / (len(instants) * n * n)
+
+
+def _add_hits(hits: np.ndarray, shapes: Shapes, offsets) -> None:
+    """Add to each pixel of hits the number of its samples inside the shapes."""
+    height, width = hits.shape
+    x0, y0, x1, y1 = shapes.window((width, height))
+    if x1 <= x0 or y1 <= y0:
+        return
+    ox, oy = offsets
+    cols = np.arange(x0, x1, dtype=np.int64)
+    band = max(1, SAMPLES_PER_BAND // ((x1 - x0) * len(ox)))
+    for top in range(y0, y1, band):
+        rows = np.arange(top, min(top + band, y1), dtype=np.int64)
+        sx = cols[None, :, None] * UNIT + ox[None, None, :]
+        sy = rows[:, None, None] * UNIT + oy[None, None, :]
+        sx, sy = np.broadcast_arrays(sx, sy)
+        inside = shapes.owners(sx, sy) >= 0
+        hits[rows[0]:rows[-1] + 1, x0:x1] += inside.sum(axis=2)
+
+
+def temporal_frames(points, options, grid) -> list[np.ndarray]:
+    """All the images of the animation at once (for tests and small runs)."""
+    return list(iter_temporal_frames(points, options, grid))
 
 
 def apparent_speed(points, options) -> float:
@@ -164,7 +181,6 @@ def temporal_code(points, options) -> Code:
 
 def temporal(points, options, grid):
     kind = _primitive(points, options)
-    images = temporal_frames(points, options, grid)
     apparent = apparent_speed(points, options)
     at = temporal_code(points, options).at
     constants = {"primitive": kind, "motion": options["motion"], "mode": options["mode"],
@@ -172,26 +188,23 @@ def temporal(points, options, grid):
                  apparent}
     yield Start(line=at["setup"], values=("frame", "coverage", "rgb"), constants=constants,
                 pixel_value="coverage", color_value="rgb", replaces=True)
-    reach = np.zeros(images[0].shape, bool) if images else np.zeros((0, 0), bool)
-    for image in images:
-        reach |= image > 0
-    cells = np.argwhere(reach)
-    previous = np.zeros(reach.shape)
+    # Each frame's image is made when the run reaches it: the pixels written are
+    # those that show something in this frame or the last, in row order.
+    previous = np.zeros((int(grid[1]), int(grid[0])))
     ink = unpack(INK)
-    for k, image in enumerate(images):
+    for k, image in enumerate(iter_temporal_frames(points, options, grid)):
         instants = time_samples(options, k)
         values = {"frame": k, "t": f"{instants[0]:g} .. {instants[-1]:g}" if len(instants) > 1
                   else instants[0]}
         if options["motion"] == "spin":
             values["angle"] = options["speed"] * instants[0] % 360
         yield Vars(line=at["frames"], values=values)
-        for y, x in cells:
+        for y, x in np.argwhere((image > 0) | (previous > 0)):
             value = float(image[y, x])
-            if value > 0 or previous[y, x] > 0:
-                yield (at["plot_pixels"], int(x), int(y), float(k), value,
-                       float(ink_blend(ink, value)))
+            yield (at["plot_pixels"], int(x), int(y), float(k), value,
+                   float(ink_blend(ink, value)))
         previous = image
-    yield Vars(line=at["done"], values={"frames": len(images), "apparent speed": apparent})
+    yield Vars(line=at["done"], values={"frames": options["frames"], "apparent speed": apparent})
 
 
 def animation_frame_steps(spec, trace) -> list[int]:

@@ -1,0 +1,49 @@
+"""The step cap and a cancel bound the work a run does, not only the steps it keeps."""
+import pytest
+
+import importlib
+from algorithms.registry import get
+from algorithms.trace import Cancelled, RecordMonitor
+
+temporal_module = importlib.import_module("algorithms.antialias.temporal")
+WHEEL = [(10.0, 10.0)]
+
+
+def _count_instants(monkeypatch) -> list:
+    """Count the instants at which aa-temporal places its primitive."""
+    calls = []
+    real = temporal_module._temporal_shapes
+
+    def counted(points, options, t):
+        calls.append(t)
+        return real(points, options, t)
+
+    monkeypatch.setattr(temporal_module, "_temporal_shapes", counted)
+    return calls
+
+
+def test_temporal_frames_are_computed_only_as_far_as_the_step_cap(monkeypatch):
+    calls = _count_instants(monkeypatch)
+    trace = get("aa-temporal").record(WHEEL, {"frames": 240, "n": 1}, grid=(20, 20),
+                                      step_cap=50)
+    assert trace.truncated
+    # frame 0 is reached (and perhaps frame 1 is made before the cap is noticed);
+    # before, all 240 frames were made before the first step
+    assert len(calls) <= 3
+
+
+def test_temporal_motion_blur_stops_at_the_cap_after_a_frame_or_two(monkeypatch):
+    calls = _count_instants(monkeypatch)
+    get("aa-temporal").record(WHEEL, {"frames": 240, "mode": "motion-blur",
+                                      "time_samples": 64, "n": 1}, grid=(20, 20), step_cap=20)
+    assert len(calls) <= 3 * 64
+
+
+def test_temporal_cancel_stops_between_frames(monkeypatch):
+    calls = _count_instants(monkeypatch)
+    monitor = RecordMonitor(every=1)
+    monitor.cancel()
+    with pytest.raises(Cancelled):
+        get("aa-temporal").record(WHEEL, {"frames": 240, "n": 1}, grid=(20, 20),
+                                  monitor=monitor)
+    assert len(calls) < 240
