@@ -235,3 +235,19 @@ def test_cleaning_up_follows_no_link_and_a_folder_in_the_way_stops_before_moving
     assert not (folder / "precious.txt").exists()
     assert sorted(p.name for p in folder.iterdir()) == [".rasterlab-frames-999999999-x",
                                                         "frame_0001.png"]
+
+
+def test_the_estimate_is_not_below_what_the_frames_take(tmp_path):
+    # A fill's frames grow and shrink as it goes: the first and the last
+    # frame alone are smaller than frames in the middle.
+    scene = Scene(algorithm="flood-fill-circle", points=[[10, 10]], options={"radius": 8},
+                  width=21, height=21)
+    settings = ex.ExportSettings(scale=8, fps=50, hold=0)
+    result = ex.export(scene, settings, frames_dir=tmp_path / "f", frames_limit=2 ** 40)
+    on_disk = sum(-(-p.stat().st_size // ex.BLOCK) * ex.BLOCK
+                  for p in (tmp_path / "f").glob("frame_*.png"))
+    renderer = ex.FrameRenderer(scene, settings)
+    steps = ex.frame_steps(scene, renderer.trace, renderer.settings)
+    assert len(steps) == result.frames > 100
+    with pytest.raises(ex.ExportError, match="more than the limit"):
+        ex.check_frames_size(renderer, steps, on_disk - 1)
