@@ -1,8 +1,11 @@
 """One bound for the step cap and one syntax for numbers on the command line."""
+import json
+
 import pytest
 
 from algorithms.registry import InputError, parse_number
 from algorithms.trace import MAX_STEP_CAP
+from app import cli
 from app.cli import main
 from app.gui import preferences
 
@@ -55,3 +58,18 @@ def test_the_command_line_refuses_other_digits(run_cli, argv):
     status, out, err = run_cli(*argv)
     assert (status, out) == (2, "")
     assert "is not a number" in err and len(err.splitlines()) == 1
+
+
+@pytest.mark.parametrize("extra", [["--json"], []])
+def test_pixels_are_printed_in_parts_and_read_the_same(run_cli, monkeypatch, extra):
+    # A full grid's pixels as one list of Python objects took gigabytes
+    # beyond the trace; in parts they print the same text.
+    argv = ["run", "flood-fill-circle", "--points", "20,20", "--set", "radius=9",
+            "--grid", "41,41", *extra]
+    whole = run_cli(*argv)
+    monkeypatch.setattr(cli.Rows, "PART", 7)
+    parts = run_cli(*argv)
+    assert parts == whole and whole[0] == 0
+    if extra:
+        result = json.loads(whole[1])
+        assert len(result["pixels"]) == len(result["values"]) > 7 * 3
