@@ -143,11 +143,15 @@ _CHECKERS = {"int": _check_number, "float": _check_number, "bool": _check_bool,
 
 
 def parse_number(text: str, what: str, integer: bool = False):
-    """Parse a finite number; whole numbers only when ``integer``."""
-    try:
-        value = float(text)
-    except ValueError:
-        raise InputError(f"{what}: {text!r} is not a number") from None
+    """Parse a finite number; whole numbers only when ``integer``.
+
+    One syntax everywhere: ASCII digits with an optional sign, point and
+    exponent (``-3``, ``2.5``, ``1e3``). float() alone would also take
+    Arabic-Indic or full-width digits and ``1_0``.
+    """
+    if not _NUMBER.fullmatch(text.strip(" \t\n\r\f\v")):
+        raise InputError(f"{what}: {text!r} is not a number")
+    value = float(text)
     if not math.isfinite(value):
         raise InputError(f"{what}: {text!r} is not a finite number")
     if integer:
@@ -155,6 +159,11 @@ def parse_number(text: str, what: str, integer: bool = False):
             raise InputError(f"{what}: {text!r} is not a whole number")
         return int(value)
     return value
+
+
+# inf and nan pass, to be refused as "not a finite number".
+_NUMBER = re.compile(r"[+-]?(?:(?:[0-9]+\.?[0-9]*|\.[0-9]+)(?:[eE][+-]?[0-9]+)?"
+                     r"|inf|infinity|nan)", re.IGNORECASE | re.ASCII)
 
 
 # Whole-number points (lines, circles, outlines) stay within +-2^30 px, so

@@ -205,31 +205,66 @@ def print_run(args, spec, trace, options) -> int:
     if trace.truncated:
         print(f"rasterlab: {trace.message}", file=sys.stderr)
     if args.json:
-        print(json.dumps(run_result(spec, trace, options), allow_nan=False))
+        write_json(sys.stdout, run_result(spec, trace, options))
     elif args.ascii:
         print(ascii_grid(trace))
     else:
-        print(summary(spec, trace))
+        write_summary(sys.stdout, spec, trace)
     return 0
 
 
 def run_result(spec, trace, options) -> dict:
-    """The JSON object of `run --json`."""
+    """The JSON object of `run --json`; its per-pixel lists are Rows, which
+    write_json prints in parts."""
     result = {
         "algorithm": spec.name,
         "grid": [trace.width, trace.height],
-        "pixels": trace.written_pixels().tolist(),
+        "pixels": Rows(trace.written_pixels(), lambda part: part.tolist()),
         "steps": len(trace),
         "final": _jsonable(trace.final_variables()),
         "options": _jsonable(spec.resolve(options)),
     }
     values = trace.pixel_values()
     if values is not None:
-        result["values"] = _pixel_values(trace.start.pixel_value, values)
+        name = trace.start.pixel_value
+        result["values"] = Rows(values, lambda part: _pixel_values(name, part))
     if trace.truncated:
         result["truncated"] = True
         result["message"] = trace.message
     return result
+
+
+class Rows:
+    """A per-pixel array that is printed a part at a time: as one list of
+    Python objects, a full grid's pixels took gigabytes beside the trace,
+    which the step cap bounds."""
+
+    PART = 1 << 16
+
+    def __init__(self, array, convert):
+        self.array, self.convert = array, convert
+
+    def tolist(self) -> list:
+        return self.convert(self.array)
+
+    def parts(self):
+        for start in range(0, len(self.array), self.PART):
+            yield self.convert(self.array[start:start + self.PART])
+
+
+def write_json(stream, result: dict) -> None:
+    """``print(json.dumps(result))``, byte for byte, with each Rows written
+    in parts instead of being made one list."""
+    rows = {key: value for key, value in result.items() if isinstance(value, Rows)}
+    text = json.dumps({key: (f"@@{key}@@" if key in rows else value)
+                       for key, value in result.items()}, allow_nan=False)
+    for key, value in rows.items():
+        head, _, text = text.partition(f'"@@{key}@@"')
+        stream.write(head + "[")
+        for n, part in enumerate(value.parts()):
+            stream.write((", " if n else "") + json.dumps(part, allow_nan=False)[1:-1])
+        stream.write("]")
+    stream.write(text + "\n")
 
 
 def _pixel_values(name: str, values) -> list:
@@ -265,15 +300,15 @@ def ascii_grid(trace) -> str:
     return "\n".join(rows)
 
 
-def summary(spec, trace) -> str:
-    pixels = trace.written_pixels().tolist()
+def write_summary(stream, spec, trace) -> None:
+    pixels = trace.written_pixels()
     final = ", ".join(f"{k}={registry.format_value(v)}" for k, v in trace.final_variables().items())
-    return "\n".join([
-        f"{spec.title} ({spec.name}) on a {trace.width}x{trace.height} grid: "
-        f"{len(pixels)} pixels written in {len(trace)} steps",
-        "pixels: " + " ".join(f"{x},{y}" for x, y in pixels),
-        f"final: {final}",
-    ])
+    stream.write(f"{spec.title} ({spec.name}) on a {trace.width}x{trace.height} grid: "
+                 f"{len(pixels)} pixels written in {len(trace)} steps\npixels:"
+                 + ("" if len(pixels) else " "))
+    for start in range(0, len(pixels), Rows.PART):  # in parts, as write_json
+        stream.write("".join(f" {x},{y}" for x, y in pixels[start:start + Rows.PART].tolist()))
+    stream.write(f"\nfinal: {final}\n")
 
 
 # ------------------------------------------------------------------- export

@@ -238,8 +238,7 @@ class CompareWindow(QMainWindow):
 
     def set_pair(self, a: int, b: int) -> None:
         """Which two panes the diff shows."""
-        count = len(self.panes)
-        self.pair = (min(max(a, 0), count - 1), min(max(b, 0), count - 1))
+        self.pair = compare.diff_pair(self.pair, a, b, len(self.panes))
         self._update_pair_boxes()
         self.show_frame()
 

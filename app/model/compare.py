@@ -412,6 +412,20 @@ def diff_runs(a: Run, b: Run, index_a: int, index_b: int) -> Diff | None:
                 a.value_kind, b.value_kind)
 
 
+def diff_pair(old: tuple, a: int, b: int, count: int) -> tuple[int, int]:
+    """The two panes the diff shows once a person picks ``a`` and ``b``,
+    each within 0 .. count-1. A pane is never diffed against itself: picking
+    for one side the pane the other side shows swaps the two."""
+    a, b = (min(max(k, 0), count - 1) for k in (a, b))
+    if a != b or count < 2:
+        return a, b
+    picked_a = a != old[0]
+    other = old[0] if picked_a else old[1]  # the pane the picked side showed
+    if other == a:
+        other = (a + 1) % count
+    return (a, other) if picked_a else (other, b)
+
+
 # Colours of the diff view, in DIFF_CLASSES order: two hues far apart for
 # the two runs, a quiet grey for agreement, a strong magenta for a value
 # that differs.

@@ -166,11 +166,15 @@ def test_two_to_four_panes_and_the_diff_pair(comparing):
         c.view.panes[0].header.remove.click()
     assert len(c.view.panes) == 2 and not c.view.panes[0].header.remove.isEnabled()
     assert sorted(c.pair) == [0, 1]
-    # The diff of a pane with itself is all agreement.
-    c.b_box.setCurrentIndex(c.pair[0])
-    c.b_box.activated.emit(c.pair[0])
-    counts = shown_counts(c)
-    assert counts["only A"] == counts["only B"] == counts["both, different value"] == 0
+    # A pane is never diffed against itself: picking A's pane for B swaps the two.
+    a, b = c.pair
+    c.b_box.setCurrentIndex(a)
+    c.b_box.activated.emit(a)
+    assert c.pair == (b, a)
+    assert (c.a_box.currentIndex(), c.b_box.currentIndex()) == (b, a)
+    c.a_box.setCurrentIndex(a)
+    c.a_box.activated.emit(a)
+    assert c.pair == (a, b)
 
 
 def test_the_panes_follow_the_main_window_points(window, comparing):
