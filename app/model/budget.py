@@ -131,8 +131,11 @@ def estimate_seconds(spec, points, options, grid, step_cap: int) -> float:
     if spec.name == "aa-temporal":
         instants = options["time_samples"] if options["mode"] == "motion-blur" else 1
         shapes = options["spokes"] if count == 1 else 1
-        # one frame's image: every sample of the grid at each instant, each shape
-        return 5e-8 * width * height * options["n"] ** 2 * instants * shapes
+        # the image is made in bands of rows between steps: one band's samples,
+        # at every instant, against every shape
+        row = width * options["n"] ** 2 * instants
+        band = max(row, min(SAMPLES_PER_BAND, row * height))
+        return 5e-8 * band * shapes
     if spec.name == "aa-supersample" and options.get("shape") == "polygon":
         # a step per sample, and each sample tests every edge in Python
         steps = min(int(step_cap), 2 * _box_pixels(points, grid) * options["n"] ** 2)

@@ -47,3 +47,22 @@ def test_temporal_cancel_stops_between_frames(monkeypatch):
         get("aa-temporal").record(WHEEL, {"frames": 240, "n": 1}, grid=(20, 20),
                                   monitor=monitor)
     assert len(calls) < 240
+
+
+def test_a_slow_motion_blur_frame_stops_at_the_cap_within_the_frame(monkeypatch):
+    from algorithms.antialias.shapes import Shapes
+    tested = []
+    real = Shapes.owners
+
+    def counted(self, sx, sy):
+        tested.append(sx.size)
+        return real(self, sx, sy)
+
+    monkeypatch.setattr(Shapes, "owners", counted)
+    options = {"frames": 2, "mode": "motion-blur", "time_samples": 64, "n": 8,
+               "radius": 50.0}
+    get("aa-temporal").record([(64.0, 64.0)], options, grid=(128, 128), step_cap=30)
+    whole_frame = 101 * 101 * 64 * 64  # the wheel's window, its samples, its instants
+    # the image is made band by band as the steps need it; before, the whole
+    # frame (and every other frame) was made before its first step
+    assert 0 < sum(tested) < whole_frame // 10

@@ -58,13 +58,19 @@ def test_a_huge_temporal_request_is_refused_without_allocating():
     assert peak < 1024 ** 2
 
 
-def test_a_slow_motion_blur_frame_is_refused_by_time():
+def test_a_motion_blur_band_too_slow_for_the_time_limit_is_refused():
     spec = get("aa-temporal")
     options = {"frames": 240, "n": 8, "mode": "motion-blur", "time_samples": 64,
                "radius": 2048, "spokes": 32}
     with pytest.raises(budget.BudgetError, match="cannot cut it short"):
         budget.check_budget(spec, [(2048.0, 2048.0)], options, (4096, 4096), 100,
-                            memory_limit=10 ** 12)
+                            memory_limit=10 ** 12, time_limit=10)
+
+
+def test_a_long_motion_blur_on_a_small_grid_is_allowed_as_the_cap_bounds_it():
+    # about 3 hours in all, but made band by band between steps
+    options = {"frames": 240, "n": 8, "mode": "motion-blur", "time_samples": 64}
+    budget.check_budget(get("aa-temporal"), [(64.0, 64.0)], options, (128, 128), 5_000_000)
 
 
 def test_a_many_vertex_tessellation_is_refused_up_front():
