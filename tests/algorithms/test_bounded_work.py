@@ -2,6 +2,7 @@
 import pytest
 
 import importlib
+
 from algorithms.registry import get
 from algorithms.trace import Cancelled, RecordMonitor
 
@@ -66,3 +67,27 @@ def test_a_slow_motion_blur_frame_stops_at_the_cap_within_the_frame(monkeypatch)
     # the image is made band by band as the steps need it; before, the whole
     # frame (and every other frame) was made before its first step
     assert 0 < sum(tested) < whole_frame // 10
+
+
+def test_the_simplicity_check_tests_pairs_as_the_exact_segment_test_does():
+    import numpy as np
+    from algorithms.polygons import tessellate as tess
+    rng = np.random.default_rng(7)
+    for _ in range(200):
+        p, q = (tuple(int(v) for v in rng.integers(0, 6, 2)) for _ in range(2))
+        others = [tuple(int(v) for v in rng.integers(0, 6, 2)) for _ in range(40)]
+        r, s = np.array(others[:20]), np.array(others[20:])
+        expected = [tess._segments_meet(p, q, tuple(a), tuple(b)) for a, b in zip(r, s)]
+        assert list(tess._meets(np.array(p), np.array(q), r, s)) == expected
+
+
+def test_a_many_vertex_polygon_is_checked_for_simplicity_quickly():
+    import math
+    import time
+    n = 3000
+    ring = [(round(2000 + 1900 * math.cos(2 * math.pi * k / n)),
+             round(2000 + 1900 * math.sin(2 * math.pi * k / n))) for k in range(n)]
+    started = time.perf_counter()
+    get("polygon-tessellate").record([ring], {}, grid=(4096, 4096), step_cap=50)
+    # about 70 s when every pair of edges was tested one by one; a generous bound
+    assert time.perf_counter() - started < 20
