@@ -84,11 +84,11 @@ def test_the_simplicity_check_tests_pairs_as_the_exact_segment_test_does():
 def test_a_many_vertex_polygon_is_checked_for_simplicity_quickly():
     import math
     import time
-    n = 2000
-    ring = [(500 + 400 * math.cos(2 * math.pi * k / n), 500 + 400 * math.sin(2 * math.pi * k / n))
-            for k in range(n)]
+    n = 6000
+    ring = [(2000 + 1900 * math.cos(2 * math.pi * k / n),
+             2000 + 1900 * math.sin(2 * math.pi * k / n)) for k in range(n)]
     started = time.perf_counter()
-    get("polygon-tessellate").record([ring], {}, grid=(1001, 1001), step_cap=50)
-    # about 30 s when every pair of edges was tested one by one (4,000 vertices:
-    # 121 s), now a fraction of a second; a generous bound
+    get("polygon-tessellate").record([ring], {}, grid=(4096, 4096), step_cap=50)
+    # about 19 s when every pair of edges was tested one by one (100,000
+    # vertices: hours), about 1.5 s now; a generous bound
     assert time.perf_counter() - started < 10
