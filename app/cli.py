@@ -48,7 +48,7 @@ def build_parser() -> Parser:
     run.add_argument("--grid", metavar="W,H",
                      help=f"grid size, at most {MAX_GRID},{MAX_GRID} (default: fits the points, "
                           f"at least {DEFAULT_GRID[0]},{DEFAULT_GRID[1]})")
-    run.add_argument("--memory-limit", default="2G", metavar="SIZE",
+    run.add_argument("--memory-limit", default=None, metavar="SIZE",
                      help="refuse a run whose estimated memory exceeds this (e.g. 512M, 4G; "
                           "default 2G)")
     run.add_argument("--step-cap", type=str, default=str(DEFAULT_STEP_CAP), metavar="N",
@@ -169,9 +169,15 @@ def command_run(args) -> int:
     spec.inputs.check(points)
     grid = fit_grid(spec.inputs.flat(points), args.grid, spec.inputs.integer)
     budget.check_budget(spec, points, options, grid, step_cap,
-                        memory_limit=budget.parse_size(args.memory_limit))
+                        memory_limit=_memory_limit(args))
     trace = spec.record(points, options, grid=grid, step_cap=step_cap)
     return print_run(args, spec, trace, options)
+
+
+def _memory_limit(args) -> int:
+    if args.memory_limit is None:
+        return budget.DEFAULT_MEMORY_LIMIT
+    return budget.parse_size(args.memory_limit)
 
 
 def _missing_algorithm(points) -> str:
@@ -195,7 +201,7 @@ def run_scene(args) -> int:
         raise InputError(str(error)) from None
     spec = scene.spec
     budget.check_budget(spec, scene.points, scene.options, (scene.width, scene.height), step_cap,
-                        memory_limit=budget.parse_size(args.memory_limit))
+                        memory_limit=_memory_limit(args))
     trace = spec.record(scene.points, scene.options, grid=(scene.width, scene.height),
                         step_cap=step_cap)
     return print_run(args, spec, trace, scene.options)

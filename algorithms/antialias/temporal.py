@@ -92,45 +92,63 @@ def time_samples(options, frame: int) -> list[float]:
     return [frame + shutter * (s + 0.5) / count for s in range(count)]
 
 
-# Samples tested at once: the rows of a frame are tested in bands of about
-# this many samples so that a large grid with n = 8 never needs gigabytes.
+# Samples tested at once: a frame's image is made in bands of rows of about
+# this many samples (over all its instants), so that a large grid with n = 8
+# never needs gigabytes and a run can stop between two bands.
 SAMPLES_PER_BAND = 1 << 20
+
+
+def _setup(points, options, grid):
+    options = {**{o.name: o.default for o in TEMPORAL_OPTIONS}, **options}
+    points = [tuple(map(float, p)) for p in points]
+    xs = np.arange(int(grid[0]), dtype=np.int64)
+    kx, ky, big = sample_strata("grid", options["n"], 0, 0, xs)
+    return options, points, (lattice(kx[0], big), lattice(ky[0], big))
+
+
+def frame_bands(points, options, grid, frame: int):
+    """Image ``frame`` of the animation as (first row, coverage rows) bands, top
+    to bottom, each made only when asked for."""
+    options, points, offsets = _setup(points, options, grid)
+    width, height = int(grid[0]), int(grid[1])
+    instants = time_samples(options, frame)
+    shapes = [_temporal_shapes(points, options, t) for t in instants]
+    per_row = max(1, width * len(offsets[0]) * len(instants))
+    band = max(1, SAMPLES_PER_BAND // per_row)
+    for top in range(0, height, band):
+        hits = np.zeros((min(band, height - top), width), np.int64)
+        for shape in shapes:
+            _add_hits(hits, top, shape, offsets, height)
+        yield top, hits / (len(instants) * options["n"] ** 2)
 
 
 def iter_temporal_frames(points, options, grid):
     """Image k of the animation, coverage (H, W) float64, for k = 0 .. frames - 1,
-    each computed only when asked for, so a step cap or a cancel stops the work."""
-    options = {**{o.name: o.default for o in TEMPORAL_OPTIONS}, **options}
-    points = [tuple(map(float, p)) for p in points]
-    width, height = int(grid[0]), int(grid[1])
-    n = options["n"]
-    xs = np.arange(width, dtype=np.int64)
-    kx, ky, big = sample_strata("grid", n, 0, 0, xs)
-    offsets = lattice(kx[0], big), lattice(ky[0], big)
-    for frame in range(options["frames"]):
-        instants = time_samples(options, frame)
-        hits = np.zeros((height, width), np.int64)
-        for t in instants:
-            _add_hits(hits, _temporal_shapes(points, options, t), offsets)
-        yield hits / (len(instants) * n * n)
+    each computed only when asked for."""
+    frames = {**{o.name: o.default for o in TEMPORAL_OPTIONS}, **options}["frames"]
+    for frame in range(frames):
+        image = np.zeros((int(grid[1]), int(grid[0])))
+        for top, rows in frame_bands(points, options, grid, frame):
+            image[top:top + len(rows)] = rows
+        yield image
 
 
-def _add_hits(hits: np.ndarray, shapes: Shapes, offsets) -> None:
-    """Add to each pixel of hits the number of its samples inside the shapes."""
-    height, width = hits.shape
+def _add_hits(hits: np.ndarray, top: int, shapes: Shapes, offsets, height: int) -> None:
+    """Add to hits (rows top .. top + len(hits) of the grid) the number of each
+    pixel's samples inside the shapes."""
+    width = hits.shape[1]
     x0, y0, x1, y1 = shapes.window((width, height))
+    y0, y1 = max(y0, top), min(y1, top + len(hits))
     if x1 <= x0 or y1 <= y0:
         return
     ox, oy = offsets
     cols = np.arange(x0, x1, dtype=np.int64)
-    band = max(1, SAMPLES_PER_BAND // ((x1 - x0) * len(ox)))
-    for top in range(y0, y1, band):
-        rows = np.arange(top, min(top + band, y1), dtype=np.int64)
-        sx = cols[None, :, None] * UNIT + ox[None, None, :]
-        sy = rows[:, None, None] * UNIT + oy[None, None, :]
-        sx, sy = np.broadcast_arrays(sx, sy)
-        inside = shapes.owners(sx, sy) >= 0
-        hits[rows[0]:rows[-1] + 1, x0:x1] += inside.sum(axis=2)
+    rows = np.arange(y0, y1, dtype=np.int64)
+    sx = cols[None, :, None] * UNIT + ox[None, None, :]
+    sy = rows[:, None, None] * UNIT + oy[None, None, :]
+    sx, sy = np.broadcast_arrays(sx, sy)
+    inside = shapes.owners(sx, sy) >= 0
+    hits[y0 - top:y1 - top, x0:x1] += inside.sum(axis=2)
 
 
 def temporal_frames(points, options, grid) -> list[np.ndarray]:
@@ -188,21 +206,26 @@ def temporal(points, options, grid):
                  apparent}
     yield Start(line=at["setup"], values=("frame", "coverage", "rgb"), constants=constants,
                 pixel_value="coverage", color_value="rgb", replaces=True)
-    # Each frame's image is made when the run reaches it: the pixels written are
-    # those that show something in this frame or the last, in row order.
+    # Each frame's image is made band by band when the run reaches it, so the
+    # step cap and a cancel stop the work: the pixels written are those that
+    # show something in this frame or the last, in row order.
     previous = np.zeros((int(grid[1]), int(grid[0])))
     ink = unpack(INK)
-    for k, image in enumerate(iter_temporal_frames(points, options, grid)):
+    for k in range(options["frames"]):
         instants = time_samples(options, k)
         values = {"frame": k, "t": f"{instants[0]:g} .. {instants[-1]:g}" if len(instants) > 1
                   else instants[0]}
         if options["motion"] == "spin":
             values["angle"] = options["speed"] * instants[0] % 360
         yield Vars(line=at["frames"], values=values)
-        for y, x in np.argwhere((image > 0) | (previous > 0)):
-            value = float(image[y, x])
-            yield (at["plot_pixels"], int(x), int(y), float(k), value,
-                   float(ink_blend(ink, value)))
+        image = np.zeros_like(previous)
+        for top, rows in frame_bands(points, options, grid, k):
+            image[top:top + len(rows)] = rows
+            shown = (rows > 0) | (previous[top:top + len(rows)] > 0)
+            for y, x in np.argwhere(shown):
+                value = float(rows[y, x])
+                yield (at["plot_pixels"], int(x), int(y) + top, float(k), value,
+                       float(ink_blend(ink, value)))
         previous = image
     yield Vars(line=at["done"], values={"frames": options["frames"], "apparent speed": apparent})
 

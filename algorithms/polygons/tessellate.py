@@ -1,6 +1,8 @@
 """polygon-tessellate: ear clipping into triangles, each filled by edge functions."""
 from __future__ import annotations
 
+import numpy as np
+
 from ..code import Code, listing
 from ..registry import AlgorithmSpec, InputError, Option, register
 from ..steps import NO_PIXEL, PER_PIXEL, PER_ROW, PLOT, VISIT, Note, Span, Start, Table, Vars
@@ -31,16 +33,51 @@ def simplicity_problem(contour) -> str:
                 (here[0] - before[0]) * (after[0] - here[0])
                 + (here[1] - before[1]) * (after[1] - here[1])) < 0:
             return f"it folds back on itself at P{k + 1} (two edges overlap)"
-    for a in range(n):
-        for b in range(a + 2, n):
-            if a == 0 and b == n - 1:
-                continue  # neighbours through the closing edge
-            p, q = contour[a], contour[(a + 1) % n]
-            r, s = contour[b], contour[(b + 1) % n]
-            if _segments_meet(p, q, r, s):
-                return (f"edges P{a + 1}P{(a + 1) % n + 1} and P{b + 1}P{(b + 1) % n + 1} "
-                        "cross or touch")
+    # Every pair of edges that are not neighbours, tested one edge against all
+    # later ones at once: the same pairs in the same order as a double loop,
+    # in whole numbers (exact while the products fit in 64 bits).
+    points = np.array(contour, dtype=object if _too_large(contour) else np.int64)
+    ends = np.roll(points, -1, axis=0)
+    for a in range(n - 2):
+        meets = _meets(points[a], ends[a], points[a + 2:], ends[a + 2:])
+        if a == 0:
+            meets[-1] = False  # neighbours through the closing edge
+        hits = np.flatnonzero(meets)
+        if len(hits):
+            b = a + 2 + int(hits[0])
+            return (f"edges P{a + 1}P{(a + 1) % n + 1} and P{b + 1}P{(b + 1) % n + 1} "
+                    "cross or touch")
     return ""
+
+
+def _too_large(contour) -> bool:
+    # cross products of coordinates below 2**30 stay below 2**62
+    return max((abs(v) for point in contour for v in point), default=0) >= 1 << 30
+
+
+def _cross_many(o, a, b):
+    """cross(o, a, b) with any of o, a, b an array of points."""
+    return ((a[..., 0] - o[..., 0]) * (b[..., 1] - o[..., 1])
+            - (a[..., 1] - o[..., 1]) * (b[..., 0] - o[..., 0]))
+
+
+def _on_many(a, b, c):
+    """c on the closed segment ab, given that they are collinear (arrays allowed)."""
+    return ((np.minimum(a[..., 0], b[..., 0]) <= c[..., 0])
+            & (c[..., 0] <= np.maximum(a[..., 0], b[..., 0]))
+            & (np.minimum(a[..., 1], b[..., 1]) <= c[..., 1])
+            & (c[..., 1] <= np.maximum(a[..., 1], b[..., 1])))
+
+
+def _meets(p, q, r, s):
+    """_segments_meet(p, q, r[i], s[i]) for every i, as a bool array."""
+    d1, d2 = _cross_many(p, q, r), _cross_many(p, q, s)
+    d3, d4 = _cross_many(r, s, p), _cross_many(r, s, q)
+    proper = (((d1 > 0) & (d2 < 0)) | ((d1 < 0) & (d2 > 0))) \
+        & (((d3 > 0) & (d4 < 0)) | ((d3 < 0) & (d4 > 0)))
+    touch = (((d1 == 0) & _on_many(p, q, r)) | ((d2 == 0) & _on_many(p, q, s))
+             | ((d3 == 0) & _on_many(r, s, p)) | ((d4 == 0) & _on_many(r, s, q)))
+    return np.asarray(proper | touch, dtype=bool)
 
 
 def _in_closed_triangle(a, b, c, p) -> bool:

@@ -71,9 +71,13 @@ def _edges(spec, points):
             yield p, contour[(k + 1) % len(contour)]
 
 
-def _rows_crossed(spec, points) -> int:
-    """Scan lines the edges cross, summed: what a scanline table holds."""
-    return sum(abs(int(q[1]) - int(p[1])) + 1 for p, q in _edges(spec, points))
+def _box_pixels(points, grid) -> int:
+    """Pixels of the grid the points' bounding box covers."""
+    xs = [float(p[0]) for p in points] or [0.0]
+    ys = [float(p[1]) for p in points] or [0.0]
+    width = min(int(grid[0]), math.ceil(max(xs))) - max(0, math.floor(min(xs))) + 1
+    height = min(int(grid[1]), math.ceil(max(ys))) - max(0, math.floor(min(ys))) + 1
+    return max(0, width) * max(0, height)
 
 
 def _outline_length(spec, points) -> int:
@@ -110,8 +114,6 @@ def estimate_memory(spec, points, options, grid, step_cap: int) -> int:
         # pixel list, and one band of samples (coordinates, owners, tests)
         band = min(SAMPLES_PER_BAND, pixels * options["n"] ** 2)
         total += 72 * pixels + 100 * band
-    elif spec.name == "polygon-scanline":
-        total += 64 * _rows_crossed(spec, points)
     elif spec.name == "flood-fill":
         total += OBJECT_BYTES * _outline_length(spec, points)
     elif spec.name == "flood-fill-circle":
@@ -125,19 +127,25 @@ def estimate_seconds(spec, points, options, grid, step_cap: int) -> float:
     options = _options(spec, options)
     count = len(spec.inputs.flat(points))
     if spec.name == "polygon-tessellate":
-        return 1e-5 * count * count  # the simplicity check tests every pair of edges
+        # the simplicity check tests every pair of edges (in numpy, one edge
+        # against the rest at a time)
+        return 5e-8 * count * count + 1e-4 * count
     if spec.name == "aa-temporal":
         instants = options["time_samples"] if options["mode"] == "motion-blur" else 1
         shapes = options["spokes"] if count == 1 else 1
-        # one frame's image: every sample of the grid at each instant, each shape
-        return 5e-8 * width * height * options["n"] ** 2 * instants * shapes
+        # the image is made in bands of rows between steps: one band's samples,
+        # at every instant, against every shape
+        row = width * options["n"] ** 2 * instants
+        band = max(row, min(SAMPLES_PER_BAND, row * height))
+        return 5e-8 * band * shapes
     if spec.name == "aa-supersample" and options.get("shape") == "polygon":
-        samples = options["n"] ** 2 * min(int(step_cap), width * height)
-        return 5e-7 * samples * count  # each sample tests every edge, in Python
+        # a step per sample, and each sample tests every edge in Python
+        steps = min(int(step_cap), 2 * _box_pixels(points, grid) * options["n"] ** 2)
+        return 1e-5 * steps * count
     if spec.name == "polygon-scanline":
-        return 2e-7 * _rows_crossed(spec, points)
+        return 1e-4 * count  # the edge table, in exact fractions
     if spec.name == "flood-fill":
-        return 3e-6 * _outline_length(spec, points)
+        return 1.2e-5 * _outline_length(spec, points)  # the outline, pixel by pixel
     return 0.0
 
 
@@ -152,9 +160,9 @@ def check_budget(spec, points, options, grid, step_cap: int,
                           "use a smaller grid, fewer points or samples, or a lower step cap")
     seconds = estimate_seconds(spec, points, options, grid, step_cap)
     if seconds > time_limit:
-        raise BudgetError(f"{spec.name} would work about {_duration(seconds)} without a step "
-                          f"the step cap or a cancel could stop at (limit "
-                          f"{_duration(time_limit)}); use fewer points, samples or a smaller grid")
+        raise BudgetError(f"{spec.name} would work about {_duration(seconds)} where the step "
+                          f"cap and a cancel cannot cut it short (limit {_duration(time_limit)}); "
+                          "use fewer points or samples, a smaller grid or a lower step cap")
 
 
 def _size(count: float) -> str:

@@ -58,13 +58,19 @@ def test_a_huge_temporal_request_is_refused_without_allocating():
     assert peak < 1024 ** 2
 
 
-def test_a_slow_motion_blur_frame_is_refused_by_time():
+def test_a_motion_blur_band_too_slow_for_the_time_limit_is_refused():
     spec = get("aa-temporal")
     options = {"frames": 240, "n": 8, "mode": "motion-blur", "time_samples": 64,
                "radius": 2048, "spokes": 32}
-    with pytest.raises(budget.BudgetError, match="step cap or a cancel"):
+    with pytest.raises(budget.BudgetError, match="cannot cut it short"):
         budget.check_budget(spec, [(2048.0, 2048.0)], options, (4096, 4096), 100,
-                            memory_limit=10 ** 12)
+                            memory_limit=10 ** 12, time_limit=10)
+
+
+def test_a_long_motion_blur_on_a_small_grid_is_allowed_as_the_cap_bounds_it():
+    # about 3 hours in all, but made band by band between steps
+    options = {"frames": 240, "n": 8, "mode": "motion-blur", "time_samples": 64}
+    budget.check_budget(get("aa-temporal"), [(64.0, 64.0)], options, (128, 128), 5_000_000)
 
 
 def test_a_many_vertex_tessellation_is_refused_up_front():
@@ -111,3 +117,32 @@ def test_memory_limit_on_the_command_line(run_cli):
 def test_a_scene_file_is_held_to_the_budget_too(run_cli):
     status, _, err = run_cli("run", "--scene", SCENES[0], "--memory-limit", "1K")
     assert status == 2 and "memory" in err
+
+
+@pytest.mark.parametrize("path", SCENES, ids=lambda p: p.stem)
+def test_every_shipped_scene_fits_the_default_budget(path):
+    scene = scenes.load(path)
+    budget.check_budget(scene.spec, scene.points, scene.options, (scene.width, scene.height),
+                        5_000_000)
+
+
+def _zigzag(vertices: int) -> list:
+    """A polygon whose edges each run the whole height of a 4096 grid."""
+    return [(4000 * k // vertices, 4000 * (k % 2)) for k in range(vertices)] + [(4000, 4050),
+                                                                               (0, 4050)]
+
+
+def test_a_flood_fill_whose_outline_alone_takes_minutes_is_refused(run_cli):
+    # 4,000 edges of 4,000 pixels: the outline is drawn pixel by pixel before the
+    # first step (about 140 s and 2.3 GB before it was refused)
+    args = [f"{x},{y}" for x, y in _zigzag(4000)]
+    status, out, err = run_cli("run", "flood-fill", "--points", *args, "--grid", "4096,4096",
+                               "--step-cap", "100")
+    assert status == 2 and out == "" and err.count("\n") == 1
+
+
+def test_a_polygon_supersample_with_slow_steps_is_refused():
+    spec = get("aa-supersample")
+    points = [(float(x), float(y)) for x, y in _zigzag(2000)]
+    with pytest.raises(budget.BudgetError, match="cannot cut it short"):
+        budget.check_budget(spec, points, {"shape": "polygon"}, (4096, 4096), 5_000_000)
