@@ -262,6 +262,13 @@ class FileActions(QObject):
             QMessageBox.warning(self.window, "Save scene",
                                 "Place all the points first: a scene is saved with a full input.")
             return False
+        if self._opening is not None:
+            # The scene is the opened file's while the name is still the
+            # previous file's: saving now would put one over the other.
+            QMessageBox.information(self.window, "Save scene",
+                                    f"{self._opening[0].name} is still being opened: save when "
+                                    "its run is recorded, or cancel it (Esc) first.")
+            return False
         try:
             scenes.save(self.current_scene(), path)
         except (SceneError, ValueError) as error:
