@@ -20,7 +20,7 @@ from app.model import scene as scenes
 from app.model.scene import Scene
 
 SEEDS = tuple(int(s) for s in os.environ.get("RASTERLAB_MONKEY_SEEDS", "1,2").split(","))
-EVENTS = int(os.environ.get("RASTERLAB_MONKEY_FILE_EVENTS", "150"))  # per seed
+EVENTS = int(os.environ.get("RASTERLAB_MONKEY_FILE_EVENTS", "100"))  # per seed
 
 SCENES = {
     "line.json": Scene(algorithm="line-bresenham", points=[[1, 2], [20, 9]], width=24,
