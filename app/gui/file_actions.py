@@ -60,7 +60,7 @@ class FileActions(QObject):
         # Bookmarks made before the file actions came keep their place.
         self.bookmarks: list = [dict(b) for b in window.bookmarks]
         self.export_controller: ExportController | None = None
-        # (path, scene, what to put back) of a file whose run still records.
+        # (path, what to put back) of a file whose run still records.
         self._opening: tuple | None = None
         self._build_menu()
 
