@@ -60,7 +60,7 @@ class FileActions(QObject):
         # Bookmarks made before the file actions came keep their place.
         self.bookmarks: list = [dict(b) for b in window.bookmarks]
         self.export_controller: ExportController | None = None
-        # (path, scene, what to put back) of a file whose run still records.
+        # (path, what to put back) of a file whose run still records.
         self._opening: tuple | None = None
         self._build_menu()
 
@@ -261,6 +261,13 @@ class FileActions(QObject):
         if self.window.player.trace is None:
             QMessageBox.warning(self.window, "Save scene",
                                 "Place all the points first: a scene is saved with a full input.")
+            return False
+        if self._opening is not None:
+            # The scene is the opened file's while the name is still the
+            # previous file's: saving now would put one over the other.
+            QMessageBox.information(self.window, "Save scene",
+                                    f"{self._opening[0].name} is still being opened: save when "
+                                    "its run is recorded, or cancel it (Esc) first.")
             return False
         try:
             scenes.save(self.current_scene(), path)

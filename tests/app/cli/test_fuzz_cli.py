@@ -297,7 +297,7 @@ def no_window():
 def test_fuzz_run_argv():
     counter = Counter()
 
-    @fuzz_settings(2000)
+    @fuzz_settings(1000)
     @given(run_argv())
     def fuzz(argv):
         counter.add(check_run(argv))
@@ -363,3 +363,40 @@ def test_found_inputs_end_with_one_line(argv, words):
     assert status == 2 and out == ""
     assert err.startswith("rasterlab: ") and len(err.splitlines()) == 1, err
     assert words in err
+
+
+# ------------------------------------------------------------ the long run
+def tally(argv, counts: dict) -> None:
+    """Run one argv and count how it ended: by exit status, or as a
+    traceback (an exception out of main, or "Traceback" on stderr)."""
+    try:
+        status, _out, err = call(argv)
+    except Exception as error:  # noqa: BLE001 - counted, and the test fails on it
+        counts.setdefault("tracebacks", []).append((argv, repr(error)))
+        return
+    if "Traceback" in err:
+        counts.setdefault("tracebacks", []).append((argv, err[-300:]))
+    counts[status] = counts.get(status, 0) + 1
+
+
+@pytest.mark.slow
+def test_fuzz_ten_thousand_command_lines(capsys):
+    """10,000 command lines, structured and raw: every one ends with exit
+    status 0 or 2 and none with a traceback. Prints the figures."""
+    counts: dict = {}
+
+    @fuzz_settings(10_000)
+    @given(st.one_of(run_argv(), run_argv(), raw_argv()))
+    def fuzz(argv):
+        tally(argv, counts)
+
+    with no_window():
+        fuzz()
+    tracebacks = counts.pop("tracebacks", [])
+    tried = sum(counts.values()) + len(tracebacks)
+    with capsys.disabled():
+        codes = ", ".join(f"exit {code}: {n}" for code, n in sorted(counts.items()))
+        print(f"\ncli fuzz: {tried} inputs tried ({codes}); tracebacks: {len(tracebacks)}")
+    assert tried >= 10_000
+    assert not tracebacks, tracebacks[:3]
+    assert set(counts) <= {0, 2}, counts

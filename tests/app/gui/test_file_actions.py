@@ -438,3 +438,17 @@ def test_an_open_recorded_in_the_background_is_opened_when_done(qtbot, held):
     window.recovery.check()
     assert not window.recovery.dirty and window.windowTitle().startswith("big.json")
     assert window.player.session.scene.origin == "top-left" and window.grid.y_down
+
+
+def test_saving_while_an_open_records_is_refused(qtbot, held, messages):
+    # The scene is already the opened file's, the name still the previous
+    # file's: a save then wrote big.json's scene into a.json.
+    window, small, big, gate, _then = held
+    saved_small = small.read_bytes()
+    assert window.file_actions.open_path(big) and window.player.recording
+    assert not window.file_actions.save()
+    assert small.read_bytes() == saved_small
+    assert messages[-1][0] == "information" and "big.json" in messages[-1][2]
+    with qtbot.waitSignal(window.player.recordingFinished, timeout=10_000):
+        window.player.cancel_recording()
+    gate.set()

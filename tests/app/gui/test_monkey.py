@@ -18,7 +18,7 @@ from app.model import scene as scenes
 from app.gui.recovery import content
 
 # A longer hunt: RASTERLAB_MONKEY_SEEDS=4,5,6,7 RASTERLAB_MONKEY_ACTIONS=40
-SEEDS = tuple(int(s) for s in os.environ.get("RASTERLAB_MONKEY_SEEDS", "1,2,3").split(","))
+SEEDS = tuple(int(s) for s in os.environ.get("RASTERLAB_MONKEY_SEEDS", "1,2,3,4,5,6").split(","))
 ACTIONS = int(os.environ.get("RASTERLAB_MONKEY_ACTIONS", "10"))  # per algorithm and seed
 LEFT = Qt.MouseButton.LeftButton
 KEYS = [  # (key, modifiers): only keys that never open a dialog

@@ -238,7 +238,7 @@ def test_fuzz_load_arbitrary_bytes(tmp_path):
 def test_fuzz_parse_text(tmp_path):
     counter = Counter()
 
-    @fuzz_settings(800)
+    @fuzz_settings(500)
     @given(ODD_TEXTS, FILE_NAMES)
     def fuzz(text, name):
         try:
@@ -262,7 +262,7 @@ def test_fuzz_parse_text(tmp_path):
 def test_fuzz_load_mutated_scenes(tmp_path):
     counter = Counter()
 
-    @fuzz_settings(1500)
+    @fuzz_settings(1000)
     @given(mutated_scene_texts())
     def fuzz(text):
         counter.add(check_loaded(tmp_path, write(tmp_path, "mutated.json", text)))
@@ -517,3 +517,38 @@ def test_found_save_failures(tmp_path, failing, error):
     assert path.read_bytes() == before
     assert [p.name for p in tmp_path.iterdir()] == ["keep.json"]
     assert open_in(tmp_path) == []
+
+
+@pytest.mark.slow
+def test_fuzz_ten_thousand_scene_files(tmp_path, capsys):
+    """10,000 scene files (mutated, valid, odd text, bytes) through `run
+    --scene`: every one ends with exit status 0 or 2 and none with a
+    traceback. Prints the figures."""
+    counts: dict = {}
+    tracebacks = []
+
+    @fuzz_settings(10_000)
+    @given(st.one_of(mutated_scene_texts(), valid_scenes().map(lambda s: json.dumps(s.to_json())),
+                     ODD_TEXTS, st.binary(max_size=200)),
+           st.sampled_from([[], ["--json"], ["--ascii"], ["--set", "radius=3"]]))
+    def fuzz(content, extra):
+        path = write(tmp_path, "run.json", content)
+        try:
+            status, out, err = run_scene(path, extra)
+        except Exception as error:  # noqa: BLE001 - counted, and the test fails on it
+            tracebacks.append(repr(error))
+            return
+        if "Traceback" in err or status not in (0, 2) or (
+                status == 2 and len(err.splitlines()) != 1):
+            tracebacks.append(err[-300:])
+        counts[status] = counts.get(status, 0) + 1
+
+    fuzz()
+    tried = sum(counts.values()) + len(tracebacks)
+    with capsys.disabled():
+        codes = ", ".join(f"exit {code}: {n}" for code, n in sorted(counts.items()))
+        print(f"\nscene file fuzz: {tried} inputs tried ({codes}); "
+              f"tracebacks or bad endings: {len(tracebacks)}")
+    assert tried >= 10_000
+    assert not tracebacks, tracebacks[:3]
+    assert set(counts) <= {0, 2}, counts
