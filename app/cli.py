@@ -355,6 +355,11 @@ def add_export_command(commands) -> None:
     export.add_argument("--no-primitive", action="store_true", help="no ideal primitive")
     export.add_argument("--no-highlight", action="store_true",
                         help="no outlines on the step's pixel and the candidates")
+    export.add_argument("--memory-limit", metavar="SIZE",
+                        help="memory the run may need, e.g. 512M or 4G (default 2G); a larger "
+                             "request is refused before it starts")
+    export.add_argument("--frames-limit", metavar="SIZE",
+                        help="disk space the PNG frames may take (default 1G)")
 
 
 def command_export(args) -> int:
@@ -381,14 +386,16 @@ def command_export(args) -> int:
         first=args.first, last=args.last, fps=fps, hold=hold, scale=scale,
         grid_lines=not args.no_grid, primitive=not args.no_primitive,
         highlight=not args.no_highlight, caption=args.caption, panel=args.panel,
-        theme=args.theme, loop=not args.once, per=args.per)
+        theme=args.theme, loop=not args.once, per=args.per, memory_limit=_memory_limit(args))
+    frames_limit = (exporting.MAX_FRAMES_BYTES if args.frames_limit is None
+                    else budget.parse_size(args.frames_limit, "--frames-limit"))
     bar = _ProgressBar(sys.stderr)
 
     def work():
         return exporting.export(scene, settings, gif=args.gif,
                                 frames_dir=args.frames_dir,
                                 progress=bar.show if bar.active else None,
-                                names=("--from", "--to"))
+                                names=("--from", "--to"), frames_limit=frames_limit)
     result = _with_progress(bar, work, exporting.ExportError,
                             "export interrupted; nothing was written")
     if result is None:

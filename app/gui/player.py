@@ -97,6 +97,7 @@ class Player(QObject):
     trace_spec = _forward("trace_spec")
     recording = _forward("recording")
     step_cap = _forward("step_cap", settable=True)
+    memory_limit = _forward("memory_limit", settable=True)
     max_grid = _forward("max_grid", settable=True)
     sync_wait = _forward("sync_wait", settable=True)
     stepper = _forward("stepper", settable=True)

@@ -28,6 +28,7 @@ from PySide6.QtWidgets import (QApplication, QCheckBox, QColorDialog, QComboBox,
 from algorithms.raster import MAX_GRID
 from algorithms.registry import InputError
 from algorithms.trace import DEFAULT_STEP_CAP, MAX_STEP_CAP
+from app.model.budget import DEFAULT_MEMORY_LIMIT
 from widgets.transport import SPEED_MAX, SPEED_MIN
 
 from app.gui.appdata import open_settings
@@ -35,6 +36,8 @@ from app.render.compose import DARK_PALETTE, PALETTE
 
 THEMES = ("light", "dark")
 STEP_CAP_RANGE = (1_000, MAX_STEP_CAP)
+MB = 1024 ** 2
+MEMORY_MB_RANGE = (64, 1024 * 1024)  # what a run may need, in MiB
 MIN_GRID = 16
 
 BASE_PALETTES = {"light": PALETTE, "dark": DARK_PALETTE}
@@ -114,6 +117,7 @@ SETTINGS = {
     "reopen_last": Setting("defaults/reopen_last_scene", False, _as_bool),
     "step_cap": Setting("limits/step_cap", DEFAULT_STEP_CAP, _int_in(*STEP_CAP_RANGE)),
     "max_grid": Setting("limits/max_grid", MAX_GRID, _int_in(MIN_GRID, MAX_GRID)),
+    "memory_mb": Setting("limits/memory_mb", DEFAULT_MEMORY_LIMIT // MB, _int_in(*MEMORY_MB_RANGE)),
 }
 
 
@@ -274,6 +278,7 @@ class PreferencesController(QObject):
         if first or values["speed"] != old.get("speed"):
             window.transport.set_speed(values["speed"])
         self._apply_limits(values["step_cap"], values["max_grid"])
+        window.player.memory_limit = values["memory_mb"] * MB
         window.show_frame()
 
     def _apply_limits(self, step_cap: int, max_grid: int) -> None:
@@ -445,6 +450,14 @@ class PreferencesDialog(QDialog):
         self.max_grid.setToolTip(f"The largest grid width and height accepted ({MIN_GRID} to "
                                  f"{MAX_GRID})")
         form.addRow("Maximum grid size", self.max_grid)
+        self.memory_mb = QSpinBox(group)
+        self.memory_mb.setRange(*MEMORY_MB_RANGE)
+        self.memory_mb.setSingleStep(512)
+        self.memory_mb.setGroupSeparatorShown(True)
+        self.memory_mb.setSuffix(" MiB")
+        self.memory_mb.setToolTip("A run whose estimated memory is larger is refused before it "
+                                  "starts, and the scene stays as it was")
+        form.addRow("Memory for a run", self.memory_mb)
         return group
 
     # ---------------------------------------------------------- values
@@ -457,6 +470,7 @@ class PreferencesDialog(QDialog):
         self.reopen_last.setChecked(values["reopen_last"])
         self.step_cap.setValue(values["step_cap"])
         self.max_grid.setValue(values["max_grid"])
+        self.memory_mb.setValue(values["memory_mb"])
         self._show_colors()
 
     def values(self) -> dict:
@@ -465,6 +479,7 @@ class PreferencesDialog(QDialog):
                 "origin": "top-left" if self.origin.currentIndex() == 1 else "bottom-left",
                 "speed": self.speed.value(), "reopen_last": self.reopen_last.isChecked(),
                 "step_cap": self.step_cap.value(), "max_grid": self.max_grid.value(),
+                "memory_mb": self.memory_mb.value(),
                 "colors": {theme: dict(colors) for theme, colors in self._colors.items()}}
 
     def set_color(self, name: str, color: str) -> None:

@@ -58,6 +58,7 @@ from algorithms.registry import InputError
 from algorithms.trace import DEFAULT_STEP_CAP, Cancelled, FrameState, Trace
 
 from app.model import drawing
+from app.model.budget import DEFAULT_MEMORY_LIMIT, check_budget
 from app.model.history import EditHistory
 from app.model.examples import default_scene
 from app.model.inputs import (clamp, clean_breaks, complete, contour_sizes, flatten,
@@ -114,6 +115,7 @@ class Session:
     def __init__(self, step_cap: int = DEFAULT_STEP_CAP, post=None):
         self.sync_wait = sync_wait()
         self.step_cap = step_cap
+        self.memory_limit = DEFAULT_MEMORY_LIMIT  # what a run may need (app/model/budget.py)
         # The largest grid side accepted (a preference, at most MAX_GRID).
         self.max_grid = MAX_GRID
         self.scene: Scene | None = None  # None until the first set_scene
@@ -449,6 +451,7 @@ class Session:
         """Record ``spec`` on runnable ``points``; any failure of the run
         becomes an InputError."""
         try:
+            check_budget(spec, points, options, grid, self.step_cap, self.memory_limit)
             trace = spec.record(points, options, grid, step_cap=self.step_cap, monitor=monitor)
         except (InputError, Cancelled):
             raise

@@ -69,7 +69,8 @@ class FrameRenderer:
                  differences: np.ndarray | None = None, incremental: bool = True):
         self.scene = scene
         self.spec = registry.get(scene.algorithm)
-        self.trace = trace = record(scene) if trace is None else trace
+        self.trace = trace = record(scene, memory_limit=settings.memory_limit) if trace is None \
+            else trace
         self.differences = differences
         self.y_down = scene.origin == "top-left"
         self.settings = settings = settings.for_grid(trace.width, trace.height)
@@ -258,7 +259,7 @@ def export(scene, settings: ExportSettings = ExportSettings(), gif=None, frames_
     """
     if gif is None and frames_dir is None and not writers:
         raise ExportError("nothing to write: give a GIF file, a folder for frames, or both")
-    trace = record(scene) if trace is None else trace
+    trace = record(scene, memory_limit=settings.memory_limit) if trace is None else trace
     settings = settings.for_grid(trace.width, trace.height)
     steps = frame_steps(scene, trace, settings, names)
     renderer = FrameRenderer(scene, settings, trace, differences)

@@ -21,6 +21,7 @@ from algorithms.antialias import animation_frame_steps
 from algorithms.registry import InputError
 from algorithms.trace import DEFAULT_STEP_CAP
 
+from app.model.budget import DEFAULT_MEMORY_LIMIT, check_budget
 from app.model.scene import one_line
 from app.render.palette import THEMES
 
@@ -66,6 +67,7 @@ class ExportSettings:
     theme: str = "light"
     loop: bool = True        # False: play once
     per: str = "auto"        # one of PER
+    memory_limit: int = DEFAULT_MEMORY_LIMIT  # bytes the run may need (app/model/budget.py)
 
     def checked(self) -> "ExportSettings":
         fps = _real(self.fps, "frames per second")
@@ -121,10 +123,13 @@ def frame_durations(count: int, fps: float, hold: float = 0.0) -> list[int]:
 
 
 # ------------------------------------------------------------------ steps
-def record(scene, step_cap: int = DEFAULT_STEP_CAP):
-    """The scene's run, recorded: the trace an export draws."""
+def record(scene, step_cap: int = DEFAULT_STEP_CAP, memory_limit: int = DEFAULT_MEMORY_LIMIT):
+    """The scene's run, recorded: the trace an export draws. A run over the
+    memory or time budget is refused before it starts."""
     spec = registry.get(scene.algorithm)
     try:
+        check_budget(spec, scene.points, scene.options, (scene.width, scene.height), step_cap,
+                     memory_limit=memory_limit)
         return spec.record(scene.points, scene.options, grid=(scene.width, scene.height),
                            step_cap=step_cap)
     except InputError as error:

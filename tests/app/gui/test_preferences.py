@@ -57,7 +57,7 @@ def rgb(color: str) -> list[int]:
 
 
 CHOSEN = {"theme": "dark", "grid_lines": False, "origin": "top-left", "speed": 37,
-          "reopen_last": True, "step_cap": 123_456, "max_grid": 300}
+          "reopen_last": True, "step_cap": 123_456, "max_grid": 300, "memory_mb": 1536}
 INK, CURRENT, CANDIDATE, GRID = "#12ab34", "#fe0102", "#0a0b0c", "#777778"
 
 
@@ -71,11 +71,13 @@ def test_preferences_persist_across_a_restart(qtbot, settings_file):
     dialog.reopen_last.setChecked(True)
     dialog.step_cap.setValue(123_456)
     dialog.max_grid.setValue(300)
+    dialog.memory_mb.setValue(1536)
     for name, color in (("ink", INK), ("current", CURRENT), ("candidate", CANDIDATE),
                         ("grid", GRID)):
         dialog.set_color(name, color)
     dialog.button_box.button(dialog.button_box.StandardButton.Ok).click()
     assert first.player.step_cap == 123_456  # applied at once in the open window
+    assert first.player.memory_limit == 1536 * 1024 ** 2
     assert first.grid.y_down
     first.close()
 
@@ -165,6 +167,16 @@ def test_reaching_the_step_cap_names_the_setting(qtbot, settings_file):
     assert trace.truncated and len(trace) == 1000
     text = window.message.text()
     assert "1,000" in text and '"Step cap"' in text and "Preferences" in text
+
+
+def test_a_run_over_the_memory_setting_is_refused_and_the_scene_kept(qtbot, settings_file):
+    Preferences().set("memory_mb", 64)
+    window = open_window(qtbot)
+    assert window.player.memory_limit == 64 * 1024 ** 2
+    before = window.player.scene
+    window.set_grid(4096, 4096)  # a run here may need more than 64 MiB
+    assert window.player.scene.width == before.width
+    assert "over the limit of 64.0 MB" in window.message.text()
 
 
 def test_reaching_the_grid_limit_names_the_setting(qtbot, settings_file):

@@ -202,3 +202,14 @@ def test_a_cancelled_recording_puts_the_scene_back():
     session.deliver()
     assert session.scene == old_scene and session.trace is old_trace
     assert heard.of("message") == [("message", CANCELLED_MESSAGE)]
+
+
+def test_a_run_over_the_memory_budget_is_refused_and_changes_nothing(session):
+    before = session.scene
+    session.memory_limit = 1024  # bytes: less than any run needs
+    with pytest.raises(InputError, match="over the limit of"):
+        session.set_points([P, (15, 7)])
+    assert session.scene == before and session.trace is not None
+    session.memory_limit = 2 * 1024 ** 3
+    session.set_points([P, (15, 7)])
+    assert session.points == [P, (15, 7)]
