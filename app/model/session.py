@@ -60,6 +60,7 @@ from algorithms.trace import DEFAULT_STEP_CAP, Cancelled, FrameState, Trace
 from app.model import drawing
 from app.model.budget import DEFAULT_MEMORY_LIMIT, check_budget
 from app.model.history import EditHistory
+from app.model.listeners import Listeners
 from app.model.examples import default_scene
 from app.model.inputs import (clamp, clean_breaks, complete, contour_sizes, flatten,
                               open_ended, runnable_input)
@@ -74,23 +75,6 @@ from app.model.tools import drawing_tool
 SYNC_WAIT = 0.02
 CANCELLED_MESSAGE = "Recording cancelled: the previous scene and run are kept."
 _NO_CELLS = np.zeros((0, 2), dtype=np.int64)
-
-
-class Listeners:
-    """Plain callbacks for one kind of news, called in the order connected."""
-
-    def __init__(self):
-        self._callbacks = []
-
-    def connect(self, callback) -> None:
-        self._callbacks.append(callback)
-
-    def disconnect(self, callback) -> None:
-        self._callbacks.remove(callback)
-
-    def emit(self, *args) -> None:
-        for callback in list(self._callbacks):
-            callback(*args)
 
 
 @dataclass
