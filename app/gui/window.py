@@ -40,7 +40,6 @@ from app.render.compose import PALETTE, compose, coverage_counts, error_image
 # What a frame shows is worked out in app/render/frame.py, shared with export.
 from app.render.frame import step_cells as _step_cells
 from app.render.frame import html_caption as _caption
-from app.render.frame import ideal_paths  # noqa: F401 (part of this module's interface)
 
 PREFERRED_ALGORITHM = "line-bresenham"
 # The demo segment: slope 5/12 has two exact ties (d = 0), where the

@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from app.model.geometry import exact_reference
 from app.render import frame as frame_view
 from app.render.compose import depth_image, depth_range, error_stats
 
@@ -106,7 +107,7 @@ class AccuracyCache:
         if self._done:
             return
         self._done = True
-        exact = frame_view.exact_reference(*self._args)
+        exact = exact_reference(*self._args)
         estimate = frame_view.run_coverage(self.trace)
         if exact is None or estimate is None or exact.shape != estimate.shape:
             exact = np.zeros((self.trace.height, self.trace.width))

@@ -27,13 +27,12 @@ from typing import Sequence
 import numpy as np
 
 from app.model import compare
-from app.model.geometry import differences  # noqa: F401 (part of this module's interface)
 
 # Little-endian so that the bytes of each cell read R, G, B, A on any machine.
 _RGBA = np.dtype("<u4")
 
 __all__ = ["Palette", "PALETTE", "Overlay", "OUTLINE_STYLE", "compose", "top_down",
-           "packed_rgba", "differences", "coverage_counts", "COVERAGE_LEVELS", "depth_image",
+           "packed_rgba", "coverage_counts", "COVERAGE_LEVELS", "depth_image",
            "depth_range", "error_image", "error_stats", "diff_image"]
 
 # What the coverage colours stand for, in Palette.coverage order.

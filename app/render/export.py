@@ -25,8 +25,8 @@ from PIL import Image
 from algorithms import registry
 from algorithms.trace import FrameState
 
-from app.render import frame as frame_view
-from app.render.frame import compose_frame, compose_region, frame_marks, primitive_mask, scene_paths
+from app.model.geometry import scene_paths
+from app.render.frame import compose_frame, compose_region, frame_marks, primitive_mask
 from app.render.palette import DARK, LIGHT, THEMES, ColourIndex, Theme, build_palette
 from app.render.settings import (MAX_FPS, MAX_HOLD, MAX_SCALE, MIN_FPS, NAMES, ExportCancelled,
                                  ExportError, ExportSettings, auto_scale, frame_durations,

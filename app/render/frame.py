@@ -24,8 +24,7 @@ import numpy as np
 from algorithms import registry
 from algorithms.steps import PLOT, VISIT, Span
 
-from app.model.geometry import (exact_reference, final_coverage, ideal_paths,  # noqa: F401
-                                scene_paths, takes_circle)
+from app.model.geometry import final_coverage
 from app.render import compose as render
 from app.render.compose import PALETTE, Overlay, Palette, compose
 

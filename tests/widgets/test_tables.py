@@ -5,7 +5,8 @@ from PySide6.QtCore import Qt
 
 from algorithms.steps import Table
 from app.model.tables import TableIndex, cell_text, changes
-from widgets.tables import CHANGED_ROW, ShownTable, TablesPanel
+from app.model.tables import ShownTable
+from widgets.tables import CHANGED_ROW, TablesPanel
 
 
 class FakeTrace:

@@ -7,7 +7,7 @@ import pytest
 from algorithms.exact import triangles as exact_triangles
 from algorithms.errors import InputError
 from algorithms.raster import Raster
-from app.model import compare
+from app.model import compare, geometry
 from app.render import compose as render
 from app.model.compare import EXACT, FRAME, PROGRESS, Pane
 from app.model.scene import Scene
@@ -125,7 +125,7 @@ def test_diff_of_hand_made_rasters_and_the_main_window_overlay():
     assert d.classes().tolist() == [[1, 3, 4, 2]]
     # The cells that differ are those the main window's comparison outlines.
     assert sorted(map(tuple, d.cells().tolist())) == \
-        sorted(map(tuple, render.differences(a, b).tolist()))
+        sorted(map(tuple, geometry.differences(a, b).tolist()))
     # Different kinds of value: only presence is compared.
     assert compare.diff(a, b, a.colors, b.colors, "colour", "").counts["both, different value"] == 0
 

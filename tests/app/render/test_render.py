@@ -3,7 +3,8 @@ import numpy as np
 import pytest
 
 from algorithms.raster import Raster
-from app.render.compose import PALETTE, Overlay, compose, differences, packed_rgba, top_down
+from app.model.geometry import differences
+from app.render.compose import PALETTE, Overlay, compose, packed_rgba, top_down
 
 
 def rgba(color, alpha=255):
