@@ -11,11 +11,12 @@ from .errors import InputError
 from .steps import CodeLine
 from .trace import DEFAULT_STEP_CAP, Trace
 
-FAMILIES = ("lines", "circles", "polygons", "fill", "triangles", "visibility", "antialias")
+FAMILIES = ("lines", "circles", "polygons", "fill", "triangles", "visibility", "antialias",
+            "textures")
 # Modules that register specs when imported; add a family's module here.
 _FAMILY_MODULES = ("algorithms.lines", "algorithms.circles", "algorithms.polygons",
                    "algorithms.fill", "algorithms.triangles", "algorithms.visibility",
-                   "algorithms.antialias")
+                   "algorithms.antialias", "algorithms.textures")
 
 
 @dataclass(frozen=True)
@@ -23,7 +24,7 @@ class Option:
     """A typed option with a default and, where it applies, a range."""
 
     name: str
-    kind: str  # "int", "float", "bool", "choice", "colors", "point" or "numbers"
+    kind: str  # "int", "float", "bool", "choice", "colors", "point", "numbers" or "text"
     default: object
     help: str = ""
     minimum: float | None = None
@@ -45,6 +46,8 @@ class Option:
             raise InputError(f"option {self.name}: expected one of {', '.join(self.choices)}, got {text!r}")
         if self.kind == "colors":
             return self.check([part for part in text.split(",") if part.strip()])
+        if self.kind == "text":
+            return self.check(text)
         if self.kind == "numbers":
             parts = [part for part in text.split(",") if part.strip()]
             return self.check(tuple(parse_number(part, f"option {self.name}") for part in parts))
@@ -137,9 +140,16 @@ def _check_numbers(option: Option, value):
     return tuple(float(item) for item in value)
 
 
+def _check_text(option: Option, value):
+    # What the text names (a file, say) is checked by the algorithm that reads it.
+    if not isinstance(value, str) or not value.strip():
+        raise InputError(f"option {option.name}: expected a name, got {value!r}")
+    return value.strip()
+
+
 _CHECKERS = {"int": _check_number, "float": _check_number, "bool": _check_bool,
              "choice": _check_choice, "colors": _check_colors, "point": _check_point,
-             "numbers": _check_numbers}
+             "numbers": _check_numbers, "text": _check_text}
 
 
 def parse_number(text: str, what: str, integer: bool = False):
@@ -277,6 +287,8 @@ class AlgorithmSpec:
     # The generator also takes the grid (width, height) as a third argument:
     # a flood fill is bounded by the grid's edges.
     uses_grid: bool = False
+    # `run --json`'s "fragments": (key, value column) pairs reported per written pixel.
+    fragments: tuple[tuple[str, str], ...] = ()
 
     def option(self, name: str) -> Option:
         for option in self.options:

@@ -1,0 +1,46 @@
+"""triangle-texture on the command line: fragments parallel to pixels, and bad input."""
+from __future__ import annotations
+
+import json
+
+import pytest
+
+POINTS = ["--points", "1,1", "14,2", "3,13", "--grid", "16,16"]
+
+
+def test_fragments_are_parallel_to_pixels(run_cli):
+    status, out, _ = run_cli("run", "triangle-texture", *POINTS, "--set", "w=1,4,2",
+                             "--set", "filter=trilinear", "--json")
+    assert status == 0
+    result = json.loads(out)
+    assert len(result["fragments"]) == len(result["pixels"]) > 20
+    for fragment, colour in zip(result["fragments"], result["values"]):
+        assert fragment["color"] == colour
+        assert set(fragment) >= {"u", "v", "lod", "color"}
+        assert fragment["fetches"] in (4, 8)
+
+
+def test_existing_triangles_have_no_fragments(run_cli):
+    status, out, _ = run_cli("run", "triangle-bbox", *POINTS, "--json")
+    assert status == 0 and "fragments" not in json.loads(out)
+
+
+@pytest.mark.parametrize("setting, words", [
+    ("uv=0,0,1", "option uv"),
+    ("texture=/no/such/file.png", "cannot read"),
+    ("texture=checker:3", "power of two"),
+    ("texture=hello", "not checker:N"),
+    ("w=1,0,2", "greater than 0"),
+    ("filter=blurry", "option filter"),
+])
+def test_bad_input_is_one_line_and_status_2(run_cli, setting, words):
+    status, out, err = run_cli("run", "triangle-texture", *POINTS, "--set", setting)
+    assert status == 2 and out == ""
+    assert words in err and err.count("\n") == 1 and "Traceback" not in err
+
+
+def test_a_file_that_is_not_an_image(run_cli, tmp_path):
+    path = tmp_path / "fake.png"
+    path.write_text("not a picture")
+    status, _, err = run_cli("run", "triangle-texture", *POINTS, "--set", f"texture={path}")
+    assert status == 2 and "not an image" in err and err.count("\n") == 1
