@@ -55,6 +55,8 @@ from .texels import Texture
 WRAPS = ("repeat", "clamp")
 FILTERS = ("nearest", "bilinear", "mip-nearest", "trilinear", "anisotropic", "reference")
 MIPMAPPED = ("mip-nearest", "trilinear", "anisotropic")
+# Texel indices stay exact and finite below this (|u| W, rho W within 2^53).
+LIMIT = 1e9
 
 
 class Mapping:
@@ -65,24 +67,46 @@ class Mapping:
             raise InputError("option w: every w must be greater than 0")
         if not perspective:
             w = (1.0, 1.0, 1.0)
+        # u is the same for w scaled by any constant: scaling the least w to 1
+        # keeps 1/w and u/w within the float range for any positive w.
+        least = min(w)
+        w = [wk / least for wk in w]
         self.corners = corners
-        self.origin = corners[0]
-        self.planes = []
-        for values in ([uk / wk for (uk, _), wk in zip(uv, w)],
-                       [vk / wk for (_, vk), wk in zip(uv, w)], [1 / wk for wk in w]):
-            self.planes.append((values[0], *plane_coefficients(corners, values)))
+        (x0, y0), (x1, y1), (x2, y2) = corners
+        self.area2 = (x1 - x0) * (y2 - y0) - (x2 - x0) * (y1 - y0)
+        self.values = ([uk / wk for (uk, _), wk in zip(uv, w)],
+                       [vk / wk for (_, vk), wk in zip(uv, w)], [1 / wk for wk in w])
+        self.slopes = [plane_coefficients(corners, values) for values in self.values]
 
-    def _planes_at(self, x, y):
-        dx, dy = x - self.origin[0], y - self.origin[1]
-        return [(q0 + cx * dx + cy * dy, cx, cy) for q0, cx, cy in self.planes]
+    def weights(self, x, y):
+        """Barycentric weights of (x, y): values as weighted sums of the vertices' (no
+        cancellation against a far vertex, so 1/w stays positive inside)."""
+        c = self.corners
+        return [((c[(k + 2) % 3][0] - c[(k + 1) % 3][0]) * (y - c[(k + 1) % 3][1])
+                 - (c[(k + 2) % 3][1] - c[(k + 1) % 3][1]) * (x - c[(k + 1) % 3][0]))
+                / self.area2 for k in range(3)]
+
+    def _at(self, x, y, inside):
+        weights = self.weights(x, y)
+        if inside:  # the pixel is covered: its true weights are >= 0
+            weights = [max(b, 0.0) for b in weights]
+        U, V, Q = (sum(b * q for b, q in zip(weights, values)) for values in self.values)
+        return U, V, Q
 
     def uv(self, x, y):
-        (U, _, _), (V, _, _), (Q, _, _) = self._planes_at(x, y)
+        """(u, v) at (x, y), or None where 1/w is not positive (beyond the horizon)."""
+        U, V, Q = self._at(x, y, False)
+        if not (Q > 0 and math.isfinite(Q)):
+            return None
         return U / Q, V / Q
 
     def derivatives(self, x, y):
-        """(u, v, du/dx, dv/dx, du/dy, dv/dy) at (x, y), by the quotient rule."""
-        (U, Ux, Uy), (V, Vx, Vy), (Q, Qx, Qy) = self._planes_at(x, y)
+        """(u, v, du/dx, dv/dx, du/dy, dv/dy) at (x, y) in the triangle, by the quotient rule."""
+        U, V, Q = self._at(x, y, True)
+        if not (Q > 0 and math.isfinite(Q)):
+            raise InputError(f"texture mapping at ({x:g}, {y:g}): the interpolated 1/w is not "
+                             "a positive finite number (w too large or too unequal)")
+        (Ux, Uy), (Vx, Vy), (Qx, Qy) = self.slopes
         u, v = U / Q, V / Q
         return u, v, (Ux - u * Qx) / Q, (Vx - v * Qx) / Q, (Uy - u * Qy) / Q, (Vy - v * Qy) / Q
 
@@ -92,6 +116,8 @@ def rho_lambda(texture: Texture, d):
     dudx, dvdx, dudy, dvdy = d
     w, h = texture.width, texture.height
     rho = max(math.hypot(dudx * w, dvdx * h), math.hypot(dudy * w, dvdy * h))
+    if math.isnan(rho) or rho > LIMIT:  # next to a vertex with w near 0: capped
+        return LIMIT, math.log2(LIMIT)
     return rho, (math.log2(rho) if rho > 0 else -math.inf)
 
 
@@ -155,6 +181,9 @@ class Sampler:
         """The lookup for pixel (x, y), its centre (x + 1/2, y + 1/2)."""
         u, v, *d = mapping.derivatives(x + 0.5, y + 0.5)
         rho, lam = rho_lambda(self.texture, d)
+        if not all(abs(value) <= LIMIT for value in (u, v)):
+            raise InputError(f"texture lookup at pixel ({x}, {y}): u or v is beyond "
+                             f"+-{LIMIT:g}; use smaller texture coordinates")
         levels, probes = [(0, 1.0)], 1
         if self.filter == "nearest":
             fetches = nearest(self.texture, 0, u, v, self.mode)
@@ -186,6 +215,8 @@ class Sampler:
         tw, th = self.texture.width, self.texture.height
         px, py = math.hypot(dudx * tw, dvdx * th), math.hypot(dudy * tw, dvdy * th)
         major, minor = max(px, py), min(px, py)
+        if math.isnan(major) or major > LIMIT:
+            return self._mip(u, v, [(self.texture.top, 1.0)]), [(self.texture.top, 1.0)], 1
         count = self.max_aniso if minor == 0 else min(math.ceil(major / minor), self.max_aniso)
         count = max(count, 1)
         lam = math.log2(major / count) if major > 0 else -math.inf
@@ -199,10 +230,13 @@ class Sampler:
 
     def _reference(self, mapping: Mapping, x: int, y: int):
         n = self.samples
-        weight = 1 / (n * n)
         fetches = []
-        for b in range(n):
-            for a in range(n):
-                u, v = mapping.uv(x + (a + 0.5) / n, y + (b + 0.5) / n)
-                fetches += nearest(self.texture, 0, u, v, self.mode, weight)
+        points = [mapping.uv(x + (a + 0.5) / n, y + (b + 0.5) / n)
+                  for b in range(n) for a in range(n)]
+        # Sub-pixel points beyond the horizon (1/w <= 0) see no texture.
+        points = [p for p in points if p is not None and abs(p[0]) <= LIMIT
+                  and abs(p[1]) <= LIMIT] or [(0.0, 0.0)]
+        weight = 1 / len(points)
+        for u, v in points:
+            fetches += nearest(self.texture, 0, u, v, self.mode, weight)
         return fetches

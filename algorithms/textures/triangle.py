@@ -7,6 +7,8 @@ reads, the texels fetched with their weights, and the filtered colour.
 """
 from __future__ import annotations
 
+import math
+
 from algorithms.code import Code
 from algorithms.errors import InputError
 from algorithms.interpolate import pack, per_vertex
@@ -105,7 +107,9 @@ def fragment_values(sample) -> tuple:
             shown += [i, j, w]
         else:
             shown += [NAN, NAN, NAN]
-    return (*sample.uv, *sample.d, sample.rho, sample.lam, level, weight, len(sample.fetches), *shown,
+    # A derivative that overflowed (next to a vertex with w near 0) is not shown.
+    d = [value if math.isfinite(value) else NAN for value in sample.d]
+    return (*sample.uv, *d, sample.rho, sample.lam, level, weight, len(sample.fetches), *shown,
             float(pack(sample.color)))
 
 

@@ -284,6 +284,9 @@ SPECIAL_TRIANGLE_OPTIONS = {
     "aa-supersample": [{}, {"n": 1}, {"n": 8, "pattern": "jitter"},
                        {"pattern": "rotated-grid", "filter": "gaussian"}],
     "aa-adaptive": [{}, {"max_depth": 1}],
+    "triangle-texture": [{}, {"precision": "float32"}, {"w": (1.0, 1e-300, 2.0)},
+                         {"w": (1e-300, 1e300, 1.0), "filter": "anisotropic"},
+                         {"w": (1e-6, 1.0, 1e6), "filter": "trilinear", "wrap": "clamp"}],
 }
 
 
