@@ -117,9 +117,14 @@ def _traverse(run, tri, edges, attrs, at):
     cols = run.attributes
     mapping = mapping_of(tri, cols)
     texture = cols.sampler.texture
+    order = tri.order
+    # The vertices' uv and w in the order drawn (with P0..P2), so a panel can
+    # rebuild the mapping of the triangle on show.
     yield Vars(line=at["setup"], values={"texture": texture.name,
                                          "size": f"{texture.width} x {texture.height}",
-                                         "levels": texture.top + 1})
+                                         "levels": texture.top + 1}
+               | {f"uv{k}": cols.uv[order[k]] for k in range(3)}
+               | {f"w{k}": cols.w[order[k]] for k in range(3)})
     i_lo, i_hi, j_lo, j_hi = run.clip(tri.box())
     empty = (NAN,) * (len(TEXTURE_COLUMNS) - len(BASE) + 1)
     plot, skip = at["plot"], at["test"]

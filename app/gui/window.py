@@ -25,6 +25,7 @@ from app.gui.look import ERROR_STYLE, STYLE, app_icon, coverage_rows, legend_row
 from app.gui.player import Player
 from app.gui.shortcuts import GESTURES, ShortcutsDialog
 from app.gui.window_depth import DepthAndAccuracy
+from app.gui.window_texture import TextureDisplay
 from app.gui.window_layout import WindowLayout
 from app.gui.window_menus import WindowMenus
 from app.model.drawing import CONTOURS, point_labels
@@ -52,7 +53,7 @@ def _is_pixel(value) -> bool:
         isinstance(v, int) and not isinstance(v, bool) for v in value)
 
 
-class MainWindow(WindowLayout, WindowMenus, DepthAndAccuracy, QMainWindow):
+class MainWindow(WindowLayout, WindowMenus, DepthAndAccuracy, TextureDisplay, QMainWindow):
     """RasterLab's main window. Its layout, menus and depth and accuracy
     displays are written in the modules of its base classes."""
 
@@ -373,6 +374,7 @@ class MainWindow(WindowLayout, WindowMenus, DepthAndAccuracy, QMainWindow):
         self._notes = [] if trace is None else trace.steps_of(Note).tolist()
         self._show_tables_dock()
         self._prepare_depth_and_accuracy()
+        self._prepare_texture()
         if trace is None:
             self.transport.set_range(-1)
             self.variables.set_series(None)
@@ -432,6 +434,7 @@ class MainWindow(WindowLayout, WindowMenus, DepthAndAccuracy, QMainWindow):
             self.grid.set_image(compose(state.raster, None, self.palette_,
                                         coverage=self.coverage.isChecked()))
         self._show_depth(state)
+        self._show_texture(state)
         self._show_samples(state)
         self._show_error_summary()
         cells, spans = _step_cells(state)

@@ -1,0 +1,49 @@
+"""The texture panel of the step on show (a part of ``MainWindow``): for runs that look a
+texture up, the texture level in use with the pixel's footprint and fetched texels, and the
+grid coloured by mip level."""
+from __future__ import annotations
+
+from PySide6.QtCore import Qt
+
+from app.render.compose import PALETTE
+from app.render.texture_frame import LEVEL_COLOURS, level_map, texture_picture
+from widgets.docks import panel_dock
+from widgets.texture_view import TextureView
+
+
+def level_legend(count: int) -> str:
+    swatches = " ".join(
+        f'<span style="color: rgb{tuple(int(c) for c in LEVEL_COLOURS[k % len(LEVEL_COLOURS)])}">'
+        f'\u25a0</span>&nbsp;{k}' for k in range(count))
+    return f"Mip level read per pixel (the finer of two): {swatches}"
+
+
+class TextureDisplay:
+    """The texture dock: made on first need, shown for runs with a texture."""
+
+    texture_dock = None
+
+    def _prepare_texture(self) -> None:
+        trace = self.player.trace
+        wanted = trace is not None and "level" in trace.value_names
+        if wanted and self.texture_dock is None:
+            self.texture_view = TextureView(PALETTE, self)
+            self.texture_dock = panel_dock("Texture", "textureDock", self.texture_view, self)
+            self.addDockWidget(Qt.DockWidgetArea.RightDockWidgetArea, self.texture_dock)
+            self.texture_dock.show()
+            # Room for the pictures: the texture wants about a third of the height.
+            self.resizeDocks([self.texture_dock], [max(300, self.height() // 3)],
+                             Qt.Orientation.Vertical)
+        if self.texture_dock is not None and wanted != self.texture_dock.isVisibleTo(self):
+            self.texture_dock.setVisible(wanted)
+
+    def _show_texture(self, state) -> None:
+        if self.texture_dock is None or not self.texture_dock.isVisibleTo(self):
+            return
+        trace = self.player.trace
+        picture = texture_picture(trace, state.index, self.player.options)
+        self.texture_view.set_picture(picture)
+        levels = trace.final_variables().get("levels", 1)
+        self.texture_view.set_y_down(self.grid.y_down)
+        self.texture_view.set_levels(level_map(trace, state.index),
+                                     level_legend(int(levels) if levels else 1))

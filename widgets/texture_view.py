@@ -1,0 +1,97 @@
+"""The texture panel: the texture level in use with the pixel's footprint and the texels
+fetched, and beside it the grid coloured by the mip level each pixel read.
+
+It shows what it is given (``app.render.texture_frame``) and nothing else.
+"""
+from __future__ import annotations
+
+import numpy as np
+import pyqtgraph as pg
+from PySide6.QtWidgets import QHBoxLayout, QLabel, QVBoxLayout, QWidget
+
+FOOTPRINT = (230, 30, 30)
+
+
+def _plot(parent, background) -> tuple:
+    plot = pg.PlotWidget(parent)
+    plot.setBackground(background)
+    item = plot.getPlotItem()
+    item.hideButtons()
+    item.setMenuEnabled(False)
+    item.hideAxis("bottom")
+    item.hideAxis("left")
+    box = plot.getViewBox()
+    box.setAspectLocked(True)
+    box.setMouseEnabled(False, False)
+    image = pg.ImageItem(axisOrder="row-major")
+    box.addItem(image)
+    return plot, image
+
+
+class TextureView(QWidget):
+    """Texture with footprint (left) and mip levels on the grid (right)."""
+
+    def __init__(self, palette, parent=None):
+        super().__init__(parent)
+        self.texture_plot, self.texture_image = _plot(self, palette.outside)
+        self.level_plot, self.level_image = _plot(self, palette.outside)
+        self.footprint = pg.PlotDataItem(pen=pg.mkPen(FOOTPRINT, width=2))
+        self.texture_plot.getViewBox().addItem(self.footprint)
+        self.fetches = pg.ScatterPlotItem(symbol="s", pen=pg.mkPen(FOOTPRINT, width=1.5))
+        self.texture_plot.getViewBox().addItem(self.fetches)
+        self.caption = QLabel(self)
+        self.caption.setWordWrap(True)
+        self.caption.setObjectName("textureCaption")
+        self.legend = QLabel(self)
+        self.legend.setWordWrap(True)
+        self.legend.setObjectName("levelLegend")
+        pictures = QHBoxLayout()
+        pictures.addWidget(self.texture_plot, 3)
+        pictures.addWidget(self.level_plot, 2)
+        layout = QVBoxLayout(self)
+        layout.setContentsMargins(6, 4, 6, 6)
+        layout.addLayout(pictures, 1)
+        layout.addWidget(self.caption)
+        layout.addWidget(self.legend)
+        self._sizes = {}
+        self.footprint_points: list = []
+
+    def set_picture(self, picture) -> None:
+        """Show a TexturePicture (None: clear)."""
+        if picture is None:
+            self.texture_image.clear()
+            self.footprint.setData([], [])
+            self.fetches.setData([])
+            self.caption.setText("")
+            return
+        self._show(self.texture_plot, self.texture_image, picture.image, "texture")
+        self.footprint_points = list(picture.footprint)
+        if picture.footprint:
+            xs = [p[0] for p in picture.footprint] + [picture.footprint[0][0]]
+            ys = [p[1] for p in picture.footprint] + [picture.footprint[0][1]]
+            self.footprint.setData(xs, ys)
+        else:
+            self.footprint.setData([], [])
+        height = picture.image.shape[0]
+        size = max(4.0, 200.0 / max(height, 1))
+        self.fetches.setData([{"pos": (i + 0.5, j + 0.5), "size": size,
+                               "brush": pg.mkBrush(255, 255, 0, int(60 + 180 * min(w * 4, 1)))}
+                              for i, j, w in picture.texels])
+        self.caption.setText(picture.caption)
+
+    def set_levels(self, rgba, legend: str = "") -> None:
+        if rgba is None:
+            self.level_image.clear()
+        else:
+            self._show(self.level_plot, self.level_image, rgba, "levels")
+        self.legend.setText(legend)
+
+    def set_y_down(self, y_down: bool) -> None:
+        self.level_plot.getViewBox().invertY(bool(y_down))
+
+    def _show(self, plot, image_item, rgba: np.ndarray, key: str) -> None:
+        image_item.setImage(rgba, autoLevels=False, levels=(0, 255))
+        height, width = rgba.shape[:2]
+        if self._sizes.get(key) != (width, height):
+            self._sizes[key] = (width, height)
+            plot.getViewBox().setRange(xRange=(0, width), yRange=(0, height), padding=0.02)
