@@ -1,0 +1,52 @@
+"""The texture panel: shown for textured runs only, footprint round the pixel's uv, mip levels
+on the grid, and a bad texture as a message."""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+from algorithms.steps import PLOT
+from app.render.texture_frame import LEVEL_COLOURS
+
+FLOOR = [(0, 0), (24, 0), (13.2, 15), (0, 0), (13.2, 15), (10.8, 15)]
+OPTIONS = {"uv": (0, 0, 2, 0, 2, 9, 0, 0, 2, 9, 0, 9), "w": (1, 1, 10, 1, 10, 10),
+           "texture": "checker:4", "filter": "trilinear"}
+
+
+def _last_plot(trace):
+    return max(k for k in range(len(trace)) if trace.code[int(trace.line[k])].kind == PLOT)
+
+
+@pytest.mark.window("triangle-texture", FLOOR, OPTIONS, (24, 16))
+def test_texture_panel_shows_the_footprint_and_levels(window, qtbot):
+    qtbot.waitUntil(lambda: window.player.trace is not None, timeout=10_000)
+    trace = window.player.trace
+    index = _last_plot(trace)
+    window.player.seek(index)
+    qtbot.waitUntil(lambda: window.player.index == index)
+    assert window.texture_dock.isVisible()
+    step = trace.step(index)
+    level = int(step.values["level"])
+    size = 64 >> level
+    # The footprint's centre is the pixel's (u, v) on the base tile, in the level's texels.
+    centre = np.mean(window.texture_view.footprint_points, axis=0)
+    u, v = step.values["u"], step.values["v"]
+    assert centre == pytest.approx(((u - math.floor(u)) * size, (v - math.floor(v)) * size))
+    image = window.texture_view.level_image.image
+    x, y = step.pixel
+    assert tuple(image[y, x, :3]) == tuple(LEVEL_COLOURS[level])
+    window.set_scene("triangle-bbox", FLOOR[:3], {}, grid=(24, 16))
+    qtbot.waitUntil(lambda: not window.texture_dock.isVisible(), timeout=10_000)
+
+
+@pytest.mark.window("triangle-texture", FLOOR[:3], {}, (24, 16))
+def test_an_unreadable_texture_is_a_message(window, qtbot, tmp_path):
+    qtbot.waitUntil(lambda: window.player.trace is not None, timeout=10_000)
+    fake = tmp_path / "fake.png"
+    fake.write_text("no picture")
+    for name, words in (("/no/such/texture.png", "cannot read"), (str(fake), "not an image")):
+        window.set_option("texture", name)
+        qtbot.waitUntil(lambda: words in window._error, timeout=10_000)
+        assert window.player.options["texture"] == "checker:8"
