@@ -12,11 +12,11 @@ from .steps import CodeLine
 from .trace import DEFAULT_STEP_CAP, Trace
 
 FAMILIES = ("lines", "circles", "polygons", "fill", "triangles", "visibility", "antialias",
-            "textures")
+            "textures", "pipeline")
 # Modules that register specs when imported; add a family's module here.
 _FAMILY_MODULES = ("algorithms.lines", "algorithms.circles", "algorithms.polygons",
                    "algorithms.fill", "algorithms.triangles", "algorithms.visibility",
-                   "algorithms.antialias", "algorithms.textures")
+                   "algorithms.antialias", "algorithms.textures", "algorithms.pipeline")
 
 
 @dataclass(frozen=True)

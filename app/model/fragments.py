@@ -7,7 +7,7 @@ import numpy as np
 
 # Columns whose values are whole numbers, and the packed colour.
 WHOLE = ("level", "fetches")
-COLOUR = "rgb"
+COLOURS = ("rgb", "src", "dst")
 
 
 def fragment_columns(trace, pairs) -> np.ndarray:
@@ -29,7 +29,7 @@ def fragment_objects(pairs, rows: np.ndarray) -> list[dict]:
 def _value(column: str, value: float):
     if not math.isfinite(value):
         return None
-    if column == COLOUR:
+    if column in COLOURS:
         return f"#{int(value):06x}" if 0 <= value <= 0xFFFFFF else None
     if column in WHOLE:
         return int(value)

@@ -284,6 +284,8 @@ SPECIAL_TRIANGLE_OPTIONS = {
     "aa-supersample": [{}, {"n": 1}, {"n": 8, "pattern": "jitter"},
                        {"pattern": "rotated-grid", "filter": "gaussian"}],
     "aa-adaptive": [{}, {"max_depth": 1}],
+    "blend-over": [{}, {"alpha": (1.0, 0.5, 0.0), "depth_write": "all"},
+                   {"order": "back-to-front", "z": (0.1, 0.5, 0.9)}],
     "triangle-texture": [{}, {"precision": "float32"}, {"w": (1.0, 1e-300, 2.0)},
                          {"w": (1e-300, 1e300, 1.0), "filter": "anisotropic"},
                          {"w": (1e-6, 1.0, 1e6), "filter": "trilinear", "wrap": "clamp"}],

@@ -44,3 +44,19 @@ def test_a_file_that_is_not_an_image(run_cli, tmp_path):
     path.write_text("not a picture")
     status, _, err = run_cli("run", "triangle-texture", *POINTS, "--set", f"texture={path}")
     assert status == 2 and "not an image" in err and err.count("\n") == 1
+
+
+@pytest.mark.parametrize("setting, words", [("alpha=0.5,2,0.5", "between 0 and 1"),
+                                            ("alpha=0.5,0.5", "option alpha"),
+                                            ("order=sideways", "option order")])
+def test_blend_bad_input(run_cli, setting, words):
+    status, _, err = run_cli("run", "blend-over", *POINTS, "--set", setting)
+    assert status == 2 and words in err and err.count("\n") == 1
+
+
+def test_blend_fragments(run_cli):
+    status, out, _ = run_cli("run", "blend-over", *POINTS, "--set", "z=0.5,0.5,0.5", "--json")
+    result = json.loads(out)
+    assert status == 0 and len(result["fragments"]) == len(result["pixels"])
+    first = result["fragments"][0]
+    assert first["alpha"] == 0.5 and first["before"] == "#ffffff"
