@@ -63,7 +63,8 @@ def blend_code(options) -> Code:
              ops=FRAGMENT_OPS)
     code.add("hidden", "        else: hidden behind a nearer surface already written; "
                        "CB unchanged", VISIT, "fail", ops=FRAGMENT_OPS)
-    code.add("done", "done")
+    code.add("done", "misordered = pixels whose colour differs from compositing their blended "
+                     "fragments sorted by depth, farthest first (the right order)")
     return code
 
 
@@ -124,6 +125,7 @@ def blend(points, options, grid):
     color[:] = BACKGROUND
     depth = np.full((scene.height, scene.width), math.inf)
     counts = {"fragments": 0, "blended": 0, "hidden": 0}
+    blended = {}  # (i, j): the fragments composited there, to check the order at the end
     for setup, key in drawing:
         yield Vars(line=at["triangle"], values={"triangle": setup.number + 1, "mean z": key})
         for i, j, z, alpha, src in fragments(scene, setup, alphas):
@@ -137,13 +139,30 @@ def blend(points, options, grid):
                        math.nan)
                 continue
             counts["blended"] += 1
+            blended.setdefault((i, j), []).append((z, alpha, src))
             color[j, i] = [alpha * s + (1 - alpha) * d for s, d in zip(src, dst)]
             if options["depth_write"] == "all" or (options["depth_write"] == "opaque"
                                                    and alpha == 1):
                 depth[j, i] = z
             yield (at["plot_over"], i, j, z, zb, alpha, float(pack(src)), float(pack(dst)),
                    float(pack(color[j, i])))
-    yield Vars(line=at["done"], values=counts)
+    wrong = misordered(blended, color)
+    yield Vars(line=at["done"], values=counts | {"misordered": len(wrong)})
+    if wrong:
+        yield Table(line=at["done"], name="misordered", columns=("x", "y"), rows=tuple(wrong))
+
+
+def misordered(blended: dict, color: np.ndarray) -> list:
+    """The pixels whose colour differs (by more than rounding) from their fragments
+    composited farthest first."""
+    wrong = []
+    for (i, j), frags in sorted(blended.items(), key=lambda item: (item[0][1], item[0][0])):
+        right = list(BACKGROUND)
+        for _, alpha, src in sorted(frags, key=lambda f: -f[0]):
+            right = [alpha * s + (1 - alpha) * d for s, d in zip(src, right)]
+        if max(abs(a - b) for a, b in zip(right, color[j, i])) > 0.5:
+            wrong.append((i, j))
+    return wrong
 
 
 def final_colors(points, options, grid) -> np.ndarray:

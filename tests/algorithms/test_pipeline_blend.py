@@ -89,6 +89,12 @@ def test_back_to_front_cannot_fix_piercing_triangles():
     sorted_run = _run(PIERCING, "back-to-front")
     wrong = np.any(np.abs(sorted_run - correct) > 1, axis=2)
     assert 5 < wrong.sum()
+    points = [p for t in PIERCING for p in t[0]]
+    options = {"z": tuple(z for t in PIERCING for z in t[1]), "alpha": (0.5,) * 6,
+               "colors": tuple(_hex(t[2]) for t in PIERCING for _ in range(3)),
+               "order": "back-to-front"}
+    trace = SPEC.record(points, options, grid=GRID)
+    assert trace.final_variables()["misordered"] == int(wrong.sum())
 
 
 def test_an_opaque_surface_hides_what_is_drawn_behind_it_later():
