@@ -1,0 +1,233 @@
+"""pipeline: world triangles through view, projection, clipping, divide and viewport, then the
+triangle family's rasterizer, a depth test and shading.
+
+Input: 3k points, the world x and y of each vertex, with ``z`` its world
+z; per vertex ``colors``, ``normals`` (x,y,z each; none: the face normal)
+and ``uv``. Shading with one directional light (``light``: the direction
+the light travels) and ambient 0.2:
+
+    colour = base (0.2 + 0.8 max(0, N . L)),   L = -light / |light|;
+
+flat: N the face normal and base the mean of the vertex colours, one
+colour per triangle; Gouraud: the colour lit at each (clipped) vertex and
+interpolated; Phong: N and base interpolated, N renormalized, lit per
+pixel. Attributes are interpolated perspective-correctly (weights
+b_k / w_k, normalized); depth linearly in the window (it is z_ndc, already
+divided). With a texture, base is multiplied by the texel colour / 255.
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from algorithms import triangles
+from algorithms.code import Code
+from algorithms.errors import InputError
+from algorithms.interpolate import pack, per_vertex, unpack
+from algorithms.steps import PLOT, VISIT, Note, Start, Table, Vars
+from algorithms.textures import texels
+from algorithms.textures.sampling import Mapping, Sampler
+
+from .space import PLANES, Camera, clip_polygon, normalized, to_window
+
+AMBIENT = 0.2
+SHADINGS = ("flat", "gouraud", "phong")
+CLIPPINGS = ("all", "near", "none")
+FRAGMENT_OPS = {"int_add": 7, "mul": 30, "compare": 5, "pixels_tested": 1, "float_add": 20,
+                "div": 6, "round": 3, "sqrt": 1}
+
+
+def pipeline_code(options) -> Code:
+    code = Code()
+    code.add("transform", "for each triangle, each vertex p:  eye = view (p - eye);  "
+                          "clip = projection eye   (w = -z_eye)", ops={"mul": 48, "float_add": 45})
+    planes = {"all": "near, far, left, right, bottom, top", "near": "the near plane",
+              "none": "nothing (every w must be > 0)"}[options["clipping"]]
+    code.add("clip", f"    clip against {planes}: Sutherland-Hodgman in clip space, "
+                     "d = w + z (near), w - z (far), w +- x, w +- y; a crossing edge gains "
+                     "a + t (b - a), t = d_a / (d_a - d_b)")
+    code.add("viewport", "    each corner: ndc = (x, y, z) / w;  window = ((x + 1) W/2, "
+                         "(y + 1) H/2, (z + 1)/2)", ops={"div": 3, "mul": 3, "float_add": 3})
+    code.add("fan", "    for each triangle (C0, Ck, Ck+1) of the polygon: snap and set up its "
+                    "edges (the triangle family's rasterizer)")
+    shade = {"flat": "colour = the triangle's (face normal, mean colour)",
+             "gouraud": "colour = sum b'_k colour_k (lit at the vertices)",
+             "phong": "N = normalize(sum b'_k N_k); colour = base (0.2 + 0.8 max(0, N.L))"
+             }[options["shading"]]
+    code.add("plot_pass", "        each covered pixel: b_k = e_k / 2A;  b'_k = (b_k / w_k) / "
+                          "sum;  depth = sum b_k depth_k;  if depth < ZB: "
+             + shade + ("; times the texel at (u, v)" if _textured(options) else "")
+             + ";  CB = colour;  ZB = depth", PLOT, "pass", ops=FRAGMENT_OPS)
+    code.add("fail", "        else: hidden (depth >= ZB)", VISIT, "fail", ops=FRAGMENT_OPS)
+    code.add("done", "done: the clip and window coordinates of every vertex are in the variables")
+    return code
+
+
+def _textured(options) -> bool:
+    return options.get("texture", "none") != "none"
+
+
+class World:
+    """The run's vertices with their attributes, checked."""
+
+    def __init__(self, points, options):
+        count = len(points)
+        z = per_vertex(options, "z", count) or [0.0] * count
+        self.positions = [[float(x), float(y), float(zk)] for (x, y), zk in zip(points, z)]
+        colors = per_vertex(options, "colors", count)
+        self.colors = [list(unpack(c)) for c in colors] if colors else [[200.0] * 3] * count
+        self.normals = _triples(options, "normals", count)
+        flat = options.get("uv") or ()
+        if flat and len(flat) not in (2 * count, 6):
+            raise InputError(f"option uv: give u,v per point ({2 * count} numbers), "
+                             f"not {len(flat)}")
+        self.uv = [(flat[(2 * k) % len(flat)], flat[(2 * k + 1) % len(flat)]) if flat
+                   else (0.0, 0.0) for k in range(count)]
+        self.light = normalized([-v for v in _light(options)])
+        self.texture = None
+        if _textured(options):
+            self.texture = Sampler(texels.load(options["texture"]), options["filter"], "repeat")
+
+    def face_normal(self, n):
+        a, b, c = self.positions[3 * n:3 * n + 3]
+        u = [q - p for p, q in zip(a, b)]
+        v = [q - p for p, q in zip(a, c)]
+        cross = [u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]]
+        return normalized(cross) if any(cross) else [0.0, 0.0, 1.0]
+
+    def shade(self, base, normal):
+        lit = AMBIENT + (1 - AMBIENT) * max(0.0, sum(p * q for p, q in zip(normal, self.light)))
+        return [c * lit for c in base]
+
+
+def _triples(options, name, count):
+    flat = options.get(name) or ()
+    if not flat:
+        return None
+    if len(flat) not in (3 * count, 9):
+        raise InputError(f"option {name}: give x,y,z per point ({3 * count} numbers), "
+                         f"not {len(flat)}")
+    return [normalized([flat[(3 * k + n) % len(flat)] for n in range(3)]) for k in range(count)]
+
+
+def _light(options):
+    light = options.get("light") or ()
+    if len(light) != 3:
+        raise InputError("option light: give the direction x,y,z (three numbers)")
+    return light
+
+
+def pipeline(points, options, grid):
+    width, height = int(grid[0]), int(grid[1])
+    world = World(points, options)
+    camera = Camera(options["eye"], options["target"], options["fov"], options["near"],
+                    options["far"], width / height)
+    at = pipeline_code(options).at
+    yield Start(line=at["transform"], values=("depth", "zb", "w", "u", "v", "rgb"),
+                constants={"shading": options["shading"], "clipping": options["clipping"],
+                           "triangles": len(points) // 3}, pixel_value="rgb", depth_value="depth")
+    state = {"color": np.full((height, width), -1.0), "depth": np.full((height, width), np.inf),
+             "clip": [], "window": [], "fragments": 0, "passed": 0}
+    planes = {"all": PLANES, "near": ("near",), "none": ()}[options["clipping"]]
+    for n in range(len(points) // 3):
+        yield from _triangle(n, world, camera, planes, options, state, at, (width, height))
+    yield Vars(line=at["done"], values={"clip": tuple(state["clip"]),
+                                        "window": tuple(state["window"]),
+                                        "fragments": state["fragments"],
+                                        "passed": state["passed"]})
+
+
+def _triangle(n, world, camera, planes, options, state, at, grid):
+    corners = []
+    shown = {"triangle": n + 1}
+    for k in range(3):
+        index = 3 * n + k
+        eye = camera.to_eye(world.positions[index])
+        clip = camera.to_clip(eye)
+        normal = world.normals[index] if world.normals else world.face_normal(n)
+        color = world.colors[index]
+        lit = world.shade(color, normal)
+        corners.append([*clip, *color, *normal, *world.uv[index], *lit])
+        shown |= {f"world{k}": tuple(world.positions[index]), f"eye{k}": tuple(eye),
+                  f"clip{k}": tuple(clip)}
+        state["clip"].append(tuple(clip))
+    yield Vars(line=at["transform"], values=shown)
+    if not planes and any(not c[3] > 0 for c in corners):
+        raise InputError(f"triangle {n + 1} has a vertex with w <= 0 (at or behind the eye): "
+                         "set clipping to near or all")
+    polygon, report = clip_polygon(corners, planes)
+    if planes:
+        yield Table(line=at["clip"], name="clipping", columns=("plane", "corners in", "out"),
+                    rows=tuple(report))
+    if len(polygon) < 3:
+        yield Note(line=at["clip"], text=f"Triangle {n + 1} lies outside the view volume: "
+                                         "nothing is left to draw.")
+        return
+    windows = [to_window(c, *grid) for c in polygon]
+    state["window"] += [tuple(float(v) for v in p) for p in windows]
+    yield Vars(line=at["viewport"], values={f"C{k}": tuple(round(float(v), 6) for v in p)
+                                            for k, p in enumerate(windows)}
+               | {f"w(C{k})": float(c[3]) for k, c in enumerate(polygon)})
+    face = (world.colors[3 * n:3 * n + 3], world.face_normal(n))
+    for k in range(1, len(polygon) - 1):
+        fan = [polygon[0], polygon[k], polygon[k + 1]]
+        yield from _fragments(fan, [windows[0], windows[k], windows[k + 1]], face, world,
+                              options, state, at)
+
+
+def _fragments(fan, windows, face, world, options, state, at):
+    setups = triangles.prepare([(p[0], p[1]) for p in windows],
+                               {"subpixel_bits": 8, "fill_rule": "top-left", "cull": False})
+    setup = setups[0]
+    if setup.tri is None:
+        return
+    tri = setup.tri
+    order = tri.order
+    corner = [fan[k] for k in order]
+    depth = [float(windows[k][2]) for k in order]
+    w = [float(c[3]) for c in corner]
+    flat = world.shade([sum(c[n] for c in face[0]) / 3 for n in range(3)], face[1])
+    mapping = None
+    if world.texture is not None:
+        mapping = Mapping([tri.px(k) for k in range(3)], [(c[10], c[11]) for c in corner], w)
+    edges = triangles.Edges(tri, "fixed")
+    total = sum(tri.at(0, 0))
+    height, width = state["depth"].shape
+    i_lo, i_hi, j_lo, j_hi = tri.box()
+    for j in range(max(j_lo, 0), min(j_hi, height - 1) + 1):
+        for i in range(max(i_lo, 0), min(i_hi, width - 1) + 1):
+            es = tri.at(i, j)
+            if not edges.test(es)[0]:
+                continue
+            b = [e / total for e in es]
+            q = [bk / wk for bk, wk in zip(b, w)]
+            bp = [qk / sum(q) for qk in q]
+            z = sum(bk * dk for bk, dk in zip(b, depth))
+            state["fragments"] += 1
+            stored = state["depth"][j, i]
+            zb = float(stored) if math.isfinite(stored) else math.nan
+            u, v = (sum(p * c[10] for p, c in zip(bp, corner)),
+                    sum(p * c[11] for p, c in zip(bp, corner)))
+            if not z < stored:
+                yield (at["fail"], i, j, z, zb, 1 / sum(q), u, v, math.nan)
+                continue
+            color = _shade(options["shading"], bp, corner, flat, world)
+            if mapping is not None:
+                texel = world.texture.sample(mapping, i, j).color
+                color = [c * t / 255 for c, t in zip(color, texel)]
+            state["passed"] += 1
+            state["depth"][j, i] = z
+            yield (at["plot_pass"], i, j, z, zb, 1 / sum(q), u, v, float(pack(color)))
+
+
+def _shade(shading, bp, corner, flat, world):
+    if shading == "flat":
+        return flat
+    if shading == "gouraud":
+        return [sum(p * c[12 + n] for p, c in zip(bp, corner)) for n in range(3)]
+    base = [sum(p * c[4 + n] for p, c in zip(bp, corner)) for n in range(3)]
+    normal = [sum(p * c[7 + n] for p, c in zip(bp, corner)) for n in range(3)]
+    length = math.sqrt(sum(v * v for v in normal))
+    normal = [v / length for v in normal] if length > 0 else normal
+    return world.shade(base, normal)
