@@ -32,6 +32,8 @@ from algorithms.textures.sampling import Mapping, Sampler
 from .space import PLANES, Camera, clip_polygon, normalized, to_window
 
 AMBIENT = 0.2
+# Products of coordinates stay far inside the float range (and the window's).
+WORLD_LIMIT = 1e6
 SHADINGS = ("flat", "gouraud", "phong")
 CLIPPINGS = ("all", "near", "none")
 FRAGMENT_OPS = {"int_add": 7, "mul": 30, "compare": 5, "pixels_tested": 1, "float_add": 20,
@@ -75,6 +77,10 @@ class World:
         count = len(points)
         z = per_vertex(options, "z", count) or [0.0] * count
         self.positions = [[float(x), float(y), float(zk)] for (x, y), zk in zip(points, z)]
+        for n, p in enumerate(self.positions):
+            if not all(abs(v) <= WORLD_LIMIT for v in p):
+                raise InputError(f"point {n + 1}: world coordinates must lie within "
+                                 f"+-{WORLD_LIMIT:g}")
         colors = per_vertex(options, "colors", count)
         self.colors = [list(unpack(c)) for c in colors] if colors else [[200.0] * 3] * count
         self.normals = _triples(options, "normals", count)
@@ -121,6 +127,9 @@ def _light(options):
 def pipeline(points, options, grid):
     width, height = int(grid[0]), int(grid[1])
     world = World(points, options)
+    for name in ("eye", "target"):
+        if not all(abs(v) <= WORLD_LIMIT for v in options[name]):
+            raise InputError(f"option {name}: coordinates must lie within +-{WORLD_LIMIT:g}")
     camera = Camera(options["eye"], options["target"], options["fov"], options["near"],
                     options["far"], width / height)
     at = pipeline_code(options).at

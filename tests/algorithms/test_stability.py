@@ -284,6 +284,7 @@ SPECIAL_TRIANGLE_OPTIONS = {
     "aa-supersample": [{}, {"n": 1}, {"n": 8, "pattern": "jitter"},
                        {"pattern": "rotated-grid", "filter": "gaussian"}],
     "aa-adaptive": [{}, {"max_depth": 1}],
+    "pipeline": [{}, {"shading": "phong", "clipping": "near"}, {"shading": "flat", "z": (0, 0, 60)}],
     "blend-over": [{}, {"alpha": (1.0, 0.5, 0.0), "depth_write": "all"},
                    {"order": "back-to-front", "z": (0.1, 0.5, 0.9)}],
     "triangle-texture": [{}, {"precision": "float32"}, {"w": (1.0, 1e-300, 2.0)},

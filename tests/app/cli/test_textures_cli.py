@@ -60,3 +60,27 @@ def test_blend_fragments(run_cli):
     assert status == 0 and len(result["fragments"]) == len(result["pixels"])
     first = result["fragments"][0]
     assert first["alpha"] == 0.5 and first["before"] == "#ffffff"
+
+
+@pytest.mark.parametrize("setting, words", [
+    ("near=0", "near"), ("fov=180", "fov"), ("far=0.5", "far"), ("eye=1,2", "eye"),
+    ("normals=1,0", "normals"), ("light=0,0,0", "length 0"), ("eye=16,12,0", "length 0"),
+])
+def test_pipeline_bad_camera(run_cli, setting, words):
+    status, _, err = run_cli("run", "pipeline", *POINTS, "--set", setting)
+    assert status == 2 and words in err and err.count("\n") == 1
+
+
+def test_pipeline_behind_the_eye_needs_clipping(run_cli):
+    args = ("run", "pipeline", *POINTS, "--set", "z=0,0,60")
+    assert run_cli(*args)[0] == 0
+    status, _, err = run_cli(*args, "--set", "clipping=none")
+    assert status == 2 and "w <= 0" in err and err.count("\n") == 1
+
+
+def test_pipeline_final_has_clip_and_window_coordinates(run_cli):
+    status, out, _ = run_cli("run", "pipeline", *POINTS, "--json")
+    result = json.loads(out)
+    # The left plane cuts this triangle: its window polygon has a corner more.
+    assert status == 0 and len(result["final"]["clip"]) == 3 and len(result["final"]["window"]) == 4
+    assert len(result["fragments"]) == len(result["pixels"])
