@@ -181,8 +181,11 @@ def _triangle(n, world, camera, planes, options, state, at, grid):
     face = (world.colors[3 * n:3 * n + 3], world.face_normal(n))
     for k in range(1, len(polygon) - 1):
         fan = [polygon[0], polygon[k], polygon[k + 1]]
-        yield from _fragments(fan, [windows[0], windows[k], windows[k + 1]], face, world,
-                              options, state, at)
+        corners = [windows[0], windows[k], windows[k + 1]]
+        yield Vars(line=at["fan"], values={"fan triangle": f"C0 C{k} C{k + 1}"}
+                   | {f"Q{m}": (round(float(c[0]), 6), round(float(c[1]), 6))
+                      for m, c in enumerate(corners)})
+        yield from _fragments(fan, corners, face, world, options, state, at)
 
 
 def _fragments(fan, windows, face, world, options, state, at):
