@@ -7,7 +7,8 @@ from __future__ import annotations
 
 import numpy as np
 import pyqtgraph as pg
-from PySide6.QtWidgets import QHBoxLayout, QLabel, QVBoxLayout, QWidget
+from PySide6.QtCore import Signal
+from PySide6.QtWidgets import QHBoxLayout, QLabel, QPushButton, QVBoxLayout, QWidget
 
 FOOTPRINT = (230, 30, 30)
 
@@ -31,6 +32,8 @@ def _plot(parent, background) -> tuple:
 class TextureView(QWidget):
     """Texture with footprint (left) and mip levels on the grid (right)."""
 
+    open_requested = Signal()  # the person asked to open a PNG as the texture
+
     def __init__(self, palette, parent=None):
         super().__init__(parent)
         self.texture_plot, self.texture_image = _plot(self, palette.outside)
@@ -51,7 +54,14 @@ class TextureView(QWidget):
         layout = QVBoxLayout(self)
         layout.setContentsMargins(6, 4, 6, 6)
         layout.addLayout(pictures, 1)
-        layout.addWidget(self.caption)
+        self.open_button = QPushButton("Open texture\u2026", self)
+        self.open_button.setObjectName("openTexture")
+        self.open_button.setToolTip("Use a PNG file (sides powers of two) as the texture")
+        self.open_button.clicked.connect(self.open_requested)
+        below = QHBoxLayout()
+        below.addWidget(self.caption, 1)
+        below.addWidget(self.open_button)
+        layout.addLayout(below)
         layout.addWidget(self.legend)
         self._sizes = {}
         self.footprint_points: list = []

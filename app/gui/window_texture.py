@@ -4,6 +4,7 @@ grid coloured by mip level."""
 from __future__ import annotations
 
 from PySide6.QtCore import Qt
+from PySide6.QtWidgets import QFileDialog
 
 from app.render.compose import PALETTE
 from app.render.texture_frame import LEVEL_COLOURS, level_map, texture_picture
@@ -28,6 +29,7 @@ class TextureDisplay:
         wanted = trace is not None and "level" in trace.value_names
         if wanted and self.texture_dock is None:
             self.texture_view = TextureView(PALETTE, self)
+            self.texture_view.open_requested.connect(self.open_texture)
             self.texture_dock = panel_dock("Texture", "textureDock", self.texture_view, self)
             self.addDockWidget(Qt.DockWidgetArea.RightDockWidgetArea, self.texture_dock)
             self.texture_dock.show()
@@ -47,3 +49,12 @@ class TextureDisplay:
         self.texture_view.set_y_down(self.grid.y_down)
         self.texture_view.set_levels(level_map(trace, state.index),
                                      level_legend(int(levels) if levels else 1))
+
+    def open_texture(self, path: str | None = None) -> None:
+        """Use a PNG as the texture; a file that is no usable texture is a message."""
+        if path is None:
+            path, _ = QFileDialog.getOpenFileName(self, "Open texture", "",
+                                                  "PNG images (*.png);;All files (*)")
+            if not path:
+                return
+        self.set_option("texture", path)

@@ -47,6 +47,19 @@ def test_an_unreadable_texture_is_a_message(window, qtbot, tmp_path):
     fake = tmp_path / "fake.png"
     fake.write_text("no picture")
     for name, words in (("/no/such/texture.png", "cannot read"), (str(fake), "not an image")):
-        window.set_option("texture", name)
+        window.open_texture(name)
         qtbot.waitUntil(lambda: words in window._error, timeout=10_000)
         assert window.player.options["texture"] == "checker:8"
+
+
+@pytest.mark.window("triangle-texture", FLOOR[:3], {}, (24, 16))
+def test_a_png_opened_in_the_window_is_the_texture(window, qtbot):
+    from pathlib import Path
+    bricks = str(Path(__file__).resolve().parents[3] / "resources" / "textures" / "bricks.png")
+    qtbot.waitUntil(lambda: window.player.trace is not None, timeout=10_000)
+    window.open_texture(bricks)
+    qtbot.waitUntil(lambda: window.player.options["texture"] == bricks, timeout=10_000)
+    qtbot.waitUntil(lambda: window.player.trace is not None
+                    and window.player.trace.final_variables().get("texture") == "bricks.png",
+                    timeout=10_000)
+    assert window.texture_view.open_button.isVisibleTo(window)
