@@ -1,14 +1,16 @@
 """The texture panel of the step on show (a part of ``MainWindow``): for runs that look a
 texture up, the texture level in use with the pixel's footprint and fetched texels, and the
-grid coloured by mip level."""
+grid coloured by mip level; for the pipeline, the scene seen from outside with the frustum."""
 from __future__ import annotations
 
 from PySide6.QtCore import Qt
 from PySide6.QtWidgets import QFileDialog
 
 from app.render.compose import PALETTE
+from app.render.outside_view import outside_view
 from app.render.texture_frame import LEVEL_COLOURS, level_map, texture_picture
 from widgets.docks import panel_dock
+from widgets.outside_view import OutsideView
 from widgets.texture_view import TextureView
 
 
@@ -23,8 +25,10 @@ class TextureDisplay:
     """The texture dock: made on first need, shown for runs with a texture."""
 
     texture_dock = None
+    outside_dock = None
 
     def _prepare_texture(self) -> None:
+        self._prepare_outside()
         trace = self.player.trace
         wanted = trace is not None and "level" in trace.value_names
         if wanted and self.texture_dock is None:
@@ -58,3 +62,21 @@ class TextureDisplay:
             if not path:
                 return
         self.set_option("texture", path)
+
+    def _prepare_outside(self) -> None:
+        player = self.player
+        wanted = player.spec.name == "pipeline" and player.trace is not None
+        if wanted and self.outside_dock is None:
+            self.outside_view = OutsideView(PALETTE, self)
+            self.outside_dock = panel_dock("Scene from outside", "outsideDock", self.outside_view,
+                                           self)
+            self.addDockWidget(Qt.DockWidgetArea.RightDockWidgetArea, self.outside_dock)
+            self.outside_dock.show()
+            self.resizeDocks([self.outside_dock], [max(260, self.height() // 3)],
+                             Qt.Orientation.Vertical)
+        if self.outside_dock is None:
+            return
+        if wanted != self.outside_dock.isVisibleTo(self):
+            self.outside_dock.setVisible(wanted)
+        if wanted:
+            self.outside_view.set_view(outside_view(player.points, player.options, player.grid))

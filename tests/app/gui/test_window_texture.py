@@ -63,3 +63,12 @@ def test_a_png_opened_in_the_window_is_the_texture(window, qtbot):
                     and window.player.trace.final_variables().get("texture") == "bricks.png",
                     timeout=10_000)
     assert window.texture_view.open_button.isVisibleTo(window)
+
+
+@pytest.mark.window("pipeline", [(3, 3), (28, 4), (15, 20)], {}, (32, 24))
+def test_the_pipeline_shows_the_scene_from_outside(window, qtbot):
+    qtbot.waitUntil(lambda: window.outside_dock is not None and window.outside_dock.isVisible(),
+                    timeout=10_000)
+    assert "Camera at (16.0, 12.0, 40.0)" in window.outside_view.caption.text()
+    window.set_option("near", 0.0)
+    qtbot.waitUntil(lambda: "near" in window._error, timeout=10_000)
