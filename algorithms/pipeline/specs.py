@@ -30,7 +30,7 @@ register(AlgorithmSpec(
 from algorithms.textures import texels  # noqa: E402
 from algorithms.textures.sampling import FILTERS  # noqa: E402
 
-from .stages import CLIPPINGS, SHADINGS, pipeline, pipeline_code  # noqa: E402
+from .stages import CLIPPINGS, SHADINGS, explain, pipeline, pipeline_code  # noqa: E402
 
 PIPELINE_OPTIONS = (
     Option("z", "numbers", (), "world z per point (or three shared); none: 0"),
@@ -65,6 +65,8 @@ register(AlgorithmSpec(
            "Clip space: inside when -w <= x, y, z <= w; the near plane is z = -w.",
            "Attributes are interpolated perspective-correctly; depth is window z, linear "
            "on screen.",
-           "Shading: colour = base (0.2 + 0.8 max(0, N.L)), L the light's direction reversed."),
-    uses_grid=True,
+           "Shading: colour = base (0.2 + 0.8 max(0, N.L)), L the light's direction reversed.",
+           "A fragment's panel rows retrace it: its weights, then its clip, NDC and window "
+           "coordinates from the corners of its fan triangle."),
+    explain=explain, uses_grid=True,
     fragments=(("depth", "depth"), ("w", "w"), ("u", "u"), ("v", "v"), ("color", "rgb"))))

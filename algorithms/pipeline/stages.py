@@ -184,7 +184,9 @@ def _triangle(n, world, camera, planes, options, state, at, grid):
         corners = [windows[0], windows[k], windows[k + 1]]
         yield Vars(line=at["fan"], values={"fan triangle": f"C0 C{k} C{k + 1}"}
                    | {f"Q{m}": (round(float(c[0]), 6), round(float(c[1]), 6))
-                      for m, c in enumerate(corners)})
+                      for m, c in enumerate(corners)}
+                   | {f"H{m}": tuple(float(v) for v in c[:4])
+                      for m, c in enumerate((polygon[0], polygon[k], polygon[k + 1]))})
         yield from _fragments(fan, corners, face, world, options, state, at)
 
 
@@ -243,3 +245,34 @@ def _shade(shading, bp, corner, flat, world):
     length = math.sqrt(sum(v * v for v in normal))
     normal = [v / length for v in normal] if length > 0 else normal
     return world.shade(base, normal)
+
+
+def explain(trace, i):
+    """A fragment's way back through the stages: its weights, and its clip, NDC and window
+    coordinates from the fan triangle's corners."""
+    step = trace.step(i)
+    if step.pixel is None or "depth" not in step.values:
+        return []
+    var = trace.variables_at(i)
+    try:
+        corners = [var[f"Q{m}"] for m in range(3)]
+        clips = [var[f"H{m}"] for m in range(3)]
+    except KeyError:
+        return []
+    x, y = step.pixel[0] + 0.5, step.pixel[1] + 0.5
+    (x0, y0), (x1, y1), (x2, y2) = corners
+    area = (x1 - x0) * (y2 - y0) - (x2 - x0) * (y1 - y0)
+    if area == 0:
+        return []
+    b0 = ((x1 - x) * (y2 - y) - (x2 - x) * (y1 - y)) / area
+    b1 = ((x2 - x) * (y0 - y) - (x0 - x) * (y2 - y)) / area
+    b = (b0, b1, 1 - b0 - b1)
+    q = [bk / c[3] for bk, c in zip(b, clips)]
+    bp = [qk / sum(q) for qk in q]
+    clip = [sum(p * c[n] for p, c in zip(bp, clips)) for n in range(4)]
+    ndc = [v / clip[3] for v in clip[:3]]
+    text = lambda values: "(" + ", ".join(f"{v:.4g}" for v in values) + ")"  # noqa: E731
+    return [("window weights b", text(b)), ("perspective weights b'", text(bp)),
+            ("clip (sum b' H_k)", text(clip)), ("ndc (clip / w)", text(ndc)),
+            ("window", text(((ndc[0] + 1) * trace.width / 2, (ndc[1] + 1) * trace.height / 2,
+                             (ndc[2] + 1) / 2)))]

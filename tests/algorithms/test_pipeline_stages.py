@@ -135,3 +135,15 @@ def test_shading_matches_the_formula(shading):
         assert all(abs(g - e) <= 1.5 for g, e in zip(got, expected)), (step.pixel, got, expected)
         count += 1
     assert count > 100
+
+
+def test_a_fragments_panel_retraces_it_to_its_own_pixel_centre():
+    points = [(10, 5), (22, 5), (16, 5)]
+    options = {"z": (30, 30, -20), "eye": (16, 8, 40), "target": (16, 5, 0), "fov": 50}
+    trace = SPEC.record(points, options, (32, 24))
+    for step in list(_plotted(trace))[::25]:
+        rows = dict(SPEC.explain(trace, step.index))
+        x, y, depth = (float(v) for v in rows["window"].strip("()").split(", "))
+        # Back through clip space and the divide: the pixel centre and the fragment's depth.
+        assert (x, y) == pytest.approx((step.pixel[0] + 0.5, step.pixel[1] + 0.5), abs=0.01)
+        assert depth == pytest.approx(step.values["depth"], abs=1e-3)
