@@ -84,3 +84,23 @@ def test_pipeline_final_has_clip_and_window_coordinates(run_cli):
     # The left plane cuts this triangle: its window polygon has a corner more.
     assert status == 0 and len(result["final"]["clip"]) == 3 and len(result["final"]["window"]) == 4
     assert len(result["fragments"]) == len(result["pixels"])
+
+
+ROOT = __import__("pathlib").Path(__file__).resolve().parents[3]
+RENDERING = sorted((ROOT / "resources" / "scenes" / "rendering").glob("*.json"))
+
+
+@pytest.mark.parametrize("scene", RENDERING, ids=lambda p: p.stem)
+def test_shipped_rendering_scenes_run(run_cli, scene):
+    status, out, err = run_cli("run", "--scene", scene, "--json")
+    result = json.loads(out)
+    assert status == 0 and err == "" and len(result["fragments"]) == len(result["pixels"]) > 100
+
+
+def test_the_near_crossing_scene_is_refused_without_clipping(tmp_path, run_cli):
+    data = json.loads((ROOT / "resources/scenes/rendering/pipeline-near-crossing.json").read_text())
+    data["options"]["clipping"] = "none"
+    path = tmp_path / "unclipped.json"
+    path.write_text(json.dumps(data))
+    status, _, err = run_cli("run", "--scene", path)
+    assert status == 2 and "w <= 0" in err
