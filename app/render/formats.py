@@ -12,9 +12,25 @@ from app.model.files import write_atomically
 from app.render.settings import ExportError
 
 
-def export_all(args, scene, settings, frames_limit: int, progress=None):
-    """Every output the command line asks for: the frames (GIF, PNG, video,
-    vector, Beamer) in one pass, then the page; (ExportResult or None, Page or None)."""
+class Outputs(NamedTuple):
+    """Where an export goes: any of these paths (None: not that format)."""
+
+    gif: str | None = None
+    frames_dir: str | None = None
+    mp4: str | None = None
+    webm: str | None = None
+    svg_dir: str | None = None
+    pdf: str | None = None
+    beamer: str | None = None
+    html: str | None = None
+    force: bool = False  # a page over its size budget is written all the same
+
+
+def export_all(args, scene, settings, frames_limit: int, progress=None, cancelled=None,
+               trace=None, differences=None, names=("--from", "--to")):
+    """Every output ``args`` (Outputs, or the command line's arguments) asks
+    for: the frames (GIF, PNG, video, vector, Beamer) in one pass, then the
+    page; (ExportResult or None, Page or None)."""
     from app.render import export as exporting
 
     result = None
@@ -22,10 +38,11 @@ def export_all(args, scene, settings, frames_limit: int, progress=None):
     if any(output is not None for output in frame_outputs):
         more = writers(args, settings)
         result = exporting.export(scene, settings, gif=args.gif, frames_dir=args.frames_dir,
-                                  progress=progress, names=("--from", "--to"),
-                                  frames_limit=frames_limit, writers=more)
+                                  progress=progress, cancelled=cancelled, names=names,
+                                  frames_limit=frames_limit, writers=more, trace=trace,
+                                  differences=differences)
         finish(args, scene, more)
-    page = write_html(args, scene, settings) if args.html is not None else None
+    page = write_html(args, scene, settings, trace) if args.html is not None else None
     return result, page
 
 
@@ -80,12 +97,14 @@ class Page(NamedTuple):
     size: int
 
 
-def write_html(args, scene, settings) -> Page:
-    """The interactive page (--html), from the scene's run, recorded once."""
+def write_html(args, scene, settings, trace=None) -> Page:
+    """The interactive page (--html), from the scene's run (recorded here
+    unless ``trace`` is the run already recorded)."""
     from app.render.html import write_page
     from app.render.settings import record
 
-    trace = record(scene, memory_limit=settings.memory_limit)
+    if trace is None:
+        trace = record(scene, memory_limit=settings.memory_limit)
     size = write_page(scene, trace, args.html, settings.for_grid(trace.width, trace.height),
                       force=args.force)
     return Page(len(trace), size)
