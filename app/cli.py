@@ -343,6 +343,9 @@ def add_export_command(commands) -> None:
     export.add_argument("--svg-dir", metavar="DIR",
                         help="write frame_0000.svg, ... (vector frames) into DIR")
     export.add_argument("--pdf", metavar="OUT.pdf", help="write a PDF with a page per frame")
+    export.add_argument("--pages", choices=("frames", "bookmarks"), default="frames",
+                        help="SVG and PDF: a page per exported frame, or only the frames of the "
+                             "scene's bookmarks (default %(default)s)")
     export.add_argument("--beamer", metavar="OUT.tex",
                         help="with --pdf: write a Beamer frame showing the PDF's pages as "
                              "overlays")

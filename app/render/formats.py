@@ -36,7 +36,7 @@ def export_all(args, scene, settings, frames_limit: int, progress=None, cancelle
     result = None
     frame_outputs = (args.gif, args.frames_dir, args.mp4, args.webm, args.svg_dir, args.pdf)
     if any(output is not None for output in frame_outputs):
-        more = writers(args, settings)
+        more = writers(args, settings, scene)
         result = exporting.export(scene, settings, gif=args.gif, frames_dir=args.frames_dir,
                                   progress=progress, cancelled=cancelled, names=names,
                                   frames_limit=frames_limit, writers=more, trace=trace,
@@ -63,7 +63,7 @@ def summary(args, result, page) -> list[str]:
     return lines
 
 
-def writers(args, settings) -> list:
+def writers(args, settings, scene) -> list:
     """The writers for the format options given (--mp4, --webm, --svg-dir, --pdf)."""
     out = []
     if args.mp4 is not None or args.webm is not None:
@@ -72,9 +72,18 @@ def writers(args, settings) -> list:
                 for path, kind in ((args.mp4, "mp4"), (args.webm, "webm")) if path is not None]
     if args.svg_dir is not None or args.pdf is not None:
         from app.render.vector import PdfWriter, SvgFolderWriter
-        out += [SvgFolderWriter(args.svg_dir)] if args.svg_dir is not None else []
-        out += [PdfWriter(args.pdf)] if args.pdf is not None else []
+        only = bookmark_steps(scene) if getattr(args, "pages", "frames") == "bookmarks" else None
+        out += [SvgFolderWriter(args.svg_dir, only)] if args.svg_dir is not None else []
+        out += [PdfWriter(args.pdf, only)] if args.pdf is not None else []
     return out
+
+
+def bookmark_steps(scene) -> set[int]:
+    """The steps of the scene's bookmarks: the vector frames of --pages bookmarks."""
+    if not scene.bookmarks:
+        raise ExportError("--pages bookmarks: the scene has no bookmarks (set them in the "
+                          "window's Bookmarks panel, Ctrl+B)")
+    return {int(b["step"]) for b in scene.bookmarks}
 
 
 def finish(args, scene, done_writers) -> None:

@@ -78,7 +78,7 @@ def page_data(scene, trace, settings) -> dict:
         "width": trace.width, "height": trace.height,
         "yDown": scene.origin == "top-left",
         "steps": len(trace), "first": first, "last": last,
-        "fps": settings.fps, "theme": settings.theme,
+        "fps": settings.fps, "theme": settings.theme, "loop": bool(settings.loop),
         "code": [{"text": c.text, "kind": c.kind, "branch": c.branch,
                   "candidates": [list(o) for o in c.candidates]} for c in trace.code],
         "startCandidates": [list(o) for o in start.candidates],

@@ -62,12 +62,15 @@ def draw_frame(renderer, index: int) -> Drawing:
     trace, settings, theme = renderer.trace, renderer.settings, renderer.theme
     palette = theme.palette
     state = trace.state_at(index)
-    code_width = _code_width(trace) if settings.panel in ("code", "both") else 0
+    code = settings.panel in ("code", "both")
+    rows = renderer.spec.panel_rows(trace, index) if settings.panel in ("variables", "both") else []
+    panel_width = _code_width(trace) if code else (_rows_width(rows) if rows else 0)
     grid_w, grid_h = trace.width * CELL, trace.height * CELL
     caption_h = 3 * (FONT + 4) + 2 * PAD if settings.caption else 0
-    code_h = len(trace.code) * (FONT + 4) + 2 * PAD if code_width else 0
-    body_h = max(grid_h, code_h)
-    drawing = Drawing(grid_w + code_width, body_h + caption_h, palette.outside)
+    code_h = len(trace.code) * (FONT + 4) + 2 * PAD if code else 0
+    rows_h = (len(rows) + 1) * (FONT + 4) + 2 * PAD if rows else 0
+    body_h = max(grid_h, code_h + rows_h)
+    drawing = Drawing(grid_w + panel_width, body_h + caption_h, palette.outside)
     y_of = (lambda y: y) if renderer.y_down else (lambda y: trace.height - y)
     _cells(drawing, state.raster, palette, y_of, trace.height)
     if renderer.grid_lines:
@@ -78,8 +81,13 @@ def draw_frame(renderer, index: int) -> Drawing:
         drawing.line([(x * CELL, y_of(y) * CELL) for x, y in points], palette.primitive,
                      2.0, closed)
     _outlines(drawing, marks, palette, y_of)
-    if code_width:
-        _code_panel(drawing, trace, state.step.line, grid_w, code_width, theme)
+    if panel_width:
+        drawing.rect(grid_w, 0, panel_width, body_h, fill=theme.panel)
+    if code:
+        _code_panel(drawing, trace, state.step.line, grid_w, panel_width, theme)
+    if rows:
+        before = dict(renderer.spec.panel_rows(trace, index - 1)) if index else {}
+        _variables(drawing, rows, before, grid_w, code_h, theme)
     if caption_h:
         _caption(drawing, trace, state, body_h, theme)
     return drawing
@@ -131,8 +139,24 @@ def _code_width(trace) -> float:
     return longest * FONT * MONO_WIDTH + 2 * PAD
 
 
+def _rows_width(rows) -> float:
+    longest = max((len(f"{name}  {text}") for name, text in rows), default=0) + 4
+    return max(longest * FONT * MONO_WIDTH, 160) + 2 * PAD
+
+
+def _variables(drawing, rows, before, left, top, theme) -> None:
+    step = FONT + 4
+    drawing.text(left + PAD, top + PAD + FONT, "Variables", theme.muted, bold=True)
+    name_width = max(len(name) for name, _ in rows) * FONT * MONO_WIDTH + FONT
+    for k, (name, text) in enumerate(rows, 1):
+        baseline = top + PAD + k * step + FONT
+        changed = name in before and before[name] != text
+        drawing.text(left + PAD, baseline, name, theme.muted, mono=True)
+        drawing.text(left + PAD + name_width, baseline, text,
+                     theme.changed if changed else theme.text, mono=True, bold=changed)
+
+
 def _code_panel(drawing, trace, current, left, width, theme) -> None:
-    drawing.rect(left, 0, width, drawing.height, fill=theme.panel)
     step = FONT + 4
     for number, line in enumerate(trace.code):
         top = PAD + number * step
@@ -242,9 +266,16 @@ def _font_path(name: str, folders) -> str | None:
 # ------------------------------------------------------------------ writers
 class SvgFolderWriter(PngFolderWriter):
     """SVG frames frame_0000.svg, ... in a folder, staged and moved into
-    place together as the PNG frames are (see PngFolderWriter)."""
+    place together as the PNG frames are (see PngFolderWriter). With
+    ``only``, just the frames of those steps (the scene's bookmarks, say)."""
+
+    def __init__(self, directory, only=None):
+        super().__init__(directory)
+        self.only = None if only is None else set(only)
 
     def grab_step(self, renderer, index: int) -> None:
+        if self.only is not None and index not in self.only:
+            return
         name = f"frame_{len(self.names):0{self.width}d}.svg"
         try:
             (self.temporary / name).write_text(to_svg(draw_frame(renderer, index)),
@@ -255,11 +286,12 @@ class SvgFolderWriter(PngFolderWriter):
 
 
 class PdfWriter:
-    """A PDF with one page per exported frame, written to a temporary file
-    beside ``path`` and renamed over it at the end."""
+    """A PDF with one page per exported frame (or per step of ``only``),
+    written to a temporary file beside ``path`` and renamed over it at the end."""
 
-    def __init__(self, path):
+    def __init__(self, path, only=None):
         self.path = Path(path)
+        self.only = None if only is None else set(only)
         self.temporary: Path | None = None
         self.pages = 0
 
@@ -268,6 +300,8 @@ class PdfWriter:
         self.temporary = temporary_beside(self.path)
 
     def grab_step(self, renderer, index: int) -> None:
+        if self.only is not None and index not in self.only:
+            return
         _pdf_page(self.pdf, draw_frame(renderer, index))
         self.pages += 1
 

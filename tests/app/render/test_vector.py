@@ -94,3 +94,28 @@ def test_bad_vector_requests_get_one_line(tmp_path, run_cli, argv, message):
     status, out, err = run_cli("export", scene, *argv)
     assert status == 2 and out == "" and err.count("\n") == 1 and message in err
     assert sorted(p.name for p in tmp_path.iterdir()) == ["s.json"]
+
+
+def test_pages_per_bookmark_and_the_variables_panel(tmp_path, run_cli):
+    scene = tmp_path / "s.json"
+    marked = Scene(algorithm="line-bresenham", points=(P, Q), width=14, height=8,
+                   bookmarks=({"name": "start", "step": 1}, {"name": "tie", "step": 6}))
+    save(marked, scene)
+    status, _, err = run_cli("export", scene, "--pdf", tmp_path / "b.pdf", "--pages", "bookmarks",
+                             "--panel", "both")
+    assert status == 0, err
+    pages = PdfReader(tmp_path / "b.pdf").pages
+    trace = record("line-bresenham", [P, Q], grid=(14, 8))
+    assert len(pages) == 2
+    for page, step in zip(pages, (1, 6)):
+        text = page.extract_text()
+        assert f"Step {step} of" in text and "Variables" in text
+        d = trace.variables_at(step)["d"]
+        assert f"{int(d)}" in text
+
+
+def test_pages_per_bookmark_without_bookmarks_is_refused(tmp_path, run_cli):
+    scene = tmp_path / "s.json"
+    save(SCENE, scene)
+    status, out, err = run_cli("export", scene, "--pdf", tmp_path / "b.pdf", "--pages", "bookmarks")
+    assert status == 2 and "no bookmarks" in err and not (tmp_path / "b.pdf").exists()
