@@ -5,7 +5,7 @@ The page holds the recorded trace, not pictures: per step its pseudo-code
 line, pixel and values, and every write (step, cell, colour), as typed
 arrays, delta-coded where neighbours are alike, split into byte planes,
 compressed with zlib and written in base64; the rich records (variables, tables, notes, spans) as
-JSON. The browser inflates them with its own DecompressionStream and
+JSON, compressed the same way. The browser inflates them with its own DecompressionStream and
 replays the writes onto a canvas, as ``Trace.replay`` and
 ``app.render.compose`` do: the count of writes per cell picks background,
 ink or overdraw, a written colour wins, darkened where written again. So a
@@ -87,7 +87,7 @@ def page_data(scene, trace, settings) -> dict:
         "constants": {str(k): _json_value(v) for k, v in start.constants.items()},
         "valueNames": list(trace.value_names),
         "arrays": _arrays(trace),
-        "rich": _rich(trace),
+        "rich": _pack_json(_rich(trace)),
         "paths": [[[list(map(float, p)) for p in points], bool(closed)]
                   for points, closed in scene_paths(spec, scene.points, spec.resolve(scene.options))],
         "bookmarks": [{"name": b["name"], "step": int(b["step"])} for b in scene.bookmarks],
@@ -154,6 +154,12 @@ def _pack(array: np.ndarray) -> dict:
     planes = little.view(np.uint8).reshape(-1, array.itemsize).T.tobytes()
     return {"type": kinds[array.dtype], "length": int(array.size),
             "data": base64.b64encode(zlib.compress(planes, 9)).decode("ascii")}
+
+
+def _pack_json(value) -> dict:
+    """JSON, compressed: table snapshots repeat most of the one before."""
+    text = json.dumps(value, separators=(",", ":"), allow_nan=False).encode("utf-8")
+    return {"type": "json", "data": base64.b64encode(zlib.compress(text, 9)).decode("ascii")}
 
 
 def _rich(trace) -> list:

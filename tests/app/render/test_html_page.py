@@ -72,6 +72,9 @@ def test_a_span_fill_page_draws_what_the_export_draws(tmp_path, browser):
     open_page(browser, page)
     browser.execute_script("window.rasterlab.show(false, false)")
     middle = len(trace) // 2
+    browser.execute_script(f"window.rasterlab.go({middle})")
+    tables = browser.execute_script("return document.getElementById('tables').textContent")
+    assert "AET" in tables and "ymax" in tables
     for index in (middle, len(trace) - 1):
         browser.execute_script(f"window.rasterlab.go({index})")
         colours = expected_colours(scene, index)
@@ -88,6 +91,15 @@ def test_a_100000_step_run_stays_within_its_size_budget(tmp_path):
     assert len(trace) > 100_000 * 0.95
     size = html.write_page(scene, trace, tmp_path / "big.html", ex.ExportSettings())
     assert size == (tmp_path / "big.html").stat().st_size <= html.page_budget(len(trace))
+
+
+def test_a_million_step_flood_fill_stays_within_its_size_budget(tmp_path):
+    scene = Scene(algorithm="flood-fill", points=(((1, 1), (1000, 3), (500, 1000)),),
+                  width=1024, height=1024)
+    trace = ex.record(scene)
+    assert len(trace) >= 1_000_000
+    size = html.write_page(scene, trace, tmp_path / "big.html", ex.ExportSettings())
+    assert size <= html.page_budget(len(trace)) == 5 * 2 ** 20
 
 
 def test_a_page_over_its_budget_is_refused_without_force(tmp_path, run_cli, monkeypatch):
