@@ -49,10 +49,10 @@ class TextureDisplay:
         trace = self.player.trace
         picture = texture_picture(trace, state.index, self.player.options)
         self.texture_view.set_picture(picture)
-        levels = trace.final_variables().get("levels", 1)
+        # The legend names the levels of the texture on show (one when there is none).
+        levels = 1 if picture is None else picture.levels
         self.texture_view.set_y_down(self.grid.y_down)
-        self.texture_view.set_levels(level_map(trace, state.index),
-                                     level_legend(int(levels) if levels else 1))
+        self.texture_view.set_levels(level_map(trace, state.index), level_legend(levels))
 
     def open_texture(self, path: str | None = None) -> None:
         """Use a PNG as the texture; a file that is no usable texture is a message."""

@@ -29,13 +29,14 @@ class TexturePicture:
     image: np.ndarray  # (H, W, 4) uint8 of the level shown, row 0 at v = 0
     level: int
     caption: str
+    levels: int  # how many levels the texture's pyramid has
     footprint: list = field(default_factory=list)  # (s, t) corners in the level's texels
     texels: list = field(default_factory=list)  # (i, j, weight) fetched in the level shown
 
 
 def texture_picture(trace, index: int, options: dict) -> TexturePicture | None:
     """The texture and, when the step looks a pixel up, its footprint and fetches."""
-    if trace is None or "texture" not in trace.final_variables():
+    if trace is None or "level" not in trace.value_names:
         return None
     try:
         texture = texels.load(options.get("texture", "checker:8"))
@@ -47,7 +48,7 @@ def texture_picture(trace, index: int, options: dict) -> TexturePicture | None:
     if not looked_up:
         return TexturePicture(_rgba(texture.levels[0]), 0,
                               f"{texture.name}: {texture.width} x {texture.height}, "
-                              f"{texture.top + 1} levels")
+                              f"{texture.top + 1} levels", texture.top + 1)
     sample = _lookup(trace, index, options, texture, step.pixel)
     level = sample.levels[0][0] if sample is not None else int(step.values.get("level", 0))
     values = step.values
@@ -65,7 +66,8 @@ def texture_picture(trace, index: int, options: dict) -> TexturePicture | None:
                f"rho {values.get('rho', float('nan')):.3g}, lambda "
                f"{values.get('lambda', float('nan')):.3g} \u00b7 "
                f"{int(values.get('fetches', 0))} texels fetched")
-    return TexturePicture(_rgba(texture.levels[level]), level, caption, corners, fetched)
+    return TexturePicture(_rgba(texture.levels[level]), level, caption, texture.top + 1, corners,
+                          fetched)
 
 
 def _lookup(trace, index, options, texture, pixel):
