@@ -97,7 +97,7 @@ def markdown(view: View, config, seconds: dict, missing_aa: str, figures=()) -> 
 
 
 FIGURE_ORDER = ("lines", "circles", "polygons", "fill", "triangles", "interpolation",
-                "antialiasing")
+                "antialiasing", "textures")
 
 
 def csv_text(rows: list[dict]) -> str:

@@ -5,6 +5,7 @@ import numpy as np
 
 from .charts import PALETTE, Chart, figure, palette
 from .report_findings import View, aa_front, fmt
+from .report_textures import texture_figure
 
 
 def charts(view: View) -> dict:
@@ -12,7 +13,7 @@ def charts(view: View) -> dict:
     drawn = {"lines": _lines(view), "circles": _circles(view),
              "polygons": _meshes(view, "polygons"), "triangles": _meshes(view, "triangles"),
              "fill": _fill(view), "interpolation": _interpolation(view),
-             "antialiasing": _antialiasing(view)}
+             "antialiasing": _antialiasing(view), "textures": texture_figure(view)}
     return {family: image for family, image in drawn.items() if image is not None}
 
 

@@ -37,3 +37,23 @@ def section_textures(view: View) -> str:
                            _rounded(view.get(FAMILY, "affine", "affine", r, "max error"))]
                           for r in ratios]))
     return "\n".join(out)
+
+
+def texture_figure(view: View):
+    """Error against cost, texels fetched and kernel time, one line per scene (or None)."""
+    scenes = view.values(FAMILY, "filters")
+    if not scenes:
+        return None
+    from .charts import Chart, figure  # Pillow loads only when figures are drawn
+    names = view.variants(FAMILY, "filters")
+    panels = []
+    for metric, label, log in (("fetches", "texels fetched per pixel", True),
+                               ("kernel time", "kernel time, us per pixel", True)):
+        chart = Chart(f"RMS error against {label}", label, "RMS error (levels of 255)",
+                      xlog=log, note="each point a filter, named beside it")
+        for scene in scenes:
+            points = [(view.get(FAMILY, "filters", f, scene, metric),
+                       view.get(FAMILY, "filters", f, scene, "rms error")) for f in names]
+            chart.add(scene, points, labels=list(names))
+        panels.append(chart)
+    return figure("Textures: filter error against cost", panels)

@@ -12,7 +12,7 @@ from PIL import Image
 from app.analysis import measure
 from app.cli import main
 
-PICTURES = ("lines", "circles", "polygons", "fill", "triangles", "interpolation")
+PICTURES = ("lines", "circles", "polygons", "fill", "triangles", "interpolation", "textures")
 
 
 @pytest.fixture(scope="module")
@@ -96,7 +96,7 @@ def test_every_family_is_present(rows, report):
     text = (report[0] / "report.md").read_text(encoding="utf-8")
     assert "## Headline findings" in text
     for heading in ("## Lines", "## Circles", "## Polygons", "## Triangles", "## Seed fill",
-                    "## Interpolation and depth", "## Antialiasing"):
+                    "## Interpolation and depth", "## Antialiasing", "## Textures"):
         assert heading in text
     for name in PICTURES:
         assert f"({name}.png)" in text

@@ -43,3 +43,9 @@ def test_the_section_has_both_tables(view):
     text = section_textures(view)
     assert text.startswith("## Textures") and "| zone plate | anisotropic |" in text
     assert "| 100 |" in text
+
+
+def test_the_figure_has_two_panels(view):
+    from app.analysis.report_textures import texture_figure
+    image = texture_figure(view)
+    assert image is not None and image.width > 2 * image.height
