@@ -7,7 +7,7 @@ from PySide6.QtCore import Qt
 from PySide6.QtWidgets import QFileDialog
 
 from app.render.compose import PALETTE
-from app.render.outside_view import outside_view
+from app.render.outside_view import outside_view, projected_paths
 from app.render.texture_frame import LEVEL_COLOURS, level_map, texture_picture
 from widgets.docks import panel_dock
 from widgets.outside_view import OutsideView
@@ -80,3 +80,4 @@ class TextureDisplay:
             self.outside_dock.setVisible(wanted)
         if wanted:
             self.outside_view.set_view(outside_view(player.points, player.options, player.grid))
+            self.grid.set_shape(projected_paths(player.trace))

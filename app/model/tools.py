@@ -129,8 +129,6 @@ def shape_paths(spec, points, options, breaks=()) -> list:
     each contour with enough vertices, each whole triangle. What is still
     being drawn is left to the grid's dashed preview."""
     inputs = spec.inputs
-    if spec.family == "pipeline" and spec.name == "pipeline":
-        return []  # its points are in the world: the screen shows their projection
     if inputs.contours:
         return scene_paths(spec, runnable_input(spec, points, breaks), options)
     return ideal_paths(spec, runnable_input(spec, points), options)

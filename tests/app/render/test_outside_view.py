@@ -25,3 +25,17 @@ def test_near_rectangle_of_the_default_camera():
 def test_a_bad_camera_gives_no_view():
     spec = registry.get("pipeline")
     assert outside_view([(3, 3), (28, 4), (15, 20)], spec.resolve({"near": 0.0}), (32, 24)) is None
+
+
+def test_projected_outline_is_the_clipped_polygon_in_the_window():
+    from app.render.outside_view import projected_paths
+    spec = registry.get("pipeline")
+    trace = spec.record([(3, 3), (28, 4), (15, 20)], {}, grid=(32, 24))
+    (corners, closed), = projected_paths(trace)
+    # The default camera looks straight at z = 0: window = centre + (p - centre) f / (40 a) W / 2.
+    f = 1 / math.tan(math.radians(40) / 2)
+    expected = [(16 + (x - 16) * f / (40 * 32 / 24) * 16, 12 + (y - 12) * f / 40 * 12)
+                for x, y in [(3, 3), (28, 4), (15, 20)]]
+    assert closed and len(corners) == 3
+    for got, want in zip(corners, expected):
+        assert got == pytest.approx(want, abs=1e-5)
