@@ -106,6 +106,19 @@ LINE_OPTIONS = {
 }
 
 
+# Real end points for the grid traversals: through corners, along grid
+# lines, within one cell, and float fractions with long expansions.
+REAL_SEGMENTS = {
+    "through corners": ((1.0, 1.0), (9.0, 9.0)),
+    "along a grid line": ((2.0, 5.0), (14.0, 5.0)),
+    "along a column line": ((7.0, 1.5), (7.0, 12.25)),
+    "inside one cell": ((3.2, 3.3), (3.7, 3.9)),
+    "point at a fraction": ((4.125, 4.875), (4.125, 4.875)),
+    "tenths": ((0.1, 0.7), (19.3, 13.9)),
+    "steep back": ((12.75, 20.5), (11.25, 0.5)),
+}
+
+
 def random_segments(count=12, seed=7):
     rng = np.random.default_rng(seed)
     return {f"random {k}": tuple((int(rng.integers(-40, 40)), int(rng.integers(-40, 40)))
@@ -116,7 +129,8 @@ def line_cases(spec) -> list[Case]:
     cases = []
     for options in LINE_OPTIONS.get(spec.name, [{}]):
         label = ",".join(f"{k}={v}" for k, v in options.items())
-        for name, segment in {**SEGMENTS, **random_segments()}.items():
+        real = {} if spec.inputs.integer else REAL_SEGMENTS
+        for name, segment in {**SEGMENTS, **random_segments(), **real}.items():
             valid = None if name in ("huge coordinates", "beyond 32 bits") else True
             if spec.name == "line-implicit" and name == "long shallow":
                 valid = True  # 4001 x 4 box: small enough
@@ -313,7 +327,7 @@ def cases_for(spec) -> list[Case]:
     inputs = spec.inputs
     if inputs.contours:
         return fill_cases(spec) if spec.family == "fill" else polygon_cases(spec)
-    if inputs.count == 2 and inputs.integer:
+    if inputs.count == 2 and (inputs.integer or spec.family == "lines"):
         return line_cases(spec)
     if inputs.count == 1 and inputs.integer and spec.family == "fill":
         return circle_fill_cases(spec)
@@ -398,8 +412,10 @@ def _written(trace) -> list[tuple[int, int]]:
 NEAREST_LINES = {("line-bresenham", None), ("line-explicit", None), ("line-dda", "float64"),
                  ("line-incremental", "round"), ("line-parametric", "auto"), ("line-midpoint", None),
                  ("line-bresenham-textbook", "ties-ne"), ("line-bresenham-textbook", "sign-reversed")}
-# Printed listings whose faults include missing an end pixel.
-PRINTED_ENDS = {"line-dda-printed", ("line-bresenham-textbook", "as-printed")}
+# Printed listings whose faults include missing an end pixel, and the
+# traversals, whose real end points are not pixel centres.
+OTHER_ENDS = {"line-dda-printed", ("line-bresenham-textbook", "as-printed"), "line-supercover",
+              "line-diamond-exit", "line-amanatides-woo"}
 
 
 def oracle_lines(case: Case, spec, trace) -> None:
@@ -431,7 +447,7 @@ def oracle_lines(case: Case, spec, trace) -> None:
         assert len(set(pixels)) == length + 1, f"{case}: not one pixel per column"
     if spec.name == "line-dda" and options["dtype"] == "float32" and not small:
         return  # float32 drifts on long or far segments: the point of the option
-    if spec.name in PRINTED_ENDS or (spec.name, variant) in PRINTED_ENDS:
+    if spec.name in OTHER_ENDS or (spec.name, variant) in OTHER_ENDS:
         return
     if small or spec.name != "line-dda":
         assert pixels[0] == tuple(p) and pixels[-1] == tuple(q), f"{case}: an end pixel is missing"
