@@ -16,7 +16,7 @@ import numpy as np
 
 from ..code import Code, listing
 from ..registry import AlgorithmSpec, Option, register
-from ..steps import NO_PIXEL, PLOT, Start
+from ..steps import NO_PIXEL, PLOT, VISIT, Start
 from .bresenham import bresenham_pixels
 from .common import COLORS, NAN, SEGMENT, Octant, color_ramp, colored, round_half_up, with_color
 
@@ -340,4 +340,52 @@ register(AlgorithmSpec(
     notes=("The same pixels as line-bresenham: d is twice F(M), the implicit form at the "
            "midpoint, which is Bresenham's decision value derived another way.",
            "A midpoint exactly on the line (d = 0) goes to E, as line-bresenham's ties do."),
+))
+
+
+# ------------------------------------------- the implicit form, unbounded
+def implicit_line_listing(points, options) -> Code:
+    test = {"int_add": 3, "mul": 4, "compare": 2, "pixels_tested": 1}
+    code = Code()
+    code.add("setup", "a = y0 - y1;  b = x1 - x0;  c = x0*y1 - x1*y0   (F(x, y) = a*x + b*y + c)",
+             ops={"int_add": 3, "mul": 2})
+    code.add("rows", "for every pixel (x, y) of the grid (no bounding box):")
+    code.add("skip", "    if |F(x, y)| / sqrt(a^2 + b^2) >= 1/2:  skip", VISIT, ops=test)
+    code.add("plot", "    else:  setPixel(x, y)   (near the line, wherever P and Q are)", PLOT,
+             ops=test)
+    code.add("done", "done")
+    return code
+
+
+def implicit_line(points, options, grid):
+    """Every pixel of the grid whose centre lies within 1/2 of the infinite
+    line through P and Q (of P itself when P = Q), tested exactly:
+    4 * F^2 < a^2 + b^2 in integers."""
+    (x0, y0), (x1, y1) = points
+    a, b, c = y0 - y1, x1 - x0, x0 * y1 - x1 * y0
+    norm = a * a + b * b
+    at = implicit_line_listing(points, options).at
+    yield Start(line=at["setup"], values=("F",), constants={"a": a, "b": b, "c": c})
+    width, height = grid
+    for y in range(height):
+        for x in range(width):
+            f = a * x + b * y + c
+            near = 4 * f * f < norm if norm else 4 * ((x - x0) ** 2 + (y - y0) ** 2) < 1
+            yield (at["plot"] if near else at["skip"], x, y, float(f))
+    yield (at["done"], NO_PIXEL, NO_PIXEL, NAN)
+
+
+register(AlgorithmSpec(
+    name="line-implicit-infinite",
+    title="Implicit form, unbounded",
+    family="lines",
+    summary="F(x, y) = a*x + b*y + c tested over the whole grid: a line, not a segment",
+    inputs=SEGMENT,
+    options=(),
+    code=listing(implicit_line_listing),
+    generator=implicit_line,
+    uses_grid=True,
+    notes=("line-implicit limits the test to P and Q's bounding box; without that box the "
+           "implicit form draws the whole line through P and Q, past both ends.",
+           "The test is exact in integers: 4 * F^2 < a^2 + b^2."),
 ))

@@ -185,3 +185,29 @@ def test_dda_x_only_has_one_pixel_per_column_and_misses_rows(p, q):
     missed = len(rows - {y for _, y in pixels})
     assert missed == trace.start.constants["rows_missed"] == max(0, len(rows) - len(columns))
 
+
+
+# ------------------------------------------------ the unbounded implicit form
+def near_infinite_line(p, q, x, y):
+    """Squared distance from (x, y) to its foot on the line PQ, below 1/4."""
+    dx, dy = q[0] - p[0], q[1] - p[1]
+    if dx == dy == 0:
+        return (x - p[0]) ** 2 + (y - p[1]) ** 2 < Fraction(1, 4)
+    t = Fraction((x - p[0]) * dx + (y - p[1]) * dy, dx * dx + dy * dy)
+    fx, fy = p[0] + t * dx, p[1] + t * dy
+    return (x - fx) ** 2 + (y - fy) ** 2 < Fraction(1, 4)
+
+
+@pytest.mark.parametrize("p, q", [((3, 2), (6, 4)), ((5, 5), (5, 5)), ((9, 1), (2, 6)),
+                                  ((0, 3), (11, 3))])
+def test_implicit_infinite_is_every_grid_pixel_near_the_line(p, q):
+    grid = (12, 9)
+    trace = registry.get("line-implicit-infinite").record((p, q), {}, grid=grid)
+    pixels = {tuple(c) for c in trace.written_pixels().tolist()}
+    expected = {(x, y) for x in range(grid[0]) for y in range(grid[1])
+                if near_infinite_line(p, q, x, y)}
+    assert pixels == expected
+    segment = exact.implicit_pixels(p, q)
+    assert segment <= pixels
+    if p != q:  # the line runs on past both ends of the segment
+        assert len(pixels - segment) > 0

@@ -413,9 +413,10 @@ NEAREST_LINES = {("line-bresenham", None), ("line-explicit", None), ("line-dda",
                  ("line-incremental", "round"), ("line-parametric", "auto"), ("line-midpoint", None),
                  ("line-bresenham-textbook", "ties-ne"), ("line-bresenham-textbook", "sign-reversed")}
 # Printed listings whose faults include missing an end pixel, and the
-# traversals, whose real end points are not pixel centres.
+# traversals, whose real end points are not pixel centres, and the unbounded
+# implicit form, which walks the grid rather than P to Q.
 OTHER_ENDS = {"line-dda-printed", ("line-bresenham-textbook", "as-printed"), "line-supercover",
-              "line-diamond-exit", "line-amanatides-woo"}
+              "line-diamond-exit", "line-amanatides-woo", "line-implicit-infinite"}
 
 
 def oracle_lines(case: Case, spec, trace) -> None:
