@@ -16,7 +16,7 @@ import numpy as np
 
 from ..code import Code, listing
 from ..registry import AlgorithmSpec, Option, register
-from ..steps import NO_PIXEL, PLOT, VISIT, Start
+from ..steps import NO_PIXEL, PLOT, VISIT, Start, Vars
 from .bresenham import bresenham_pixels
 from .common import COLORS, NAN, SEGMENT, Octant, color_ramp, colored, round_half_up, with_color
 
@@ -388,4 +388,53 @@ register(AlgorithmSpec(
     notes=("line-implicit limits the test to P and Q's bounding box; without that box the "
            "implicit form draws the whole line through P and Q, past both ends.",
            "The test is exact in integers: 4 * F^2 < a^2 + b^2."),
+))
+
+
+# ------------------------------------------ the parametric loop as printed
+def parametric_printed_listing(points, options) -> Code:
+    step = {"float_add": 5, "mul": 3, "round": 2, "compare": 1}
+    code = Code()
+    code.add("setup", "D = Q - P;  t = 0.0", ops={"int_add": 2})
+    code.add("loop", f"for (t = 0.0; t <= 1.0; t += {options['dt']:g})   (t adds up in floats)")
+    code.add("plot", "    r = P + D*t;  colour = colour_P + (colour_Q - colour_P)*t;  "
+                     "setPixel(round(r.x), round(r.y))", PLOT, ops=step)
+    code.add("done", "done   (t passed 1.0; whether t = 1 was ever reached depends on the sums)")
+    return code
+
+
+def parametric_printed(points, options):
+    """The loop exactly as printed: t grows by repeated float addition and
+    the loop stops once t > 1, so the last t can fall short of 1 and Q can
+    be missed."""
+    (x0, y0), (x1, y1) = points
+    dx, dy, dt = x1 - x0, y1 - y0, options["dt"]
+    ramp = color_ramp(options)
+    at = parametric_printed_listing(points, options).at
+    yield Start(line=at["setup"], values=with_color(ramp, ("t",)),
+                constants={"dt": dt, "dx": dx, "dy": dy}, pixel_value="rgb" if ramp else None)
+    plot, t, last = at["plot"], 0.0, 0.0
+    while t <= 1.0:
+        color = (ramp.at(t),) if ramp else ()
+        yield (plot, round_half_up(x0 + dx * t), round_half_up(y0 + dy * t), t, *color)
+        last, t = t, t + dt
+    reached = "yes" if (round_half_up(x0 + dx * last), round_half_up(y0 + dy * last)) == (x1, y1) \
+        else "no"
+    yield Vars(line=at["done"], values={"last_t": last, "Q_plotted": reached})
+
+
+register(AlgorithmSpec(
+    name="line-parametric-printed",
+    title="Parametric loop as printed",
+    family="lines",
+    summary="for (t = 0; t <= 1; t += dt): t summed in floats, so t = 1 may never come",
+    inputs=SEGMENT,
+    options=(Option("dt", "float", 0.001, "the loop's step in t, in (0, 1]", minimum=1e-6,
+                    maximum=1.0), COLORS),
+    code=listing(parametric_printed_listing),
+    generator=parametric_printed,
+    notes=("line-parametric counts whole steps k and ends on t = 1 exactly; the printed loop "
+           "adds dt to t, and 1000 additions of 0.001 give 1.0000000000000007, so its last t "
+           "is 0.999... and on a line longer than about 500 px Q is never plotted.",
+           "last_t and Q_plotted say what happened."),
 ))

@@ -211,3 +211,32 @@ def test_implicit_infinite_is_every_grid_pixel_near_the_line(p, q):
     assert segment <= pixels
     if p != q:  # the line runs on past both ends of the segment
         assert len(pixels - segment) > 0
+
+
+# ---------------------------------------------- the parametric loop as printed
+def printed_ts(dt):
+    """The listing's t values: repeated float addition, while t <= 1.0."""
+    ts, t = [], 0.0
+    while t <= 1.0:
+        ts.append(t)
+        t += dt
+    return ts
+
+
+@pytest.mark.parametrize("p, q, dt", [((0, 0), (1000, 3), 0.001), ((2, 2), (30, 17), 0.1),
+                                      ((5, 9), (1, 1), 0.3)])
+def test_parametric_printed_reproduces_the_loop_and_counts_what_it_misses(p, q, dt):
+    trace, pixels = run("line-parametric-printed", (p, q), dt=dt)
+    ts = printed_ts(dt)
+    # The listing's own float arithmetic, r = P + D*t, then round halves up.
+    expected = [tuple(math.floor(a + (b - a) * t + 0.5) for a, b in zip(p, q)) for t in ts]
+    assert pixels == expected
+    # Exact steps k*dt (as Fractions of the decimal dt), up to and including t = 1.
+    step = Fraction(str(dt))
+    exact_ts = [k * step for k in range(int(1 / step) + 1)]
+    ideal = {tuple(exact.round_half_up_exact(a + t * (b - a)) for a, b in zip(p, q))
+             for t in exact_ts}
+    missed = ideal - set(pixels)
+    assert (tuple(q) in pixels) == (trace.final_variables()["Q_plotted"] == "yes")
+    if (p, q, dt) == ((0, 0), (1000, 3), 0.001):
+        assert ts[-1] < 1.0 and missed == {(1000, 3)}, "the printed loop never reaches t = 1"

@@ -102,6 +102,7 @@ LINE_OPTIONS = {
     "line-wu": [{}],
     "line-area": [{}],
     "line-dda-printed": [{}, {"variant": "x-only"}],
+    "line-parametric-printed": [{}, {"dt": 0.1}],
     "line-bresenham-textbook": [{}, {"variant": "sign-reversed"}, {"variant": "as-printed"}],
 }
 
@@ -416,7 +417,8 @@ NEAREST_LINES = {("line-bresenham", None), ("line-explicit", None), ("line-dda",
 # traversals, whose real end points are not pixel centres, and the unbounded
 # implicit form, which walks the grid rather than P to Q.
 OTHER_ENDS = {"line-dda-printed", ("line-bresenham-textbook", "as-printed"), "line-supercover",
-              "line-diamond-exit", "line-amanatides-woo", "line-implicit-infinite"}
+              "line-diamond-exit", "line-amanatides-woo", "line-implicit-infinite",
+              "line-parametric-printed"}
 
 
 def oracle_lines(case: Case, spec, trace) -> None:
