@@ -210,11 +210,13 @@ def _textbook_frames(p, octant, variant, at):
     yield (at["plot_first"], x, y, NAN, NAN, NAN)
     for u, (ne, value) in enumerate(_decisions(octant, variant), start=1):
         # The ideal line at column u, above the pixel row v the loop stands on.
-        s = octant.dy * u / octant.dx - v
+        # Whole numerators, one division each: s and n carry no float drift.
+        above = octant.dy * u - v * octant.dx
         if ne:
             v += 1
         x, y = octant.to_grid(p, u, v)
-        yield (north_east if ne else east, x, y, value, s, 1.0 - s)
+        yield (north_east if ne else east, x, y, value, above / octant.dx,
+               (octant.dx - above) / octant.dx)
     yield (at["done"], NO_PIXEL, NO_PIXEL, NAN, NAN, NAN)
 
 

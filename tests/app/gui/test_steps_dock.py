@@ -71,3 +71,15 @@ def test_a_failed_save_says_so_in_the_window(window, tmp_path, monkeypatch):
                         lambda parent, title, text: said.append(text))
     assert not window.steps.save(str(tmp_path / "no-such-folder" / "steps.csv"))
     assert len(said) == 1 and "no-such-folder" in said[0]
+
+
+def test_s_and_n_are_drawn_at_the_step_on_show(window):
+    overlay = window.derivation
+    window.player.seek(5)
+    marks = {name: (start, end) for name, _, start, end in overlay.segments()}
+    for name, (curve, label) in overlay.items.items():
+        assert curve.isVisible() and label.isVisible()
+        xs, ys = curve.getData()
+        assert (xs[0], ys[0]) == marks[name][0] and (xs[1], ys[1]) == marks[name][1]
+    window.player.seek(1)  # the first pixel decides nothing
+    assert not any(curve.isVisible() for curve, _ in overlay.items.values())
