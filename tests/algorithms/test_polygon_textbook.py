@@ -1,0 +1,69 @@
+"""The brute-force scan line and the X_low edge table, against the exact
+polygon oracle, and the brute force's cost against the edge table's."""
+from __future__ import annotations
+
+import math
+
+import pytest
+
+from algorithms import registry
+from algorithms.exact import polygons as exact
+from algorithms.steps import Table
+
+POLYGONS = {
+    "triangle": [[(2, 2), (12, 3), (8, 9)]],
+    "star": [[(10, 1), (12.5, 7.25), (19, 7.5), (13.75, 11.5), (15.5, 18), (10, 14),
+              (4.5, 18), (6.25, 11.5), (1, 7.5), (7.5, 7.25)]],
+    "bowtie": [[(2, 2), (18, 14), (18, 2), (2, 14)]],
+    "with hole": [[(1, 1), (19, 1), (19, 15), (1, 15)], [(5, 5), (5, 10), (14, 10), (14, 5)]],
+    "self-overlapping": [[(2, 2), (16, 2), (16, 12), (6, 12), (6, 6), (12, 6), (12, 16), (2, 16)]],
+}
+
+
+def pixels(name, contours, **options):
+    trace = registry.get(name).record(contours, options, grid=(24, 20))
+    return trace, [tuple(p) for p in trace.written_pixels().tolist()]
+
+
+@pytest.mark.parametrize("shape", POLYGONS)
+@pytest.mark.parametrize("rule", ["evenodd", "nonzero"])
+def test_brute_force_fills_the_exact_polygon(shape, rule):
+    trace, filled = pixels("polygon-brute-scanline", POLYGONS[shape], fill_rule=rule)
+    assert len(filled) == len(set(filled))
+    assert set(filled) == exact.covered_pixels(POLYGONS[shape], rule)
+
+
+@pytest.mark.parametrize("shape", POLYGONS)
+def test_brute_force_tests_every_edge_on_every_row_and_the_edge_table_fewer(shape):
+    contours = POLYGONS[shape]
+    trace, _ = pixels("polygon-brute-scanline", contours)
+    ys = [y for contour in contours for _, y in contour]
+    # Rows whose centre line y + 1/2 lies in [min y, max y).
+    rows = math.ceil(max(ys) - 0.5) - math.ceil(min(ys) - 0.5)
+    edges = sum(len(contour) for contour in contours)
+    final = trace.final_variables()
+    assert final["tests"] == rows * edges
+    # The crossings it finds are the ones the edge table keeps active, row by row.
+    et, _ = pixels("polygon-scanline", contours)
+    active = sum(len(table.rows) for _, table in et.records_of(Table) if table.name == "AET")
+    assert final["crossings"] == active <= final["tests"]
+    if shape == "star":  # ten edges, few of them on any one row
+        assert 2 * active < final["tests"]
+
+
+@pytest.mark.parametrize("shape", POLYGONS)
+@pytest.mark.parametrize("rule", ["evenodd", "nonzero"])
+def test_xlow_samples_each_pixel_at_its_bottom_edge(shape, rule):
+    _, filled = pixels("polygon-scanline-xlow", POLYGONS[shape], fill_rule=rule)
+    # A sample at (i + 1/2, j) is the centre rule on the polygon lifted by 1/2 px.
+    lifted = [[(x, y + 0.5) for x, y in contour] for contour in POLYGONS[shape]]
+    assert set(filled) == exact.covered_pixels(lifted, rule)
+
+
+def test_xlow_table_holds_the_lower_end_points_x():
+    trace, filled = pixels("polygon-scanline-xlow", POLYGONS["triangle"])
+    table = next(t for _, t in trace.records_of(Table) if t.name == "ET")
+    xs = {row[1]: row[3] for row in table.rows}  # edge label -> x
+    assert xs == {"P3P1": 2, "P1P2": 2, "P2P3": 12}  # each edge's lower vertex
+    _, centred = pixels("polygon-scanline", POLYGONS["triangle"])
+    assert set(filled) != set(centred)
