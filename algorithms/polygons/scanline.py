@@ -8,8 +8,8 @@ import numpy as np
 from ..code import Code, listing
 from ..registry import AlgorithmSpec, Option, register
 from ..steps import NO_PIXEL, PER_PIXEL, PER_ROW, PLOT, Note, Span, Start, Table, Vars
-from .common import (FLOATS, HALF_PIXEL, ONE, POLYGON, as_pixels, edge_label, first_column,
-                     first_index, snap_contours, table_number)
+from .common import (FLOATS, HALF_PIXEL, ONE, POLYGON, WholeAndError, as_pixels, edge_label,
+                     first_column, first_index, snap_contours, table_number)
 
 FILL_RULE = Option("fill_rule", "choice", "evenodd",
                    "evenodd: inside after an odd number of crossings; nonzero: inside "
@@ -64,6 +64,8 @@ def scan_edges(contours, arithmetic: str = "exact",
             if real is None:
                 inv_m = Fraction(dx, dy)
                 x = as_pixels(low[0]) + as_pixels(rise) * inv_m
+                if arithmetic == "integer":  # x in 1/(256 dy) px: a whole part and an error
+                    x, inv_m = WholeAndError.of(x, ONE * dy), WholeAndError.of(inv_m, ONE * dy)
             else:
                 inv_m = real(dx) / real(dy)
                 x = real(low[0] / ONE) + real(rise / ONE) * inv_m
@@ -105,7 +107,9 @@ def scanline_listing(points, options) -> Code:
     else:
         fill = ("    for each pair (x_left, x_right) of the AET in turn: "
                 "fill pixels i with x_left <= i + 1/2 < x_right")
-    number = "an exact fraction" if arithmetic == "exact" else f"a {arithmetic}"
+    number = {"exact": "an exact fraction",
+              "integer": "whole + e/dy: x += q;  e += r;  if e >= dy: x += 1, e -= dy"
+              }.get(arithmetic, f"a {arithmetic}")
     # Operation counts. An exact x is kept as a whole part and a remainder
     # over dy, as the integer edge walk does: x += 1/m is two integer
     # additions and a carry test. Per edge (the Start constant "edges"),
@@ -114,7 +118,7 @@ def scanline_listing(points, options) -> Code:
     # frame's "active"). The AET is nearly sorted from row to row, so the
     # sort is an insertion pass: one comparison per row of its table. A
     # span costs two roundings; each of its pixels a step and a test.
-    step = ({"int_add": 2, "compare": 2} if arithmetic == "exact"
+    step = ({"int_add": 2, "compare": 2} if arithmetic in ("exact", "integer")
             else {"float_add": 1, "compare": 1})
     setup = {"int_add": 4, "div": 1, "mul": 1, "round": 2, "compare": 2}
     if arithmetic != "exact":

@@ -142,3 +142,39 @@ register(AlgorithmSpec(
            "lower than polygon-scanline's, and a vertex on a whole y starts its edge's rows.",
            "Everything else (the AET, the fill rule, the spans) is polygon-scanline's."),
 ))
+
+
+# ----------------------------------------------- the integer edge stepper
+def _integer(options) -> dict:
+    return {**options, "arithmetic": "integer"}
+
+
+def integer_listing(points, options) -> Code:
+    return scanline_listing(points, _integer(options))
+
+
+def integer_scanline(points, options):
+    return scanline(points, _integer(options))
+
+
+def integer_pixels(points, options) -> object:
+    return scanline_pixels(points, {**options, "arithmetic": "exact"})
+
+
+register(AlgorithmSpec(
+    name="polygon-scanline-integer",
+    title="Scan line, integer edge walk",
+    family="polygons",
+    summary="the ET/AET with each edge's x stepped Bresenham-style: a whole part and an error term",
+    inputs=POLYGON,
+    options=(FILL_RULE,),
+    code=listing(integer_listing),
+    generator=integer_scanline,
+    kernel=integer_pixels,
+    explain=scanline_explain,
+    notes=("x is kept as a whole number of 1/(256 dy) px and split into a whole part and an "
+           "error e over that denominator; each row adds 1/m's whole part and remainder and "
+           "carries when e reaches it, as Bresenham's line does: integers only.",
+           "The same pixels as polygon-scanline's exact arithmetic; the AET shows x as "
+           "(whole, e/denominator)."),
+))

@@ -3,6 +3,7 @@ polygon oracle, and the brute force's cost against the edge table's."""
 from __future__ import annotations
 
 import math
+from fractions import Fraction
 
 import pytest
 
@@ -67,3 +68,31 @@ def test_xlow_table_holds_the_lower_end_points_x():
     assert xs == {"P3P1": 2, "P1P2": 2, "P2P3": 12}  # each edge's lower vertex
     _, centred = pixels("polygon-scanline", POLYGONS["triangle"])
     assert set(filled) != set(centred)
+
+
+@pytest.mark.parametrize("shape", POLYGONS)
+def test_integer_walk_fills_the_exact_polygon_and_keeps_x_as_whole_and_error(shape):
+    contours = POLYGONS[shape]
+    trace, filled = pixels("polygon-scanline-integer", contours)
+    assert set(filled) == exact.covered_pixels(contours, "evenodd")
+    edges = {}
+    for contour_index, contour in enumerate(contours):
+        for k, a in enumerate(contour):
+            b = contour[(k + 1) % len(contour)]
+            label = (f"C{contour_index + 1}." if len(contours) > 1 else "") + \
+                f"P{k + 1}P{(k + 1) % len(contour) + 1}"
+            edges[label] = (a, b)
+    seen = 0
+    for index, table in trace.records_of(Table):
+        if table.name != "AET":
+            continue
+        y = int(trace.step(index - 1).values["y"])  # the row the AET was sorted for
+        for label, _, (whole, error), _ in table.rows:
+            num, over = map(int, error.split("/"))
+            assert 0 <= num < over
+            (ax, ay), (bx, by) = edges[label]
+            line = Fraction(y) + Fraction(1, 2)  # the row's centre line, exactly
+            x = Fraction(ax) + (line - Fraction(ay)) * Fraction(bx - ax) / Fraction(by - ay)
+            assert whole + Fraction(num, over) == x
+            seen += 1
+    assert seen > 0
