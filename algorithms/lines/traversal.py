@@ -167,11 +167,13 @@ register(AlgorithmSpec(
 # ------------------------------------------------------ diamond exit rule
 def diamond_listing(points, options) -> Code:
     code = Code()
-    code.add("setup", "the diamond of pixel (i, j): |x - (i + 1/2)| + |y - (j + 1/2)| < 1/2")
+    code.add("setup", "the diamond of pixel (i, j): |x - (i + 1/2)| + |y - (j + 1/2)| < 1/2, "
+                      "and its lower-left edge")
     code.add("visit", "for each cell the segment touches, P to Q:  L1 = the segment's least "
                       "|x - cx| + |y - cy|", VISIT, ops={"float_add": 4, "compare": 4})
-    code.add("plot_exit", "    if L1 < 1/2 and Q is not inside that diamond:  plot   "
-                          "(the segment leaves the diamond)", PLOT, ops={"compare": 2})
+    code.add("plot_exit", "    if (L1 < 1/2 or the segment meets the lower-left edge) and Q is "
+                          "not in the diamond:  plot   (it leaves the diamond)", PLOT,
+             ops={"compare": 2})
     code.add("done", "done")
     return code
 
@@ -190,21 +192,48 @@ def l1_to_segment(p, q, cx, cy) -> Fraction:
                for t in ts if 0 <= t <= 1)
 
 
+HALF = Fraction(1, 2)
+
+
+def _cross(o, a, b) -> Fraction:
+    return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0])
+
+
+def meets_segment(p, q, a, b) -> bool:
+    """Do the closed segments PQ and AB share a point? (exact)"""
+    d1, d2, d3, d4 = _cross(a, b, p), _cross(a, b, q), _cross(p, q, a), _cross(p, q, b)
+    if ((d1 > 0) != (d2 > 0) and d1 and d2) and ((d3 > 0) != (d4 > 0) and d3 and d4):
+        return True
+
+    def on(o, u, v, d):  # u lies on the segment o-v, given d = cross(o, v, u) = 0
+        return d == 0 and min(o[0], v[0]) <= u[0] <= max(o[0], v[0]) and \
+            min(o[1], v[1]) <= u[1] <= max(o[1], v[1])
+    return on(a, p, b, d1) or on(a, q, b, d2) or on(p, a, q, d3) or on(p, b, q, d4)
+
+
+def in_diamond(point, cx, cy) -> bool:
+    """Inside the open diamond, or on its lower-left edge (corners included)."""
+    dx, dy = point[0] - cx, point[1] - cy
+    return abs(dx) + abs(dy) < HALF or (dx <= 0 and dy <= 0 and dx + dy == -HALF)
+
+
 def diamond(points, options):
     """The hardware rule: a pixel is drawn when the segment leaves its
     diamond, so of two lines joined end to end the shared pixel is drawn once."""
     p, q = _exact_points(points)
     at = diamond_listing(points, options).at
     yield Start(line=at["setup"], values=("L1",))
-    half = Fraction(1, 2)
     for frame in supercover(points, options):
         if isinstance(frame, Start) or frame[1] == NO_PIXEL:
             continue
         i, j = frame[1], frame[2]
-        cx, cy = i + half, j + half
+        cx, cy = i + HALF, j + HALF
         distance = l1_to_segment(p, q, cx, cy)
         yield (at["visit"], i, j, float(distance))
-        if distance < half and abs(q[0] - cx) + abs(q[1] - cy) >= half:
+        # The lower-left edge belongs to the diamond, so a line through a
+        # diamond's corner is not lost between two pixels.
+        meets = distance < HALF or meets_segment(p, q, (cx - HALF, cy), (cx, cy - HALF))
+        if meets and not in_diamond(q, cx, cy):
             yield (at["plot_exit"], i, j, float(distance))
     yield (at["done"], NO_PIXEL, NO_PIXEL, math.nan)
 
@@ -218,9 +247,12 @@ register(AlgorithmSpec(
     options=(),
     code=listing(diamond_listing),
     generator=diamond,
-    notes=("The rule of OpenGL and Direct3D lines: the open diamond |x - cx| + |y - cy| < 1/2 "
+    notes=("The rule of OpenGL and Direct3D lines: the diamond |x - cx| + |y - cy| < 1/2 "
            "around each pixel centre; a pixel is drawn when the segment meets it and does not "
            "end inside it.",
+           "The diamond is half-open, as the fill rule is: its lower-left edge and the two "
+           "corners at its ends belong to it, the other edges and corners do not, so a line "
+           "through a corner takes exactly one of the two pixels that meet there.",
            "The last pixel is left out when Q lies in its diamond, so a strip of segments "
            "draws each shared pixel once.",
            "Candidates are the supercover's cells, which hold every diamond the segment meets."),

@@ -78,14 +78,20 @@ def test_a_corner_pass_takes_one_side_cell_where_the_supercover_takes_both():
     assert {(1, 2), (2, 3)} <= woo and not {(2, 1), (3, 2)} & woo
 
 
-def in_open_diamond(point, i, j):
-    cx, cy = i + Fraction(1, 2), j + Fraction(1, 2)
-    return abs(Fraction(point[0]) - cx) + abs(Fraction(point[1]) - cy) < Fraction(1, 2)
+def in_diamond(point, i, j):
+    """In u = x + y, v = x - y: [cu - 1/2, cu + 1/2) x (cv - 1/2, cv + 1/2) and
+    the two corners (cu - 1/2, cv +- 1/2), the diamond with its lower-left edge."""
+    cu, cv = i + j + 1, i - j
+    u, v = Fraction(point[0]) + Fraction(point[1]), Fraction(point[0]) - Fraction(point[1])
+    half = Fraction(1, 2)
+    return (cu - half <= u < cu + half and abs(v - cv) < half) or \
+        (u == cu - half and abs(v - cv) == half)
 
 
 def diamond_oracle(p, q):
-    """Cells whose open diamond the segment meets (in u = x + y, v = x - y the
-    diamond is an open square) and which do not hold Q in their diamond."""
+    """Cells whose diamond the segment meets (in u = x + y, v = x - y the open
+    diamond is an open square and its lower-left edge the square's closed
+    left side) and which do not hold Q in their diamond."""
     def uv(point):
         x, y = Fraction(point[0]), Fraction(point[1])
         return (x + y, x - y)
@@ -94,7 +100,9 @@ def diamond_oracle(p, q):
     for i, j in cells_near(p, q):
         cu, cv = uv((i + Fraction(1, 2), j + Fraction(1, 2)))
         box = (cu - Fraction(1, 2), cu + Fraction(1, 2), cv - Fraction(1, 2), cv + Fraction(1, 2))
-        if meets(pu, qu, box, open_box=True) and not in_open_diamond(q, i, j):
+        left = (box[0], box[0], box[2], box[3])
+        touched_ = meets(pu, qu, box, open_box=True) or meets(pu, qu, left, open_box=False)
+        if touched_ and not in_diamond(q, i, j):
             lit.add((i, j))
     return lit
 
@@ -104,6 +112,14 @@ def test_diamond_exit_is_the_exact_rule(p, q):
     cells = run("line-diamond-exit", p, q)
     assert len(cells) == len(set(cells))
     assert set(cells) == diamond_oracle(p, q)
+
+
+def test_diamond_exit_leaves_no_gap_where_the_line_passes_a_corner():
+    # Slope 1/2 from a pixel centre: at x = 2.5 the line passes y = 3 exactly,
+    # the corner between the diamonds of (2, 2) and (2, 3).
+    cells = run("line-diamond-exit", (1.5, 2.5), (9.5, 6.5))
+    assert sorted(x for x, _ in cells) == list(range(1, 9))  # one per column, Q's left out
+    assert (2, 3) in cells and (2, 2) not in cells
 
 
 def test_diamond_exit_draws_a_shared_end_pixel_once():
