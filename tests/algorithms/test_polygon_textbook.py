@@ -96,3 +96,26 @@ def test_integer_walk_fills_the_exact_polygon_and_keeps_x_as_whole_and_error(sha
             assert whole + Fraction(num, over) == x
             seen += 1
     assert seen > 0
+
+
+@pytest.mark.parametrize("shape", POLYGONS)
+@pytest.mark.parametrize("rule", ["evenodd", "nonzero"])
+def test_trapezoid_tessellation_fills_any_polygon_exactly(shape, rule):
+    trace, filled = pixels("polygon-tessellate-any", POLYGONS[shape], fill_rule=rule)
+    assert len(filled) == len(set(filled)), "two triangles share a pixel"
+    assert set(filled) == exact.covered_pixels(POLYGONS[shape], rule)
+    final = trace.final_variables()
+    assert final["triangles"] >= 1 and final["pixels"] == len(filled)
+
+
+@pytest.mark.parametrize("shape", ["bowtie", "with hole"])
+def test_ear_clipping_refuses_what_the_trapezoids_tessellate(shape):
+    from algorithms.errors import InputError
+    with pytest.raises(InputError):
+        registry.get("polygon-tessellate").record(POLYGONS[shape], {}, grid=(24, 20))
+    trace, _ = pixels("polygon-tessellate-any", POLYGONS[shape])
+    cuts = next(t for _, t in trace.records_of(Table) if t.name == "cuts")
+    ys = sorted({y for contour in POLYGONS[shape] for _, y in contour})
+    if shape == "bowtie":  # the two diagonals cross at (10, 8): a cut there too
+        ys = sorted(ys + [8])
+    assert [row[0] for row in cuts.rows] == ys

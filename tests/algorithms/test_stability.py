@@ -209,13 +209,14 @@ POLYGON_OPTIONS = {
     "polygon-tessellate": [{}, {"ties": "inclusive"}, {"ties": "strict"}],
     "polygon-brute-scanline": [{}, {"fill_rule": "nonzero"}],
     "polygon-scanline-integer": [{}, {"fill_rule": "nonzero"}],
+    "polygon-tessellate-any": [{}, {"fill_rule": "nonzero"}],
     "polygon-scanline-xlow": [{}, {"fill_rule": "nonzero"}, {"arithmetic": "float64"}],
 }
 
 
 # The scan lines fill any contours by the fill rule: self-intersecting, with holes.
 SCANLINES = ("polygon-scanline", "polygon-brute-scanline", "polygon-scanline-xlow",
-             "polygon-scanline-integer")
+             "polygon-scanline-integer", "polygon-tessellate-any")
 
 
 def polygon_cases(spec) -> list[Case]:
