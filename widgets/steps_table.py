@@ -164,9 +164,12 @@ class StepsView(QWidget):
             self.copyRequested.emit(rows)
 
     def _size_columns(self) -> None:
-        # Fitted to the first rows only: measuring them all would make every row.
+        # Fitted to the first and the last rows only (the widest step numbers and,
+        # as a rule, pixels): measuring them all would make every row.
         metrics = self.view.fontMetrics()
-        sample = [self.model.text(i) for i in range(min(64, self.model.fetched))]
+        total = len(self.model.table)
+        rows = sorted(set(range(min(32, total))) | set(range(max(0, total - 32), total)))
+        sample = [self.model.table.text_row(i) for i in rows]
         for c, column in enumerate(self.model.table.columns):
             texts = [column.title] + [row[c] for row in sample]
             width = max(metrics.horizontalAdvance(t) for t in texts) + 16
