@@ -83,3 +83,16 @@ def test_s_and_n_are_drawn_at_the_step_on_show(window):
         assert (xs[0], ys[0]) == marks[name][0] and (xs[1], ys[1]) == marks[name][1]
     window.player.seek(1)  # the first pixel decides nothing
     assert not any(curve.isVisible() for curve, _ in overlay.items.values())
+
+
+def test_the_table_follows_a_new_run(window, qtbot):
+    view = shown_dock(window)
+    before = view.model.table
+    window.set_scene("line-supercover", [(1.5, 1.25), (9.75, 6.5)], {}, (20, 12))
+    qtbot.waitUntil(lambda: window.player.trace is not None
+                    and view.model.table is not None and view.model.table is not before,
+                    timeout=3000)
+    assert view.model.table.trace is window.player.trace
+    titles = [column.title for column in view.model.table.columns]
+    assert "y_lo" in titles and "d" not in titles
+    assert not any(curve.isVisible() for curve, _ in window.derivation.items.values())
