@@ -120,7 +120,8 @@ register(AlgorithmSpec(
     notes=("truncate differs from line-dda only in the conversion: (int) drops the fraction, "
            "so the line sits up to a whole pixel below (or, left of zero, above) the ideal one.",
            "x-only is the slide's loop without the slope cases: one pixel per column, so a line "
-           "steeper than 45 degrees leaves rows empty (rows_missed counts them).",
+           "steeper than 45 degrees leaves rows empty (rows_missed counts them). The slide adds "
+           "m before it writes; here y starts at y1 and is written first, so P is plotted.",
            "Float additions can land just under a whole number, which the cast then drops."),
 ))
 
