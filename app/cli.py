@@ -56,9 +56,13 @@ def build_parser() -> Parser:
     run.add_argument("--step-cap", type=str, default=str(DEFAULT_STEP_CAP), metavar="N",
                      help=f"stop recording after N steps, 1 .. {MAX_STEP_CAP:,}: the cap bounds the "
                           "memory a run takes (default %(default)s)")
+    run.add_argument("--steps", action="store_true",
+                     help="print every step: line, pixel, choice, variables, tables (as an "
+                          "aligned table, or with --json or --csv)")
     output = run.add_mutually_exclusive_group()
     output.add_argument("--json", action="store_true", help="print one JSON object")
     output.add_argument("--ascii", action="store_true", help="print the grid as text")
+    output.add_argument("--csv", action="store_true", help="with --steps: print the steps as CSV")
     add_export_command(commands)
     add_report_command(commands)
     return parser
@@ -162,6 +166,10 @@ def _default_text(value) -> str:
 
 
 def command_run(args) -> int:
+    if args.csv and not args.steps:
+        raise CommandError("--csv prints the table of steps: add --steps")
+    if args.steps and args.ascii:
+        raise CommandError("--steps prints a table: use it alone, with --json or with --csv")
     if args.scene is not None:
         return run_scene(args)
     if args.algorithm is None or args.points is None:
@@ -220,12 +228,31 @@ def run_scene(args) -> int:
 def print_run(args, spec, trace, options) -> int:
     if trace.truncated:
         print(f"rasterlab: {trace.message}", file=sys.stderr)
+    if args.steps:
+        return print_steps(args, spec, trace, options)
     if args.json:
         write_json(sys.stdout, run_result(spec, trace, options))
     elif args.ascii:
         print(ascii_grid(trace))
     else:
         write_summary(sys.stdout, spec, trace)
+    return 0
+
+
+def print_steps(args, spec, trace, options) -> int:
+    """`run --steps`: the step table, in the output form asked for."""
+    from app.model import step_output, steptable
+    table = steptable.StepTable(trace)
+    if args.json:
+        result = run_result(spec, trace, options)
+        result["columns"] = step_output.json_columns(table)
+        result["rows"] = Rows(range(len(table)),
+                              lambda part: [step_output.json_row(table, i) for i in part])
+        write_json(sys.stdout, result)
+    elif args.csv:
+        steptable.write_csv(table, sys.stdout)
+    else:
+        step_output.write_aligned(table, sys.stdout)
     return 0
 
 

@@ -10,6 +10,7 @@ from __future__ import annotations
 from .common import COLORS, SEGMENT, Octant
 from .bresenham import bresenham, bresenham_code, bresenham_pixels
 from .forms import explicit, implicit, incremental, parametric
+from . import textbook, traversal  # noqa: F401  (they register the variants)
 
 __all__ = ["COLORS", "SEGMENT", "Octant", "bresenham", "bresenham_code", "bresenham_pixels",
            "explicit", "implicit", "incremental", "parametric"]

@@ -21,6 +21,7 @@ from .common import ONE, POLYGON, snap, snap_contours
 from .scanline import SCANLINE, scanline_mask, scanline_pixels
 from .convex import CONVEX, convexity_problem
 from .tessellate import TESSELLATE, simplicity_problem
+from . import textbook, trapezoids  # noqa: F401  (they register the variants)
 
 __all__ = ["ONE", "POLYGON", "snap", "snap_contours", "SCANLINE", "scanline_mask",
            "scanline_pixels", "CONVEX", "convexity_problem", "TESSELLATE", "simplicity_problem"]

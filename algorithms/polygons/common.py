@@ -67,8 +67,40 @@ def edge_label(contours, contour: int, index: int) -> str:
     return f"P{index + 1}P{after + 1}"
 
 
+class WholeAndError(Fraction):
+    """An exact x kept as the integer edge walk keeps it: a whole part and an
+    error term e over dy (0 <= e < dy). Adding a WholeAndError step (1/m as a
+    whole q and a remainder r) does x += q; e += r; if e >= dy: x += 1, e -= dy,
+    which is Bresenham's carry. It is a Fraction, so it compares and rounds
+    exactly like the exact x it stands for."""
+
+    __slots__ = ("whole", "error", "over")
+
+    def __new__(cls, whole: int, error: int, over: int):
+        value = super().__new__(cls, whole * over + error, over)
+        value.whole, value.error, value.over = whole, error, over
+        return value
+
+    @classmethod
+    def of(cls, value: Fraction, over: int) -> "WholeAndError":
+        """``value`` (a multiple of 1/over) as a whole part and an error term."""
+        whole, error = divmod(value.numerator * (over // value.denominator), over)
+        return cls(whole, error, over)
+
+    def __add__(self, step):
+        if not isinstance(step, WholeAndError):
+            return Fraction(self) + step
+        whole, error = self.whole + step.whole, self.error + step.error
+        if error >= self.over:
+            whole, error = whole + 1, error - self.over
+        return WholeAndError(whole, error, self.over)
+
+
 def table_number(value):
-    """A table cell: exact fractions stay exact, floats become plain floats."""
+    """A table cell: exact fractions stay exact, floats become plain floats; an
+    integer walk's x shows as (whole, error/dy)."""
+    if isinstance(value, WholeAndError):
+        return (value.whole, f"{value.error}/{value.over}")
     if isinstance(value, (int, Fraction)):
         return value.numerator if isinstance(value, Fraction) and value.denominator == 1 else value
     return float(value)

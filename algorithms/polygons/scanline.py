@@ -8,8 +8,8 @@ import numpy as np
 from ..code import Code, listing
 from ..registry import AlgorithmSpec, Option, register
 from ..steps import NO_PIXEL, PER_PIXEL, PER_ROW, PLOT, Note, Span, Start, Table, Vars
-from .common import (FLOATS, HALF_PIXEL, ONE, POLYGON, as_pixels, edge_label, first_column,
-                     first_index, snap_contours, table_number)
+from .common import (FLOATS, HALF_PIXEL, ONE, POLYGON, WholeAndError, as_pixels, edge_label,
+                     first_column, first_index, snap_contours, table_number)
 
 FILL_RULE = Option("fill_rule", "choice", "evenodd",
                    "evenodd: inside after an odd number of crossings; nonzero: inside "
@@ -39,11 +39,14 @@ class ScanEdge:
         return cells + ((self.direction,) if rule == "nonzero" else ())
 
 
-def scan_edges(contours, arithmetic: str = "exact") -> tuple[list[ScanEdge], int]:
+def scan_edges(contours, arithmetic: str = "exact",
+               sample: int = HALF_PIXEL) -> tuple[list[ScanEdge], int]:
     """The ET's entries (in polygon order) and how many edges were left out.
 
     Horizontal edges, and edges too short to reach any row's centre line,
-    meet no scan line and are left out.
+    meet no scan line and are left out. ``sample`` is the height of row y's
+    scan line above y, in snapped units: the centre, or 0 for the textbook's
+    X_low table, whose scan lines run along the rows' lower edges.
     """
     edges, skipped = [], 0
     real = FLOATS.get(arithmetic)
@@ -52,20 +55,32 @@ def scan_edges(contours, arithmetic: str = "exact") -> tuple[list[ScanEdge], int
             end = contour[(k + 1) % len(contour)]
             direction = 1 if end[1] > start[1] else -1
             low, high = (start, end) if direction > 0 else (end, start)
-            first, ymax = first_index(low[1]), first_index(high[1])
+            first, ymax = first_row(low[1], sample), first_row(high[1], sample)
             if first >= ymax:  # horizontal, or between two centre lines
                 skipped += 1
                 continue
             dx, dy = high[0] - low[0], high[1] - low[1]
-            rise = ONE * first + HALF_PIXEL - low[1]  # from the low end to the first centre line
+            rise = ONE * first + sample - low[1]  # from the low end to the first scan line
             if real is None:
                 inv_m = Fraction(dx, dy)
                 x = as_pixels(low[0]) + as_pixels(rise) * inv_m
+                if arithmetic == "integer":  # x in 1/(256 dy) px: a whole part and an error
+                    x, inv_m = WholeAndError.of(x, ONE * dy), WholeAndError.of(inv_m, ONE * dy)
             else:
                 inv_m = real(dx) / real(dy)
                 x = real(low[0] / ONE) + real(rise / ONE) * inv_m
             edges.append(ScanEdge(edge_label(contours, c, k), first, ymax, x, inv_m, direction))
     return edges, skipped
+
+
+def first_row(v: int, sample: int = HALF_PIXEL) -> int:
+    """The first row whose scan line (``sample`` above its bottom) is at or above v."""
+    return -((sample - v) // ONE)
+
+
+def sample_of(options) -> int:
+    """Where a row's scan line runs: through the centres, or (x-low) along the bottom."""
+    return 0 if options.get("edge_x") == "x-low" else HALF_PIXEL
 
 
 def runs(active: list[ScanEdge], rule: str) -> list[tuple]:
@@ -92,7 +107,9 @@ def scanline_listing(points, options) -> Code:
     else:
         fill = ("    for each pair (x_left, x_right) of the AET in turn: "
                 "fill pixels i with x_left <= i + 1/2 < x_right")
-    number = "an exact fraction" if arithmetic == "exact" else f"a {arithmetic}"
+    number = {"exact": "an exact fraction",
+              "integer": "whole + e/dy: x += q;  e += r;  if e >= dy: x += 1, e -= dy"
+              }.get(arithmetic, f"a {arithmetic}")
     # Operation counts. An exact x is kept as a whole part and a remainder
     # over dy, as the integer edge walk does: x += 1/m is two integer
     # additions and a carry test. Per edge (the Start constant "edges"),
@@ -101,7 +118,7 @@ def scanline_listing(points, options) -> Code:
     # frame's "active"). The AET is nearly sorted from row to row, so the
     # sort is an insertion pass: one comparison per row of its table. A
     # span costs two roundings; each of its pixels a step and a test.
-    step = ({"int_add": 2, "compare": 2} if arithmetic == "exact"
+    step = ({"int_add": 2, "compare": 2} if arithmetic in ("exact", "integer")
             else {"float_add": 1, "compare": 1})
     setup = {"int_add": 4, "div": 1, "mul": 1, "round": 2, "compare": 2}
     if arithmetic != "exact":
@@ -109,8 +126,12 @@ def scanline_listing(points, options) -> Code:
     code = Code()
     code.add("snap", "snap every vertex to the 1/256 px grid",
              per={"vertices": {"mul": 2, "round": 2}})
-    code.add("edge_table", f"ET: bucket each edge under the first row y whose centre line y + 1/2 "
-                           f"it meets, as {entry}; skip horizontal edges", per={"edges": setup})
+    where = "the first row y whose centre line y + 1/2 it meets"
+    if options.get("edge_x") == "x-low":
+        # The textbook's table: x at the lower end, scan lines along whole y.
+        entry, where = entry.replace(", x,", ", X_low,"), "the first whole y at or above its lower end"
+    code.add("edge_table", f"ET: bucket each edge under {where}, as {entry}; skip horizontal "
+                           "edges", per={"edges": setup})
     code.add("start", "AET = empty;  y = the lowest bucket of the ET")
     code.add("loop", "while the ET or the AET is not empty:")
     code.add("enter", "    if the AET is empty: y = the lowest remaining bucket;  "
@@ -130,7 +151,7 @@ def scanline_listing(points, options) -> Code:
 def scanline(points, options):
     rule, arithmetic = options["fill_rule"], options["arithmetic"]
     contours = snap_contours(points)
-    edges, skipped = scan_edges(contours, arithmetic)
+    edges, skipped = scan_edges(contours, arithmetic, sample_of(options))
     at = scanline_listing(points, options).at
     yield Start(line=at["snap"], values=("y", "active"),
                 constants={"contours": len(contours), "vertices": sum(map(len, contours)),
@@ -215,7 +236,7 @@ def _show(value) -> str:
 
 
 # ----------------------------------------------- polygon-scanline: kernel
-def _edge_arrays(contours):
+def _edge_arrays(contours, sample=HALF_PIXEL):
     """Per edge that meets a scan line: low end, deltas, rows and direction."""
     starts, ends = [], []
     for contour in contours:
@@ -227,22 +248,22 @@ def _edge_arrays(contours):
     up = end[:, 1] > start[:, 1]
     low = np.where(up[:, None], start, end)
     high = np.where(up[:, None], end, start)
-    first = -((HALF_PIXEL - low[:, 1]) // ONE)
-    stop = -((HALF_PIXEL - high[:, 1]) // ONE)
+    first = -((sample - low[:, 1]) // ONE)
+    stop = -((sample - high[:, 1]) // ONE)
     keep = stop > first
     return (low[keep], high[keep] - low[keep], first[keep], (stop - first)[keep],
             np.where(up, 1, -1)[keep])
 
 
-def _crossing_columns(contours, arithmetic: str):
+def _crossing_columns(contours, arithmetic: str, sample=HALF_PIXEL):
     """Row, first covered column and direction of every edge/scan-line crossing."""
-    low, delta, first, count, direction = _edge_arrays(contours)
+    low, delta, first, count, direction = _edge_arrays(contours, sample)
     total = int(count.sum())
     edge = np.repeat(np.arange(len(count)), count)
     step = np.arange(total, dtype=np.int64) - np.repeat(np.cumsum(count) - count, count)
     rows = first[edge] + step
     dx, dy = delta[:, 0], delta[:, 1]
-    rise = ONE * first + HALF_PIXEL - low[:, 1]
+    rise = ONE * first + sample - low[:, 1]
     if arithmetic == "exact":
         # The first covered column is ceil((x - 1/2 px) / 1 px) with
         # x = low.x + rise * dx / dy; times 256 * dy it is an integer quotient.
@@ -283,7 +304,8 @@ def scanline_mask(points, options=None, grid=None, origin=(0, 0)) -> np.ndarray:
     """
     rule, arithmetic = _options(options)
     width, height = grid
-    rows, columns, direction = _crossing_columns(snap_contours(points), arithmetic)
+    rows, columns, direction = _crossing_columns(snap_contours(points), arithmetic,
+                                                 sample_of(options or {}))
     rows = rows - origin[1]
     inside = (rows >= 0) & (rows < height)
     # A crossing left of the grid switches the whole row, one right of it
@@ -302,18 +324,18 @@ def scanline_mask(points, options=None, grid=None, origin=(0, 0)) -> np.ndarray:
     return np.repeat(state, lengths).reshape(height, width)
 
 
-def pixel_box(points) -> tuple[int, int, int, int]:
+def pixel_box(points, sample=HALF_PIXEL) -> tuple[int, int, int, int]:
     """(x0, y0, W, H): the smallest block of pixels the polygon can cover."""
     snapped = [v for contour in snap_contours(points) for v in contour]
     xs = [x for x, _ in snapped]
     ys = [y for _, y in snapped]
-    x0, y0 = first_index(min(xs)), first_index(min(ys))
-    return x0, y0, first_index(max(xs)) - x0, first_index(max(ys)) - y0
+    x0, y0 = first_index(min(xs)), first_row(min(ys), sample)
+    return x0, y0, first_index(max(xs)) - x0, first_row(max(ys), sample) - y0
 
 
 def scanline_pixels(points, options=None) -> np.ndarray:
     """Fast kernel: (n, 2) pixels in the generator's order (rows up, x right)."""
-    x0, y0, width, height = pixel_box(points)
+    x0, y0, width, height = pixel_box(points, sample_of(options or {}))
     if width <= 0 or height <= 0:
         return np.zeros((0, 2), dtype=np.int64)
     flat = np.flatnonzero(scanline_mask(points, options, (width, height), (x0, y0)))

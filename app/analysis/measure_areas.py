@@ -304,7 +304,7 @@ def _polygon_traversal(settings, rows, rng) -> None:
     centre, radius = size / 2, size / 2 - 2
     shapes = {"convex": [convex_polygon(rng, centre, radius) for _ in range(settings.traversal_count)],
               "star": [star_polygon(rng, centre, radius) for _ in range(settings.traversal_count)]}
-    for name in ("polygon-scanline", "polygon-convex", "polygon-tessellate"):
+    for name in ("polygon-scanline", "polygon-brute-scanline", "polygon-convex", "polygon-tessellate"):
         spec = registry.get(name)
         options = spec.resolve({})
         for shape, cases in shapes.items():

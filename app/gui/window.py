@@ -112,12 +112,16 @@ class MainWindow(WindowLayout, WindowMenus, DepthAndAccuracy, TextureDisplay, QM
         from app.gui.inspector_dock import InspectorDock
         from app.gui.preferences import Preferences, PreferencesController
         from app.gui.recording import RecordingStatus
+        from app.gui.derivation_overlay import DerivationOverlay
+        from app.gui.steps_dock import StepsDock
         # Stored preferences, Edit > Preferences (Ctrl+,) and View > Grid lines.
         self.preferences = PreferencesController(self, Preferences())
         self.compare_entry = compare_entry(self)  # View > Compare… (Ctrl+K)
         self.gallery_entry = gallery_entry(self)  # Help > Hard cases…
         self.breakpoints = Breakpoints(self)  # step units, breakpoints, bookmarks
         self.inspector = InspectorDock(self)  # View > Pixel inspector (Ctrl+I)
+        self.steps = StepsDock(self)  # View > Steps table (Ctrl+T)
+        self.derivation = DerivationOverlay(self)  # s and n of Bresenham's derivation
         self.recording_status = RecordingStatus(self)  # long runs: progress bar and Cancel
 
     # Parts a running program adds (``launch``); tests add them where they need them.

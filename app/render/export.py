@@ -26,6 +26,7 @@ from algorithms import registry
 from algorithms.trace import FrameState
 
 from app.model.geometry import scene_paths
+from app.render.derivation import draw_distances
 from app.render.frame import compose_frame, compose_region, frame_marks, primitive_mask
 from app.render.palette import DARK, LIGHT, THEMES, ColourIndex, Theme, build_palette
 from app.render.settings import (MAX_FPS, MAX_HOLD, MAX_SCALE, MIN_FPS, NAMES, ExportCancelled,
@@ -117,6 +118,8 @@ class FrameRenderer:
         gw, gh = self.grid_size
         frame = np.empty((height, width), dtype=np.uint8)
         frame[:gh, :gw] = grid
+        if settings.highlight:
+            draw_distances(frame[:gh, :gw], self, index)  # s and n, where the run has them
         if self.body_height > gh:
             frame[gh:self.body_height, :gw] = self._outside
         if self.panel_width:
