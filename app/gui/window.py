@@ -107,6 +107,7 @@ class MainWindow(WindowLayout, WindowMenus, DepthAndAccuracy, QMainWindow):
         """The parts written in modules of their own, each given this window."""
         from app.gui.breakpoint_actions import Breakpoints
         from app.gui.compare_window import compare_entry
+        from app.gui.exercise_mode import ExerciseMode
         from app.gui.gallery import gallery_entry
         from app.gui.inspector_dock import InspectorDock
         from app.gui.preferences import Preferences, PreferencesController
@@ -118,6 +119,7 @@ class MainWindow(WindowLayout, WindowMenus, DepthAndAccuracy, QMainWindow):
         self.breakpoints = Breakpoints(self)  # step units, breakpoints, bookmarks
         self.inspector = InspectorDock(self)  # View > Pixel inspector (Ctrl+I)
         self.recording_status = RecordingStatus(self)  # long runs: progress bar and Cancel
+        self.exercise_mode = ExerciseMode(self)  # Run > Exercise
 
     # Parts a running program adds (``launch``); tests add them where they need them.
     def add_file_actions(self, settings=None):

@@ -190,13 +190,20 @@ class Exercise:
         return self.grades.pop()
 
     def hint(self) -> list[tuple[str, str]]:
-        """The values that decide the current question: the variables before it."""
+        """The values that decide the current question: the numbers known before
+        it and, where the algorithm has one, the decision variable it tests
+        now. (Not the pseudo-code line: that line is the answer.)"""
         question = self.current
         if question is None:
             return []
         before = self.trace.variables_at(max(0, question.step - 1))
-        rows = [(name, show(value)) for name, value in before.items()]
-        return rows + [("line", self.trace.code[question.line].text.strip())]
+        rows = [(name, show(value)) for name, value in before.items()
+                if isinstance(value, (int, float)) and not isinstance(value, bool)]
+        tested = self.trace.step(question.step).values.get(self.decision)
+        if tested is not None and question.kind != "value":
+            rows = [row for row in rows if row[0] != self.decision]
+            rows.append((f"{self.decision} (tested now)", show(float(tested))))
+        return rows
 
     @property
     def score(self) -> tuple[int, int]:

@@ -141,6 +141,9 @@ def test_the_hint_shows_the_values_before_the_step():
     trace = record("line-bresenham", LINE)
     exercise = Exercise(trace, "decision")
     hint = dict(exercise.hint())
-    question = exercise.current
-    assert hint["line"] == trace.code[question.line].text.strip()
+    assert "line" not in hint  # the deciding line would give the branch away
     assert hint["dx"] == str(LINE[1][0] - LINE[0][0])
+    assert "choice" not in hint  # the branch taken before is not a number, and not shown
+    # The d this step tests: the textbook's d0 = 2 dy - dx for the first decision.
+    dy, dx = LINE[1][1] - LINE[0][1], LINE[1][0] - LINE[0][0]
+    assert hint["d (tested now)"] == str(2 * dy - dx)
