@@ -7,6 +7,7 @@ from __future__ import annotations
 import argparse
 import json
 import math
+import os
 import re
 import sys
 
@@ -139,10 +140,18 @@ def command_list(args) -> int:
     name_width = max(len(spec.name) for spec in specs)
     family_width = max(len(spec.family) for spec in specs)
     for spec in specs:
-        options = ", ".join(f"{o.name}={_default_text(o.default)}" for o in spec.options)
+        options = ", ".join(_option_text(o) for o in spec.options)
         print(f"{spec.name:<{name_width}}  {spec.family:<{family_width}}  "
               f"{spec.inputs.text():<24}  {spec.summary}" + (f"  [{options}]" if options else ""))
     return 0
+
+
+def _option_text(option) -> str:
+    """name=default, with the choices when there are a few: "order=stack (stack|queue|span)"."""
+    text = f"{option.name}={_default_text(option.default)}"
+    if option.kind == "choice" and len(option.choices) > 1:
+        text += f" ({'|'.join(map(str, option.choices))})"
+    return text
 
 
 def _default_text(value) -> str:
@@ -441,7 +450,8 @@ def add_report_command(commands) -> None:
                     "exact oracles, times) and write report.md, measurements.csv/.json and "
                     "one PNG of cost against error per family into DIR.")
     report.add_argument("--quick", action="store_true",
-                        help="fewer and smaller cases: under a minute")
+                        help="smaller sweeps: about ten seconds on a 2-core machine, where the full "
+                             "report takes one to two minutes")
     report.add_argument("--out", default="rasterlab-report", metavar="DIR",
                         help="the folder to write into, made if needed (default %(default)s)")
 
@@ -477,6 +487,7 @@ def main(argv: list[str] | None = None) -> int:
     try:
         args = build_parser().parse_args(_shield_negative_points(argv))
         if args.command is None:
+            _check_display()
             from app.gui.window import launch
             return launch()
         return {"list": command_list, "run": command_run,
@@ -502,6 +513,18 @@ def main(argv: list[str] | None = None) -> int:
         what = f"{args.command} interrupted" if args.command else "interrupted"
         print(f"rasterlab: {what}", file=sys.stderr)
         return 130
+
+
+def _check_display() -> None:
+    """Refuse in one line, before Qt aborts with its own, when no display can show the window."""
+    platform = os.environ.get("QT_QPA_PLATFORM", "")
+    if not sys.platform.startswith("linux") or platform not in ("", "xcb", "wayland"):
+        return
+    if os.environ.get("DISPLAY") or os.environ.get("WAYLAND_DISPLAY"):
+        return
+    raise CommandError("the window needs a display and none was found (DISPLAY is not set); "
+                       "without one, use `rasterlab list`, `run`, `export` or `report`, or "
+                       "start a virtual one: `Xvfb :99 & DISPLAY=:99 rasterlab`")
 
 
 def _os_reason(error: OSError) -> str:

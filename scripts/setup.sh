@@ -26,6 +26,21 @@ PYTHON="${PYTHON:-python3}"
 if [ ! -x .venv/bin/python ]; then
   "$PYTHON" -m venv .venv
 fi
-.venv/bin/python -m pip install --quiet --upgrade pip
-.venv/bin/python -m pip install --quiet -e ".[test]"
-echo "RasterLab is set up in .venv"
+# The install is repeated only when pyproject.toml changed since the last
+# one (its checksum is kept in .venv), so running set-up again is quiet.
+STAMP=.venv/.rasterlab-installed
+WANTED="$(sha256sum pyproject.toml | cut -d' ' -f1)"
+if [ "$(cat "$STAMP" 2>/dev/null)" != "$WANTED" ] || [ ! -x .venv/bin/rasterlab ]; then
+  .venv/bin/python -m pip install --quiet --upgrade pip
+  # The editable install's build prints a long warning about same-named
+  # folders; it is about the build, not this project, so it is kept out.
+  log="$(mktemp)"
+  status=0
+  .venv/bin/python -m pip install --quiet -e ".[test]" 2> "$log" || status=$?
+  grep -v -e BuildBackendWarning -e '^ *!!' -e '^ *\*\*\*' -e 'Please be careful' \
+    -e 'name as your package' -e 'with strategy' -e '^ *$' "$log" >&2 || true
+  rm -f "$log"
+  [ "$status" -eq 0 ] || exit "$status"
+  echo "$WANTED" > "$STAMP"
+fi
+echo "RasterLab is set up in .venv (run .venv/bin/rasterlab, or 'source .venv/bin/activate' first to type just rasterlab)"
