@@ -108,6 +108,7 @@ class MainWindow(WindowLayout, WindowMenus, DepthAndAccuracy, QMainWindow):
         from app.gui.breakpoint_actions import Breakpoints
         from app.gui.compare_window import compare_entry
         from app.gui.exercise_mode import ExerciseMode
+        from app.gui.student_actions import StudentActions
         from app.gui.gallery import gallery_entry
         from app.gui.inspector_dock import InspectorDock
         from app.gui.preferences import Preferences, PreferencesController
@@ -120,6 +121,7 @@ class MainWindow(WindowLayout, WindowMenus, DepthAndAccuracy, QMainWindow):
         self.inspector = InspectorDock(self)  # View > Pixel inspector (Ctrl+I)
         self.recording_status = RecordingStatus(self)  # long runs: progress bar and Cancel
         self.exercise_mode = ExerciseMode(self)  # Run > Exercise
+        self.student_actions = StudentActions(self)  # File > Open algorithm…, Run > First divergence
 
     # Parts a running program adds (``launch``); tests add them where they need them.
     def add_file_actions(self, settings=None):

@@ -121,6 +121,17 @@ def make_cases(spec, selectors, seed: int = 0) -> list[Case]:
     return made
 
 
+def student_args(kind: str, points, options: dict) -> tuple:
+    """draw()'s arguments for a run on these points and options."""
+    if kind == "lines":
+        (x0, y0), (x1, y1) = points
+        return (x0, y0, x1, y1)
+    (cx, cy), = points
+    if kind == "ellipse":
+        return (cx, cy, options["rx"], options["ry"])
+    return (cx, cy, options["radius"])
+
+
 def line_case(name, p, q) -> Case:
     return Case(name, (tuple(p), tuple(q)), {}, (p[0], p[1], q[0], q[1]))
 
