@@ -15,7 +15,7 @@ from algorithms import registry
 from algorithms.raster import MAX_GRID
 from algorithms.registry import InputError, parse_number
 from algorithms.trace import DEFAULT_STEP_CAP, MAX_STEP_CAP, TraceError
-from app import cli_check
+from app import cli_teaching
 from app.model import budget
 from app.progress import TerminalBar
 from app.model.scene import one_line
@@ -61,7 +61,8 @@ def build_parser() -> Parser:
     output.add_argument("--ascii", action="store_true", help="print the grid as text")
     add_export_command(commands)
     add_report_command(commands)
-    cli_check.add_check_command(commands)
+    cli_teaching.add_check_command(commands)
+    cli_teaching.add_worksheet_command(commands)
     return parser
 
 
@@ -492,7 +493,8 @@ def main(argv: list[str] | None = None) -> int:
             return launch()
         return {"list": command_list, "run": command_run,
                 "export": command_export, "report": command_report,
-                "check": cli_check.command_check}[args.command](args)
+                "check": cli_teaching.command_check,
+                "worksheet": cli_teaching.command_worksheet}[args.command](args)
     except (CommandError, InputError) as error:
         print(f"rasterlab: {one_line(str(error))}", file=sys.stderr)
         return 2

@@ -1,7 +1,8 @@
-"""`rasterlab check FILE.py --against ALG ...`: grade a student's own algorithm.
+"""The commands for teaching: `rasterlab check` grades a student's own
+algorithm, `rasterlab worksheet` writes a worksheet and its answer key.
 
-Exit status 0 when every case passes, 1 when some fail, 2 for bad input
-(raised as InputError, which app/cli.py turns into one line).
+check's exit status: 0 when every case passes, 1 when some fail, 2 for bad
+input (raised as InputError, which app/cli.py turns into one line).
 """
 from __future__ import annotations
 
@@ -10,7 +11,7 @@ import sys
 from pathlib import Path
 
 from algorithms.registry import InputError, parse_number
-from app.model import budget, check_report, checking, student
+from app.model import budget, check_report, checking, student, worksheet
 from app.model.files import write_atomically
 
 
@@ -67,3 +68,35 @@ def command_check(args) -> int:
         print("\n".join(check_report.text_lines(results, shown, spec.name)))
     sys.stdout.flush()
     return 0 if all(result.passed for result in results) else 1
+
+
+# ---------------------------------------------------------------- worksheet
+def add_worksheet_command(commands) -> None:
+    sheet = commands.add_parser(
+        "worksheet", help="write a worksheet and its answer key for a scene",
+        description="Write the step table of a scene's run (the steps that plot, branch or "
+                    "fill a span) with chosen columns left blank, a grid with the ideal shape "
+                    "to shade, and the answer key: worksheet.FORMAT and answers.FORMAT in DIR.")
+    sheet.add_argument("scene", metavar="SCENE.json", help="a scene file saved by RasterLab")
+    sheet.add_argument("--out", required=True, metavar="DIR", help="the folder to write into")
+    sheet.add_argument("--format", choices=worksheet.FORMATS, default="pdf",
+                       help="pdf, md (with PNG grids), tex (a tabular) or csv (default %(default)s)")
+    sheet.add_argument("--blank", default=",".join(worksheet.DEFAULT_BLANK), metavar="COLUMNS",
+                       help="columns the student fills in, comma-separated (default %(default)s)")
+
+
+def command_worksheet(args) -> int:
+    from app.model import scene as scenes
+    try:
+        scene = scenes.load(args.scene)
+    except scenes.SceneError as error:
+        raise InputError(str(error)) from None
+    blank = [name.strip() for name in args.blank.split(",") if name.strip()]
+    sheet = worksheet.build(scene, blank)
+    pdf_writer = None
+    if args.format == "pdf":
+        from app.gui.worksheet_pdf import write_pdf
+        pdf_writer = write_pdf
+    files = worksheet.write(sheet, args.out, args.format, pdf_writer)
+    print(f"{args.out}: {', '.join(path.name for path in files)} ({len(sheet.rows)} steps)")
+    return 0
