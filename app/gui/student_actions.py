@@ -1,4 +1,4 @@
-"""File > Open algorithm… and Run > First divergence (D).
+"""File > Open algorithm…, File > Export worksheet… and Run > First divergence (D).
 
 A student's file (the protocol of resources/templates/) joins the algorithm
 list as "FILE (yours)" and runs on the scene like a built-in algorithm, in
@@ -16,8 +16,13 @@ from PySide6.QtWidgets import QFileDialog, QInputDialog
 from algorithms import registry
 from algorithms.errors import InputError
 
-from app.model import checking
+from app.gui.worksheet_pdf import write_pdf
+from app.model import checking, worksheet
 from app.model.student_algorithm import first_divergence, student_spec
+
+
+FILTERS = {"pdf": "PDF (*.pdf)", "md": "Markdown with PNG grids (*.md)",
+           "tex": "LaTeX tabular (*.tex)", "csv": "CSV (*.csv)"}
 
 
 def reference_names() -> list[str]:
@@ -42,7 +47,13 @@ class StudentActions(QObject):
         self.open_action.setToolTip("Run your own draw() generator (see resources/templates/) "
                                     "on the scene and compare it with a built-in algorithm")
         self.open_action.triggered.connect(lambda: self.open())
-        window.menus["file"].insertAction(window.menus["file"].actions()[-1], self.open_action)
+        self.worksheet_action = QAction("Export &worksheet…", window)
+        self.worksheet_action.setToolTip("Write the run's step table with blank columns, a grid "
+                                         "to shade and the answer key (PDF, Markdown, LaTeX, CSV)")
+        self.worksheet_action.triggered.connect(lambda: self.export_worksheet())
+        quit_action = window.menus["file"].actions()[-1]
+        window.menus["file"].insertAction(quit_action, self.open_action)
+        window.menus["file"].insertAction(quit_action, self.worksheet_action)
         self.divergence_action = QAction("First &divergence", window)
         self.divergence_action.setShortcut(QKeySequence("D"))
         self.divergence_action.setShortcutContext(Qt.ShortcutContext.WindowShortcut)
@@ -80,6 +91,26 @@ class StudentActions(QObject):
         window.set_algorithm(spec.name)
         window.picker.set_current(spec.name)
         return spec.name
+
+    def export_worksheet(self, folder: str | None = None, fmt: str | None = None) -> list:
+        """Write worksheet.FORMAT and answers.FORMAT for the scene on show; the files."""
+        window = self.window
+        if folder is None:
+            path, chosen = QFileDialog.getSaveFileName(
+                window, "Export worksheet (a folder is made for it)", "worksheet",
+                ";;".join(FILTERS.values()))
+            if not path:
+                return []
+            folder, fmt = path, next(k for k, v in FILTERS.items() if v == chosen)
+        try:
+            sheet = worksheet.build(window.player.scene)
+            files = worksheet.write(sheet, folder, fmt or "pdf", write_pdf)
+        except (InputError, OSError) as error:
+            window.say_error(f"Could not export the worksheet: {error}")
+            return []
+        window.statusBar().showMessage(f"Wrote {', '.join(p.name for p in files)} in {folder}",
+                                       8000)
+        return files
 
     def first_divergence(self) -> int | None:
         """Seek to the first divergence of the student's run on show; the step, or None."""

@@ -74,3 +74,11 @@ def test_the_correct_file_agrees_and_an_error_becomes_a_note(window, qtbot):
 def test_a_bad_file_is_refused_with_a_message(window, tmp_path):
     assert window.student_actions.open(str(tmp_path / "missing.py"), "line-bresenham") is None
     assert window.player.spec.name == "line-bresenham"
+
+
+def test_export_worksheet_from_the_window(window, tmp_path):
+    files = window.student_actions.export_worksheet(str(tmp_path / "sheet"), "csv")
+    assert sorted(p.name for p in files) == ["answers.csv", "worksheet.csv"]
+    rows = (tmp_path / "sheet" / "answers.csv").read_text().splitlines()
+    trace = window.player.trace
+    assert len(rows) - 1 == len(trace.written_pixels())  # Bresenham: one row per pixel
