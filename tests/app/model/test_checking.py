@@ -198,3 +198,18 @@ def test_a_circle_compares_its_pixels_in_any_order(tmp_path):
     skips = midpoint_student(tmp_path, skip_octant=True)
     result = checking.check_case(spec, spec.resolve({}), skips, cases[1], LIMITS)
     assert not result.passed and result.reference.got == "the end"
+
+
+def test_the_students_file_never_runs_in_this_process(tmp_path):
+    import os
+    import sys
+    path = write(tmp_path, """
+        import os
+        os.environ["RASTERLAB_STUDENT_WAS_HERE"] = "1"
+        def draw(x0, y0, x1, y1):
+            yield x0, y0
+    """, name="side_effects.py")
+    result = check(path, [((4, 4), (4, 4))])[0]
+    assert result.passed
+    assert "RASTERLAB_STUDENT_WAS_HERE" not in os.environ
+    assert not any(getattr(m, "__file__", None) == str(path) for m in list(sys.modules.values()))
