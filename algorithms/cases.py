@@ -28,3 +28,29 @@ LINE_CASES = OCTANT_CASES + SPECIAL_CASES
 CIRCLE_RADII = (0, 1, 2, 3, 4, 5, 7, 8, 12)
 # Ellipses (rx, ry): flat, tall, round and the segments an axis of 0 makes.
 ELLIPSE_AXES = ((10, 6), (6, 10), (5, 5), (1, 4), (7, 1), (0, 3), (4, 0), (12, 3))
+
+# Triangles (real vertices, y up): the fill rule's ties, a sliver, no area,
+# smaller than a pixel, and both windings.
+TRIANGLE_CASES = [
+    ((2.0, 2.0), (12.0, 3.0), (5.0, 10.0)),        # general, counter-clockwise
+    ((5.0, 10.0), (12.0, 3.0), (2.0, 2.0)),        # the same, clockwise
+    ((1.5, 1.5), (9.5, 1.5), (5.5, 7.5)),          # a bottom edge through pixel centres
+    ((5.5, 1.5), (9.5, 7.5), (1.5, 7.5)),          # a top edge through centres (not filled)
+    ((2.5, 2.5), (9.5, 6.5), (2.5, 10.5)),         # a left edge through centres
+    ((1.0, 1.0), (20.0, 2.0), (20.25, 2.125)),     # a sliver
+    ((1.0, 1.0), (5.0, 5.0), (9.0, 9.0)),          # no area
+    ((3.25, 3.25), (3.75, 3.25), (3.5, 3.75)),     # smaller than a pixel, around a centre
+    ((0.0, 0.0), (31.0, 0.0), (0.0, 23.0)),        # large
+]
+# Polygons, as lists of contours: centres on the edges, concave, self-crossing,
+# a hole, thin.
+POLYGON_CASES = [
+    (((1.5, 1.5), (8.5, 1.5), (8.5, 8.5), (1.5, 8.5)),),
+    (((2.0, 2.0), (14.0, 2.0), (14.0, 12.0), (10.0, 12.0), (10.0, 6.0), (6.0, 6.0),
+      (6.0, 12.0), (2.0, 12.0)),),
+    (((8.0, 1.0), (11.0, 14.0), (2.0, 6.0), (14.0, 6.0), (5.0, 14.0)),),
+    (((1.0, 1.0), (15.0, 1.0), (15.0, 15.0), (1.0, 15.0)),
+     ((5.0, 5.0), (11.0, 5.0), (11.0, 11.0), (5.0, 11.0))),
+    (((1.0, 1.0), (20.0, 1.0), (20.0, 2.0)),),
+    (((2.5, 2.5), (9.5, 2.5), (9.5, 5.5), (2.5, 5.5)),),
+]

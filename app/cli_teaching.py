@@ -25,8 +25,9 @@ def add_check_command(commands) -> None:
                     "pass, 1 when some fail, 2 for bad input.")
     check.add_argument("file", metavar="FILE.py", help="the student's file")
     check.add_argument("--against", required=True, metavar="ALG",
-                       help="the reference algorithm: a line or circle algorithm of "
-                            "`rasterlab list` (e.g. line-bresenham, circle-midpoint)")
+                       help="the reference algorithm: a line, circle, triangle or polygon "
+                            "algorithm of `rasterlab list` (e.g. line-bresenham, circle-midpoint, "
+                            "triangle-bbox, polygon-scanline)")
     check.add_argument("--cases", nargs="+", default=["hard"], metavar="CASE",
                        help="hard (the hard-case catalogue), random N (N seeded random "
                             "inputs) and SCENE.json files, in any mix (default: hard)")

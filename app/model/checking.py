@@ -20,12 +20,15 @@ from algorithms import registry
 from algorithms.errors import InputError
 from algorithms.exact import circles as exact_circles
 from algorithms.exact import lines as exact_lines
+from algorithms.exact import polygons as exact_polygons
+from algorithms.exact import triangles as exact_triangles
 
 from .student import Limits, Outcome, run_student
 
 # What the student's draw() takes, per family: the template's signature.
 SIGNATURES = {"lines": "draw(x0, y0, x1, y1)", "circles": "draw(xc, yc, r)",
-              "ellipse": "draw(xc, yc, rx, ry)"}
+              "ellipse": "draw(xc, yc, rx, ry)", "triangles": "draw(x0, y0, x1, y1, x2, y2)",
+              "polygons": "draw(contours)"}
 CIRCLE_CENTRE = (16, 16)
 ORACLE_GRID = (64, 64)
 
@@ -82,10 +85,10 @@ def kind_of(spec) -> str:
         return "lines"
     if spec.name == "ellipse-midpoint":
         return "ellipse"
-    if spec.family == "circles":
-        return "circles"
-    raise InputError(f"check compares lines and circles; {spec.name} is in the "
-                     f"{spec.family} family")
+    if spec.family in ("circles", "triangles", "polygons"):
+        return spec.family
+    raise InputError(f"check compares lines, circles, triangles and polygons; {spec.name} is "
+                     f"in the {spec.family} family")
 
 
 # -------------------------------------------------------------------- cases
@@ -123,6 +126,10 @@ def make_cases(spec, selectors, seed: int = 0) -> list[Case]:
 
 def student_args(kind: str, points, options: dict) -> tuple:
     """draw()'s arguments for a run on these points and options."""
+    if kind == "triangles":
+        return tuple(v for point in points for v in point)
+    if kind == "polygons":
+        return ([[list(p) for p in contour] for contour in points],)
     if kind == "lines":
         (x0, y0), (x1, y1) = points
         return (x0, y0, x1, y1)
@@ -142,7 +149,21 @@ def circle_case(name, kind, centre, r, ry=None) -> Case:
     return Case(name, (centre,), {"radius": r}, (centre[0], centre[1], r))
 
 
+def triangle_case(name, triangle) -> Case:
+    return Case(name, tuple(triangle), {}, tuple(v for point in triangle for v in point))
+
+
+def polygon_case(name, contours) -> Case:
+    return Case(name, tuple(contours), {}, ([[list(p) for p in c] for c in contours],))
+
+
 def hard_cases(kind: str) -> list[Case]:
+    if kind == "triangles":
+        return [triangle_case(f"hard {n + 1}: " + " ".join(f"({x:g},{y:g})" for x, y in t), t)
+                for n, t in enumerate(catalogue.TRIANGLE_CASES)]
+    if kind == "polygons":
+        return [polygon_case(f"hard {n + 1}: {sum(map(len, c))} points", c)
+                for n, c in enumerate(catalogue.POLYGON_CASES)]
     if kind == "lines":
         return [line_case(f"hard {n + 1}: ({p[0]},{p[1]})->({q[0]},{q[1]})", p, q)
                 for n, (p, q) in enumerate(catalogue.LINE_CASES)]
@@ -158,7 +179,15 @@ def random_cases(kind: str, count: int, seed: int) -> list[Case]:
     rng = random.Random(seed)
     made = []
     for n in range(count):
-        if kind == "lines":
+        if kind == "triangles":
+            t = tuple((rng.randint(0, 255) / 8, rng.randint(0, 191) / 8) for _ in range(3))
+            made.append(triangle_case(f"random {n + 1}: " + " ".join(
+                f"({x:g},{y:g})" for x, y in t), t))
+        elif kind == "polygons":
+            c = (tuple((rng.randint(0, 127) / 4, rng.randint(0, 95) / 4)
+                       for _ in range(rng.randint(3, 6))),)
+            made.append(polygon_case(f"random {n + 1}: {len(c[0])} points", c))
+        elif kind == "lines":
             p = (rng.randint(0, 31), rng.randint(0, 31))
             q = (rng.randint(0, 31), rng.randint(0, 31))
             made.append(line_case(f"random {n + 1}: ({p[0]},{p[1]})->({q[0]},{q[1]})", p, q))
@@ -180,6 +209,13 @@ def scene_case(spec, kind: str, path: str) -> Case:
     if kind_of(scene.spec) != kind:
         raise InputError(f"{path}: a {scene.spec.family} scene; {spec.name} takes {kind}")
     name = f"{Path(path).name}"
+    if kind == "triangles":
+        if len(scene.points) != 3:
+            raise InputError(f"{path}: check takes one triangle, the scene has "
+                             f"{len(scene.points) // 3}")
+        return triangle_case(name, scene.points)
+    if kind == "polygons":
+        return polygon_case(name, scene.points)
     if kind == "lines":
         p, q = scene.points
         return line_case(name, p, q)
@@ -206,10 +242,33 @@ def exact_pixels(spec, case: Case, options: dict) -> list | None:
     oracles = {"circle-midpoint": exact_circles.midpoint_circle,
                "circle-sqrt8": exact_circles.sqrt8_circle,
                "circle-sqrt4": exact_circles.sqrt4_circle}
+    if spec.family == "triangles":
+        return exact_triangle(case, options)
+    if spec.name == "polygon-scanline":
+        return exact_polygon(case, options)
     if spec.name in oracles and options.get("start", "integer") == "integer":
         (cx, cy), r = case.points[0], case.options["radius"]
         return [(cx + x, cy + y) for x, y in sorted(oracles[spec.name](r))]
     return None
+
+
+def exact_triangle(case: Case, options: dict) -> list | None:
+    if options.get("precision", "fixed") != "fixed" or tuple(options.get("offset", (0, 0))) != (0, 0):
+        return None
+    counts = exact_triangles.coverage(case.points, options.get("subpixel_bits", 8),
+                                      options.get("fill_rule", "top-left"),
+                                      (0, 0) + ORACLE_GRID, options.get("cull", False))
+    return [pixel for pixel, count in sorted(counts.items()) for _ in range(count)]
+
+
+def exact_polygon(case: Case, options: dict) -> list | None:
+    if options.get("arithmetic", "exact") != "exact":
+        return None
+    snapped = exact_polygons.snap_polygon(case.points)
+    winding, i0, j0 = exact_polygons.winding_grid(snapped)
+    rule = options.get("fill_rule", "evenodd")
+    return [(i0 + int(i), j0 + int(j)) for j, i in zip(*winding.nonzero())
+            if exact_polygons.is_covered(int(winding[j, i]), rule)]
 
 
 def ordered_divergence(expected: list, got: list, names=()) -> Divergence | None:

@@ -213,3 +213,35 @@ def test_the_students_file_never_runs_in_this_process(tmp_path):
     assert result.passed
     assert "RASTERLAB_STUDENT_WAS_HERE" not in os.environ
     assert not any(getattr(m, "__file__", None) == str(path) for m in list(sys.modules.values()))
+
+
+STUDENTS = ROOT / "tests" / "support" / "students"
+
+
+def test_triangles_and_polygons_compare_as_collections_with_the_exact_fill():
+    from algorithms.cases import POLYGON_CASES, TRIANGLE_CASES
+    for against, student_file, made in (
+            ("triangle-bbox", "triangle_exact.py",
+             [checking.triangle_case(str(t), t) for t in TRIANGLE_CASES[2:5]]),
+            ("polygon-scanline", "polygon_evenodd.py",
+             [checking.polygon_case(str(c), c) for c in POLYGON_CASES[2:4]])):
+        spec = registry.get(against)
+        for case in made:
+            result = checking.check_case(spec, spec.resolve({}), STUDENTS / student_file, case,
+                                         LIMITS)
+            assert result.passed and result.has_exact, result.message()
+
+
+def test_an_inclusive_triangle_fills_its_top_edge_and_fails(tmp_path):
+    from algorithms.cases import TRIANGLE_CASES
+    source = (STUDENTS / "triangle_exact.py").read_text()
+    inclusive = write(tmp_path, source.replace("if e < 0 or (e == 0 and not (dy < 0 or (dy == 0 and dx > 0))):",
+                                               "if e < 0:"), name="inclusive.py")
+    spec = registry.get("triangle-bbox")
+    top_edge = TRIANGLE_CASES[3]  # its top edge runs through the centres of row 7
+    result = checking.check_case(spec, spec.resolve({}), inclusive,
+                                 checking.triangle_case("top", top_edge), LIMITS)
+    # Centres exactly on the top edge, and the bottom vertex's (on two right
+    # edges), are filled only by the inclusive rule.
+    on_edges = {f"pixel ({x}, 7)" for x in range(1, 10)} | {"pixel (5, 1)"}
+    assert not result.passed and result.reference.got in on_edges
