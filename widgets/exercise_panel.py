@@ -5,7 +5,7 @@ settings, save) and shows what it is given. The grading is app/model/exercise.py
 """
 from __future__ import annotations
 
-from PySide6.QtCore import Signal
+from PySide6.QtCore import QEvent, Qt, Signal
 from PySide6.QtWidgets import (QComboBox, QFormLayout, QHBoxLayout, QLabel, QLineEdit,
                                QPushButton, QSpinBox, QVBoxLayout, QWidget)
 
@@ -13,6 +13,18 @@ FREQUENCY_TEXT = (("decision", "every decision"), ("step", "every step"),
                   ("scanline", "every scan line"), ("random", "random k %"))
 ANSWER_TEXT = (("auto", "pixel, branch or span"), ("value", "the decision variable"))
 RIGHT_COLOUR, WRONG_COLOUR = "#2b8a3e", "#c92a2a"
+
+
+class AnswerEntry(QLineEdit):
+    """A line edit that keeps Enter for itself: the window binds Return to
+    closing a contour, which would take the key from it."""
+
+    def event(self, event):
+        if event.type() == QEvent.Type.ShortcutOverride and event.key() in (
+                Qt.Key.Key_Return, Qt.Key.Key_Enter):
+            event.accept()
+            return True
+        return super().event(event)
 
 
 class ExercisePanel(QWidget):
@@ -31,7 +43,7 @@ class ExercisePanel(QWidget):
         self.question.setStyleSheet("font-weight: bold")
         self.choices = QHBoxLayout()
         entry_row = QHBoxLayout()
-        self.entry = QLineEdit(placeholderText="type the answer, then Enter")
+        self.entry = AnswerEntry(placeholderText="type the answer, then Enter")
         self.entry.returnPressed.connect(self._typed)
         self.answer_button = QPushButton("Answer")
         self.answer_button.clicked.connect(self._typed)

@@ -31,7 +31,8 @@ def direction(trace, step):
 
 def start(window):
     mode = window.exercise_mode
-    window.menus["run"].actions()[-1].trigger()
+    assert mode.action in window.menus["run"].actions()
+    mode.action.trigger()
     assert mode.action.isChecked() and mode.dock.isVisible()
     return mode
 
@@ -120,3 +121,23 @@ def test_a_scene_edit_undone_restarts_and_the_summary_is_saved(window, tmp_path)
     assert len(rows) == asked + 2 and rows[-1][4] == f"{asked}/{asked}"
     mode.action.setChecked(False)
     assert not mode.dock.isVisible() and window.variables_dock.isVisible()
+
+
+POLYGON = [[(2.0, 2.0), (13.0, 3.0), (7.0, 10.0)]]
+
+
+@pytest.mark.window("polygon-scanline", POLYGON, grid=(16, 12), settled=True)
+def test_a_span_is_marked_with_two_clicks(window):
+    mode = start(window)
+    mode.panel.frequency.setCurrentIndex(mode.panel.frequency.findData("scanline"))
+    question = mode.exercise.current
+    assert question.kind == "span"
+    run = window.player.trace.step(question.step).record  # the Span the step writes
+    click_cell(window, (run.x_end - 1, run.y))  # either end first
+    assert mode.exercise.score == (0, 0) and "now click the last" in mode.panel.feedback.text()
+    click_cell(window, (run.x_start, run.y))
+    assert mode.exercise.score == (1, 1)
+    wrong = mode.exercise.current
+    mode.panel.entry.setText("0, 1")  # Enter answers, though it closes a contour elsewhere
+    QTest.keyClick(mode.panel.entry, Qt.Key.Key_Return)
+    assert mode.exercise.score == (1, 2) and wrong.kind == "span"

@@ -147,3 +147,12 @@ def test_the_hint_shows_the_values_before_the_step():
     # The d this step tests: the textbook's d0 = 2 dy - dx for the first decision.
     dy, dx = LINE[1][1] - LINE[0][1], LINE[1][0] - LINE[0][0]
     assert hint["d (tested now)"] == str(2 * dy - dx)
+
+
+def test_a_depth_test_passes_exactly_where_the_step_writes():
+    triangles = ((2.0, 2.0), (12.0, 3.0), (5.0, 10.0), (3.0, 1.0), (13.0, 8.0), (4.0, 9.0))
+    trace = record("zbuffer", triangles, {"z": (0.5, 0.5, 0.5, 0.2, 0.9, 0.9)})
+    exercise = Exercise(trace, "decision")
+    written = set(written_in_order(trace))
+    assert {q.answer for q in exercise.questions} == {"pass", "fail"}
+    assert all((q.answer == "pass") == (q.step in written) for q in exercise.questions)
