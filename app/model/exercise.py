@@ -157,7 +157,7 @@ class Exercise:
         """What the person should know about this algorithm's questions."""
         if not self.has_decisions:
             return ("This algorithm makes no decision at its steps: "
-                    "predict each pixel instead.")
+                    "predict what each step plots instead.")
         return ""
 
     # ------------------------------------------------------------- answers
