@@ -82,3 +82,15 @@ def test_export_worksheet_from_the_window(window, tmp_path):
     rows = (tmp_path / "sheet" / "answers.csv").read_text().splitlines()
     trace = window.player.trace
     assert len(rows) - 1 == len(trace.written_pixels())  # Bresenham: one row per pixel
+
+
+def test_the_compare_view_puts_the_file_beside_its_reference(window, qtbot):
+    name = window.student_actions.open(str(SAMPLES / "off_by_one.py"), "line-bresenham")
+    qtbot.waitUntil(lambda: window.player.trace is not None, timeout=5000)
+    compare = window.compare_entry.open()
+    assert [pane.algorithm for pane in compare.panes] == [name, "line-bresenham"]
+    qtbot.waitUntil(lambda: compare.current_diff is not None, timeout=5000)
+    compare.seek(compare.last, pause=True)
+    # At the end, the reference's last pixel, Q, is the one cell only it has.
+    assert len(compare.current_diff.cells()) == 1 and compare.next_difference() == LINE[1]
+    compare.close()
