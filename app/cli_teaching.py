@@ -10,6 +10,7 @@ import json
 import sys
 from pathlib import Path
 
+from algorithms import registry
 from algorithms.registry import InputError, parse_number
 from app.model import budget, check_report, checking, student, worksheet
 from app.model.files import write_atomically
@@ -52,13 +53,13 @@ def _limits(args) -> student.Limits:
 
 def command_check(args) -> int:
     path = student.check_file(args.file)
-    spec = checking.registry.get(args.against)
+    spec = registry.get(args.against)
     checking.kind_of(spec)
     selectors = checking.parse_selectors(args.cases)
     seed = parse_number(args.seed, "--seed", integer=True)
     limits = _limits(args)
-    checking.make_cases(spec, selectors, seed)  # bad scenes are refused before any run
-    results = checking.check(path, spec.name, selectors, seed=seed, limits=limits)
+    cases = checking.make_cases(spec, selectors, seed)  # bad scenes are refused before any run
+    results = checking.check(path, spec.name, cases, limits=limits)
     shown = Path(args.file).name
     if args.junit:
         write_atomically(Path(args.junit), check_report.junit_xml(results, shown, spec.name),

@@ -341,12 +341,12 @@ def check_case(spec, options: dict, path, case: Case, limits: Limits) -> CaseRes
     return CaseResult(case, outcome, reference, versus_exact, exact is not None, names)
 
 
-def check(path, against: str, selectors, options: dict | None = None, seed: int = 0,
+def check(path, against: str, made: list[Case], options: dict | None = None,
           limits: Limits = Limits(), progress=None) -> list[CaseResult]:
-    """Every case's result; ``progress(done, total)`` hears each case end."""
+    """Every case's result (cases from ``make_cases``); ``progress(done, total)``
+    hears each case end."""
     spec = registry.get(against)
     options = spec.resolve(options or {})
-    made = make_cases(spec, selectors, seed)
     results = []
     for case in made:
         results.append(check_case(spec, options, path, case, limits))

@@ -15,6 +15,9 @@ import sys
 import traceback
 
 
+FILE_LIMIT = 16 << 20  # the largest file the student's code may write
+
+
 class Shape(Exception):
     """A yielded item that is not ``x, y`` or ``x, y, {name: number}``."""
 
@@ -23,6 +26,7 @@ def set_limits(memory: int, cpu_seconds: int) -> None:
     resource.setrlimit(resource.RLIMIT_AS, (memory, memory))
     resource.setrlimit(resource.RLIMIT_CPU, (cpu_seconds, cpu_seconds + 1))
     resource.setrlimit(resource.RLIMIT_CORE, (0, 0))
+    resource.setrlimit(resource.RLIMIT_FSIZE, (FILE_LIMIT, FILE_LIMIT))
 
 
 def whole(value) -> bool:
