@@ -3,14 +3,14 @@ from __future__ import annotations
 
 from hypothesis import strategies as st
 
-from algorithms.cases import LINE_CASES, OCTANT_CASES, SPECIAL_CASES  # noqa: F401 (re-exported for the tests)
+from algorithms.cases import OCTANT_CASES, SPECIAL_CASES
 from algorithms.registry import get
 
 LINE_ALGORITHMS = ("line-bresenham", "line-dda", "line-incremental",
                    "line-explicit", "line-implicit", "line-parametric")
 
-# The hard-case catalogue is shared with `rasterlab check`.
-NAMED_CASES = LINE_CASES
+# The hard-case catalogue (algorithms/cases.py) is shared with `rasterlab check`.
+NAMED_CASES = OCTANT_CASES + SPECIAL_CASES
 
 
 def points(span: int = 40):
