@@ -28,6 +28,7 @@ from algorithms.registry import format_value
 from algorithms.steps import PLOT, VISIT, Span
 
 FREQUENCIES = ("step", "decision", "scanline", "random")
+MAX_SCAN = 20_000  # steps looked at for questions: an exercise is a few hundred at most
 ANSWER_WITH = ("auto", "value")
 DECIDING = ("branch", "inside", "value")
 
@@ -95,7 +96,8 @@ class Exercise:
         self.decision = trace.start.decision
         self.has_decisions = bool(self.branches) or self.tests or (
             answer_with == "value" and self.decision is not None)
-        every = [q for q in (self.question_at(i) for i in range(1, len(trace))) if q is not None]
+        self.scanned = min(len(trace), MAX_SCAN)
+        every = [q for q in (self.question_at(i) for i in range(1, self.scanned)) if q is not None]
         self.questions = self._choose(every, frequency, percent, seed)
         self.grades: list[Grade] = []
         self.started = clock()
@@ -155,10 +157,14 @@ class Exercise:
 
     def note(self) -> str:
         """What the person should know about this algorithm's questions."""
+        notes = []
         if not self.has_decisions:
-            return ("This algorithm makes no decision at its steps: "
-                    "predict what each step plots instead.")
-        return ""
+            notes.append("This algorithm makes no decision at its steps: "
+                         "predict what each step plots instead.")
+        if self.scanned < len(self.trace):
+            notes.append(f"The questions cover the first {self.scanned:,} of "
+                         f"{len(self.trace):,} steps.")
+        return " ".join(notes)
 
     # ------------------------------------------------------------- answers
     @property

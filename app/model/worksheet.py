@@ -49,10 +49,12 @@ class Worksheet:
         return [["" if hide else cell for cell, hide in zip(row, hidden)] for row in self.rows]
 
 
-def worked_steps(trace) -> list[int]:
-    """Steps that plot a pixel, take a branch or fill a span."""
+def worked_steps(trace, limit: int | None = None) -> list[int]:
+    """Steps that plot a pixel, take a branch or fill a span (the first ``limit``)."""
     steps = []
     for i in range(len(trace)):
+        if limit is not None and len(steps) >= limit:
+            break
         step = trace.step(i)
         span = step.record if isinstance(step.record, Span) else None
         if step.writes or step.branch or (span is not None and span.x_end > span.x_start):
@@ -70,9 +72,9 @@ def build(scene, blank=None) -> Worksheet:
     unknown = [name for name in blank if name not in keys]
     if unknown:
         raise InputError(f"--blank: no column {', '.join(unknown)} (columns: {', '.join(keys)})")
-    steps = worked_steps(trace)
+    steps = worked_steps(trace, MAX_ROWS + 1)
     note = "" if len(steps) <= MAX_ROWS else \
-        f"The first {MAX_ROWS} of {len(steps)} such steps; the run goes on after step {steps[MAX_ROWS - 1]}."
+        f"The first {MAX_ROWS} such steps; the run goes on after step {steps[MAX_ROWS - 1]}."
     order = [table.keys.index(key) for key in keys]
     rows = tuple(tuple(table.text_row(i)[k] for k in order) for i in steps[:MAX_ROWS])
     writes = trace.written()

@@ -104,3 +104,14 @@ def test_bad_input_exits_2(run_cli, tmp_path, argv, words):
     status, out, err = run_cli("worksheet", *argv, "--out", tmp_path / "out")
     assert status == 2 and words in err and len(err.strip().splitlines()) == 1
     assert not (tmp_path / "out").exists()
+
+
+def test_a_long_run_lists_its_first_steps_and_says_so(run_cli, tmp_path, monkeypatch):
+    from app.model import worksheet
+    monkeypatch.setattr(worksheet, "MAX_ROWS", 5)
+    assert run_cli("worksheet", LINE_SCENE, "--out", tmp_path, "--format", "md")[0] == 0
+    heading, rows, _ = expected_table(LINE_SCENE)
+    text = (tmp_path / "answers.md").read_text()
+    table = [line for line in text.splitlines() if line.startswith("| ")]
+    assert len(table) == 1 + 5 and table[-1] == "| " + " | ".join(rows[4]) + " |"
+    assert f"the run goes on after step {rows[4][0]}" in text

@@ -156,3 +156,12 @@ def test_a_depth_test_passes_exactly_where_the_step_writes():
     written = set(written_in_order(trace))
     assert {q.answer for q in exercise.questions} == {"pass", "fail"}
     assert all((q.answer == "pass") == (q.step in written) for q in exercise.questions)
+
+
+def test_a_long_run_asks_about_its_first_steps_and_says_so(monkeypatch):
+    from app.model import exercise as module
+    monkeypatch.setattr(module, "MAX_SCAN", 10)
+    trace = record("line-dda", LINE)
+    exercise = Exercise(trace, "step")
+    assert max(q.step for q in exercise.questions) < 10
+    assert f"first 10 of {len(trace)} steps" in exercise.note()
