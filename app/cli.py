@@ -340,6 +340,23 @@ def add_export_command(commands) -> None:
     export.add_argument("--gif", metavar="OUT.gif", help="write an animated GIF")
     export.add_argument("--frames-dir", metavar="DIR",
                         help="write frame_0000.png, frame_0001.png, ... into DIR")
+    export.add_argument("--mp4", metavar="OUT.mp4",
+                        help="write an H.264 video (plays in PowerPoint, Keynote and browsers)")
+    export.add_argument("--webm", metavar="OUT.webm", help="write a VP9 WebM video")
+    export.add_argument("--svg-dir", metavar="DIR",
+                        help="write frame_0000.svg, ... (vector frames) into DIR")
+    export.add_argument("--pdf", metavar="OUT.pdf", help="write a PDF with a page per frame")
+    export.add_argument("--pages", choices=("frames", "bookmarks"), default="frames",
+                        help="SVG and PDF: a page per exported frame, or only the frames of the "
+                             "scene's bookmarks (default %(default)s)")
+    export.add_argument("--beamer", metavar="OUT.tex",
+                        help="with --pdf: write a Beamer frame showing the PDF's pages as "
+                             "overlays")
+    export.add_argument("--html", metavar="OUT.html",
+                        help="write an interactive page: one self-contained file that replays "
+                             "the run in a browser")
+    export.add_argument("--force", action="store_true",
+                        help="write a page even when it is over its size budget")
     export.add_argument("--fps", default="4", metavar="N",
                         help="frames per second, 0.1 .. 50 (default %(default)s)")
     export.add_argument("--scale", default=None, metavar="N",
@@ -375,8 +392,12 @@ def add_export_command(commands) -> None:
 
 
 def command_export(args) -> int:
-    if args.gif is None and args.frames_dir is None:
-        raise CommandError("export needs --gif OUT.gif, --frames-dir DIR, or both")
+    if args.beamer is not None and args.pdf is None:
+        raise CommandError("--beamer includes the pages of the PDF: give --pdf OUT.pdf too")
+    outputs = (args.gif, args.frames_dir, args.mp4, args.webm, args.svg_dir, args.pdf, args.html)
+    if all(output is None for output in outputs):
+        raise CommandError("export needs an output: --gif, --frames-dir, --mp4, --webm, "
+                           "--svg-dir, --pdf or --html")
     fps = parse_number(args.fps, "--fps")
     hold = parse_number(args.hold, "--hold")
     scale = None if args.scale is None else parse_number(args.scale, "--scale", integer=True)
@@ -403,19 +424,17 @@ def command_export(args) -> int:
                     else budget.parse_size(args.frames_limit, "--frames-limit"))
     bar = _ProgressBar(sys.stderr)
 
+    from app.render import formats
+
     def work():
-        return exporting.export(scene, settings, gif=args.gif,
-                                frames_dir=args.frames_dir,
-                                progress=bar.show if bar.active else None,
-                                names=("--from", "--to"), frames_limit=frames_limit)
-    result = _with_progress(bar, work, exporting.ExportError,
-                            "export interrupted; nothing was written")
-    if result is None:
+        return formats.export_all(args, scene, settings, frames_limit,
+                                  bar.show if bar.active else None)
+    done = _with_progress(bar, work, exporting.ExportError,
+                          "export interrupted; nothing was written")
+    if done is None:
         return 130
-    width, height = result.size
-    written = [str(path) for path in (result.gif, result.frames_dir) if path is not None]
-    print(f"{' and '.join(written)}: {result.frames} frame{'s' if result.frames != 1 else ''} "
-          f"of {width}x{height} pixels, {sum(result.durations) / 1000:g} s")
+    for line in formats.summary(args, *done):
+        print(line)
     return 0
 
 
