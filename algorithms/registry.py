@@ -357,16 +357,22 @@ _REGISTRY: dict[str, AlgorithmSpec] = {}
 _CHECKED_FAMILIES: set = set()  # sources already held to the pseudo-code naming convention
 
 
-def register(spec: AlgorithmSpec) -> AlgorithmSpec:
+def register(spec: AlgorithmSpec, replace: bool = False) -> AlgorithmSpec:
     """Add a spec, once its family's source names every line it yields (see
-    code.check_family)."""
-    if spec.name in _REGISTRY:
+    code.check_family). ``replace``: a spec loaded at run time (a student's
+    file opened again) takes the place of the one of its name."""
+    if spec.name in _REGISTRY and not replace:
         raise ValueError(f"algorithm {spec.name!r} registered twice")
     if spec.family not in FAMILIES:
         raise ValueError(f"unknown family {spec.family!r}")
     check_family(spec.generator, _CHECKED_FAMILIES)
     _REGISTRY[spec.name] = spec
     return spec
+
+
+def unregister(name: str) -> None:
+    """Forget a spec registered at run time (a student's file); no-op for others."""
+    _REGISTRY.pop(name, None)
 
 
 def _load() -> None:

@@ -15,6 +15,7 @@ from algorithms import registry
 from algorithms.raster import MAX_GRID
 from algorithms.registry import InputError, parse_number
 from algorithms.trace import DEFAULT_STEP_CAP, MAX_STEP_CAP, TraceError
+from app import cli_teaching
 from app.model import budget
 from app.model.fragments import fragment_columns, fragment_objects
 from app.progress import TerminalBar
@@ -65,6 +66,8 @@ def build_parser() -> Parser:
     output.add_argument("--csv", action="store_true", help="with --steps: print the steps as CSV")
     add_export_command(commands)
     add_report_command(commands)
+    cli_teaching.add_check_command(commands)
+    cli_teaching.add_worksheet_command(commands)
     return parser
 
 
@@ -539,7 +542,9 @@ def main(argv: list[str] | None = None) -> int:
             from app.gui.window import launch
             return launch()
         return {"list": command_list, "run": command_run,
-                "export": command_export, "report": command_report}[args.command](args)
+                "export": command_export, "report": command_report,
+                "check": cli_teaching.command_check,
+                "worksheet": cli_teaching.command_worksheet}[args.command](args)
     except (CommandError, InputError) as error:
         print(f"rasterlab: {one_line(str(error))}", file=sys.stderr)
         return 2

@@ -108,6 +108,8 @@ class MainWindow(WindowLayout, WindowMenus, DepthAndAccuracy, TextureDisplay, QM
         """The parts written in modules of their own, each given this window."""
         from app.gui.breakpoint_actions import Breakpoints
         from app.gui.compare_window import compare_entry
+        from app.gui.exercise_mode import ExerciseMode
+        from app.gui.student_actions import StudentActions
         from app.gui.gallery import gallery_entry
         from app.gui.inspector_dock import InspectorDock
         from app.gui.preferences import Preferences, PreferencesController
@@ -123,6 +125,8 @@ class MainWindow(WindowLayout, WindowMenus, DepthAndAccuracy, TextureDisplay, QM
         self.steps = StepsDock(self)  # View > Steps table (Ctrl+T)
         self.derivation = DerivationOverlay(self)  # s and n of Bresenham's derivation
         self.recording_status = RecordingStatus(self)  # long runs: progress bar and Cancel
+        self.exercise_mode = ExerciseMode(self)  # Run > Exercise
+        self.student_actions = StudentActions(self)  # File > Open algorithm…, Run > First divergence
 
     # Parts a running program adds (``launch``); tests add them where they need them.
     def add_file_actions(self, settings=None):

@@ -3,26 +3,13 @@ from __future__ import annotations
 
 from hypothesis import strategies as st
 
+from algorithms.cases import OCTANT_CASES, SPECIAL_CASES
 from algorithms.registry import get
 
 LINE_ALGORITHMS = ("line-bresenham", "line-dda", "line-incremental",
                    "line-explicit", "line-implicit", "line-parametric")
 
-# One segment per octant (counter-clockwise from +x), plus the special
-# directions: a point, the four axis directions and the four diagonals.
-OCTANT_CASES = [
-    ((0, 0), (7, 3)), ((0, 0), (3, 7)), ((0, 0), (-3, 7)), ((0, 0), (-7, 3)),
-    ((0, 0), (-7, -3)), ((0, 0), (-3, -7)), ((0, 0), (3, -7)), ((0, 0), (7, -3)),
-]
-SPECIAL_CASES = [
-    ((4, 4), (4, 4)),                                      # zero length
-    ((1, 2), (9, 2)), ((9, 2), (1, 2)),                    # horizontal
-    ((3, 1), (3, 8)), ((3, 8), (3, 1)),                    # vertical
-    ((0, 0), (5, 5)), ((5, 5), (0, 0)),                    # 45 degrees, rising
-    ((0, 5), (5, 0)), ((5, 0), (0, 5)),                    # 45 degrees, falling
-    ((0, 0), (4, 2)), ((0, 0), (2, 1)), ((2, 1), (0, 0)),  # ties
-    ((0, 0), (1, 2)), ((0, 0), (-2, 1)), ((0, 0), (6, -3)),
-]
+# The hard-case catalogue (algorithms/cases.py) is shared with `rasterlab check`.
 NAMED_CASES = OCTANT_CASES + SPECIAL_CASES
 
 

@@ -1,0 +1,204 @@
+"""Run > Exercise: predict each next step of the run on show, graded at once.
+
+``ExerciseMode(window)`` adds the checkable action and the "Exercise" dock.
+While it is on, the grid shows the run only up to the step before the
+current question (stepping further is held back), a click on the grid
+answers a pixel or span question instead of drawing, and the panel takes
+branch choices and typed values. The questions and grading are
+app/model/exercise.py's; a new recording (the scene edited or undone, the
+origin switched) starts the exercise again on the new run.
+"""
+from __future__ import annotations
+
+from pathlib import Path
+
+from PySide6.QtCore import QEvent, QObject, Qt
+from PySide6.QtGui import QAction
+from PySide6.QtWidgets import QFileDialog
+
+from widgets.docks import panel_dock
+from widgets.exercise_panel import ExercisePanel
+
+from app.model.exercise import Exercise
+from app.model.files import write_atomically
+
+PLACEHOLDERS = {"value": "the value, e.g. -3", "span": "or type: first, last",
+                "pixel": "or type: x, y"}
+
+
+class ExerciseMode(QObject):
+    def __init__(self, window):
+        super().__init__(window)
+        self.window = window
+        self.exercise: Exercise | None = None
+        self.span_start = None
+        self._holding = False
+        self._variables_shown = True
+        self.panel = ExercisePanel(window)
+        self.dock = panel_dock("Exercise", "exerciseDock", self.panel, window)
+        window.addDockWidget(Qt.DockWidgetArea.RightDockWidgetArea, self.dock)
+        self.dock.hide()
+        self.action = QAction("E&xercise", window, checkable=True)
+        self.action.setToolTip("Predict each next step before it is shown: "
+                               "click the pixel, choose the branch or type the value")
+        self.action.toggled.connect(self.set_active)
+        window.menus["run"].addSeparator()
+        window.menus["run"].addAction(self.action)
+        self.panel.answered.connect(self.answer)
+        self.panel.typed.connect(self.answer_typed)
+        self.panel.hintRequested.connect(self.hint)
+        self.panel.undoRequested.connect(self.undo)
+        self.panel.saveRequested.connect(self.save)
+        self.panel.settingsChanged.connect(self.restart)
+        window.player.traceChanged.connect(self._trace_changed)
+        window.player.frameChanged.connect(self._hold_back)
+        window.grid.viewport().installEventFilter(self)
+
+    @property
+    def active(self) -> bool:
+        return self.exercise is not None
+
+    def set_active(self, on: bool) -> None:
+        self.dock.setVisible(on)
+        # The variables panel plots the decision variable over the whole run,
+        # which would give the answers away: it is put aside meanwhile.
+        variables = self.window.variables_dock
+        if on:
+            self._variables_shown = variables.isVisible()
+            variables.hide()
+            self.restart()
+        else:
+            self.exercise = None
+            variables.setVisible(self._variables_shown)
+
+    def restart(self, message: str = "") -> None:
+        if not self.action.isChecked():
+            return
+        trace = self.window.player.trace
+        if trace is None:
+            self.exercise = None
+            self.panel.show_question("The run is still being recorded: start the exercise "
+                                     "again when it is done.")
+            return
+        frequency, percent, answer_with = self.panel.settings()
+        self.exercise = Exercise(trace, frequency, percent, answer_with)
+        self.panel.show_note(self.exercise.note())
+        self.panel.show_feedback(message, None)
+        self._ask()
+
+    def _trace_changed(self) -> None:
+        if self.action.isChecked():
+            self.restart("The run changed: the exercise starts again.")
+
+    # ------------------------------------------------------------ asking
+    def _ask(self) -> None:
+        exercise = self.exercise
+        self.span_start = None
+        self._show(exercise.reveal_until())
+        right, asked = exercise.score
+        self.panel.show_score(right, asked, len(exercise.questions) - asked)
+        question = exercise.current
+        if question is None:
+            summary = exercise.summary()
+            missed = ", ".join(map(str, summary["missed"])) or "none"
+            self.panel.show_question(
+                f"Done: {summary['right']} of {summary['asked']} right in "
+                f"{summary['seconds']:.0f} s. Steps missed: {missed}. Save the summary as CSV, "
+                "or change a setting to start again.")
+            return
+        typed = question.kind in PLACEHOLDERS
+        self.panel.show_question(question.prompt, question.choices, typed,
+                                 PLACEHOLDERS.get(question.kind, ""))
+
+    def _show(self, index: int) -> None:
+        self._holding = True
+        try:
+            self.window.player.pause()
+            self.window.player.seek(max(0, index))
+        finally:
+            self._holding = False
+
+    def _hold_back(self, index: int) -> None:
+        """Stepping past the question would show its answer: stay before it."""
+        if self.exercise is None or self._holding or self.exercise.finished:
+            return
+        if index > self.exercise.reveal_until():
+            self._show(self.exercise.reveal_until())
+            self.window.statusBar().showMessage("Answer the question first (Run > Exercise).",
+                                                4000)
+
+    # ----------------------------------------------------------- answers
+    def answer(self, given) -> None:
+        if self.exercise is None or self.exercise.finished:
+            return
+        grade = self.exercise.answer(given)
+        self.panel.show_feedback(grade.text(), grade.right)
+        self._ask()
+
+    def answer_typed(self, text: str) -> None:
+        question = None if self.exercise is None else self.exercise.current
+        if question is None:
+            return
+        if question.kind in ("pixel", "span"):
+            parts = [part.strip() for part in text.replace("..", ",").split(",")]
+            try:
+                self.answer(tuple(int(part) for part in parts))
+            except ValueError:
+                self.panel.show_feedback(f"{text!r}: type two whole numbers such as 3, 7", None)
+            return
+        self.answer(text)
+
+    def clicked(self, pixel) -> None:
+        """A click on the grid: a pixel answer, or one end of a span."""
+        question = None if self.exercise is None else self.exercise.current
+        if question is None:
+            return
+        if question.kind == "pixel":
+            self.answer(pixel)
+        elif question.kind == "span":
+            if self.span_start is None:
+                self.span_start = pixel[0]
+                self.panel.show_feedback(f"First pixel: x = {pixel[0]}; now click the last.", None)
+            else:
+                first, self.span_start = self.span_start, None
+                self.answer((min(first, pixel[0]), max(first, pixel[0])))
+        else:
+            self.panel.show_feedback("Answer with the buttons of the panel.", None)
+
+    def eventFilter(self, watched, event) -> bool:
+        """While the exercise is on, a left click on the grid answers, and draws nothing."""
+        if self.exercise is None or event.type() not in (
+                QEvent.Type.MouseButtonPress, QEvent.Type.MouseButtonRelease,
+                QEvent.Type.MouseButtonDblClick):
+            return False
+        if event.button() != Qt.MouseButton.LeftButton:
+            return False
+        if event.type() == QEvent.Type.MouseButtonPress:
+            grid = self.window.grid
+            self.clicked(grid.pixel_at(grid.mapToScene(event.position().toPoint())))
+        return True
+
+    def undo(self) -> None:
+        if self.exercise is None or self.exercise.undo() is None:
+            return
+        self.panel.show_feedback("The last answer was taken back.", None)
+        self._ask()
+
+    def hint(self) -> None:
+        if self.exercise is not None:
+            self.panel.show_hint(self.exercise.hint())
+
+    def save(self, path: str | None = None) -> None:
+        if self.exercise is None:
+            return
+        if path is None:
+            path, _ = QFileDialog.getSaveFileName(self.window, "Save the exercise summary",
+                                                  "exercise.csv", "CSV files (*.csv)")
+            if not path:
+                return
+        try:
+            write_atomically(Path(path), self.exercise.csv_text().encode("utf-8"))
+        except OSError as error:
+            self.window.say_error(f"Could not save {path}: {error.strerror or error}")
+            return
+        self.window.statusBar().showMessage(f"Saved {path}", 4000)

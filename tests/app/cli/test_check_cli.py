@@ -1,0 +1,91 @@
+"""`rasterlab check`: exit status 0 / 1 / 2, JSON and JUnit XML that validates."""
+from __future__ import annotations
+
+import json
+import xml.etree.ElementTree as ET
+
+import pytest
+
+from algorithms.cases import LINE_CASES
+from tests.support import ROOT
+
+SAMPLES = ROOT / "resources" / "students"
+SCENE = ROOT / "resources" / "scenes" / "line-reversed.json"
+
+
+def test_the_correct_sample_passes_every_hard_case(run_cli):
+    status, out, err = run_cli("check", SAMPLES / "bresenham_correct.py", "--against",
+                               "line-bresenham")
+    assert status == 0, err
+    lines = out.splitlines()
+    assert sum(line.startswith("PASS ") for line in lines) == len(LINE_CASES)
+    assert lines[-1] == f"{len(LINE_CASES)} of {len(LINE_CASES)} cases pass"
+
+
+def test_failures_exit_1_with_json(run_cli):
+    status, out, _ = run_cli("check", SAMPLES / "off_by_one.py", "--against", "line-bresenham",
+                             "--cases", str(SCENE), "random", "2", "--json")
+    result = json.loads(out)
+    assert status == 1
+    assert [case["name"] for case in result["cases"]][0] == "line-reversed.json"
+    assert result["failed"] == sum(not case["passed"] for case in result["cases"]) >= 1
+    failed = next(case for case in result["cases"] if not case["passed"])
+    assert failed["reference_divergence"]["got"] == "the end"
+    assert failed["reference_divergence"]["step"] == failed["steps"]
+
+
+def test_random_cases_repeat_with_their_seed(run_cli):
+    runs = [json.loads(run_cli("check", SAMPLES / "bresenham_correct.py", "--against",
+                               "line-bresenham", "--cases", "random", "3", "--seed", seed,
+                               "--json")[1])
+            for seed in ("7", "7", "8")]
+    names = [[case["name"] for case in run["cases"]] for run in runs]
+    assert names[0] == names[1] != names[2]
+    assert all(run["failed"] == 0 for run in runs)
+
+
+JUNIT_CASE_ATTRIBUTES = {"name", "classname", "time"}
+
+
+def test_junit_xml_validates(run_cli, tmp_path):
+    out_file = tmp_path / "report.xml"
+    status, out, _ = run_cli("check", SAMPLES / "raises.py", "--against", "line-bresenham",
+                             "--cases", "hard", "--junit", out_file)
+    assert status == 1
+    root = ET.parse(out_file).getroot()
+    assert root.tag == "testsuites"
+    (suite,) = root
+    assert suite.tag == "testsuite"
+    cases = list(suite)
+    assert {case.tag for case in cases} == {"testcase"} and len(cases) == len(LINE_CASES)
+    assert all(JUNIT_CASE_ATTRIBUTES <= set(case.attrib) for case in cases)
+    for case in cases:
+        assert len(case) <= 1 and all(child.tag in ("failure", "error") for child in case)
+        assert all("message" in child.attrib and "type" in child.attrib for child in case)
+        float(case.attrib["time"])
+    errors = [case for case in cases if case.find("error") is not None]
+    failures = [case for case in cases if case.find("failure") is not None]
+    vertical = {n for n, (p, q) in enumerate(LINE_CASES) if p[0] == q[0]}
+    assert {cases.index(case) for case in errors} == vertical  # ZeroDivisionError
+    assert all("ZeroDivisionError" in case.find("error").text for case in errors)
+    assert suite.attrib["errors"] == str(len(errors)) == root.attrib["errors"]
+    assert suite.attrib["failures"] == str(len(failures))
+    assert suite.attrib["tests"] == str(len(LINE_CASES))
+    assert sum(line.startswith("FAIL ") for line in out.splitlines()) == len(errors) + len(failures)
+
+
+@pytest.mark.parametrize("argv, words", [
+    (["missing.py", "--against", "line-bresenham"], "no such file"),
+    ([SAMPLES / "raises.py", "--against", "no-such"], "unknown algorithm"),
+    ([SAMPLES / "raises.py", "--against", "flood-fill"], "lines, circles, triangles and polygons"),
+    ([SAMPLES / "raises.py", "--against", "line-dda", "--cases", "random", "x"], "count"),
+    ([SAMPLES / "raises.py", "--against", "line-dda", "--cases", "easy"], "not hard"),
+    ([SAMPLES / "raises.py", "--against", "circle-midpoint", "--cases", SCENE], "lines scene"),
+    ([SAMPLES / "raises.py", "--against", "line-dda", "--time-limit", "0"], "--time-limit"),
+    ([SAMPLES / "raises.py", "--against", "line-dda", "--memory-limit", "1K"], "--memory-limit"),
+    ([ROOT / "README.md", "--against", "line-dda"], ".py"),
+])
+def test_bad_input_exits_2_with_one_line(run_cli, argv, words):
+    status, out, err = run_cli("check", *argv)
+    assert status == 2 and out == ""
+    assert len(err.strip().splitlines()) == 1 and words in err

@@ -1,0 +1,143 @@
+"""Run > Exercise driven with qtbot: answers by button, by typing and by
+clicking the grid, graded as the trace says; stepping held back; undo of an
+answer and of a scene edit; the origin switched; the CSV summary."""
+from __future__ import annotations
+
+import csv
+
+import pytest
+from PySide6.QtCore import Qt
+from PySide6.QtTest import QTest
+
+from tests.support.gui import settle
+
+LINE = ((2, 3), (9, 6))
+pytestmark = pytest.mark.window("line-bresenham", LINE, grid=(16, 12), settled=True)
+
+
+def plotted(trace):
+    """Written pixels by step, from the trace's columns."""
+    writes = trace.written()
+    return dict(zip(writes.steps.tolist(), map(tuple, writes.pixels.tolist())))
+
+
+def direction(trace, step):
+    """E or NE from the pixels themselves: NE moves both coordinates."""
+    pixels = plotted(trace)
+    before = max(s for s in pixels if s < step)
+    (x0, y0), (x1, y1) = pixels[before], pixels[step]
+    return "NE" if x0 != x1 and y0 != y1 else "E"
+
+
+def start(window):
+    mode = window.exercise_mode
+    assert mode.action in window.menus["run"].actions()
+    mode.action.trigger()
+    assert mode.action.isChecked() and mode.dock.isVisible()
+    return mode
+
+
+def click_cell(window, pixel):
+    grid = window.grid
+    QTest.mouseClick(grid.viewport(), Qt.MouseButton.LeftButton, Qt.KeyboardModifier.NoModifier,
+                     grid.widget_pos_of((pixel[0] + 0.5, pixel[1] + 0.5)))
+
+
+def test_branches_graded_at_once_and_stepping_held_back(window, qtbot):
+    mode = start(window)
+    trace = window.player.trace
+    right = wrong = 0
+    for n in range(4):
+        question = mode.exercise.current
+        assert window.player.index == question.step - 1  # the answer is not on show yet
+        correct = direction(trace, question.step)
+        choice = correct if n % 2 == 0 else {"E": "NE", "NE": "E"}[correct]
+        qtbot.mouseClick(mode.panel.choice_button(choice), Qt.MouseButton.LeftButton)
+        right, wrong = right + (n % 2 == 0), wrong + (n % 2 == 1)
+        feedback = mode.panel.feedback.text()
+        assert feedback.startswith("Right" if n % 2 == 0 else "Wrong")
+        if n % 2:
+            assert trace.code[trace.step(question.step).line].text.strip() in feedback
+    assert mode.exercise.score == (right, right + wrong)
+    assert mode.panel.score.text().startswith(f"Score: {right} / {right + wrong}")
+    waiting = window.player.index
+    window.player.forward()
+    assert window.player.index == waiting  # held back before the question
+    qtbot.mouseClick(mode.panel.undo_button, Qt.MouseButton.LeftButton)
+    assert mode.exercise.score == (right, right + wrong - 1)
+
+
+def test_typing_the_decision_variable(window):
+    mode = start(window)
+    mode.panel.answer_with.setCurrentIndex(mode.panel.answer_with.findData("value"))
+    (x0, y0), (x1, y1) = LINE
+    d0 = 2 * (y1 - y0) - (x1 - x0)  # the textbook's first d
+    assert mode.exercise.current.kind == "value"
+    mode.panel.entry.setText(str(d0))
+    QTest.keyClick(mode.panel.entry, Qt.Key.Key_Return)
+    assert mode.exercise.score == (1, 1)
+
+
+@pytest.mark.window("line-dda", LINE, grid=(16, 12), settled=True)
+def test_clicking_the_next_pixel_and_the_origin_switched(window, qtbot):
+    mode = start(window)
+    assert "no decision" in mode.panel.note.text()
+    points = list(window.player.points)
+    pixels = plotted(window.player.trace)
+    click_cell(window, pixels[mode.exercise.current.step])
+    click_cell(window, (15, 0))  # surely not the next pixel of this line
+    assert mode.exercise.score == (1, 2)
+    assert window.player.points == points  # the clicks answered; they drew nothing
+    following = pixels[mode.exercise.current.step]
+    shown_at = window.grid.widget_pos_of((following[0] + 0.5, following[1] + 0.5))
+    window.y_down_action.trigger()
+    settle(qtbot, window)
+    # The origin is how the grid is shown: the same run, the same questions, the
+    # pixel drawn elsewhere, and a click where it is drawn now is right.
+    assert window.grid.widget_pos_of((following[0] + 0.5, following[1] + 0.5)) != shown_at
+    assert mode.exercise.score == (1, 2)
+    click_cell(window, following)
+    assert mode.exercise.score == (2, 3)
+
+
+def test_a_scene_edit_undone_restarts_and_the_summary_is_saved(window, tmp_path):
+    mode = start(window)
+    mode.answer("E")
+    window.points.type_value(1, "x", "5")  # an edit of the scene: a new run
+    assert window.player.points == [LINE[0], (5, LINE[1][1])]
+    assert mode.exercise.score == (0, 0) and "starts again" in mode.panel.feedback.text()
+    mode.answer("E")
+    window.undo()
+    assert window.player.points == list(LINE)
+    assert mode.exercise.score == (0, 0) and mode.exercise.trace is window.player.trace
+    trace = window.player.trace
+    asked = len(mode.exercise.questions)
+    for question in list(mode.exercise.questions):
+        mode.answer(direction(trace, question.step))
+    assert mode.exercise.finished and "Done" in mode.panel.question.text()
+    assert window.player.index == len(trace) - 1
+    mode.save(str(tmp_path / "summary.csv"))
+    rows = list(csv.reader(open(tmp_path / "summary.csv")))
+    assert len(rows) == asked + 2 and rows[-1][4] == f"{asked}/{asked}"
+    mode.action.setChecked(False)
+    assert not mode.dock.isVisible() and window.variables_dock.isVisible()
+
+
+POLYGON = [[(2.0, 2.0), (13.0, 3.0), (7.0, 10.0)]]
+
+
+@pytest.mark.window("polygon-scanline", POLYGON, grid=(16, 12), settled=True)
+def test_a_span_is_marked_with_two_clicks(window):
+    mode = start(window)
+    mode.panel.frequency.setCurrentIndex(mode.panel.frequency.findData("scanline"))
+    question = mode.exercise.current
+    assert question.kind == "span"
+    run = window.player.trace.step(question.step).record  # the Span the step writes
+    click_cell(window, (run.x_end - 1, run.y))  # either end first
+    assert mode.exercise.score == (0, 0) and "now click the last" in mode.panel.feedback.text()
+    click_cell(window, (run.x_start, run.y))
+    assert mode.exercise.score == (1, 1)
+    wrong = mode.exercise.current
+    mode.panel.entry.setText("0, 1")  # Enter answers, though it closes a contour elsewhere
+    QTest.keyClick(mode.panel.entry, Qt.Key.Key_Return)
+    assert mode.exercise.score == (1, 2) and wrong.kind == "span"
