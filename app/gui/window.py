@@ -7,7 +7,6 @@ on its own (tests, screenshots, benchmarks) and driven through
 """
 from __future__ import annotations
 
-import bisect
 import sys
 
 import numpy as np
@@ -29,6 +28,7 @@ from app.gui.window_layout import WindowLayout
 from app.gui.window_menus import WindowMenus
 from app.model.drawing import CONTOURS, point_labels
 from app.model.insight import PixelTally, has_insight, inside_chips, row_tones
+from app.model.notes import note_at
 from app.model.inputs import split_contours
 from app.model.examples import default_scene
 from app.model.inputs import open_ended
@@ -545,9 +545,9 @@ class MainWindow(WindowLayout, WindowMenus, DepthAndAccuracy, QMainWindow):
         if not text:
             text = placing_message(player.spec, player.points, player.breaks)
         if not text and trace is not None and self._notes:
-            k = bisect.bisect_right(self._notes, player.index) - 1
-            if k >= 0:
-                text = f"Step {self._notes[k]:,}: {trace.record_at(self._notes[k]).text}"
+            step = note_at(trace, self._notes, player.index)
+            if step is not None:
+                text = f"Step {step:,}: {trace.record_at(step).text}"
         self._say(text, error)
 
     def _say(self, text: str, error: bool = False) -> None:
