@@ -29,6 +29,7 @@ from app.gui.window_menus import WindowMenus
 from app.model.drawing import CONTOURS, point_labels
 from app.model.insight import PixelTally, has_insight, inside_chips, row_tones
 from app.model.notes import note_at
+from app.gui.window_guides import WindowGuides
 from app.model.inputs import split_contours
 from app.model.examples import default_scene
 from app.model.inputs import open_ended
@@ -79,6 +80,7 @@ class MainWindow(WindowLayout, WindowMenus, DepthAndAccuracy, QMainWindow):
         self.bookmarks: list = []  # the scene's bookmarks while there are no file actions
 
         self._build_centre()
+        self.guides = WindowGuides(self.grid, PALETTE)
         self._build_scene_dock()
         self._build_code_dock()
         self._build_status()
@@ -289,6 +291,7 @@ class MainWindow(WindowLayout, WindowMenus, DepthAndAccuracy, QMainWindow):
         self.palette_ = palette
         self._empty_image = None  # composed with the old colours
         self.grid.set_palette(palette)
+        self.guides.set_palette(palette)
         recolor(self.legend, legend_rows(palette))
         recolor(self.coverage_legend, coverage_rows(palette))
 
@@ -366,6 +369,7 @@ class MainWindow(WindowLayout, WindowMenus, DepthAndAccuracy, QMainWindow):
         player, trace, spec = self.player, self.player.trace, self.player.spec
         self._error = ""
         self.grid.set_shape(shape_paths(spec, player.points, player.options, player.breaks))
+        self.guides.run_changed(player)
         self._show_inputs()
         self._tables = TableIndex(trace)
         self._tally = PixelTally(trace) if trace is not None and has_insight(
@@ -421,6 +425,7 @@ class MainWindow(WindowLayout, WindowMenus, DepthAndAccuracy, QMainWindow):
         if state is None:
             self.grid.set_image(self._blank())
             self.grid.set_highlights((), ())
+            self.guides.show(None, None)
             self.variables.set_caption("No run: place the points first.")
             self.coverage_label.setText("")
             self._update_message()
@@ -436,6 +441,7 @@ class MainWindow(WindowLayout, WindowMenus, DepthAndAccuracy, QMainWindow):
         self._show_error_summary()
         cells, spans = _step_cells(state)
         self.grid.set_highlights(cells, state.candidates, spans)
+        self.guides.show(player.trace, state)
         self._show_cracks(player.trace, state.index)
         trace, index = player.trace, state.index
         self.transport.set_position(index)

@@ -27,6 +27,7 @@ from algorithms.trace import FrameState
 
 from app.model.geometry import scene_paths
 from app.render.frame import compose_frame, compose_region, frame_marks, primitive_mask
+from app.render.reasoning import NONE, draw_guides, step_guides
 from app.render.palette import DARK, LIGHT, THEMES, ColourIndex, Theme, build_palette
 from app.render.settings import (MAX_FPS, MAX_HOLD, MAX_SCALE, MIN_FPS, NAMES, ExportCancelled,
                                  ExportError, ExportSettings, auto_scale, frame_durations,
@@ -81,8 +82,10 @@ class FrameRenderer:
         if gw > MAX_SIDE or gh > MAX_SIDE:
             raise ExportError(f"the grid would be {gw}x{gh} pixels at scale {scale}; a frame is "
                               f"at most {MAX_SIDE}x{MAX_SIDE}: choose a smaller scale")
-        self.paths = (scene_paths(self.spec, scene.points, self.spec.resolve(scene.options))
-                      if settings.primitive else [])
+        # The ideal primitive: drawn when asked, and always the target the
+        # reasoning's guides point at (the drop from Bresenham's M).
+        self.ideal = scene_paths(self.spec, scene.points, self.spec.resolve(scene.options))
+        self.paths = self.ideal if settings.primitive else []
         self._text = TextParts(self, max(gw, gh))
         self.panel_width = self._text.panel_width if settings.panel != "none" else 0
         self.caption_height = self._text.caption_height if settings.caption else 0
@@ -95,6 +98,8 @@ class FrameRenderer:
                               f"{MAX_SIDE}x{MAX_SIDE}: choose a smaller scale or no side panel")
         self.colours = build_palette(self.theme, trace)
         self._outside = self.colours.index_of(self.theme.palette.outside)
+        self._guide = self.colours.index_of(self.theme.palette.guide)
+        self._current = self.colours.index_of(self.theme.palette.current)
         self.grid_lines = settings.grid_lines and scale >= 4
         self._grid = _GridPart(self, incremental)
         self._states = _States(trace, incremental)
@@ -111,6 +116,11 @@ class FrameRenderer:
         marks = frame_marks(state, self.paths, self.differences, settings.highlight,
                             settings.primitive)
         grid = self._grid.draw(state.raster, marks, written)
+        guides = (step_guides(self.trace, state, self.ideal)
+                  if settings.reasoning and settings.highlight else NONE)
+        if guides:
+            grid = grid.copy()  # the grid part keeps its own picture for the next frame
+            draw_guides(grid, guides, settings.scale, self._guide, self._current)
         if not self.y_down:
             grid = grid[::-1]  # row 0 is y = 0, the bottom of the picture
         width, height = self.size
@@ -123,7 +133,14 @@ class FrameRenderer:
             frame[:self.body_height, gw:] = self._text.panel(state)
         if self.caption_height:
             frame[self.body_height:, :] = self._text.caption(state)
+        if guides.labels:
+            self._text.grid_labels(frame, guides.labels, self._grid_point)
         return frame
+
+    def _grid_point(self, x: float, y: float) -> tuple[float, float]:
+        """Grid units to the frame's pixels (left, top)."""
+        scale = self.settings.scale
+        return x * scale, (y * scale if self.y_down else self.grid_size[1] - y * scale)
 
     def image(self, index: int) -> Image.Image:
         """Frame ``index`` as a Pillow palette image."""

@@ -62,6 +62,7 @@ class ExportSettings:
     grid_lines: bool = True  # drawn when a cell is 4 or more pixels wide
     primitive: bool = True
     highlight: bool = True
+    reasoning: bool = True   # the step's reasoning on the grid (app/render/reasoning.py)
     caption: bool = True
     panel: str = "code"
     theme: str = "light"

@@ -163,6 +163,27 @@ class TextParts:
             self._code_rows[line] = row
         return row
 
+    def grid_labels(self, frame: np.ndarray, labels, to_pixel) -> None:
+        """Write the guides' labels (x, y, text in grid units) onto the
+        grid part of ``frame`` (palette indices), in the guide colour, just
+        right of and above their point."""
+        colours = self.r.colours
+        gw, gh = self.r.grid_size
+        face = self.sans_bold
+        for x, y, text in labels:
+            left, top = to_pixel(x, y)
+            width, height = face.width(text) + 2, face.ascent + face.descent
+            left = int(min(max(0, left + 4), gw - width))
+            top = int(min(max(0, top - height - 2), gh - height))
+            if left < 0 or top < 0:
+                continue
+            region = frame[top:top + height, left:left + width]
+            patch = Image.fromarray(colours.rgb[region], "RGB")
+            ImageDraw.Draw(patch).text((1, 0), text, font=face.face,
+                                       fill=self.r.theme.palette.guide, anchor="la")
+            rgba = np.dstack([np.asarray(patch), np.full(region.shape, 255, np.uint8)])
+            frame[top:top + height, left:left + width] = colours.indices(rgba)
+
     def _rows(self, index: int) -> list:
         """The variables panel's rows at step ``index``."""
         return self.r.spec.panel_rows(self.r.trace, index)
