@@ -45,8 +45,6 @@ __all__ = ["DARK", "LIGHT", "THEMES", "ColourIndex", "Theme", "build_palette", "
            "MANIFEST"]
 
 MAX_SIDE = 4096    # pixels, each side of a frame
-# Pillow holds every frame of a GIF in memory until it writes the file.
-MAX_GIF_PIXELS = 2 ** 30
 # The default limit of a frames folder on disk, as the GIF's above.
 MAX_FRAMES_BYTES = 2 ** 30
 BLOCK = 4096       # bytes a file takes on disk at least
@@ -280,11 +278,6 @@ def export(scene, settings: ExportSettings = ExportSettings(), gif=None, frames_
     settings = settings.for_grid(trace.width, trace.height)
     steps = frame_steps(scene, trace, settings, names)
     renderer = FrameRenderer(scene, settings, trace, differences)
-    width, height = renderer.size
-    if gif is not None and len(steps) * width * height > MAX_GIF_PIXELS:
-        raise ExportError(f"the GIF would hold {len(steps):,} frames of {width}x{height} pixels, "
-                          f"more than {MAX_GIF_PIXELS // 2 ** 20:,} MiB: export a shorter range "
-                          "or at a smaller scale")
     if frames_dir is not None:
         check_frames_size(renderer, steps, frames_limit)
     durations = frame_durations(len(steps), settings.fps, settings.hold)
