@@ -15,7 +15,7 @@ frames and hands them to the writers.
 from __future__ import annotations
 
 import io
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from pathlib import Path
 from typing import Callable, Sequence
 
@@ -27,18 +27,19 @@ from algorithms.trace import FrameState
 
 from app.model.geometry import scene_paths
 from app.render.frame import compose_frame, compose_region, frame_marks, primitive_mask
-from app.render.reasoning import NONE, draw_guides, step_guides
+from app.render.axes import Axes
+from app.render.reasoning import NONE, draw_guides, step_guides, vertex_labels
 from app.render.palette import DARK, LIGHT, THEMES, ColourIndex, Theme, build_palette
-from app.render.settings import (MAX_FPS, MAX_HOLD, MAX_SCALE, MIN_FPS, NAMES, ExportCancelled,
-                                 ExportError, ExportSettings, auto_scale, frame_durations,
-                                 frame_range, frame_steps, record)
-from app.render.text import TextParts
+from app.render.settings import (MAX_FPS, MAX_HOLD, MAX_SCALE, MAX_TEXT, MIN_FPS, MIN_TEXT,
+                                 NAMES, ExportCancelled, ExportError, ExportSettings, auto_scale, chosen_frames,
+                                 frame_durations, frame_range, frame_steps, record)
+from app.render.text import TextParts, panel_width, text_pixels
 from app.render.writers import (MANIFEST, FrameWriter, GifWriter, NullWriter, PngFolderWriter,
                                 saving)
 
 # Callers take every export name from here, whichever part defines it.
 __all__ = ["DARK", "LIGHT", "THEMES", "ColourIndex", "Theme", "build_palette", "MAX_FPS",
-           "MAX_HOLD", "MAX_SCALE", "MIN_FPS", "ExportCancelled", "ExportError", "ExportSettings",
+           "MAX_HOLD", "MAX_SCALE", "MIN_FPS", "MAX_TEXT", "MIN_TEXT", "chosen_frames", "ExportCancelled", "ExportError", "ExportSettings",
            "auto_scale", "frame_durations", "frame_range", "frame_steps", "record",
            "FrameWriter", "GifWriter", "NullWriter", "PngFolderWriter", "FrameRenderer",
            "ExportResult", "export", "check_frames_size", "MAX_FRAMES_BYTES",
@@ -84,12 +85,22 @@ class FrameRenderer:
         # reasoning's guides point at (the drop from Bresenham's M).
         self.ideal = scene_paths(self.spec, scene.points, self.spec.resolve(scene.options))
         self.paths = self.ideal if settings.primitive else []
-        self._text = TextParts(self, max(gw, gh))
+        text_size = settings.text_size or text_pixels(max(gw, gh))
+        if settings.panel == "auto":
+            fits = gw + panel_width(text_size) <= MAX_SIDE
+            settings = self.settings = replace(settings, panel="code" if fits else "none")
+        self.text_size = text_size
+        self._text = TextParts(self, text_size)
         self.panel_width = self._text.panel_width if settings.panel != "none" else 0
         self.caption_height = self._text.caption_height if settings.caption else 0
         panel_height = self._text.panel_height if settings.panel != "none" else 0
-        self.body_height = max(gh, panel_height)
-        self.size = (gw + self.panel_width, self.body_height + self.caption_height)
+        self.axes = Axes(self, self._text.sans, max(2, round(text_size / 4))) \
+            if settings.axes else None
+        self.grid_left = self.axes.left if self.axes else 0
+        below = self.axes.bottom if self.axes else 0
+        self.body_height = max(gh + below, panel_height)
+        self.size = (self.grid_left + gw + self.panel_width,
+                     self.body_height + self.caption_height)
         width, height = self.size
         if width > MAX_SIDE or height > MAX_SIDE:
             raise ExportError(f"a frame would be {width}x{height} pixels, more than "
@@ -102,6 +113,8 @@ class FrameRenderer:
         self._grid = _GridPart(self, incremental)
         self._states = _States(trace, incremental)
         self._text.allocate()
+        self._axes = self.axes.draw() if self.axes else None
+        self.vertex_labels = vertex_labels(self.spec, scene) if settings.vertex_labels else []
 
     @property
     def palette_bytes(self) -> bytes:
@@ -123,22 +136,30 @@ class FrameRenderer:
             grid = grid[::-1]  # row 0 is y = 0, the bottom of the picture
         width, height = self.size
         gw, gh = self.grid_size
+        left = self.grid_left
         frame = np.empty((height, width), dtype=np.uint8)
-        frame[:gh, :gw] = grid
-        if self.body_height > gh:
-            frame[gh:self.body_height, :gw] = self._outside
+        frame[:self.body_height, :left + gw] = self._outside
+        frame[:gh, left:left + gw] = grid
+        if self._axes is not None:
+            strip, under = self._axes
+            frame[:strip.shape[0], :left] = strip
+            frame[gh:gh + under.shape[0], left:left + gw] = under
         if self.panel_width:
-            frame[:self.body_height, gw:] = self._text.panel(state)
+            frame[:self.body_height, left + gw:] = self._text.panel(state)
         if self.caption_height:
             frame[self.body_height:, :] = self._text.caption(state)
-        if guides.labels:
+        if guides.labels and settings.grid_text:
             self._text.grid_labels(frame, guides.labels, self._grid_point)
+        if self.vertex_labels:
+            self._text.grid_labels(frame, self.vertex_labels, self._grid_point,
+                                   self.theme.palette.handle_edge)
         return frame
 
     def _grid_point(self, x: float, y: float) -> tuple[float, float]:
         """Grid units to the frame's pixels (left, top)."""
         scale = self.settings.scale
-        return x * scale, (y * scale if self.y_down else self.grid_size[1] - y * scale)
+        return (self.grid_left + x * scale,
+                y * scale if self.y_down else self.grid_size[1] - y * scale)
 
     def image(self, index: int) -> Image.Image:
         """Frame ``index`` as a Pillow palette image."""
@@ -159,7 +180,8 @@ class FrameRenderer:
         outlines and text never reach a centre)."""
         scale = self.settings.scale
         gw, gh = self.grid_size
-        centres = self.rgb(index)[scale // 2:gh:scale, scale // 2:gw:scale]
+        left = self.grid_left
+        centres = self.rgb(index)[scale // 2:gh:scale, left + scale // 2:left + gw:scale]
         return centres if self.y_down else centres[::-1]
 
 
@@ -252,6 +274,7 @@ class ExportResult:
     durations: list[int]
     gif: Path | None = None
     frames_dir: Path | None = None
+    chosen: str = ""  # one line: what a frame stands for, the size and the panel
 
 
 def export(scene, settings: ExportSettings = ExportSettings(), gif=None, frames_dir=None,
@@ -276,7 +299,7 @@ def export(scene, settings: ExportSettings = ExportSettings(), gif=None, frames_
         raise ExportError("nothing to write: give a GIF file, a folder for frames, or both")
     trace = record(scene, memory_limit=settings.memory_limit) if trace is None else trace
     settings = settings.for_grid(trace.width, trace.height)
-    steps = frame_steps(scene, trace, settings, names)
+    steps, chosen = chosen_frames(scene, trace, settings, names)
     renderer = FrameRenderer(scene, settings, trace, differences)
     if frames_dir is not None:
         check_frames_size(renderer, steps, frames_limit)
@@ -301,9 +324,11 @@ def export(scene, settings: ExportSettings = ExportSettings(), gif=None, frames_
         target = " and ".join(str(path) for path in (gif, frames_dir) if path is not None)
         raise ExportError(f"cannot write {target or 'the export'} "
                           f"({error.strerror or error})") from None
+    chosen += (f"; {renderer.settings.scale} px per cell, text {renderer.text_size} px, "
+               f"side panel: {renderer.settings.panel}")
     return ExportResult(len(steps), renderer.size, durations,
                         Path(gif) if gif is not None else None,
-                        Path(frames_dir) if frames_dir is not None else None)
+                        Path(frames_dir) if frames_dir is not None else None, chosen)
 
 
 def check_frames_size(renderer: FrameRenderer, steps, limit: int) -> None:

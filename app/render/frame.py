@@ -25,6 +25,7 @@ from algorithms import registry
 from algorithms.steps import PLOT, VISIT, Span
 
 from app.model.geometry import final_coverage
+from app.model.notation import number
 from app.render import compose as render
 from app.render.compose import PALETTE, Overlay, Palette, compose
 
@@ -273,7 +274,7 @@ def key_values(trace, state) -> list[tuple[str, str]]:
                 and 0 <= value <= 0xFFFFFF and float(value).is_integer():
             text = f"#{int(value):06x}"
         else:
-            text = registry.format_value(value)
+            text = number(value)
         rows.append((name, text))
     return rows
 

@@ -23,6 +23,8 @@ import numpy as np
 
 from algorithms.steps import Span, Table
 
+from app.model.drawing import point_labels
+from app.model.tools import drawing_mode
 from app.render.frame import pixel_samples
 
 
@@ -171,6 +173,19 @@ def _sample_guides(trace, state, paths) -> Guides:
         x, y = float(samples.xs[samples.current]), float(samples.ys[samples.current])
         dots.append((x, y, "sample"))
     return Guides((), tuple(dots), ())
+
+
+def vertex_labels(spec, scene) -> list[tuple[float, float, str]]:
+    """(x, y, name) of the scene's points in grid units, named as the
+    window names them (P1, P2, ...; C2.P1 for a second contour). Integer
+    inputs (lines, circles) stand for pixels: their label sits at the
+    pixel's centre."""
+    flat = [tuple(point) for point in scene.flat]
+    mode = drawing_mode(spec)
+    names = point_labels(mode, spec.inputs.count or 0, len(flat), scene.breaks,
+                         getattr(spec.inputs, "names", ()) or ())
+    half = 0.5 if getattr(spec.inputs, "integer", False) else 0.0
+    return [(float(x) + half, float(y) + half, name) for (x, y), name in zip(flat, names)]
 
 
 def _short(value: float) -> str:
