@@ -356,6 +356,10 @@ def add_export_command(commands) -> None:
                              "a thirtieth of the grid's longer side, 16 .. 48)")
     export.add_argument("--no-reasoning", action="store_true",
                         help="no scan line, midpoint or sample marks on the grid")
+    export.add_argument("--axes", action="store_true",
+                        help="coordinates beside the grid, ticks at the cell boundaries")
+    export.add_argument("--vertex-labels", action="store_true",
+                        help="name the scene's points (P1, P2, ...) on the grid")
     export.add_argument("--theme", choices=("light", "dark"), default="light",
                         help="colours (default %(default)s)")
     export.add_argument("--once", action="store_true", help="play once instead of looping")
@@ -404,7 +408,8 @@ def command_export(args) -> int:
         grid_lines=not args.no_grid, primitive=not args.no_primitive,
         highlight=not args.no_highlight, caption=args.caption, panel=args.panel,
         theme=args.theme, loop=not args.once, per=args.per, memory_limit=_memory_limit(args),
-        unit=args.unit, reasoning=not args.no_reasoning, text_size=text_size)
+        unit=args.unit, reasoning=not args.no_reasoning, text_size=text_size, axes=args.axes,
+        vertex_labels=args.vertex_labels)
     frames_limit = (exporting.MAX_FRAMES_BYTES if args.frames_limit is None
                     else budget.parse_size(args.frames_limit, "--frames-limit"))
     bar = _ProgressBar(sys.stderr)
