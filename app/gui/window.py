@@ -28,6 +28,7 @@ from app.gui.window_layout import WindowLayout
 from app.gui.window_menus import WindowMenus
 from app.model.drawing import CONTOURS, point_labels
 from app.model.insight import PixelTally, has_insight, inside_chips, row_tones
+from app.model.notation import shown
 from app.model.notes import note_at
 from app.gui.window_guides import WindowGuides
 from app.model.inputs import split_contours
@@ -386,7 +387,7 @@ class MainWindow(WindowLayout, WindowMenus, DepthAndAccuracy, QMainWindow):
             self.code.set_current(None)
             self._update_message()
             return
-        self.code.set_code([line.text for line in trace.code], spec.notes)
+        self.code.set_code([shown(line.text) for line in trace.code], spec.notes)
         self.transport.set_range(len(trace) - 1)
         name = _series_name(trace)
         decision = name is not None and name == trace.start.decision
@@ -461,7 +462,10 @@ class MainWindow(WindowLayout, WindowMenus, DepthAndAccuracy, QMainWindow):
         # The trace's own algorithm: a switch may still be recording.
         rows = self.player.trace_spec.panel_rows(trace, index)
         rows += self._accuracy_rows(state, rows)
-        self.variables.set_rows(rows, colors, row_tones(rows) if self._tally else None)
+        tones = row_tones(rows) if self._tally else None
+        # Values as a person reads them: five significant figures, ≤, subscripts.
+        rows = [(name, text if name in colors else shown(str(text))) for name, text in rows]
+        self.variables.set_rows(rows, colors, tones)
         chips = []
         if self._tally is not None:
             chips = inside_chips(state.step.values, state.step.kind)
