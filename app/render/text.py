@@ -210,13 +210,17 @@ class TextParts:
         gw, gh = self.r.grid_size
         x0 = self.r.grid_left
         face = self.sans_bold
+        placed = []  # a label that would cover one already written is left out
         for x, y, text in labels:
             left, top = to_pixel(x, y)
             width, height = face.width(text) + 2, face.ascent + face.descent
             left = int(min(max(x0, left + 4), x0 + gw - width))
             top = int(min(max(0, top - height - 2), gh - height))
-            if left < 0 or top < 0:
+            box = (left, top, left + width, top + height)
+            if left < 0 or top < 0 or any(box[0] < b[2] and b[0] < box[2] and box[1] < b[3]
+                                          and b[1] < box[3] for b in placed):
                 continue
+            placed.append(box)
             region = frame[top:top + height, left:left + width]
             patch = Image.fromarray(colours.rgb[region], "RGB")
             ImageDraw.Draw(patch).text((1, 0), text, font=face.face,
