@@ -22,7 +22,7 @@ from typing import Callable, Sequence
 import numpy as np
 
 from algorithms import registry
-from algorithms.steps import PLOT, VISIT, Span
+from algorithms.steps import PLOT, VISIT, Span, Vars
 
 from app.model.geometry import final_coverage
 from app.model.notation import number
@@ -260,6 +260,9 @@ def key_values(trace, state) -> list[tuple[str, str]]:
     (dx, incrE, ...) are left to the variables panel."""
     start = trace.start
     names = list(trace.value_names)
+    record = state.step.record
+    if isinstance(record, Vars):  # values a run keeps as Vars (the scan line's y)
+        names += [name for name in record.values if name not in names]
     decision = getattr(start, "decision", None)
     if decision in names:
         names.remove(decision)
