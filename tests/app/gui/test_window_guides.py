@@ -1,7 +1,7 @@
 """The window draws the same reasoning on its grid as an exported frame."""
 import pytest
 
-from algorithms.steps import Span
+from algorithms.steps import Note, Span
 from app.model.scene import load
 from app.render.export import ExportSettings, FrameRenderer
 from app.render.reasoning import step_guides
@@ -49,3 +49,19 @@ def test_bresenham_shows_m_and_no_guides_without_a_run(qtbot, window):
     assert [role for _, _, role in window.guides.item.guides.dots] == ["midpoint"]
     window.guides.show(None, None)
     assert window.guides.item.guides is None
+
+
+def test_the_left_out_note_leaves_the_status_line_once_the_scan_lines_start(qtbot, window):
+    # Two horizontal edges: "2 edge(s) left out" while the edge table is
+    # built, and not at every step after it.
+    window.set_scene("polygon-scanline", [[(2, 2), (10, 2), (10, 8), (2, 8)]], None, (16, 12))
+    qtbot.waitUntil(lambda: window.player.trace is not None and not window.player.recording,
+                    timeout=10000)
+    trace = window.player.trace
+    note = int(trace.steps_of(Note)[0])
+    window.player.seek(note)
+    qtbot.wait(10)
+    assert "left out" in window.message.text()
+    window.player.seek(int(trace.steps_of(Span)[0]))
+    qtbot.wait(10)
+    assert "left out" not in window.message.text()
