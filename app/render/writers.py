@@ -35,7 +35,7 @@ from app.render.settings import ExportError
 
 FRAME_NAME = "frame_{:0{width}d}.png"
 MANIFEST = ".rasterlab-frames.json"  # what the last export wrote into a frames folder
-_FRAME_FILE = re.compile(r"^frame_\d{4,}\.png$")
+_FRAME_FILE = re.compile(r"^frame_\d{4,}\.(png|svg)$")
 
 
 class FrameWriter(Protocol):
@@ -94,20 +94,9 @@ class GifWriter:
         self._count = 0
 
     def setup(self, size, count, palette, transparent) -> None:
-        directory = _folder_of(self.path)
-        if self.path.is_dir():
-            raise ExportError(f"{self.path}: is a folder, not a file name")
-        remove_leftovers(self.path)
+        self.temporary = temporary_beside(self.path)
         try:
-            handle, name = tempfile.mkstemp(prefix=f".{self.path.name}.{os.getpid()}.",
-                                            suffix=".tmp", dir=directory)
-        except OSError as error:
-            raise ExportError(f"cannot write {self.path}: the folder {directory} is not writable "
-                              f"({error.strerror or error})") from None
-        self.temporary = Path(name)
-        _readable_by_all(self.temporary)
-        self._file = os.fdopen(handle, "wb")
-        try:
+            self._file = open(self.temporary, "wb")
             self._gif = GifStream(self._file, size, palette, transparent, self.loop)
         except OSError as error:
             raise self._failed(error) from None
@@ -254,6 +243,27 @@ def remove_leftovers(path: Path) -> list[Path]:
             leftover.unlink(missing_ok=True)
             removed.append(leftover)
     return removed
+
+
+def temporary_beside(path: Path) -> Path:
+    """A new empty temporary file beside ``path`` (named so that
+    ``remove_leftovers`` finds it once its process is gone), after removing
+    what killed exports to ``path`` left; refused when ``path`` is a folder
+    or its folder cannot be written."""
+    path = Path(path)
+    directory = _folder_of(path)
+    if path.is_dir():
+        raise ExportError(f"{path}: is a folder, not a file name")
+    remove_leftovers(path)
+    try:
+        handle, name = tempfile.mkstemp(prefix=f".{path.name}.{os.getpid()}.", suffix=".tmp",
+                                        dir=directory)
+    except OSError as error:
+        raise ExportError(f"cannot write {path}: the folder {directory} is not writable "
+                          f"({error.strerror or error})") from None
+    os.close(handle)
+    _readable_by_all(Path(name))
+    return Path(name)
 
 
 def _readable_by_all(path: Path) -> None:
