@@ -135,3 +135,22 @@ def test_exported_frame_draws_the_scan_line_through_the_row_centres(origin, them
     plain = ex.FrameRenderer(scene, ex.ExportSettings(scale=10, caption=False, panel="none",
                                                       theme=theme, highlight=False))
     assert tuple(plain.rgb(i)[row, 31 * 10 + 2]) != guide
+
+
+def test_vector_frames_draw_the_same_reasoning():
+    from app.render.vector import CELL, draw_frame
+    scene = Scene(algorithm="polygon-scanline", points=[TRIANGLE], width=32, height=24)
+    renderer = ex.FrameRenderer(scene, ex.ExportSettings(scale=4))
+    trace = renderer.trace
+    i = int(trace.steps_of(Span)[3])
+    y = trace.record_at(i).y
+    drawing = draw_frame(renderer, i)
+    guide = ex.LIGHT.palette.guide
+    lines = [shape for shape in drawing.shapes if shape[0] == "line" and shape[2] == guide]
+    # The scan line across the grid at y + 1/2 (y up: 24 - y - 1/2 from the top), and the pair.
+    row = (24 - y - 0.5) * CELL
+    assert ([(0.0, row), (32.0 * CELL, row)], 1.0) in [(shape[1], shape[3]) for shape in lines]
+    assert any(shape[3] == 4.0 for shape in lines)
+    assert f"y + \u00bd = {y + 0.5:g}" in drawing.texts()
+    plain = draw_frame(ex.FrameRenderer(scene, ex.ExportSettings(scale=4, reasoning=False)), i)
+    assert not [shape for shape in plain.shapes if guide in shape]
