@@ -28,9 +28,10 @@ DIGITS = 5  # significant figures of a shown float
 _SUB = str.maketrans("0123456789+-=()aehijklmnoprstuvx",
                      "₀₁₂₃₄₅₆₇₈₉₊₋₌₍₎ₐₑₕᵢⱼₖₗₘₙₒₚᵣₛₜᵤᵥₓ")
 _SUBSCRIPTABLE = set("0123456789+-=()aehijklmnoprstuvx")
-# An index: name_index or name_{index}; the index runs to a space, a
-# comparison or punctuation (so "d_i+1 = ..." takes "i+1").
-_INDEX = re.compile(r"(?<=[A-Za-z0-9])_(\{[^}]*\}|[A-Za-z0-9+\-]+)")
+# An index: one letter or digit, perhaps with + or - a number (d_i, d_i+1,
+# e_k, w_0), or anything in braces (x_{left}). Longer words after an
+# underscore are names, not indices: fill_rule and s_affine stay as they are.
+_INDEX = re.compile(r"(?<=[A-Za-z0-9])_(\{[^}]*\}|[A-Za-z0-9](?:[+\-]\d+)?)(?![A-Za-z0-9_])")
 _LONG_DECIMAL = re.compile(r"(?<![\w.])-?\d+\.\d{6,}(?:e[+-]?\d+)?(?![\w.])")
 _REPEAT = re.compile(r"= (-?[\w.]+) = \1(?=$|[,;)\s])")
 _PLUS_BRACKET = re.compile(r"([+\-]) \((-?)(\d[\d.]*)\)")

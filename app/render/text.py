@@ -340,7 +340,14 @@ class TextParts:
         if total <= room or current is None or not 0 <= current < len(self.wrapped):
             return 0
         before = sum(len(rows) for rows in self.wrapped[:current])
-        return max(0, min(before - room // 3, total - room))
+        wanted = max(0, min(before - room // 3, total - room))
+        # Start at the first row of a line, never on a continuation row.
+        start = 0
+        for rows in self.wrapped:
+            if start + len(rows) > wanted:
+                break
+            start += len(rows)
+        return start if start + room >= before + len(self.wrapped[current]) else wanted
 
     def _paint_variables(self, draw, state, top: int) -> None:
         theme = self.r.theme

@@ -44,3 +44,9 @@ def test_rich_text_sets_indices_as_subscripts_and_escapes():
     assert rich(tidy("d_i+1 = d_i + 2 < x_{left}")) == \
         "d<sub>i+1</sub> = d<sub>i</sub> + 2 &lt; x<sub>left</sub>"
     assert subscripts("x_left") == "x_left"  # no Unicode subscript f: left as it is
+
+
+def test_names_with_words_after_the_underscore_are_left_alone():
+    assert subscripts("fill_rule = top-left, s_affine, e_k, w_0, d_i-1") == \
+        "fill_rule = top-left, s_affine, eₖ, w₀, dᵢ₋₁"
+    assert rich("x_left") == "x_left" and rich("x_{left}") == "x<sub>left</sub>"
