@@ -124,11 +124,16 @@ class Table:
 
 @dataclass(frozen=True, slots=True, kw_only=True)
 class Note:
-    """A sentence worth showing at this frame."""
+    """A sentence worth showing at this frame.
+
+    A note holds until the next one, unless it is ``brief``: then it speaks
+    of its own pseudo-code line only, and is done once the run moves on to
+    another line."""
 
     line: int
     text: str
     pixel: tuple[int, int] | None = None
+    brief: bool = False
 
 
 @dataclass(frozen=True, slots=True, kw_only=True)

@@ -401,9 +401,25 @@ def add_export_command(commands) -> None:
     export.add_argument("--caption", action=argparse.BooleanOptionalAction, default=True,
                         help="the caption under the grid: step, pseudo-code line, values "
                              "(default: on)")
-    export.add_argument("--panel", choices=("code", "variables", "both", "none"), default="code",
+    export.add_argument("--panel", choices=("auto", "code", "variables", "both", "tables", "none"),
+                        default="auto",
                         help="side panel: the pseudo-code with the current line marked, the "
-                             "variables, both, or none (default %(default)s)")
+                             "variables, both, the run's tables (the scan line's ET and AET), "
+                             "or none; auto: the pseudo-code where it fits (default)")
+    export.add_argument("--unit", choices=("auto", "step", "decision", "pixel", "scanline",
+                                           "primitive"), default="auto",
+                        help="one frame per step, decision, pixel written, scan line or "
+                             "primitive; auto: per step for short runs, else the finest unit "
+                             "that keeps the export within 240 frames (default)")
+    export.add_argument("--text-size", metavar="PX",
+                        help="text size of the caption and panel in pixels, 8 .. 96 (default: "
+                             "a thirtieth of the grid's longer side, 16 .. 48)")
+    export.add_argument("--no-reasoning", action="store_true",
+                        help="no scan line, midpoint or sample marks on the grid")
+    export.add_argument("--axes", action="store_true",
+                        help="coordinates beside the grid, ticks at the cell boundaries")
+    export.add_argument("--vertex-labels", action="store_true",
+                        help="name the scene's points (P1, P2, ...) on the grid")
     export.add_argument("--theme", choices=("light", "dark"), default="light",
                         help="colours (default %(default)s)")
     export.add_argument("--once", action="store_true", help="play once instead of looping")
@@ -432,6 +448,8 @@ def command_export(args) -> int:
     fps = parse_number(args.fps, "--fps")
     hold = parse_number(args.hold, "--hold")
     scale = None if args.scale is None else parse_number(args.scale, "--scale", integer=True)
+    text_size = (None if args.text_size is None
+                 else parse_number(args.text_size, "--text-size", integer=True))
     from app.render import export as exporting
     from app.model import scene as scenes
     if not exporting.MIN_FPS <= fps <= exporting.MAX_FPS:
@@ -442,6 +460,9 @@ def command_export(args) -> int:
                          f"got {args.hold.strip()}")
     if scale is not None and not 1 <= scale <= exporting.MAX_SCALE:
         raise InputError(f"--scale must be 1 .. {exporting.MAX_SCALE}, got {args.scale.strip()}")
+    if text_size is not None and not exporting.MIN_TEXT <= text_size <= exporting.MAX_TEXT:
+        raise InputError(f"--text-size must be {exporting.MIN_TEXT} .. {exporting.MAX_TEXT} "
+                         f"pixels, got {args.text_size.strip()}")
     try:
         scene = scenes.load(args.scene)
     except scenes.SceneError as error:
@@ -450,7 +471,9 @@ def command_export(args) -> int:
         first=args.first, last=args.last, fps=fps, hold=hold, scale=scale,
         grid_lines=not args.no_grid, primitive=not args.no_primitive,
         highlight=not args.no_highlight, caption=args.caption, panel=args.panel,
-        theme=args.theme, loop=not args.once, per=args.per, memory_limit=_memory_limit(args))
+        theme=args.theme, loop=not args.once, per=args.per, memory_limit=_memory_limit(args),
+        unit=args.unit, reasoning=not args.no_reasoning, text_size=text_size, axes=args.axes,
+        vertex_labels=args.vertex_labels)
     frames_limit = (exporting.MAX_FRAMES_BYTES if args.frames_limit is None
                     else budget.parse_size(args.frames_limit, "--frames-limit"))
     bar = _ProgressBar(sys.stderr)

@@ -14,8 +14,11 @@ from PySide6.QtWidgets import (QButtonGroup, QCheckBox, QComboBox, QDialog, QDou
                                QSpinBox, QVBoxLayout, QWidget)
 
 RANGES = ("all", "current", "custom")
-PANELS = (("code", "Pseudo-code"), ("variables", "Variables"), ("both", "Pseudo-code and variables"),
-          ("none", "None"))
+PANELS = (("auto", "Automatic (pseudo-code where it fits)"), ("code", "Pseudo-code"),
+          ("variables", "Variables"), ("both", "Pseudo-code and variables"),
+          ("tables", "Tables (ET and AET)"), ("none", "None"))
+UNITS = (("auto", "Automatic"), ("step", "Step"), ("decision", "Decision"),
+         ("pixel", "Pixel written"), ("scanline", "Scan line"), ("primitive", "Primitive"))
 THEMES = (("light", "Light"), ("dark", "Dark"))
 PER = (("auto", "Automatic"), ("step", "Step"), ("animation", "Animation frame"))
 # The further formats: (key, label, placeholder, file filter; None for a folder).
@@ -131,6 +134,13 @@ class ExportDialog(QDialog):
         per_row = QHBoxLayout()
         per_row.addWidget(QLabel("One frame per", steps))
         per_row.addWidget(self.per)
+        self.unit = QComboBox(steps)
+        for key, text in UNITS:
+            self.unit.addItem(text, key)
+        self.unit.setToolTip("What a frame stands for. Automatic: every step of a short run; "
+                             "for a long one the finest unit that keeps it within 240 frames.")
+        per_row.addWidget(QLabel("unit", steps))
+        per_row.addWidget(self.unit)
         per_row.addStretch(1)
         layout.addLayout(per_row)
 
@@ -170,8 +180,16 @@ class ExportDialog(QDialog):
         self.primitive = QCheckBox("Ideal primitive", drawn)
         self.highlight = QCheckBox("Current and candidate pixels", drawn)
         self.caption = QCheckBox("Caption: step, pseudo-code line, values", drawn)
-        for box in (self.grid_lines, self.primitive, self.highlight, self.caption):
+        self.reasoning = QCheckBox("Reasoning: scan line, midpoint M, samples", drawn)
+        self.axes = QCheckBox("Axes with coordinates", drawn)
+        self.vertex_labels = QCheckBox("Vertex labels", drawn)
+        for box in (self.grid_lines, self.primitive, self.highlight, self.caption,
+                    self.reasoning):
             box.setChecked(True)
+        self.text_size = QSpinBox(drawn)
+        self.text_size.setRange(0, 96)
+        self.text_size.setSpecialValueText("Automatic")
+        self.text_size.setSuffix(" px")
         self.panel = QComboBox(drawn)
         for key, text in PANELS:
             self.panel.addItem(text, key)
@@ -183,10 +201,15 @@ class ExportDialog(QDialog):
         grid.addWidget(self.primitive, 0, 1)
         grid.addWidget(self.highlight, 1, 0)
         grid.addWidget(self.caption, 1, 1)
-        grid.addWidget(QLabel("Side panel", drawn), 2, 0)
-        grid.addWidget(self.panel, 2, 1)
-        grid.addWidget(QLabel("Theme", drawn), 3, 0)
-        grid.addWidget(self.theme, 3, 1)
+        grid.addWidget(self.reasoning, 2, 0)
+        grid.addWidget(self.axes, 2, 1)
+        grid.addWidget(self.vertex_labels, 3, 0)
+        grid.addWidget(QLabel("Side panel", drawn), 4, 0)
+        grid.addWidget(self.panel, 4, 1)
+        grid.addWidget(QLabel("Theme", drawn), 5, 0)
+        grid.addWidget(self.theme, 5, 1)
+        grid.addWidget(QLabel("Text size", drawn), 6, 0)
+        grid.addWidget(self.text_size, 6, 1)
         return drawn
 
     def _output_box(self) -> QGroupBox:
@@ -259,12 +282,13 @@ class ExportDialog(QDialog):
         def changed(*_args):
             self.changed.emit()
 
-        for box in (self.first, self.last, self.scale, self.fps, self.hold):
+        for box in (self.first, self.last, self.scale, self.fps, self.hold, self.text_size):
             box.valueChanged.connect(changed)
         for button in (self.range_all, self.range_current, self.range_custom, self.loop,
-                       self.grid_lines, self.primitive, self.highlight, self.caption):
+                       self.grid_lines, self.primitive, self.highlight, self.caption,
+                       self.reasoning, self.axes, self.vertex_labels):
             button.toggled.connect(changed)
-        for combo in (self.panel, self.theme, self.per):
+        for combo in (self.panel, self.theme, self.per, self.unit):
             combo.currentIndexChanged.connect(changed)
 
     # ------------------------------------------------------------ set-up
@@ -323,6 +347,9 @@ class ExportDialog(QDialog):
             "caption": self.caption.isChecked(), "panel": self.panel.currentData(),
             "theme": self.theme.currentData(), "gif": self.path.text().strip(),
             "frames_dir": self.frames_dir.text().strip(), "per": self.per.currentData(),
+            "unit": self.unit.currentData(), "reasoning": self.reasoning.isChecked(),
+            "axes": self.axes.isChecked(), "vertex_labels": self.vertex_labels.isChecked(),
+            "text_size": self.text_size.value() or None,
             **{key: edit.text().strip() for key, edit in self.more.items()},
         }
 
@@ -333,10 +360,14 @@ class ExportDialog(QDialog):
                 box.setValue(values[name])
         for name, box in (("loop", self.loop), ("grid_lines", self.grid_lines),
                           ("primitive", self.primitive), ("highlight", self.highlight),
-                          ("caption", self.caption)):
+                          ("caption", self.caption), ("reasoning", self.reasoning),
+                          ("axes", self.axes), ("vertex_labels", self.vertex_labels)):
             if name in values:
                 box.setChecked(bool(values[name]))
-        for name, combo in (("panel", self.panel), ("theme", self.theme), ("per", self.per)):
+        if "text_size" in values:
+            self.text_size.setValue(values["text_size"] or 0)
+        for name, combo in (("panel", self.panel), ("theme", self.theme), ("per", self.per),
+                            ("unit", self.unit)):
             if name in values:
                 index = combo.findData(values[name])
                 if index >= 0:

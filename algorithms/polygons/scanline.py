@@ -116,7 +116,8 @@ def scanline_listing(points, options) -> Code:
     # the ET line counts its setup and the one test that removes it from
     # the AET later; line 5 counts the test of each edge that stays (the
     # frame's "active"). The AET is nearly sorted from row to row, so the
-    # sort is an insertion pass: one comparison per row of its table. A
+    # sort is an insertion pass: one comparison per row of its table; the
+    # x += 1/m step shows the AET it has just stepped, one row per edge. A
     # span costs two roundings; each of its pixels a step and a test.
     step = ({"int_add": 2, "compare": 2} if arithmetic in ("exact", "integer")
             else {"float_add": 1, "compare": 1})
@@ -143,7 +144,7 @@ def scanline_listing(points, options) -> Code:
              per={PER_PIXEL: {"int_add": 1, "compare": 1}})
     code.add("next_row", "    y += 1", ops={"int_add": 1})
     code.add("step_x", f"    for each edge in the AET: x += 1/m   (x is {number})",
-             per={"active": step})
+             per={PER_ROW: step})
     code.add("done", "done")
     return code
 
@@ -153,54 +154,69 @@ def scanline(points, options):
     contours = snap_contours(points)
     edges, skipped = scan_edges(contours, arithmetic, sample_of(options))
     at = scanline_listing(points, options).at
-    yield Start(line=at["snap"], values=("y", "active"),
+    # y and the AET's size are Vars, not frame values: they then hold on the
+    # table and span steps between their updates instead of vanishing there.
+    yield Start(line=at["snap"],
                 constants={"contours": len(contours), "vertices": sum(map(len, contours)),
                            "edges": len(edges), "fill_rule": rule, "arithmetic": arithmetic,
                            "subpixel": ONE})
     if skipped:
-        yield Note(line=at["edge_table"],
+        yield Note(line=at["edge_table"], brief=True,
                    text=f"{skipped} edge(s) left out: horizontal, or between two centre lines, "
                         "so no scan line meets them")
     table = {}
     for edge in sorted(edges, key=lambda e: (e.first, e.x, e.inv_m)):
         table.setdefault(edge.first, []).append(edge)
     columns = ("ymin", "edge", "ymax", "x", "1/m") + (("dir",) if rule == "nonzero" else ())
-    yield Table(line=at["edge_table"], name="ET", columns=columns,
-                rows=tuple((y,) + edge.row(rule) for y in sorted(table) for edge in table[y]))
+    yield _edge_table(table, rule, columns, at["edge_table"])
     y = min(table, default=0)
-    yield (at["start"], NO_PIXEL, NO_PIXEL, y, 0)
-    spans, pixels = yield from _rows(table, y, rule, columns[1:], at)
+    yield Vars(line=at["start"], values={"y": y, "active": 0})
+    spans, pixels = yield from _rows(table, y, rule, columns, at)
     yield Vars(line=at["done"], values={"spans": spans, "pixels": pixels})
 
 
-def _rows(table, y, rule, aet_columns, at):
-    """The scan-line loop, from row y up; returns (spans, pixels) filled."""
+def _edge_table(table, rule, columns, line) -> Table:
+    """The ET as it stands: the buckets not yet moved into the AET."""
+    return Table(line=line, name="ET", columns=columns,
+                 rows=tuple((y,) + edge.row(rule) for y in sorted(table) for edge in table[y]))
+
+
+def _aet(active, rule, columns, line) -> Table:
+    return Table(line=line, name="AET", columns=columns[1:],
+                 rows=tuple(edge.row(rule) for edge in active))
+
+
+def _rows(table, y, rule, columns, at):
+    """The scan-line loop, from row y up; returns (spans, pixels) filled.
+
+    Every table shows what its line has just done: the ET loses a bucket
+    at the line that moves it into the AET, and the AET's x values change
+    at the line x += 1/m."""
     active: list[ScanEdge] = []
-    enter, leave, sort, plot = at["enter"], at["leave"], at["sort"], at["plot_spans"]
-    next_row, step_x = at["next_row"], at["step_x"]
+    plot = at["plot_spans"]
     spans = pixels = 0
     while table or active:
         if not active:
             y = min(table)
+        yield Vars(line=at["loop"], values={"y": y, "active": len(active)})
         active.extend(table.pop(y, ()))
-        yield (enter, NO_PIXEL, NO_PIXEL, y, len(active))
+        yield _edge_table(table, rule, columns, at["enter"])
         active = [edge for edge in active if edge.ymax != y]
-        yield (leave, NO_PIXEL, NO_PIXEL, y, len(active))
+        yield Vars(line=at["leave"], values={"active": len(active)})
         # Ties on x are broken by 1/m, so the table reads in the order the
         # edges will be met on the rows just above.
         active.sort(key=lambda e: (e.x, e.inv_m))
-        yield Table(line=sort, name="AET", columns=aet_columns,
-                    rows=tuple(edge.row(rule) for edge in active))
+        yield _aet(active, rule, columns, at["sort"])
         for left, right in runs(active, rule):
             start, end = first_column(left), first_column(right)
             spans += 1
             pixels += max(0, end - start)
             yield Span(line=plot, y=y, x_start=start, x_end=max(start, end))
         y += 1
-        yield (next_row, NO_PIXEL, NO_PIXEL, y, len(active))
+        yield Vars(line=at["next_row"], values={"y": y})
         for edge in active:
             edge.x = edge.x + edge.inv_m
-        yield (step_x, NO_PIXEL, NO_PIXEL, y, len(active))
+        yield _aet(active, rule, columns, at["step_x"])
     return spans, pixels
 
 
@@ -209,7 +225,7 @@ def scanline_explain(trace, i):
     record = trace.step(i).record
     if not isinstance(record, Span):
         if isinstance(record, Table) and record.name == "AET":
-            return [("scan line", f"centre line y + 1/2 = {trace.step(i - 1).values.get('y', 0) + 0.5:g}")]
+            return [("scan line", f"centre line y + 1/2 = {trace.variables_at(i).get('y', 0) + 0.5:g}")]
         return []
     tables = [(k, table) for k, table in trace.records_of(Table, hi=i) if table.name == "AET"]
     if not tables:

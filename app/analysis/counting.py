@@ -11,7 +11,7 @@ from typing import Callable, Iterable
 
 import numpy as np
 
-from algorithms.steps import OP_NAMES, PER_PIXEL, PER_ROW, Note, Table
+from algorithms.steps import OP_NAMES, PER_PIXEL, PER_ROW, Note, Table, Vars
 
 ARITHMETIC = ("int_add", "float_add", "mul", "div", "sqrt", "round", "compare")
 COLUMNS = ("family", "experiment", "algorithm", "variant", "parameter", "parameter_value",
@@ -79,6 +79,10 @@ def _quantity(trace, line: int, quantity: str, executions: int) -> int:
     constants = trace.start.constants
     if quantity in constants:
         return int(constants[quantity]) * executions
+    carried = [record.values[quantity] for _, record in trace.records_of(Vars)
+               if record.line == line and quantity in record.values]
+    if carried:  # a quantity the run keeps as a Vars update on this line
+        return int(sum(carried))
     raise KeyError(f"code line {line} scales by {quantity!r}, which the run does not name")
 
 

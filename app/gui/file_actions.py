@@ -408,21 +408,26 @@ class ExportController(QObject):
             scale=values["scale"], grid_lines=values["grid_lines"],
             primitive=values["primitive"], highlight=values["highlight"],
             caption=values["caption"], panel=values["panel"], theme=values["theme"],
-            loop=values["loop"], per=values["per"])
+            loop=values["loop"], per=values["per"], unit=values["unit"],
+            reasoning=values["reasoning"], axes=values["axes"],
+            vertex_labels=values["vertex_labels"], text_size=values["text_size"])
         return settings, formats.Outputs(**{key: values[key] or None for key in (
             "gif", "frames_dir", "mp4", "webm", "svg_dir", "pdf", "html")})
 
     def _summarise(self) -> None:
         values = self.dialog.values()
         try:
-            count = len(exporting.frame_steps(self.scene, self.trace, self.export_settings()[0]))
+            steps, said = exporting.chosen_frames(self.scene, self.trace,
+                                                  self.export_settings()[0])
+            count = len(steps)
         except exporting.ExportError:
-            count = 0
+            count, said = 0, ""
         trace = self.trace
         seconds = sum(exporting.frame_durations(count, values["fps"], values["hold"])) / 1000
         self.dialog.set_size_text(
             f"{count:,} frame{'s' if count != 1 else ''}, {seconds:g} s; grid "
-            f"{trace.width * values['scale']}x{trace.height * values['scale']} pixels")
+            f"{trace.width * values['scale']}x{trace.height * values['scale']} pixels"
+            + (f"\n{said[0].upper()}{said[1:]}" if said else ""))
 
     def start(self) -> None:
         if self.thread is not None:

@@ -7,7 +7,6 @@ on its own (tests, screenshots, benchmarks) and driven through
 """
 from __future__ import annotations
 
-import bisect
 import sys
 
 import numpy as np
@@ -30,6 +29,9 @@ from app.gui.window_layout import WindowLayout
 from app.gui.window_menus import WindowMenus
 from app.model.drawing import CONTOURS, point_labels
 from app.model.insight import PixelTally, has_insight, inside_chips, row_tones
+from app.model.notation import shown
+from app.model.notes import note_at
+from app.gui.window_guides import WindowGuides
 from app.model.inputs import split_contours
 from app.model.examples import default_scene
 from app.model.inputs import open_ended
@@ -80,6 +82,7 @@ class MainWindow(WindowLayout, WindowMenus, DepthAndAccuracy, TextureDisplay, QM
         self.bookmarks: list = []  # the scene's bookmarks while there are no file actions
 
         self._build_centre()
+        self.guides = WindowGuides(self.grid, PALETTE)
         self._build_scene_dock()
         self._build_code_dock()
         self._build_status()
@@ -298,6 +301,7 @@ class MainWindow(WindowLayout, WindowMenus, DepthAndAccuracy, TextureDisplay, QM
         self.palette_ = palette
         self._empty_image = None  # composed with the old colours
         self.grid.set_palette(palette)
+        self.guides.set_palette(palette)
         recolor(self.legend, legend_rows(palette))
         recolor(self.coverage_legend, coverage_rows(palette))
 
@@ -375,6 +379,7 @@ class MainWindow(WindowLayout, WindowMenus, DepthAndAccuracy, TextureDisplay, QM
         player, trace, spec = self.player, self.player.trace, self.player.spec
         self._error = ""
         self.grid.set_shape(shape_paths(spec, player.points, player.options, player.breaks))
+        self.guides.run_changed(player)
         self._show_inputs()
         self._tables = TableIndex(trace)
         self._tally = PixelTally(trace) if trace is not None and has_insight(
@@ -392,7 +397,7 @@ class MainWindow(WindowLayout, WindowMenus, DepthAndAccuracy, TextureDisplay, QM
             self.code.set_current(None)
             self._update_message()
             return
-        self.code.set_code([line.text for line in trace.code], spec.notes)
+        self.code.set_code([shown(line.text) for line in trace.code], spec.notes)
         self.transport.set_range(len(trace) - 1)
         name = _series_name(trace)
         decision = name is not None and name == trace.start.decision
@@ -431,6 +436,7 @@ class MainWindow(WindowLayout, WindowMenus, DepthAndAccuracy, TextureDisplay, QM
         if state is None:
             self.grid.set_image(self._blank())
             self.grid.set_highlights((), ())
+            self.guides.show(None, None)
             self.variables.set_caption("No run: place the points first.")
             self.coverage_label.setText("")
             self._update_message()
@@ -447,6 +453,7 @@ class MainWindow(WindowLayout, WindowMenus, DepthAndAccuracy, TextureDisplay, QM
         self._show_error_summary()
         cells, spans = _step_cells(state)
         self.grid.set_highlights(cells, state.candidates, spans)
+        self.guides.show(player.trace, state)
         self._show_cracks(player.trace, state.index)
         trace, index = player.trace, state.index
         self.transport.set_position(index)
@@ -466,7 +473,10 @@ class MainWindow(WindowLayout, WindowMenus, DepthAndAccuracy, TextureDisplay, QM
         # The trace's own algorithm: a switch may still be recording.
         rows = self.player.trace_spec.panel_rows(trace, index)
         rows += self._accuracy_rows(state, rows)
-        self.variables.set_rows(rows, colors, row_tones(rows) if self._tally else None)
+        tones = row_tones(rows) if self._tally else None
+        # Values as a person reads them: five significant figures, ≤, subscripts.
+        rows = [(name, text if name in colors else shown(str(text))) for name, text in rows]
+        self.variables.set_rows(rows, colors, tones)
         chips = []
         if self._tally is not None:
             chips = inside_chips(state.step.values, state.step.kind)
@@ -556,9 +566,9 @@ class MainWindow(WindowLayout, WindowMenus, DepthAndAccuracy, TextureDisplay, QM
         if not text:
             text = placing_message(player.spec, player.points, player.breaks)
         if not text and trace is not None and self._notes:
-            k = bisect.bisect_right(self._notes, player.index) - 1
-            if k >= 0:
-                text = f"Step {self._notes[k]:,}: {trace.record_at(self._notes[k]).text}"
+            step = note_at(trace, self._notes, player.index)
+            if step is not None:
+                text = f"Step {step:,}: {trace.record_at(step).text}"
         self._say(text, error)
 
     def _say(self, text: str, error: bool = False) -> None:

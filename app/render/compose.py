@@ -55,6 +55,7 @@ class Palette:
     handle: str = "#ffffff"       # vertex handles (fill)
     handle_edge: str = "#1d2733"  # vertex handles (border and label)
     seed: str = "#7048e8"         # the seed marker of a fill
+    guide: str = "#9c36b5"        # the reasoning drawn on the grid (scan line, M, samples)
     # Coverage counts 0, 1, 2, 3+: light to dark, and the two overlap
     # levels in warm hues that no ink or highlight colour uses.
     coverage: tuple[str, str, str, str] = ("#fbfcfd", "#a9cdf0", "#f59f00", "#c2255c")
@@ -67,7 +68,7 @@ PALETTE = Palette()
 DARK_PALETTE = Palette(
     background="#1b2027", ink="#5fa8f5", overdraw="#b9dcff", grid="#38414d",
     outside="#11151a", current="#ffa94d", candidate="#40c057", difference="#f06595",
-    primitive="#ff6b5b", handle="#1b2027", handle_edge="#e6edf3", seed="#9775fa",
+    primitive="#ff6b5b", handle="#1b2027", handle_edge="#e6edf3", seed="#9775fa", guide="#e599f7",
     coverage=("#1b2027", "#285a8c", "#f59f00", "#e64980"))
 
 

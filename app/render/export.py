@@ -15,7 +15,7 @@ frames and hands them to the writers.
 from __future__ import annotations
 
 import io
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from pathlib import Path
 from typing import Callable, Sequence
 
@@ -28,25 +28,25 @@ from algorithms.trace import FrameState
 from app.model.geometry import scene_paths
 from app.render.derivation import draw_distances
 from app.render.frame import compose_frame, compose_region, frame_marks, primitive_mask
+from app.render.axes import Axes
+from app.render.reasoning import NONE, draw_guides, step_guides, vertex_labels
 from app.render.palette import DARK, LIGHT, THEMES, ColourIndex, Theme, build_palette
-from app.render.settings import (MAX_FPS, MAX_HOLD, MAX_SCALE, MIN_FPS, NAMES, ExportCancelled,
-                                 ExportError, ExportSettings, auto_scale, frame_durations,
-                                 frame_range, frame_steps, record)
-from app.render.text import TextParts
+from app.render.settings import (MAX_FPS, MAX_HOLD, MAX_SCALE, MAX_TEXT, MIN_FPS, MIN_TEXT,
+                                 NAMES, ExportCancelled, ExportError, ExportSettings, auto_scale, chosen_frames,
+                                 frame_durations, frame_range, frame_steps, record)
+from app.render.text import TextParts, panel_width, text_pixels
 from app.render.writers import (MANIFEST, FrameWriter, GifWriter, NullWriter, PngFolderWriter,
                                 saving)
 
 # Callers take every export name from here, whichever part defines it.
 __all__ = ["DARK", "LIGHT", "THEMES", "ColourIndex", "Theme", "build_palette", "MAX_FPS",
-           "MAX_HOLD", "MAX_SCALE", "MIN_FPS", "ExportCancelled", "ExportError", "ExportSettings",
+           "MAX_HOLD", "MAX_SCALE", "MIN_FPS", "MAX_TEXT", "MIN_TEXT", "chosen_frames", "ExportCancelled", "ExportError", "ExportSettings",
            "auto_scale", "frame_durations", "frame_range", "frame_steps", "record",
            "FrameWriter", "GifWriter", "NullWriter", "PngFolderWriter", "FrameRenderer",
            "ExportResult", "export", "check_frames_size", "MAX_FRAMES_BYTES",
            "MANIFEST"]
 
 MAX_SIDE = 4096    # pixels, each side of a frame
-# Pillow holds every frame of a GIF in memory until it writes the file.
-MAX_GIF_PIXELS = 2 ** 30
 # The default limit of a frames folder on disk, as the GIF's above.
 MAX_FRAMES_BYTES = 2 ** 30
 BLOCK = 4096       # bytes a file takes on disk at least
@@ -82,24 +82,40 @@ class FrameRenderer:
         if gw > MAX_SIDE or gh > MAX_SIDE:
             raise ExportError(f"the grid would be {gw}x{gh} pixels at scale {scale}; a frame is "
                               f"at most {MAX_SIDE}x{MAX_SIDE}: choose a smaller scale")
-        self.paths = (scene_paths(self.spec, scene.points, self.spec.resolve(scene.options))
-                      if settings.primitive else [])
-        self._text = TextParts(self, max(gw, gh))
+        # The ideal primitive: drawn when asked, and always the target the
+        # reasoning's guides point at (the drop from Bresenham's M).
+        self.ideal = scene_paths(self.spec, scene.points, self.spec.resolve(scene.options))
+        self.paths = self.ideal if settings.primitive else []
+        text_size = settings.text_size or text_pixels(max(gw, gh))
+        if settings.panel == "auto":
+            fits = gw + panel_width(text_size) <= MAX_SIDE
+            settings = self.settings = replace(settings, panel="code" if fits else "none")
+        self.text_size = text_size
+        self._text = TextParts(self, text_size)
         self.panel_width = self._text.panel_width if settings.panel != "none" else 0
         self.caption_height = self._text.caption_height if settings.caption else 0
         panel_height = self._text.panel_height if settings.panel != "none" else 0
-        self.body_height = max(gh, panel_height)
-        self.size = (gw + self.panel_width, self.body_height + self.caption_height)
+        self.axes = Axes(self, self._text.sans, max(2, round(text_size / 4))) \
+            if settings.axes else None
+        self.grid_left = self.axes.left if self.axes else 0
+        below = self.axes.bottom if self.axes else 0
+        self.body_height = max(gh + below, panel_height)
+        self.size = (self.grid_left + gw + self.panel_width,
+                     self.body_height + self.caption_height)
         width, height = self.size
         if width > MAX_SIDE or height > MAX_SIDE:
             raise ExportError(f"a frame would be {width}x{height} pixels, more than "
                               f"{MAX_SIDE}x{MAX_SIDE}: choose a smaller scale or no side panel")
         self.colours = build_palette(self.theme, trace)
         self._outside = self.colours.index_of(self.theme.palette.outside)
+        self._guide = self.colours.index_of(self.theme.palette.guide)
+        self._current = self.colours.index_of(self.theme.palette.current)
         self.grid_lines = settings.grid_lines and scale >= 4
         self._grid = _GridPart(self, incremental)
         self._states = _States(trace, incremental)
         self._text.allocate()
+        self._axes = self.axes.draw() if self.axes else None
+        self.vertex_labels = vertex_labels(self.spec, scene) if settings.vertex_labels else []
 
     @property
     def palette_bytes(self) -> bytes:
@@ -112,21 +128,41 @@ class FrameRenderer:
         marks = frame_marks(state, self.paths, self.differences, settings.highlight,
                             settings.primitive)
         grid = self._grid.draw(state.raster, marks, written)
+        guides = (step_guides(self.trace, state, self.ideal)
+                  if settings.reasoning and settings.highlight else NONE)
+        if guides:
+            grid = grid.copy()  # the grid part keeps its own picture for the next frame
+            draw_guides(grid, guides, settings.scale, self._guide, self._current)
         if not self.y_down:
             grid = grid[::-1]  # row 0 is y = 0, the bottom of the picture
         width, height = self.size
         gw, gh = self.grid_size
+        left = self.grid_left
         frame = np.empty((height, width), dtype=np.uint8)
-        frame[:gh, :gw] = grid
+        frame[:self.body_height, :left + gw] = self._outside
+        frame[:gh, left:left + gw] = grid
         if settings.highlight:
-            draw_distances(frame[:gh, :gw], self, index)  # s and n, where the run has them
-        if self.body_height > gh:
-            frame[gh:self.body_height, :gw] = self._outside
+            draw_distances(frame[:gh, left:left + gw], self, index)  # s and n, where the run has them
+        if self._axes is not None:
+            strip, under = self._axes
+            frame[:strip.shape[0], :left] = strip
+            frame[gh:gh + under.shape[0], left:left + gw] = under
         if self.panel_width:
-            frame[:self.body_height, gw:] = self._text.panel(state)
+            frame[:self.body_height, left + gw:] = self._text.panel(state)
         if self.caption_height:
             frame[self.body_height:, :] = self._text.caption(state)
+        if guides.labels and settings.grid_text:
+            self._text.grid_labels(frame, guides.labels, self._grid_point)
+        if self.vertex_labels:
+            self._text.grid_labels(frame, self.vertex_labels, self._grid_point,
+                                   self.theme.palette.handle_edge)
         return frame
+
+    def _grid_point(self, x: float, y: float) -> tuple[float, float]:
+        """Grid units to the frame's pixels (left, top)."""
+        scale = self.settings.scale
+        return (self.grid_left + x * scale,
+                y * scale if self.y_down else self.grid_size[1] - y * scale)
 
     def image(self, index: int) -> Image.Image:
         """Frame ``index`` as a Pillow palette image."""
@@ -147,7 +183,8 @@ class FrameRenderer:
         outlines and text never reach a centre)."""
         scale = self.settings.scale
         gw, gh = self.grid_size
-        centres = self.rgb(index)[scale // 2:gh:scale, scale // 2:gw:scale]
+        left = self.grid_left
+        centres = self.rgb(index)[scale // 2:gh:scale, left + scale // 2:left + gw:scale]
         return centres if self.y_down else centres[::-1]
 
 
@@ -240,6 +277,7 @@ class ExportResult:
     durations: list[int]
     gif: Path | None = None
     frames_dir: Path | None = None
+    chosen: str = ""  # one line: what a frame stands for, the size and the panel
 
 
 def export(scene, settings: ExportSettings = ExportSettings(), gif=None, frames_dir=None,
@@ -264,13 +302,8 @@ def export(scene, settings: ExportSettings = ExportSettings(), gif=None, frames_
         raise ExportError("nothing to write: give a GIF file, a folder for frames, or both")
     trace = record(scene, memory_limit=settings.memory_limit) if trace is None else trace
     settings = settings.for_grid(trace.width, trace.height)
-    steps = frame_steps(scene, trace, settings, names)
+    steps, chosen = chosen_frames(scene, trace, settings, names)
     renderer = FrameRenderer(scene, settings, trace, differences)
-    width, height = renderer.size
-    if gif is not None and len(steps) * width * height > MAX_GIF_PIXELS:
-        raise ExportError(f"the GIF would hold {len(steps):,} frames of {width}x{height} pixels, "
-                          f"more than {MAX_GIF_PIXELS // 2 ** 20:,} MiB: export a shorter range "
-                          "or at a smaller scale")
     if frames_dir is not None:
         check_frames_size(renderer, steps, frames_limit)
     durations = frame_durations(len(steps), settings.fps, settings.hold)
@@ -292,9 +325,11 @@ def export(scene, settings: ExportSettings = ExportSettings(), gif=None, frames_
         target = " and ".join(str(path) for path in (gif, frames_dir) if path is not None)
         raise ExportError(f"cannot write {target or 'the export'} "
                           f"({error.strerror or error})") from None
+    chosen += (f"; {renderer.settings.scale} px per cell, text {renderer.text_size} px, "
+               f"side panel: {renderer.settings.panel}")
     return ExportResult(len(steps), renderer.size, durations,
                         Path(gif) if gif is not None else None,
-                        Path(frames_dir) if frames_dir is not None else None)
+                        Path(frames_dir) if frames_dir is not None else None, chosen)
 
 
 def hand_over(outputs, renderer: FrameRenderer, index: int) -> None:

@@ -56,7 +56,8 @@ def summary(args, result, page) -> list[str]:
                if path is not None]
         lines.append(f"{' and '.join(written)}: {result.frames} "
                      f"frame{'s' if result.frames != 1 else ''} of {width}x{height} pixels, "
-                     f"{sum(result.durations) / 1000:g} s")
+                     f"{sum(result.durations) / 1000:g} s"
+                     + (f"; {result.chosen}" if result.chosen else ""))
     if page is not None:
         lines.append(f"{args.html}: an interactive page of {page.steps:,} steps, "
                      f"{page.size / 2 ** 20:.2f} MB")

@@ -22,9 +22,10 @@ from typing import Callable, Sequence
 import numpy as np
 
 from algorithms import registry
-from algorithms.steps import PLOT, VISIT, Span
+from algorithms.steps import PLOT, VISIT, Span, Vars
 
 from app.model.geometry import final_coverage
+from app.model.notation import number
 from app.render import compose as render
 from app.render.compose import PALETTE, Overlay, Palette, compose
 
@@ -259,6 +260,9 @@ def key_values(trace, state) -> list[tuple[str, str]]:
     (dx, incrE, ...) are left to the variables panel."""
     start = trace.start
     names = list(trace.value_names)
+    record = state.step.record
+    if isinstance(record, Vars):  # values a run keeps as Vars (the scan line's y)
+        names += [name for name in record.values if name not in names]
     decision = getattr(start, "decision", None)
     if decision in names:
         names.remove(decision)
@@ -273,7 +277,7 @@ def key_values(trace, state) -> list[tuple[str, str]]:
                 and 0 <= value <= 0xFFFFFF and float(value).is_integer():
             text = f"#{int(value):06x}"
         else:
-            text = registry.format_value(value)
+            text = number(value)
         rows.append((name, text))
     return rows
 

@@ -141,7 +141,7 @@ def build_palette(theme: Theme, trace=None) -> ColourIndex:
     own colours (see Palette in the module notes)."""
     p = theme.palette
     named = [p.background, p.ink, p.overdraw, p.grid, p.outside, p.current, p.candidate,
-             p.difference, p.primitive, theme.panel, theme.caption, theme.border, theme.text,
+             p.difference, p.primitive, p.guide, theme.panel, theme.caption, theme.border, theme.text,
              theme.muted, theme.line_number, theme.current_line, theme.current_edge,
              theme.changed]
     colours = list(dict.fromkeys(_rgb(c) for c in named))

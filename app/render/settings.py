@@ -24,13 +24,17 @@ from algorithms.trace import DEFAULT_STEP_CAP
 from app.model.budget import DEFAULT_MEMORY_LIMIT, check_budget
 from app.model.scene import one_line
 from app.render.palette import THEMES
+from app.render.units import UNITS, choose_frames
 
 MIN_FPS = 0.1
 MAX_FPS = 50.0
 MAX_SCALE = 64
 MAX_HOLD = 600.0   # seconds; GIF's longest frame is 655.35 s
 AUTO_EXTENT = 640  # pixels the grid's longer side takes at the automatic scale
-PANELS = ("code", "variables", "both", "none")
+# auto: the pseudo-code beside the grid, or no panel where the frame would
+# then be wider than a frame may be (a 4096-cell-wide grid).
+PANELS = ("auto", "code", "variables", "both", "tables", "none")
+MIN_TEXT, MAX_TEXT = 8, 96  # pixels: the caption's text size
 # One exported frame per step, or per animation frame of a run that has
 # them (aa-temporal); auto picks animation frames where there are some.
 PER = ("auto", "step", "animation")
@@ -62,11 +66,17 @@ class ExportSettings:
     grid_lines: bool = True  # drawn when a cell is 4 or more pixels wide
     primitive: bool = True
     highlight: bool = True
+    reasoning: bool = True   # the step's reasoning on the grid (app/render/reasoning.py)
+    grid_text: bool = True   # the reasoning's labels (M, y + 1/2) on the grid
+    vertex_labels: bool = False  # P1, P2, ... at the scene's points
+    axes: bool = False       # coordinates beside the grid: ticks at the cell boundaries
     caption: bool = True
-    panel: str = "code"
+    panel: str = "auto"
     theme: str = "light"
     loop: bool = True        # False: play once
     per: str = "auto"        # one of PER
+    unit: str = "auto"       # one of units.UNITS: what a frame stands for
+    text_size: int | None = None  # pixels of the caption's text; None: text_pixels()
     memory_limit: int = DEFAULT_MEMORY_LIMIT  # bytes the run may need (app/model/budget.py)
 
     def checked(self) -> "ExportSettings":
@@ -89,6 +99,13 @@ class ExportSettings:
             raise ExportError(f"theme must be one of {', '.join(THEMES)}, got {self.theme!r}")
         if self.per not in PER:
             raise ExportError(f"frames per must be one of {', '.join(PER)}, got {self.per!r}")
+        if self.unit not in UNITS:
+            raise ExportError(f"unit must be one of {', '.join(UNITS)}, got {self.unit!r}")
+        text = self.text_size
+        if text is not None and (isinstance(text, bool) or not isinstance(text, (int, np.integer))
+                                 or not MIN_TEXT <= text <= MAX_TEXT):
+            raise ExportError(f"text size must be a whole number of pixels {MIN_TEXT} .. "
+                              f"{MAX_TEXT}, got {text!r}")
         return replace(self, fps=fps, hold=hold, scale=None if scale is None else int(scale))
 
     def for_grid(self, width: int, height: int) -> "ExportSettings":
@@ -173,20 +190,29 @@ def frame_range(scene, trace, first=None, last=None, names: tuple[str, str] = NA
 
 
 def frame_steps(scene, trace, settings: ExportSettings, names: tuple[str, str] = NAMES):
-    """The steps drawn as frames: every step of the range, or the step
-    that completes each animation frame inside it."""
+    """The steps drawn as frames (see ``chosen_frames``)."""
+    return chosen_frames(scene, trace, settings, names)[0]
+
+
+def chosen_frames(scene, trace, settings: ExportSettings,
+                  names: tuple[str, str] = NAMES) -> tuple[list[int], str]:
+    """The steps drawn as frames, and one line saying what a frame stands
+    for: the step that completes each animation frame of a run that has
+    them, else one frame per ``settings.unit`` (app/render/units.py)."""
     steps = frame_range(scene, trace, settings.first, settings.last, names)
-    if settings.per == "step":
-        return steps
+    unit = "step" if settings.per == "step" and settings.unit == "auto" else settings.unit
+    if settings.per == "step" or unit != "auto":
+        return choose_frames(trace, unit, steps.start, steps.stop)
     spec = registry.get(scene.algorithm)
     ends = animation_frame_steps(spec, trace)
     if not ends:
         if settings.per == "animation":
             raise ExportError(f"{spec.name} has no animation frames: export one frame "
                               "per step instead")
-        return steps
+        return choose_frames(trace, "auto", steps.start, steps.stop)
     chosen = [end for end in ends if steps.start <= end < steps.stop]
     if not chosen:
         raise ExportError(f"no animation frame ends between steps {steps.start} and "
                           f"{steps.stop - 1}: widen the range")
-    return chosen
+    return chosen, (f"one frame per animation frame: {len(chosen):,} frames for "
+                    f"{len(steps):,} steps")

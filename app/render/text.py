@@ -15,6 +15,8 @@ from functools import lru_cache
 import numpy as np
 from PIL import Image, ImageDraw, ImageFont
 
+from app.model.notation import shown
+from app.model.tables import TableIndex
 from app.render.frame import key_values, step_caption
 
 ELLIPSIS = "\u2026"
@@ -60,35 +62,64 @@ class _Font:
         return text[:low] + ELLIPSIS if low or self.width(ELLIPSIS) <= width else ""
 
 
+BASE_TEXT = 13  # pixels: the caption's text at ui = 1; every other measure follows it
+PANEL_WIDTH = 360  # pixels at ui = 1
+MIN_CODE_ROWS = 6  # rows of pseudo-code a side panel shows at least
+
+
+def text_pixels(grid_extent: int) -> int:
+    """The default text size: about a thirtieth of the grid's longer side,
+    16 to 48 pixels, so that a frame shown on a slide reads at about the
+    size of the slide's own text."""
+    return max(16, min(48, round(grid_extent / 30)))
+
+
+def panel_width(text_size: int) -> int:
+    """Width of the side panel for text of ``text_size`` pixels."""
+    return round(PANEL_WIDTH * text_size / BASE_TEXT)
+
+
 class TextParts:
     """The caption strip and the side panel of one export, as palette indices."""
 
-    def __init__(self, renderer, grid_extent: int):
+    def __init__(self, renderer, text_size: int):
         self.r = renderer
         settings = renderer.settings
-        # Text grows with large frames so that it keeps its size on a slide.
-        ui = max(1.0, min(3.0, grid_extent / 640))
+        ui = text_size / BASE_TEXT
         self.ui = ui
         sans, mono = round(13 * ui), round(12 * ui)
         self.sans, self.sans_bold = _Font("sans", sans), _Font("sans_bold", sans)
         self.mono, self.mono_bold = _Font("mono", mono), _Font("mono_bold", mono)
         self.line = round(18 * ui)
         self.pad = round(8 * ui)
-        self.caption_height = 3 * self.line + 2 * round(5 * ui)
-        self.panel_width = round(360 * ui)
+        # Step, pseudo-code line, and two lines for the step's values.
+        self.caption_height = 4 * self.line + 2 * round(5 * ui)
+        self.panel_width = panel_width(text_size)
 
         trace = renderer.trace
         self.last = len(trace) - 1
-        self.code = [line.text for line in trace.code]
+        self.code = [shown(line.text) for line in trace.code]
         self.number_width = self.mono_bold.width("\u25b6 " + str(len(self.code))) + round(6 * ui)
         text_width = self.panel_width - 2 * self.pad - self.number_width
         self.wrapped = [_wrap(text, self.mono_bold, text_width) for text in self.code]
         code_height = self.pad + self.line + sum(len(rows) for rows in self.wrapped) * self.line \
             + self.pad
         variables_height = self.pad + self.line * (1 + 10) + self.pad  # title and 10 rows
-        self.code_height = code_height
-        self.panel_height = {"code": code_height, "variables": variables_height,
-                             "both": code_height + variables_height, "none": 0}[settings.panel]
+        # The panel takes the grid's height (no band under the grid): the
+        # pseudo-code scrolls to keep the current line in view where it is
+        # longer, as the window's panel does; at least MIN_CODE_ROWS show.
+        shortest = self.pad + self.line * (1 + MIN_CODE_ROWS) + self.pad
+        grid_height = renderer.grid_size[1]
+        if settings.panel == "both":  # the variables take what the code leaves, 4 rows at least
+            self.code_height = max(shortest, min(code_height, grid_height // 2))
+            variables_height = max(self.pad + self.line * 5 + self.pad,
+                                   grid_height - self.code_height)
+        else:
+            self.code_height = max(shortest, min(code_height, grid_height))
+        self.panel_height = {"code": self.code_height, "variables": variables_height,
+                             "both": self.code_height + variables_height, "none": 0,
+                             "tables": shortest}[settings.panel]
+        self._tables = TableIndex(renderer.trace) if settings.panel == "tables" else None
         self._code_cache: dict[int | None, np.ndarray] = {}
         self._code_rows: dict[int, Image.Image] = {}
 
@@ -138,15 +169,23 @@ class TextParts:
                 continue
             face = self.sans_bold if k % 2 == 1 else self.sans
             x += self._text(draw, x, baseline, piece, face, theme.text, x0 + room - x)
-        # Line 3: the values of this step, then what the algorithm explains.
+        # Lines 3 and 4: the values of this step, then what the algorithm
+        # explains, each labelled; whole parts wrap to the next line.
+        parts = self.caption_parts(state)
+        for k, line in enumerate(_pack(parts, "   \u00b7   ", self.mono, room, 2)):
+            baseline = self._baseline(top + (2 + k) * self.line, self.mono)
+            self._text(draw, x0, baseline, line, self.mono, theme.text, room)
+        return self._indices(image)
+
+    def caption_parts(self, state) -> list[str]:
+        """The caption's values, each labelled: "name = value" for the
+        step's values, "name: text" for what the algorithm explains."""
         rows = key_values(self.r.trace, state)
         names = {name for name, _ in rows}
         extra = [(n, t) for n, t in self._rows(state.index)[len(state.variables):]
                  if n not in names]
-        parts = [f"{name} = {text}" for name, text in rows] + [text for _, text in extra]
-        baseline = self._baseline(top + 2 * self.line, self.mono)
-        self._text(draw, x0, baseline, "   \u00b7   ".join(parts), self.mono, theme.text, room)
-        return self._indices(image)
+        return [shown(f"{name} = {text}") for name, text in rows] \
+            + [f"{name}: {text}" for name, text in extra]
 
     def _code_row(self, line: int) -> Image.Image:
         """The caption's second line for pseudo-code line ``line``, drawn
@@ -163,9 +202,37 @@ class TextParts:
             self._code_rows[line] = row
         return row
 
+    def grid_labels(self, frame: np.ndarray, labels, to_pixel, colour: str | None = None) -> None:
+        """Write labels (x, y, text in grid units) onto the grid part of
+        ``frame`` (palette indices), in ``colour`` (the guide colour by
+        default), just right of and above their point."""
+        colours = self.r.colours
+        gw, gh = self.r.grid_size
+        x0 = self.r.grid_left
+        face = self.sans_bold
+        placed = []  # a label that would cover one already written is left out
+        for x, y, text in labels:
+            left, top = to_pixel(x, y)
+            width, height = face.width(text) + 2, face.ascent + face.descent
+            left = int(min(max(x0, left + 4), x0 + gw - width))
+            top = int(min(max(0, top - height - 2), gh - height))
+            box = (left, top, left + width, top + height)
+            if left < 0 or top < 0 or any(box[0] < b[2] and b[0] < box[2] and box[1] < b[3]
+                                          and b[1] < box[3] for b in placed):
+                continue
+            placed.append(box)
+            region = frame[top:top + height, left:left + width]
+            patch = Image.fromarray(colours.rgb[region], "RGB")
+            ImageDraw.Draw(patch).text((1, 0), text, font=face.face,
+                                       fill=colour or self.r.theme.palette.guide, anchor="la")
+            rgba = np.dstack([np.asarray(patch), np.full(region.shape, 255, np.uint8)])
+            frame[top:top + height, left:left + width] = colours.indices(rgba)
+
     def _rows(self, index: int) -> list:
-        """The variables panel's rows at step ``index``."""
-        return self.r.spec.panel_rows(self.r.trace, index)
+        """The variables panel's rows at step ``index``, as a person reads
+        them (app/model/notation.py)."""
+        return [(shown(name), shown(text)) for name, text in
+                self.r.spec.panel_rows(self.r.trace, index)]
 
     # -------------------------------------------------------------- panel
     def panel(self, state) -> np.ndarray:
@@ -173,6 +240,10 @@ class TextParts:
         if kind == "code":
             return self._code_panel(state.step.line)
         image, draw = self._canvas(self.panel_size, self.r.theme.panel)
+        if kind == "tables":
+            self._paint_tables(draw, state.index)
+            self._paint_border(draw)
+            return self._indices(image)
         top = 0
         if kind == "both":
             self._paint_code(draw, state.step.line)
@@ -200,7 +271,16 @@ class TextParts:
         self._text(draw, self.pad, self._baseline(top, self.sans_bold), self.r.spec.title,
                    self.sans_bold, theme.muted, width - 2 * self.pad)
         top += self.line
+        room = (self.code_height - top - self.pad) // self.line
+        skip = self._first_row(current, room)
         for number, rows in enumerate(self.wrapped):
+            if skip >= len(rows):
+                skip -= len(rows)
+                continue
+            rows, skip = rows[skip:], 0
+            if room <= 0:
+                break
+            rows, room = rows[:room], room - len(rows[:room])
             here = number == current
             if here:
                 draw.rectangle((1, top, width - 1, top + len(rows) * self.line - 1),
@@ -214,6 +294,60 @@ class TextParts:
                 self._text(draw, self.pad + self.number_width, self._baseline(top, face), row,
                            face, theme.text)
                 top += self.line
+
+    def _paint_tables(self, draw, index: int) -> None:
+        """The run's tables as of step ``index`` (the scan line's ET and
+        AET), one under the other; a table taken at this very step is
+        titled in the colour of a changed value."""
+        theme = self.r.theme
+        width, height = self.panel_size
+        top = self.pad
+        tables = self._tables.at(index) if self._tables else []
+        if not tables:
+            self._text(draw, self.pad, self._baseline(top, self.sans), "No table at this step",
+                       self.sans, theme.muted)
+        for table in tables:
+            if top + 2 * self.line > height - self.pad:
+                break
+            title = f"{table.name}  ({len(table.rows)} row{'s' if len(table.rows) != 1 else ''})"
+            self._text(draw, self.pad, self._baseline(top, self.sans_bold), title,
+                       self.sans_bold, theme.changed if table.fresh else theme.muted)
+            top += self.line
+            widths = [max([self.mono.width(str(c)) for c in [name] + [r[k] for r in table.rows]])
+                      + self.mono.width("  ") for k, name in enumerate(table.columns)]
+            rows = [table.columns] + list(table.rows)
+            fits = max(1, (height - top - self.pad) // self.line - 1)
+            for r, row in enumerate(rows[:fits]):
+                x = self.pad
+                face = self.mono_bold if r == 0 or (r - 1) in table.changed_rows else self.mono
+                colour = theme.muted if r == 0 else (
+                    theme.changed if (r - 1) in table.changed_rows else theme.text)
+                for k, cell in enumerate(row):
+                    self._text(draw, x, self._baseline(top, face), str(cell), face, colour,
+                               width - self.pad - x)
+                    x += widths[k]
+                top += self.line
+            if len(rows) > fits:
+                self._text(draw, self.pad, self._baseline(top, self.sans),
+                           f"{ELLIPSIS} {len(rows) - fits} more", self.sans, theme.muted)
+                top += self.line
+            top += self.pad
+
+    def _first_row(self, current, room: int) -> int:
+        """The first wrapped row shown: 0 when all fit, else the row that
+        puts the current line a third of the way down."""
+        total = sum(len(rows) for rows in self.wrapped)
+        if total <= room or current is None or not 0 <= current < len(self.wrapped):
+            return 0
+        before = sum(len(rows) for rows in self.wrapped[:current])
+        wanted = max(0, min(before - room // 3, total - room))
+        # Start at the first row of a line, never on a continuation row.
+        start = 0
+        for rows in self.wrapped:
+            if start + len(rows) > wanted:
+                break
+            start += len(rows)
+        return start if start + room >= before + len(self.wrapped[current]) else wanted
 
     def _paint_variables(self, draw, state, top: int) -> None:
         theme = self.r.theme
@@ -240,6 +374,24 @@ class TextParts:
         if len(shown) < len(rows):
             self._text(draw, self.pad, self._baseline(top, self.sans),
                        f"{ELLIPSIS} {len(rows) - len(shown)} more", self.sans, theme.muted)
+
+
+def _pack(parts: list[str], separator: str, face: _Font, width: int, lines: int) -> list[str]:
+    """``parts`` joined by ``separator`` into at most ``lines`` lines of
+    ``width`` pixels, a part never split between lines (only a part
+    too long for a line of its own, or the last line's overflow, is
+    cut by the caller)."""
+    result, line = [], ""
+    for part in parts:
+        candidate = f"{line}{separator}{part}" if line else part
+        if line and face.width(candidate) > width and len(result) < lines - 1:
+            result.append(line)
+            line = part
+        else:
+            line = candidate
+    if line:
+        result.append(line)
+    return result
 
 
 def _wrap(text: str, face: _Font, width: int) -> list[str]:

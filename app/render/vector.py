@@ -25,6 +25,7 @@ import numpy as np
 
 from app.render.compose import OUTLINE_STYLE, compose
 from app.render.frame import frame_marks, key_values, step_caption
+from app.render.reasoning import step_guides
 from app.render.settings import ExportError
 from app.render.writers import PngFolderWriter, temporary_beside
 
@@ -81,6 +82,8 @@ def draw_frame(renderer, index: int) -> Drawing:
         drawing.line([(x * CELL, y_of(y) * CELL) for x, y in points], palette.primitive,
                      2.0, closed)
     _outlines(drawing, marks, palette, y_of)
+    if settings.reasoning and settings.highlight:
+        _guides(drawing, step_guides(trace, state, renderer.ideal), palette, y_of)
     if panel_width:
         drawing.rect(grid_w, 0, panel_width, body_h, fill=theme.panel)
     if code:
@@ -132,6 +135,22 @@ def _outlines(drawing, marks, palette, y_of) -> None:
         box(x, x + 1, y, "current", palette.current)
     for x, y in marks.candidates:
         box(x, x + 1, y, "candidate", palette.candidate)
+
+
+def _guides(drawing, guides, palette, y_of) -> None:
+    """The step's reasoning (app/render/reasoning.py), as the GIF draws it:
+    lines, dots (as small squares) and labels in the guide colour."""
+    widths = {"pair": 4.0, "drop": 1.5}
+    for x0, y0, x1, y1, role in guides.lines:
+        drawing.line([(x0 * CELL, y_of(y0) * CELL), (x1 * CELL, y_of(y1) * CELL)],
+                     palette.guide, widths.get(role, 1.0))
+    for x, y, role in guides.dots:
+        size = CELL * (0.3 if role in ("crossing", "midpoint", "sample") else 0.18)
+        colour = palette.current if role == "sample" else palette.guide
+        drawing.rect(x * CELL - size / 2, y_of(y) * CELL - size / 2, size, size,
+                     fill=None if role == "miss" else colour, stroke=colour, width=0.5)
+    for x, y, text in guides.labels:
+        drawing.text(x * CELL + 3, y_of(y) * CELL - 3, text, palette.guide, bold=True)
 
 
 def _code_width(trace) -> float:

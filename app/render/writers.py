@@ -22,14 +22,15 @@ import json
 import os
 import re
 import tempfile
-from collections import deque
 from contextlib import contextmanager
 from pathlib import Path
 from typing import Iterator, Protocol, Sequence
 
+import numpy as np
 from PIL import Image
 
 from app.model.staging import StagedFolder, owner_pid, process_alive
+from app.render.gif_stream import GifStream
 from app.render.settings import ExportError
 
 FRAME_NAME = "frame_{:0{width}d}.png"
@@ -73,10 +74,12 @@ def saving(writers: Sequence[FrameWriter], size: tuple[int, int], count: int, pa
 
 
 class GifWriter:
-    """An animated GIF with one global palette, written to a temporary
-    file beside ``path`` and renamed over it at the end.
+    """An animated GIF with one global palette, written frame by frame
+    (``app.render.gif_stream``) to a temporary file beside ``path`` and
+    renamed over it at the end: however long the export, one frame is held
+    in memory.
 
-    Pillow joins a frame identical to the one before it into that frame,
+    A frame identical to the one before it is joined into that frame,
     adding the durations (so a range where nothing visible changes takes
     fewer frames, and the same time).
     """
@@ -86,43 +89,42 @@ class GifWriter:
         self.durations = list(durations)
         self.loop = loop
         self.temporary: Path | None = None
-        self._frames: deque = deque()
+        self._file = None
+        self._gif: GifStream | None = None
+        self._count = 0
 
     def setup(self, size, count, palette, transparent) -> None:
         self.temporary = temporary_beside(self.path)
-        self.palette, self.transparent = palette, transparent
+        try:
+            self._file = open(self.temporary, "wb")
+            self._gif = GifStream(self._file, size, palette, transparent, self.loop)
+        except OSError as error:
+            raise self._failed(error) from None
 
     def grab_frame(self, image: Image.Image) -> None:
-        self._frames.append(image)
+        duration = self.durations[self._count] if self._count < len(self.durations) else 0
+        self._count += 1
+        try:
+            self._gif.add(np.asarray(image), duration)
+        except OSError as error:
+            raise self._failed(error) from None
 
     def finish(self) -> None:
         try:
-            self._write()
+            self._gif.close()
+            self._file.flush()
+            os.fsync(self._file.fileno())
+            self._file.close()
+            os.replace(self.temporary, self.path)
         except OSError as error:
-            raise ExportError(f"cannot write {self.path} ({error.strerror or error})") from None
+            raise self._failed(error) from None
 
-    def _write(self) -> None:
-        first = self._frames.popleft()
-        extra = {"loop": 0} if self.loop else {}
-        with open(self.temporary, "wb") as stream:
-            # One global palette (no frame carries its own). With
-            # ``optimize`` Pillow writes each frame after the first as the
-            # box that changed, its unchanged pixels set to ``transparent``.
-            first.save(stream, format="GIF", save_all=True, append_images=self._handed_over(),
-                       duration=self.durations, palette=self.palette, optimize=True,
-                       transparency=self.transparent, disposal=1, **extra)
-            stream.flush()
-            os.fsync(stream.fileno())
-        os.replace(self.temporary, self.path)
-
-    def _handed_over(self):
-        # Pillow keeps its own copy of every frame until it writes the
-        # file; each of ours is dropped as soon as Pillow has taken it.
-        while self._frames:
-            yield self._frames.popleft()
+    def _failed(self, error: OSError) -> ExportError:
+        return ExportError(f"cannot write {self.path} ({error.strerror or error})")
 
     def abort(self) -> None:
-        self._frames.clear()
+        if self._file is not None and not self._file.closed:
+            self._file.close()
         if self.temporary is not None:
             self.temporary.unlink(missing_ok=True)
 

@@ -211,22 +211,81 @@ def test_frames_show_every_phase():
     records = [trace.record_at(i) for i in range(len(trace))]
     assert isinstance(records[0], Start)
     tables = [(i, r) for i, r in enumerate(records) if isinstance(r, Table)]
-    assert [r.name for _, r in tables].count("ET") == 1 and tables[0][1].name == "ET"
+    assert tables[0][1].name == "ET"
     et = tables[0][1]
     assert et.columns == ("ymin", "edge", "ymax", "x", "1/m", "dir")
     # 8 edges, 4 of them horizontal and left out.
     assert len(et.rows) == 4
-    aets = [r for _, r in tables if r.name == "AET"]
+    sorted_aets = [r for _, r in tables if r.name == "AET" and code[r.line].text.strip()
+                   .startswith("sort")]
     # Rows 1 .. 14 carry the polygon, plus the last pass that empties the AET.
-    assert len(aets) == 15
-    for table in aets:
+    assert len(sorted_aets) == 15
+    for table in sorted_aets:
         xs = [row[2] for row in table.rows]
         assert xs == sorted(xs)
     spans = [r for r in records if isinstance(r, Span)]
     assert spans and all(code[s.line].kind == PLOT for s in spans)
-    # Every line has frames but the loop header, as in the other families.
-    lines_run = set(trace.line.tolist())
-    assert lines_run == set(range(len(code))) - {3}
+    # Every line has frames, the loop header included (it sets y).
+    assert set(trace.line.tolist()) == set(range(len(code)))
+
+
+def _line_named(trace, start: str) -> int:
+    return next(k for k, line in enumerate(trace.code) if line.text.strip().startswith(start))
+
+
+SHAPES = [NAMED[0][1], NAMED[5][1], NAMED[6][1], [[(2.25, 2), (28, 3.5), (20, 20.75)]]]
+
+
+@pytest.mark.parametrize("arithmetic", ["exact", "float64"])
+@pytest.mark.parametrize("contours", SHAPES)
+def test_aet_x_values_change_at_the_step_that_adds_one_over_m(contours, arithmetic):
+    # The x += 1/m line is on show exactly when the AET's x values move,
+    # and each moves by its own 1/m (worked out here from the table before).
+    trace = record(SCANLINE.name, contours, {"arithmetic": arithmetic}, grid=(32, 24))
+    step_x = _line_named(trace, "for each edge in the AET: x += 1/m")
+    aets = [(i, r) for i, r in trace.records_of(Table) if r.name == "AET"]
+    assert any(int(trace.line[i]) == step_x for i, _ in aets)
+    for (_, before), (i, after) in zip(aets, aets[1:]):
+        old = {row[0]: (row[2], row[3]) for row in before.rows}
+        new = {row[0]: row[2] for row in after.rows}
+        moved = {edge for edge in new if edge in old and new[edge] != old[edge][0]}
+        if int(trace.line[i]) == step_x:
+            assert set(new) == set(old)
+            assert all(new[edge] == old[edge][0] + old[edge][1] for edge in new)
+        else:
+            assert not moved, (i, moved)
+
+
+@pytest.mark.parametrize("contours", SHAPES)
+def test_edge_table_empties_as_edges_move_to_the_aet(contours):
+    trace = record(SCANLINE.name, contours, grid=(32, 24))
+    ets = [r for _, r in trace.records_of(Table) if r.name == "ET"]
+    sizes = [len(r.rows) for r in ets]
+    assert sizes[0] > 0 and sizes[-1] == 0
+    assert sizes == sorted(sizes, reverse=True)
+    # An edge leaves the ET at the step it enters the AET, never before.
+    first_row = {row[1]: row[0] for row in ets[0].rows}
+    for i, table in trace.records_of(Table)[1:]:
+        if table.name == "ET":
+            y = trace.variables_at(i)["y"]
+            assert {row[1] for row in table.rows} == {edge for edge, ymin in first_row.items()
+                                                      if ymin > y}
+
+
+@pytest.mark.parametrize("contours", SHAPES)
+def test_y_and_the_aet_size_hold_on_every_step_of_the_loop(contours):
+    trace = record(SCANLINE.name, contours, grid=(32, 24))
+    first = _line_named(trace, "AET = empty")
+    begin = int(np.flatnonzero(trace.line == first)[0])
+    rows_filled = {}
+    for i in range(begin, len(trace)):
+        values = trace.variables_at(i)
+        assert "y" in values and "active" in values, i
+        record_ = trace.record_at(i)
+        if isinstance(record_, Span):
+            rows_filled[record_.y] = values["y"]
+    # A span's row is the y the panel shows at its step.
+    assert rows_filled and all(y == shown for y, shown in rows_filled.items())
 
 
 def test_aet_rows_are_exact_fractions():

@@ -25,7 +25,8 @@ SCENES = ROOT / "resources" / "scenes"
 # algorithm with colours, and a fill with horizontal edges.
 GOLDEN = ("demo-bresenham", "circle-radius-2", "polygon-star-evenodd", "triangle-sliver",
           "painter-intersecting", "polygon-horizontal-edges")
-SETTINGS = ExportSettings(caption=False, panel="none")
+# Text on the grid (the reasoning's labels) is left out like the rest of the text.
+SETTINGS = ExportSettings(caption=False, panel="none", grid_text=False)
 
 
 def golden_frames(name: str) -> dict[str, np.ndarray]:

@@ -86,7 +86,7 @@ def window_and_export(qtbot, name):
     window = show_in_window(qtbot, scene)
     cell = auto_scale(scene.width, scene.height)
     set_cell_size(window.grid, cell)
-    renderer = FrameRenderer(scene, ExportSettings(scale=cell, primitive=False),
+    renderer = FrameRenderer(scene, ExportSettings(scale=cell, primitive=False, grid_text=False),
                              window.player.trace)
     return window, renderer, cell
 

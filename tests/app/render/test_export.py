@@ -322,9 +322,14 @@ def test_the_code_panel_marks_the_current_line():
         panel = image[:, GRID[0] * 8 + 2:]
         rows = np.flatnonzero((panel == marked).all(axis=2).any(axis=1))
         line = renderer.trace.step(index).line
-        top = renderer._text.pad + renderer._text.line * (1 + sum(rows_per_line[:line]))
-        assert rows.min() == top
-        assert rows.max() == top + renderer._text.line * rows_per_line[line] - 1
+        text = renderer._text
+        # The panel is as tall as the grid and scrolls: the current line is
+        # marked whole, below the title, on the rows the line takes.
+        assert renderer.body_height == max(GRID[1] * 8, text.code_height)
+        assert rows.min() >= text.pad + text.line
+        assert rows.max() - rows.min() + 1 == text.line * rows_per_line[line]
+        assert rows.max() < text.code_height
+        assert (rows.min() - text.pad) % text.line == 0
 
 
 def test_run_colours_are_in_the_palette():

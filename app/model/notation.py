@@ -1,0 +1,109 @@
+"""How numbers and names read on screen and on exported frames: one helper
+for the window's panels and captions and for the exporter.
+
+The algorithms' own texts stay as they are (plain ASCII, full precision:
+the command line and the recorded traces keep them); what a person reads
+goes through here:
+
+* ``number``: a sensible number of significant figures (all the whole
+  digits of a large value, and one decimal at least). A float that
+  rounds onto a tie (an integer or a half) it does not equal keeps more
+  digits, so that float drift at a rounding decision stays visible
+  (12.4999998 is not shown as 12.5).
+* ``tidy``: a text's long decimals shortened the same way, ``<=`` as ≤,
+  ``>=`` as ≥, ``!=`` as ≠, and two clumsy forms of the panels' sums
+  fixed: "d_i = 0 = 0" becomes "d_i = 0", "+ (-14)" becomes "− 14".
+* ``subscripts`` (for Pillow frames: Unicode) and ``rich`` (for Qt rich
+  text: <sub>) set an index written with an underscore, d_i+1 or
+  x_{left}, as a subscript.
+"""
+from __future__ import annotations
+
+import html
+import re
+from fractions import Fraction
+
+DIGITS = 5  # significant figures of a shown float
+
+_SUB = str.maketrans("0123456789+-=()aehijklmnoprstuvx",
+                     "₀₁₂₃₄₅₆₇₈₉₊₋₌₍₎ₐₑₕᵢⱼₖₗₘₙₒₚᵣₛₜᵤᵥₓ")
+_SUBSCRIPTABLE = set("0123456789+-=()aehijklmnoprstuvx")
+# An index: one letter or digit, perhaps with + or - a number (d_i, d_i+1,
+# e_k, w_0), or anything in braces (x_{left}). Longer words after an
+# underscore are names, not indices: fill_rule and s_affine stay as they are.
+_INDEX = re.compile(r"(?<=[A-Za-z0-9])_(\{[^}]*\}|[A-Za-z0-9](?:[+\-]\d+)?)(?![A-Za-z0-9_])")
+_LONG_DECIMAL = re.compile(r"(?<![\w.])-?\d+\.\d{6,}(?:e[+-]?\d+)?(?![\w.])")
+_REPEAT = re.compile(r"= (-?[\w.]+) = \1(?=$|[,;)\s])")
+_PLUS_BRACKET = re.compile(r"([+\-]) \((-?)(\d[\d.]*)\)")
+
+
+def number(value, digits: int = DIGITS) -> str:
+    """Short text for a number: whole numbers plain, floats to ``digits``
+    significant figures (every digit where that would hide a near miss
+    of a tie),
+    fractions as p/q with their decimal value."""
+    if isinstance(value, bool) or not isinstance(value, (int, float, Fraction)):
+        return str(value)
+    if isinstance(value, Fraction):
+        if value.denominator == 1:
+            return str(value.numerator)
+        return f"{value} ({number(float(value), digits)})"
+    if isinstance(value, int):
+        return str(value)
+    if value != value or value in (float("inf"), float("-inf")):
+        return str(value)
+    if value.is_integer() and abs(value) < 2 ** 53:
+        return str(int(value))
+    whole = len(str(int(abs(value)))) if abs(value) >= 1 else 0
+    # Every whole digit stays (a coordinate near 1,000,000 must not read
+    # 1e+06), then decimals up to ``digits`` figures, at least one.
+    text = f"{value:.{max(1, digits - whole)}f}" if whole else f"{value:.{digits}g}"
+    if whole and "." in text:
+        text = text.rstrip("0").rstrip(".")
+    shown = float(text)
+    # A near miss of a tie (a float's drift, not a value that merely rounds
+    # to a half): keep it visible.
+    last_digit = 10.0 ** -max(1, digits - whole) if whole else 1e-5
+    if shown != value and (2 * shown).is_integer() and abs(shown - value) < 1e-4 * last_digit:
+        text = repr(value)  # the shortest text that is exactly this float
+    return text
+
+
+def tidy(text: str) -> str:
+    """A panel's or caption's text as a person should read it (see above)."""
+    text = _LONG_DECIMAL.sub(lambda m: number(float(m.group(0))), text)
+    text = _REPEAT.sub(r"= \1", text)
+    text = _PLUS_BRACKET.sub(lambda m: _signed(m.group(1), m.group(2), m.group(3)), text)
+    return text.replace("<=", "\u2264").replace(">=", "\u2265").replace("!=", "\u2260")
+
+
+def _signed(operator: str, minus: str, digits: str) -> str:
+    negative = (operator == "-") != (minus == "-")
+    return ("\u2212 " if negative else "+ ") + digits
+
+
+def subscripts(text: str) -> str:
+    """Indices as Unicode subscripts where every character of the index has
+    one (d_i+1 -> dᵢ₊₁); other indices keep their underscore."""
+    def sub(match):
+        index = match.group(1).strip("{}")
+        if index and set(index) <= _SUBSCRIPTABLE:
+            return index.translate(_SUB)
+        return match.group(0)
+    return _INDEX.sub(sub, text)
+
+
+def rich(text: str) -> str:
+    """Qt rich text: escaped, with every index as <sub>...</sub>."""
+    parts, last = [], 0
+    for match in _INDEX.finditer(text):
+        parts.append(html.escape(text[last:match.start()]))
+        parts.append(f"<sub>{html.escape(match.group(1).strip('{}'))}</sub>")
+        last = match.end()
+    parts.append(html.escape(text[last:]))
+    return "".join(parts)
+
+
+def shown(text: str) -> str:
+    """``tidy`` then ``subscripts``: what an exported frame writes."""
+    return subscripts(tidy(text))

@@ -1,0 +1,245 @@
+"""The reasoning of a step drawn on the grid: what the window and exported
+frames show over the pixels, worked out once for both.
+
+* A decision between two candidate pixels (Bresenham's lines, the midpoint
+  circle): the midpoint M between the candidates' centres, and a short
+  drop from M to the ideal primitive, which shows on which side of M it
+  passes.
+* The scan-line fill: the scan line through the pixel centres at
+  y + 1/2, its crossings with the edges (the AET's x values), and the pair
+  of crossings a span is filled between.
+* Supersampling: the samples tested so far in the current pixel, the
+  step's own sample marked.
+
+Everything is in grid units (pixel (i, j) is [i, i+1) x [j, j+1)), y up;
+the window and the exporter flip it for the top-left origin themselves.
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from algorithms.steps import Span, Table
+
+from app.model.drawing import point_labels
+from app.model.tools import drawing_mode
+from app.render.frame import pixel_samples
+
+
+@dataclass(frozen=True)
+class Guides:
+    """Marks of a step's reasoning.
+
+    ``lines`` are (x0, y0, x1, y1, role), role "scan" (the scan line),
+    "pair" (the run between two crossings) or "drop" (from M to the
+    primitive); ``dots`` are (x, y, role), role "crossing", "midpoint",
+    "hit", "miss" or "sample" (the step's own sample); ``labels`` are
+    (x, y, text) placed just right of and above (x, y).
+    """
+
+    lines: tuple = ()
+    dots: tuple = ()
+    labels: tuple = ()
+
+    def __bool__(self) -> bool:
+        return bool(self.lines or self.dots or self.labels)
+
+
+NONE = Guides()
+
+
+def step_guides(trace, state, paths=()) -> Guides:
+    """The guides of ``state`` (a FrameState of ``trace``); ``paths`` is the
+    ideal primitive as [(points, closed), ...] in grid units."""
+    if trace is None or state is None:
+        return NONE
+    for make in (_scan_guides, _midpoint_guides, _sample_guides):
+        guides = make(trace, state, paths)
+        if guides:
+            return guides
+    return NONE
+
+
+# ------------------------------------------------------------ scan line
+def _scan_guides(trace, state, paths) -> Guides:
+    if not _is_scan_line_run(trace) or "y" not in state.variables:
+        return NONE
+    y = state.variables["y"]
+    if not isinstance(y, (int, float)) or isinstance(y, bool):
+        return NONE
+    centre = float(y) + 0.5
+    if not 0 < centre < trace.height:
+        return NONE  # the loop's last pass: the scan line is past the grid
+    lines = [(0.0, centre, float(trace.width), centre, "scan")]
+    found = _latest_table(trace, "AET", state.index)
+    crossings = []
+    if found is not None:
+        # An edge whose ymax is this row leaves the AET here: it has no crossing.
+        columns = found[1].columns
+        x_column, top = columns.index("x"), columns.index("ymax")
+        crossings = [float(row[x_column]) for row in found[1].rows if row[top] > y]
+    dots = [(x, centre, "crossing") for x in crossings]
+    if isinstance(state.step.record, Span) and found is not None:
+        pair = _span_pair(trace, found, state.index)
+        if pair is not None:
+            lines.append((pair[0], centre, pair[1], centre, "pair"))
+    labels = [(0.05, centre, f"y + \u00bd = {_short(centre)}")]
+    return Guides(tuple(lines), tuple(dots), tuple(labels))
+
+
+def _is_scan_line_run(trace) -> bool:
+    """A run that builds an edge table first and keeps an AET (the scan-line fill)."""
+    steps = trace.steps_of(Table)
+    return len(steps) > 0 and trace.record_at(int(steps[0])).name == "ET"
+
+
+def _latest_table(trace, name: str, index: int, hops: int = 8):
+    """(step, table) of the latest table called ``name`` at or before
+    ``index``, looking back over at most ``hops`` tables; else None."""
+    at = index
+    for _ in range(hops):
+        found = trace.last_of(Table, at=at)
+        if found is None:
+            return None
+        if found[1].name == name:
+            return found
+        at = found[0] - 1
+    return None
+
+
+def _span_pair(trace, found, index: int):
+    """(x_left, x_right) of the crossings the span at ``index`` lies
+    between: the k-th run of the AET ``found`` = (step, table) sorted
+    before it."""
+    sort_step, aet = found
+    ordinal = len(trace.steps_of(Span, lo=sort_step + 1, hi=index))
+    x_column = aet.columns.index("x")
+    xs = [float(row[x_column]) for row in aet.rows]
+    if "dir" in aet.columns:
+        turns = [int(row[aet.columns.index("dir")]) for row in aet.rows]
+        found, winding, left = [], 0, None
+        for x, turn in zip(xs, turns):
+            before, winding = winding, winding + turn
+            if before == 0:
+                left = x
+            elif winding == 0:
+                found.append((left, x))
+    else:
+        found = [(xs[k], xs[k + 1]) for k in range(0, len(xs) - 1, 2)]
+    return found[ordinal] if ordinal < len(found) else None
+
+
+# ------------------------------------------------------------ midpoint
+def _midpoint_guides(trace, state, paths) -> Guides:
+    candidates = state.candidates
+    if len(candidates) != 2 or getattr(trace.start, "decision", None) is None:
+        return NONE
+    (ax, ay), (bx, by) = candidates
+    mx, my = (ax + bx) / 2 + 0.5, (ay + by) / 2 + 0.5
+    lines = []
+    nearest = _nearest_on_paths(paths, mx, my)
+    if nearest is not None and math.dist(nearest, (mx, my)) > 1e-9:
+        lines.append((mx, my, nearest[0], nearest[1], "drop"))
+    return Guides(tuple(lines), ((mx, my, "midpoint"),), ((mx, my, "M"),))
+
+
+def _nearest_on_paths(paths, x: float, y: float):
+    best, where = math.inf, None
+    for points, closed in paths:
+        points = [(float(px), float(py)) for px, py in points]
+        if closed and len(points) > 2:
+            points = points + points[:1]
+        for (x0, y0), (x1, y1) in zip(points, points[1:]):
+            dx, dy = x1 - x0, y1 - y0
+            length = dx * dx + dy * dy
+            t = 0.0 if length == 0 else min(1.0, max(0.0, ((x - x0) * dx + (y - y0) * dy) / length))
+            px, py = x0 + t * dx, y0 + t * dy
+            distance = math.hypot(px - x, py - y)
+            if distance < best:
+                best, where = distance, (px, py)
+    return where
+
+
+# ------------------------------------------------------------ samples
+def _sample_guides(trace, state, paths) -> Guides:
+    samples = pixel_samples(trace, state.index)
+    if samples is None:
+        return NONE
+    dots = [(float(x), float(y), "hit" if hit else "miss")
+            for x, y, hit in zip(samples.xs, samples.ys, samples.hits)]
+    if samples.current >= 0:
+        x, y = float(samples.xs[samples.current]), float(samples.ys[samples.current])
+        dots.append((x, y, "sample"))
+    return Guides((), tuple(dots), ())
+
+
+def vertex_labels(spec, scene) -> list[tuple[float, float, str]]:
+    """(x, y, name) of the scene's points in grid units, named as the
+    window names them (P1, P2, ...; C2.P1 for a second contour). Integer
+    inputs (lines, circles) stand for pixels: their label sits at the
+    pixel's centre."""
+    flat = [tuple(point) for point in scene.flat]
+    mode = drawing_mode(spec)
+    names = point_labels(mode, spec.inputs.count or 0, len(flat), scene.breaks,
+                         getattr(spec.inputs, "names", ()) or ())
+    half = 0.5 if getattr(spec.inputs, "integer", False) else 0.0
+    return [(float(x) + half, float(y) + half, name) for (x, y), name in zip(flat, names)]
+
+
+def _short(value: float) -> str:
+    return f"{value:g}"
+
+
+# ------------------------------------------------------------ drawing
+def draw_guides(indices: np.ndarray, guides: Guides, scale: int, colour: int,
+                current: int) -> None:
+    """Draw ``guides`` into a grid image of palette indices (row 0 at y = 0,
+    ``scale`` image pixels a cell) in place: lines and dots in ``colour``,
+    the step's own sample in ``current``. Labels are text, drawn by the
+    exporter with its fonts."""
+    width = max(1, round(scale / 10))
+    for x0, y0, x1, y1, role in guides.lines:
+        _segment(indices, x0 * scale, y0 * scale, x1 * scale, y1 * scale,
+                 width * (3 if role == "pair" else 1), colour)
+    for x, y, role in guides.dots:
+        radius = max(1.5, scale / {"crossing": 4, "midpoint": 5}.get(role, 8))
+        if role == "sample":
+            _disc(indices, x * scale, y * scale, radius * 1.6, current)
+        elif role == "miss":
+            _disc(indices, x * scale, y * scale, radius, colour, hollow=True)
+        else:
+            _disc(indices, x * scale, y * scale, radius, colour)
+
+
+def _segment(image, x0, y0, x1, y1, width, value) -> None:
+    rows, cols = image.shape
+    length = math.hypot(x1 - x0, y1 - y0)
+    t = np.linspace(0.0, 1.0, max(2, int(length * 2) + 1))
+    xs, ys = x0 + (x1 - x0) * t, y0 + (y1 - y0) * t
+    half = (width - 1) / 2
+    for offset in np.arange(-half, half + 0.5, 1.0):
+        # Thickness across the segment's main direction.
+        if abs(x1 - x0) >= abs(y1 - y0):
+            c, r = np.floor(xs), np.floor(ys + offset)
+        else:
+            c, r = np.floor(xs + offset), np.floor(ys)
+        c, r = c.astype(np.int64), r.astype(np.int64)
+        keep = (c >= 0) & (c < cols) & (r >= 0) & (r < rows)
+        image[r[keep], c[keep]] = value
+
+
+def _disc(image, cx, cy, radius, value, hollow: bool = False) -> None:
+    rows, cols = image.shape
+    r = int(math.ceil(radius))
+    y0, y1 = max(0, int(cy) - r - 1), min(rows, int(cy) + r + 2)
+    x0, x1 = max(0, int(cx) - r - 1), min(cols, int(cx) + r + 2)
+    if y0 >= y1 or x0 >= x1:
+        return
+    yy, xx = np.mgrid[y0:y1, x0:x1]
+    distance = np.hypot(xx + 0.5 - cx, yy + 0.5 - cy)
+    inside = distance <= radius
+    if hollow:
+        inside &= distance >= radius - max(1.0, radius / 3)
+    image[y0:y1, x0:x1][inside] = value
