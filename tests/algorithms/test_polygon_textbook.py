@@ -34,6 +34,12 @@ def test_brute_force_fills_the_exact_polygon(shape, rule):
     assert set(filled) == exact.covered_pixels(POLYGONS[shape], rule)
 
 
+def sorted_aets(trace):
+    """The AET as sorted for each row (the snapshot after x += 1/m is the next row's)."""
+    return [(index, table) for index, table in trace.records_of(Table)
+            if table.name == "AET" and trace.code[table.line].text.strip().startswith("sort")]
+
+
 @pytest.mark.parametrize("shape", POLYGONS)
 def test_brute_force_tests_every_edge_on_every_row_and_the_edge_table_fewer(shape):
     contours = POLYGONS[shape]
@@ -46,7 +52,7 @@ def test_brute_force_tests_every_edge_on_every_row_and_the_edge_table_fewer(shap
     assert final["tests"] == rows * edges
     # The crossings it finds are the ones the edge table keeps active, row by row.
     et, _ = pixels("polygon-scanline", contours)
-    active = sum(len(table.rows) for _, table in et.records_of(Table) if table.name == "AET")
+    active = sum(len(table.rows) for _, table in sorted_aets(et))
     assert final["crossings"] == active <= final["tests"]
     if shape == "star":  # ten edges, few of them on any one row
         assert 2 * active < final["tests"]
@@ -83,10 +89,8 @@ def test_integer_walk_fills_the_exact_polygon_and_keeps_x_as_whole_and_error(sha
                 f"P{k + 1}P{(k + 1) % len(contour) + 1}"
             edges[label] = (a, b)
     seen = 0
-    for index, table in trace.records_of(Table):
-        if table.name != "AET":
-            continue
-        y = int(trace.step(index - 1).values["y"])  # the row the AET was sorted for
+    for index, table in sorted_aets(trace):
+        y = int(trace.variables_at(index)["y"])  # the row the AET was sorted for
         for label, _, (whole, error), _ in table.rows:
             num, over = map(int, error.split("/"))
             assert 0 <= num < over

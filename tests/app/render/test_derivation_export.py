@@ -15,7 +15,7 @@ def renderer(origin="bottom-left", highlight=True):
     scene = Scene(algorithm="line-bresenham-textbook", points=((1, 2), (13, 7)), width=16,
                   height=10, origin=origin)
     return FrameRenderer(scene, ExportSettings(scale=SCALE, panel="none", caption=False,
-                                               highlight=highlight))
+                                               highlight=highlight, reasoning=False))
 
 
 def bar_colours(r, frame, segment, y_down):
