@@ -25,7 +25,7 @@ from PIL import Image
 from algorithms import registry
 from algorithms.trace import FrameState
 
-from app.model.geometry import scene_paths
+from app.model.geometry import run_paths
 from app.render.frame import compose_frame, compose_region, frame_marks, primitive_mask
 from app.render.palette import DARK, LIGHT, THEMES, ColourIndex, Theme, build_palette
 from app.render.settings import (MAX_FPS, MAX_HOLD, MAX_SCALE, MIN_FPS, NAMES, ExportCancelled,
@@ -81,7 +81,7 @@ class FrameRenderer:
         if gw > MAX_SIDE or gh > MAX_SIDE:
             raise ExportError(f"the grid would be {gw}x{gh} pixels at scale {scale}; a frame is "
                               f"at most {MAX_SIDE}x{MAX_SIDE}: choose a smaller scale")
-        self.paths = (scene_paths(self.spec, scene.points, self.spec.resolve(scene.options))
+        self.paths = (run_paths(self.spec, scene.points, self.spec.resolve(scene.options), trace)
                       if settings.primitive else [])
         self._text = TextParts(self, max(gw, gh))
         self.panel_width = self._text.panel_width if settings.panel != "none" else 0
