@@ -17,7 +17,8 @@ CASES = [
 ]
 TRAVERSALS = ["triangle-scan", "triangle-bbox", "triangle-incremental", "triangle-backtrack",
               "triangle-pineda", "triangle-linewise", "triangle-halfplane",
-              "triangle-barycentric", "triangle-plane", "triangle-perspective"]
+              "triangle-barycentric", "triangle-plane", "triangle-perspective",
+              "triangle-texture"]
 
 
 def _vertices(points):
