@@ -26,25 +26,42 @@ WEIGHTS = {"@weights": ("alpha", "beta", "gamma"), "@weights_p": ("alpha_p", "be
 SWAPPED = "clockwise: P1, P2 swapped"
 
 
-def fragment_table(trace, pairs) -> tuple[list[tuple[str, str, int]], np.ndarray]:
+def fragment_table(trace, pairs) -> tuple[list[tuple[str, str, int]], "FragmentTable"]:
     """(layout, table): layout lists (key, column, width) of the keys this run has;
     table holds, per written pixel in emission order, those columns side by side."""
-    steps = trace.written().steps
-    names = set(trace.value_names)
-    layout, blocks = [], []
-    for key, column in pairs:
-        block = _column(trace, column, steps, names)
-        if block is not None:
-            block = block.reshape(len(steps), -1)
-            layout.append((key, column, block.shape[1]))
-            blocks.append(block.astype(np.float64))
-    table = np.concatenate(blocks, axis=1) if blocks else np.zeros((len(steps), 0))
-    return layout, table
+    table = FragmentTable(trace, pairs)
+    return table.layout, table
+
+
+class FragmentTable:
+    """The fragment columns of a run, made a slice of pixels at a time: a whole
+    table beside a step-capped trace would cost as much again."""
+
+    def __init__(self, trace, pairs):
+        self.steps = trace.written().steps
+        names = set(trace.value_names)
+        self.layout, self.sources = [], []
+        for key, column in pairs:
+            source = _source(trace, column, names)
+            if source is not None:
+                self.layout.append((key, column, _width(column)))
+                self.sources.append(source)
+
+    def __len__(self) -> int:
+        return len(self.steps)
+
+    def __getitem__(self, part: slice) -> np.ndarray:
+        steps = self.steps[part]
+        blocks = [source(steps).reshape(len(steps), -1).astype(np.float64)
+                  for source in self.sources]
+        return np.concatenate(blocks, axis=1) if blocks else np.zeros((len(steps), 0))
 
 
 def fragment_objects(layout, rows: np.ndarray) -> list[dict]:
     """JSON objects of fragment_table's rows: null for NaN, #rrggbb for a colour,
     a list for a column several wide. Built a column at a time (fast on big runs)."""
+    if isinstance(rows, FragmentTable):
+        rows = rows[:]
     keys, columns, start = [], [], 0
     for key, column, width in layout:
         parts = [_values(column, rows[:, start + k]) for k in range(width)]
@@ -54,43 +71,58 @@ def fragment_objects(layout, rows: np.ndarray) -> list[dict]:
     return [dict(zip(keys, values)) for values in zip(*columns)]
 
 
-def _column(trace, column, steps, names):
+def _width(column: str) -> int:
+    return 3 if column in WEIGHTS else 1
+
+
+def _source(trace, column, names):
+    """A function of written steps giving the column there, or None when the run lacks it."""
     if column == "@triangle":
-        return _vars_at(trace, "triangle", steps)
+        return _vars_source(trace, "triangle")
     if column in WEIGHTS:
-        return _weights(trace, column, steps, names)
-    return trace.series(column)[steps] if column in names else None
+        return _weights_source(trace, column, names)
+    if column not in names:
+        return None
+    series = trace.series(column)
+    return lambda steps: series[steps]
 
 
-def _weights(trace, column, steps, names):
+def _weights_source(trace, column, names):
     own = WEIGHTS[column]
     if all(name in names for name in own):
-        weights = np.stack([trace.series(name)[steps] for name in own], axis=1)
+        columns = [trace.series(name) for name in own]
     elif column == "@weights" and {"e0", "e1", "e2"} <= names:
-        area2 = _vars_at(trace, "2A", steps)
-        edges = np.stack([trace.series(f"e{k}")[steps] for k in range(3)], axis=1)
-        with np.errstate(divide="ignore", invalid="ignore"):
-            weights = edges / area2[:, None]
+        area2 = _vars_source(trace, "2A")
+        edges = [trace.series(f"e{k}") for k in range(3)]
+        columns = None
     else:
         return None
-    # Weights follow the run's vertex order; a swapped triangle's P1 and P2 are
-    # the input's P2 and P1, so swap those weights back.
-    winding = _vars_at(trace, "winding", steps, dtype=object)
-    swapped = winding == SWAPPED
-    weights[swapped] = weights[swapped][:, [0, 2, 1]]
+    winding = _vars_source(trace, "winding", dtype=object)
+
+    def weights(steps):
+        if columns is not None:
+            found = np.stack([series[steps] for series in columns], axis=1)
+        else:
+            with np.errstate(divide="ignore", invalid="ignore"):
+                found = np.stack([series[steps] for series in edges], axis=1) \
+                    / area2(steps)[:, None]
+        # Weights follow the run's vertex order; a swapped triangle's P1 and P2
+        # are the input's P2 and P1, so swap those weights back.
+        swapped = winding(steps) == SWAPPED
+        found[swapped] = found[swapped][:, [0, 2, 1]]
+        return found
     return weights
 
 
-def _vars_at(trace, name, steps, dtype=np.float64):
-    """The value of the Vars ``name`` in effect at each of ``steps`` (NaN before any)."""
+def _vars_source(trace, name, dtype=np.float64):
+    """A function of steps giving the value of the Vars ``name`` in effect at each
+    (NaN or None before any)."""
     found = [(i, record.values[name]) for i, record in trace.records_of(Vars)
              if name in record.values]
-    if not found:
-        return np.full(len(steps), np.nan if dtype is np.float64 else None, dtype=dtype)
+    empty = np.nan if dtype is np.float64 else None
     at = np.array([i for i, _ in found], dtype=np.int64)
-    values = np.array([np.nan if dtype is np.float64 else None] + [v for _, v in found],
-                      dtype=dtype)
-    return values[np.searchsorted(at, steps, side="right")]
+    values = np.array([empty] + [v for _, v in found], dtype=dtype)
+    return lambda steps: values[np.searchsorted(at, steps, side="right")]
 
 
 def _values(column: str, values: np.ndarray) -> list:
