@@ -142,3 +142,12 @@ def test_pipeline_final_holds_clip_and_window_coordinates(run_cli):
         assert window[0] == pytest.approx((clip[0] / clip[3] + 1) * 32 / 2)
         assert window[1] == pytest.approx((clip[1] / clip[3] + 1) * 24 / 2)
     assert all(f["triangle"] == 1 and 0 <= f["depth"] <= 1 for f in result["fragments"])
+
+
+def test_fragments_printed_in_parts_equal_one_part(run_cli, monkeypatch):
+    from app import cli
+    points, grid = CASES[0][1], CASES[0][2]
+    whole = run_json(run_cli, "triangle-perspective", points, grid)
+    monkeypatch.setattr(cli.Rows, "PART", 7)  # many parts, one cut inside each triangle
+    parts = run_json(run_cli, "triangle-perspective", points, grid)
+    assert parts == whole and len(whole["fragments"]) > 7 * 10
