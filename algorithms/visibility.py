@@ -422,6 +422,8 @@ SCENES = {"painter-intersecting": intersecting_scene, "painter-cyclic": cyclic_s
 # ========================================================= registering
 registry_module.all_specs()
 
+# `run --json`'s fragments: the z and colour of each fragment written.
+FRAGMENTS = (("triangle", "@triangle"), ("z", "z"), ("color", "rgb"))
 ZBUFFER_OPTIONS = (Z, COLORS, DEPTH_TEST, CLEAR_DEPTH, FILL_RULE)
 PAINTER_OPTIONS = (Z, COLORS, SORT, FILL_RULE)
 
@@ -436,7 +438,7 @@ register(AlgorithmSpec(
            "buffer view shows ZB at any step.",
            "Triangles may come in any order, intersect or overlap in a cycle: the "
            "z-buffer is right in every case."),
-    explain=explain_depth, uses_grid=True))
+    explain=explain_depth, uses_grid=True, fragments=FRAGMENTS))
 
 register(AlgorithmSpec(
     name="painter", title="Painter's algorithm", family="visibility",
@@ -447,4 +449,4 @@ register(AlgorithmSpec(
            "Whole triangles cannot be ordered when they pierce each other or overlap in "
            "a cycle; the last step counts the pixels where the result differs from the "
            "z-buffer's.",),
-    explain=explain_painter, uses_grid=True))
+    explain=explain_painter, uses_grid=True, fragments=FRAGMENTS))

@@ -17,7 +17,7 @@ from algorithms.registry import InputError, parse_number
 from algorithms.trace import DEFAULT_STEP_CAP, MAX_STEP_CAP, TraceError
 from app import cli_teaching
 from app.model import budget
-from app.model.fragments import fragment_columns, fragment_objects
+from app.model.fragments import fragment_objects, fragment_table
 from app.progress import TerminalBar
 from app.model.scene import one_line
 
@@ -275,8 +275,8 @@ def run_result(spec, trace, options) -> dict:
         name = trace.start.pixel_value
         result["values"] = Rows(values, lambda part: _pixel_values(name, part))
     if spec.fragments:
-        result["fragments"] = Rows(fragment_columns(trace, spec.fragments),
-                                   lambda part: fragment_objects(spec.fragments, part))
+        layout, table = fragment_table(trace, spec.fragments)
+        result["fragments"] = Rows(table, lambda part: fragment_objects(layout, part))
     if trace.truncated:
         result["truncated"] = True
         result["message"] = trace.message

@@ -22,7 +22,7 @@ register(AlgorithmSpec(
            "over is not commutative: sort transparent triangles back to front. Triangles "
            "that pierce each other cannot be sorted as wholes."),
     uses_grid=True,
-    fragments=(("z", "z"), ("alpha", "alpha"), ("source", "src"), ("before", "dst"),
+    fragments=(("triangle", "@triangle"), ("z", "z"), ("alpha", "alpha"), ("source", "src"), ("before", "dst"),
                ("color", "rgb"))))
 
 # ---------------------------------------------------------------- the 3-D pipeline
@@ -69,4 +69,4 @@ register(AlgorithmSpec(
            "A fragment's panel rows retrace it: its weights, then its clip, NDC and window "
            "coordinates from the corners of its fan triangle."),
     explain=explain, uses_grid=True,
-    fragments=(("depth", "depth"), ("w", "w"), ("u", "u"), ("v", "v"), ("color", "rgb"))))
+    fragments=(("triangle", "@triangle"), ("depth", "depth"), ("w", "w"), ("u", "u"), ("v", "v"), ("color", "rgb"))))

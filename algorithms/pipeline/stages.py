@@ -90,6 +90,7 @@ class World:
                              f"not {len(flat)}")
         self.uv = [(flat[(2 * k) % len(flat)], flat[(2 * k + 1) % len(flat)]) if flat
                    else (0.0, 0.0) for k in range(count)]
+        self.has_uv = bool(flat) or _textured(options)
         self.light = normalized([-v for v in _light(options)])
         self.texture = None
         if _textured(options):
@@ -133,7 +134,9 @@ def pipeline(points, options, grid):
     camera = Camera(options["eye"], options["target"], options["fov"], options["near"],
                     options["far"], width / height)
     at = pipeline_code(options).at
-    yield Start(line=at["transform"], values=("depth", "zb", "w", "u", "v", "rgb"),
+    # u and v are columns only when the scene has them (uv or a texture).
+    uv = ("u", "v") if world.has_uv else ()
+    yield Start(line=at["transform"], values=("depth", "zb", "w", *uv, "rgb"),
                 constants={"shading": options["shading"], "clipping": options["clipping"],
                            "triangles": len(points) // 3}, pixel_value="rgb", depth_value="depth")
     state = {"color": np.full((height, width), -1.0), "depth": np.full((height, width), np.inf),
@@ -221,10 +224,10 @@ def _fragments(fan, windows, face, world, options, state, at):
             state["fragments"] += 1
             stored = state["depth"][j, i]
             zb = float(stored) if math.isfinite(stored) else math.nan
-            u, v = (sum(p * c[10] for p, c in zip(bp, corner)),
-                    sum(p * c[11] for p, c in zip(bp, corner)))
+            uv = (sum(p * c[10] for p, c in zip(bp, corner)),
+                  sum(p * c[11] for p, c in zip(bp, corner))) if world.has_uv else ()
             if not z < stored:
-                yield (at["fail"], i, j, z, zb, 1 / sum(q), u, v, math.nan)
+                yield (at["fail"], i, j, z, zb, 1 / sum(q), *uv, math.nan)
                 continue
             color = _shade(options["shading"], bp, corner, flat, world)
             if mapping is not None:
@@ -232,7 +235,7 @@ def _fragments(fan, windows, face, world, options, state, at):
                 color = [c * t / 255 for c, t in zip(color, texel)]
             state["passed"] += 1
             state["depth"][j, i] = z
-            yield (at["plot_pass"], i, j, z, zb, 1 / sum(q), u, v, float(pack(color)))
+            yield (at["plot_pass"], i, j, z, zb, 1 / sum(q), *uv, float(pack(color)))
 
 
 def _shade(shading, bp, corner, flat, world):

@@ -43,8 +43,8 @@ NOTES = (
     "t0..t3 are the first four texels fetched (x, y, weight); fetches counts them all.",
 )
 
-FRAGMENTS = (("u", "u"), ("v", "v"), ("lod", "lambda"), ("level", "level"),
-             ("fetches", "fetches"), ("color", "rgb"))
+FRAGMENTS = (("triangle", "@triangle"), ("weights", "@weights"), ("u", "u"), ("v", "v"),
+             ("lod", "lambda"), ("level", "level"), ("fetches", "fetches"), ("color", "rgb"))
 
 register(AlgorithmSpec(
     name="triangle-texture", title="Textured triangle", family="textures",

@@ -56,6 +56,12 @@ NOTES = (
     "interior of the union of the drawn triangles but that no triangle filled.",
 )
 
+# `run --json`'s fragments: the weights (input vertex order) and whatever the run
+# interpolated; keys whose columns a run lacks are left out (see app/model/fragments.py).
+FRAGMENTS = (("triangle", "@triangle"), ("weights", "@weights"),
+             ("weights_p", "@weights_p"), ("1/w", "1/w"), ("z", "z"), ("s", "s"),
+             ("s_affine", "s_affine"), ("s_persp", "s_persp"), ("color", "rgb"))
+
 
 def _spec(name, title, summary, code, generator, notes=(), options=OPTIONS, top_down=False,
           box=None, kernel=True):
@@ -63,7 +69,7 @@ def _spec(name, title, summary, code, generator, notes=(), options=OPTIONS, top_
         name=name, title=title, family="triangles", summary=summary, inputs=TRIANGLES,
         options=options, code=code, generator=generator,
         kernel=make_kernel(name, generator, code, top_down, box) if kernel else None,
-        notes=NOTES + tuple(notes), explain=explain, uses_grid=True))
+        notes=NOTES + tuple(notes), explain=explain, uses_grid=True, fragments=FRAGMENTS))
 
 
 _spec("triangle-scan", "Every pixel (naive)", "test every pixel of the grid against the three "

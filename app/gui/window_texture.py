@@ -6,8 +6,9 @@ from __future__ import annotations
 from PySide6.QtCore import Qt
 from PySide6.QtWidgets import QFileDialog
 
+from app.model.geometry import projected_paths
 from app.render.compose import PALETTE
-from app.render.outside_view import outside_view, projected_paths
+from app.render.outside_view import outside_view
 from app.render.texture_frame import LEVEL_COLOURS, level_map, texture_picture
 from widgets.docks import panel_dock
 from widgets.outside_view import OutsideView

@@ -36,7 +36,7 @@ from algorithms import registry
 from algorithms.errors import InputError
 from algorithms.raster import Raster, check_grid
 
-from app.model.geometry import exact_reference, final_coverage, scene_paths
+from app.model.geometry import exact_reference, final_coverage, run_paths
 from app.model.inputs import split_contours
 from app.model.scene import SHIPPED, Scene, load
 
@@ -261,7 +261,7 @@ class Run:
         """The ideal primitive, as the main grid draws it."""
         if self.points is None:
             return []
-        return scene_paths(self.spec, self.points, self.options)
+        return run_paths(self.spec, self.points, self.options, self.trace)
 
     def state_at(self, i: int):
         """The replayed FrameState at step i (None for the exact pane or a failed run).

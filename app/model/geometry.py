@@ -9,6 +9,8 @@ from __future__ import annotations
 
 import numpy as np
 
+from algorithms.steps import Vars
+
 
 # ------------------------------------------------------------ ideal primitive
 def takes_circle(spec) -> bool:
@@ -57,6 +59,29 @@ def ideal_paths(spec, points, options) -> list:
         return [(centres[k:k + count], True) for k in range(0, len(centres) - count + 1, count)]
     closed = getattr(inputs, "contours", False) or inputs.count >= 3
     return [(centres, closed and len(centres) >= 3)]
+
+
+def run_paths(spec, points, options, trace) -> list:
+    """The primitive's outline for a recorded run, as the window and exported
+    frames both draw it: the pipeline's is its clipped triangles on the screen
+    (its points are in the world), every other algorithm's its ideal primitive."""
+    if spec.name == "pipeline":
+        return projected_paths(trace) if trace is not None else []
+    return scene_paths(spec, points, options)
+
+
+def projected_paths(trace) -> list:
+    """The clipped triangles' outlines in window coordinates, [(corners, closed), ...]: the
+    pipeline's primitive as the screen sees it, from its viewport steps."""
+    paths = []
+    for _, record in trace.records_of(Vars):
+        if "w(C0)" not in record.values:  # not a viewport step
+            continue
+        corners = [record.values[f"C{k}"][:2] for k in range(len(record.values))
+                   if f"C{k}" in record.values]
+        if len(corners) >= 3:
+            paths.append(([tuple(float(v) for v in c) for c in corners], True))
+    return paths
 
 
 def scene_paths(spec, points, options) -> list:

@@ -25,7 +25,7 @@ from PIL import Image
 from algorithms import registry
 from algorithms.trace import FrameState
 
-from app.model.geometry import scene_paths
+from app.model.geometry import run_paths
 from app.render.derivation import draw_distances
 from app.render.frame import compose_frame, compose_region, frame_marks, primitive_mask
 from app.render.axes import Axes
@@ -84,7 +84,7 @@ class FrameRenderer:
                               f"at most {MAX_SIDE}x{MAX_SIDE}: choose a smaller scale")
         # The ideal primitive: drawn when asked, and always the target the
         # reasoning's guides point at (the drop from Bresenham's M).
-        self.ideal = scene_paths(self.spec, scene.points, self.spec.resolve(scene.options))
+        self.ideal = run_paths(self.spec, scene.points, self.spec.resolve(scene.options), trace)
         self.paths = self.ideal if settings.primitive else []
         text_size = settings.text_size or text_pixels(max(gw, gh))
         if settings.panel == "auto":

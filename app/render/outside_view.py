@@ -6,7 +6,6 @@ import math
 from dataclasses import dataclass
 
 from algorithms.pipeline.space import Camera
-from algorithms.steps import Vars
 
 
 @dataclass
@@ -50,16 +49,3 @@ def outside_view(points, options, grid) -> OutsideView | None:
                + (" (drawn shorter)" if far < camera.far else ""))
     return OutsideView(edges, frustum, eye, caption)
 
-
-def projected_paths(trace) -> list:
-    """The clipped triangles' outlines in window coordinates, [(corners, closed), ...]: the
-    pipeline's primitive as the screen sees it, from its viewport steps."""
-    paths = []
-    for _, record in trace.records_of(Vars):
-        if "w(C0)" not in record.values:  # not a viewport step
-            continue
-        corners = [record.values[f"C{k}"][:2] for k in range(len(record.values))
-                   if f"C{k}" in record.values]
-        if len(corners) >= 3:
-            paths.append(([tuple(float(v) for v in c) for c in corners], True))
-    return paths

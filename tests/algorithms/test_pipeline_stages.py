@@ -147,3 +147,12 @@ def test_a_fragments_panel_retraces_it_to_its_own_pixel_centre():
         # Back through clip space and the divide: the pixel centre and the fragment's depth.
         assert (x, y) == pytest.approx((step.pixel[0] + 0.5, step.pixel[1] + 0.5), abs=0.01)
         assert depth == pytest.approx(step.values["depth"], abs=1e-3)
+
+
+@pytest.mark.parametrize("options, has_uv", [
+    ({}, False), ({"uv": (0.0, 0.0, 1.0, 0.0, 0.0, 1.0)}, True), ({"texture": "checker:4"}, True)])
+def test_uv_columns_only_when_the_scene_has_them(options, has_uv):
+    """Model only what a scene needs: no u, v per step without uv or a texture."""
+    trace = SPEC.record([(3, 3), (28, 4), (15, 20)], options, grid=(32, 24))
+    assert ({"u", "v"} <= set(trace.value_names)) == has_uv
+    assert "depth" in trace.value_names and len(trace.written().steps) > 50

@@ -20,11 +20,6 @@ def test_fragments_are_parallel_to_pixels(run_cli):
         assert fragment["fetches"] in (4, 8)
 
 
-def test_existing_triangles_have_no_fragments(run_cli):
-    status, out, _ = run_cli("run", "triangle-bbox", *POINTS, "--json")
-    assert status == 0 and "fragments" not in json.loads(out)
-
-
 @pytest.mark.parametrize("setting, words", [
     ("uv=0,0,1", "option uv"),
     ("texture=/no/such/file.png", "cannot read"),

@@ -72,3 +72,29 @@ def test_the_pipeline_shows_the_scene_from_outside(window, qtbot):
     assert "Camera at (16.0, 12.0, 40.0)" in window.outside_view.caption.text()
     window.set_option("near", 0.0)
     qtbot.waitUntil(lambda: "near" in window._error, timeout=10_000)
+
+
+@pytest.mark.window("pipeline", [(3, 3), (28, 4), (15, 20)], {}, (32, 24))
+def test_the_issues_bad_input_is_a_message_in_the_window(window, qtbot, tmp_path):
+    """Each bad input of the rendering family is one message; the window keeps going."""
+    qtbot.waitUntil(lambda: window.player.trace is not None, timeout=10_000)
+    fake = tmp_path / "fake.png"
+    fake.write_text("no picture")
+    cases = [("uv", (0.0, 0.0, 1.0), "option uv"), ("fov", 0.0, "fov"),
+             ("fov", 180.0, "fov"), ("near", -1.0, "near"),
+             ("texture", str(fake), "not an image"),
+             ("texture", "/no/such/texture.png", "cannot read")]
+    for name, value, words in cases:
+        before = dict(window.player.options)
+        window.set_option(name, value)
+        qtbot.waitUntil(lambda: words in (window._error or ""), timeout=10_000)
+        assert "\n" not in window._error.strip()
+        window.set_scene("pipeline", [(3, 3), (28, 4), (15, 20)], before, grid=(32, 24))
+        qtbot.waitUntil(lambda: window.player.trace is not None and not window._error,
+                        timeout=10_000)
+    # A vertex behind the eye without clipping: refused with the way out.
+    window.set_option("z", (50.0, 0.0, 0.0))
+    qtbot.waitUntil(lambda: window.player.options["z"] == (50.0, 0.0, 0.0), timeout=10_000)
+    window.set_option("clipping", "none")
+    qtbot.waitUntil(lambda: "w <= 0" in (window._error or ""), timeout=10_000)
+    assert window.player.options["clipping"] == "all" and window.player.trace is not None

@@ -28,7 +28,7 @@ def test_a_bad_camera_gives_no_view():
 
 
 def test_projected_outline_is_the_clipped_polygon_in_the_window():
-    from app.render.outside_view import projected_paths
+    from app.model.geometry import projected_paths
     spec = registry.get("pipeline")
     trace = spec.record([(3, 3), (28, 4), (15, 20)], {}, grid=(32, 24))
     (corners, closed), = projected_paths(trace)
