@@ -13,7 +13,8 @@ from .trace import DEFAULT_STEP_CAP, Trace
 
 FAMILIES = ("lines", "circles", "polygons", "fill", "triangles", "visibility", "antialias")
 # Modules that register specs when imported; add a family's module here.
-_FAMILY_MODULES = ("algorithms.lines", "algorithms.circles", "algorithms.polygons",
+_FAMILY_MODULES = ("algorithms.lines", "algorithms.circles", "algorithms.circle_variants",
+                   "algorithms.curves", "algorithms.polygons",
                    "algorithms.fill", "algorithms.triangles", "algorithms.visibility",
                    "algorithms.antialias")
 
