@@ -84,8 +84,9 @@ register(AlgorithmSpec(
     notes=("d is F(E) + F(SE), the residuals x^2 + y^2 - R^2 of the two candidates added: "
            "E when the sum is negative, so the candidate with the smaller residual wins.",
            "d is always odd, so it is never 0: no ties.",
-           "It differs from the midpoint circle, which tests the residual between the "
-           "candidates: for some radii a column takes the other pixel."),
+           "It chooses the same pixels as the midpoint circle for every whole radius: the "
+           "two tests could only disagree if R^2 - x^2 - (y - 1/2)^2, a whole number less "
+           "1/4, lay in (0, 1/4]."),
 ))
 
 

@@ -10,7 +10,7 @@ from __future__ import annotations
 import math
 from fractions import Fraction
 
-from .circles import CENTRE, MAX_RADIUS, PLOT_OPS, RADIUS, _centre, mirrors8
+from .circles import CENTRE, PLOT_OPS, RADIUS, _centre, mirrors8
 from .code import Code, listing
 from .lines.bresenham import bresenham_pixels
 from .registry import AlgorithmSpec, Inputs, Option, register

@@ -41,6 +41,7 @@ from algorithms.exact import (lines as exact, circles as exact_circles,
 from algorithms import registry
 from algorithms.errors import InputError
 from algorithms.fill import NEIGHBOURS, outline_pixels
+from tests.support import curve_oracles
 
 ROOT = Path(__file__).resolve().parents[2]
 GRID = (40, 32)
@@ -309,6 +310,9 @@ def triangle_cases(spec) -> list[Case]:
 
 def cases_for(spec) -> list[Case]:
     inputs = spec.inputs
+    if spec.name in curve_oracles.ORACLES:
+        return curve_oracles.cases(spec, lambda name, points, options, valid: Case(
+            name, spec.name, points, options, GRID, valid))
     if inputs.contours:
         return fill_cases(spec) if spec.family == "fill" else polygon_cases(spec)
     if inputs.count == 2 and inputs.integer:
@@ -430,6 +434,10 @@ def oracle_lines(case: Case, spec, trace) -> None:
 
 
 def oracle_circles(case: Case, spec, trace) -> None:
+    if spec.name in curve_oracles.ORACLES:
+        curve_oracles.ORACLES[spec.name](case, spec.resolve(case.options), trace,
+                                         _written(trace))
+        return
     (xc, yc), = case.points
     offsets = {(x - xc, y - yc) for x, y in _written(trace)}
     options = spec.resolve(case.options)
