@@ -15,7 +15,8 @@ FAMILIES = ("lines", "circles", "polygons", "fill", "triangles", "visibility", "
 # Modules that register specs when imported; add a family's module here.
 _FAMILY_MODULES = ("algorithms.lines", "algorithms.circles", "algorithms.circle_variants",
                    "algorithms.curves", "algorithms.polygons",
-                   "algorithms.fill", "algorithms.triangles", "algorithms.visibility",
+                   "algorithms.fill", "algorithms.triangles", "algorithms.triangle_variants",
+                   "algorithms.visibility",
                    "algorithms.antialias")
 
 

@@ -41,7 +41,7 @@ from algorithms.exact import (lines as exact, circles as exact_circles,
 from algorithms import registry
 from algorithms.errors import InputError
 from algorithms.fill import NEIGHBOURS, outline_pixels
-from tests.support import curve_oracles
+from tests.support import curve_oracles, triangle_variant_oracles
 
 ROOT = Path(__file__).resolve().parents[2]
 GRID = (40, 32)
@@ -273,6 +273,7 @@ TRIANGLE_OPTIONS = [{}, {"fill_rule": "inclusive"}, {"fill_rule": "strict"},
                      "s": (0.0, 1.0, 0.5), "w": (1.0, 1e-300, 2.0), "perspective": True},
                     {"s": (0.0, 1.0, 0.5), "w": (1e-300, 1e300, 1.0)}]
 SPECIAL_TRIANGLE_OPTIONS = {
+    "triangle-cramer": [{}], "triangle-wireframe": [{}],
     "triangle-plane": [{}, {"colors": ("#ff0000", "#00ff00", "#0000ff"), "z": (0.0, 1e300, -1e300)},
                        {"precision": "float32", "s": (0.0, 1.0, 0.5)}, {"subpixel_bits": 0}],
     "triangle-perspective": [{}, {"w": (1.0, 1e-300, 1.0)}, {"w": (1e-300, 1e300, 1.0)},
@@ -434,10 +435,6 @@ def oracle_lines(case: Case, spec, trace) -> None:
 
 
 def oracle_circles(case: Case, spec, trace) -> None:
-    if spec.name in curve_oracles.ORACLES:
-        curve_oracles.ORACLES[spec.name](case, spec.resolve(case.options), trace,
-                                         _written(trace))
-        return
     (xc, yc), = case.points
     offsets = {(x - xc, y - yc) for x, y in _written(trace)}
     options = spec.resolve(case.options)
@@ -537,6 +534,8 @@ def oracle_triangles(case: Case, spec, trace) -> None:
         assert np.allclose(total, 1.0, atol=1e-6), f"{case}: weights do not sum to 1"
 
 
+# Algorithms with oracles of their own, by name.
+VARIANT_ORACLES = {**curve_oracles.ORACLES, **triangle_variant_oracles.ORACLES}
 ORACLES = {"lines": oracle_lines, "circles": oracle_circles,
            "polygons": oracle_polygons, "fill": oracle_fill, "triangles": oracle_triangles}
 
@@ -555,6 +554,10 @@ def test_hard_case(case: Case):
     assert not trace.truncated or len(trace) == trace.step_cap
     check_values(case, trace)
     check_kernel(case, spec, trace)
+    variant = VARIANT_ORACLES.get(spec.name)
+    if variant is not None:
+        variant(case, spec.resolve(case.options), trace, _written(trace))
+        return
     oracle = ORACLES.get(spec.family)
     if oracle is not None:
         oracle(case, spec, trace)

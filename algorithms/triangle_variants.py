@@ -1,0 +1,204 @@
+"""Two more ways to look at a triangle: barycentric coordinates solved from
+the 3x3 linear system by Cramer's rule (shown beside the edge functions and
+the sub-triangle areas they equal), and the triangle drawn as three lines.
+
+Vertices are real; pixel (i, j) has its sample point at (i + 1/2, j + 1/2).
+Both take 3k points (k triangles) and stay inside the grid.
+"""
+from __future__ import annotations
+
+import math
+from fractions import Fraction
+
+from .code import Code, listing
+from .errors import InputError
+from .lines.common import Octant
+from .registry import AlgorithmSpec, register
+from .steps import PLOT, VISIT, Note, Start, Vars
+from .triangles.edges import MAX_COORDINATE, TRIANGLES
+
+NAN = math.nan
+HALF = Fraction(1, 2)
+
+
+def triangles_of(points):
+    return [tuple(points[k:k + 3]) for k in range(0, len(points) - 2, 3)]
+
+
+def cramer(triangle, p) -> tuple[Fraction, Fraction, Fraction, Fraction]:
+    """D and D_alpha, D_beta, D_gamma of the system
+    alpha P0 + beta P1 + gamma P2 = p, alpha + beta + gamma = 1, exactly.
+
+    D = det [[x0, x1, x2], [y0, y1, y2], [1, 1, 1]]; D_alpha replaces the first
+    column by (x, y, 1), and so on. Each determinant is twice a signed area:
+    D of the triangle, D_alpha of (p, P1, P2), which is also the edge function
+    e_0(p) of the edge P1 P2.
+    """
+    def det(a, b, c):
+        return (b[0] - a[0]) * (c[1] - a[1]) - (c[0] - a[0]) * (b[1] - a[1])
+    p0, p1, p2 = triangle
+    return det(p0, p1, p2), det(p, p1, p2), det(p0, p, p2), det(p0, p1, p)
+
+
+def check_coordinates(number: int, vertices) -> None:
+    """The triangle family's bound on coordinates, for the same inputs."""
+    if not all(abs(c) <= MAX_COORDINATE for v in vertices for c in v):
+        raise InputError(f"triangle {number}: a coordinate is beyond +-{MAX_COORDINATE:g} px")
+
+
+def box_of(triangle, grid):
+    """Columns and rows of the grid whose centres lie in the triangle's bounding box."""
+    xs, ys = [v[0] for v in triangle], [v[1] for v in triangle]
+    width, height = grid
+    return (range(max(0, math.ceil(min(xs) - HALF)), min(width, math.floor(max(xs) - HALF) + 1)),
+            range(max(0, math.ceil(min(ys) - HALF)), min(height, math.floor(max(ys) - HALF) + 1)))
+
+
+# -------------------------------------------------- Cramer's rule
+def cramer_listing(points, options) -> Code:
+    det = {"mul": 2, "float_add": 5}
+    code = Code()
+    code.add("setup", "for each triangle:  M = [[x0, x1, x2], [y0, y1, y2], [1, 1, 1]];  "
+                      "D = det M = 2A", ops=det)
+    code.add("degenerate", "    if D = 0:  skip (the three points are on a line)")
+    code.add("visit", "    for each pixel centre p of the bounding box:  solve M (alpha, beta, "
+                      "gamma) = (x, y, 1):  D_alpha = det M with column 0 replaced by p, ...",
+             VISIT, ops={"mul": 6, "float_add": 15, "div": 3, "compare": 3,
+                         "pixels_tested": 1})
+    code.add("plot_inside", "        if alpha, beta, gamma >= 0:  plot p   (alpha = D_alpha / D "
+                            "= area(p, P1, P2) / area = e0(p) / 2A)", PLOT)
+    code.add("done", "done")
+    return code
+
+
+def cramer_run(points, options, grid):
+    at = cramer_listing(points, options).at
+    yield Start(line=at["setup"], values=("D", "D_alpha", "D_beta", "D_gamma", "alpha", "beta",
+                                          "gamma", "area_check"),
+                constants={"triangles": len(points) // 3})
+    tested = filled = degenerate = 0
+    for number, vertices in enumerate(triangles_of(points)):
+        check_coordinates(number, vertices)
+        triangle = tuple((Fraction(x), Fraction(y)) for x, y in vertices)
+        d = cramer(triangle, triangle[0])[0]
+        yield Vars(line=at["setup"], values={"triangle": number, "D": float(d), "2A": float(d)})
+        if d == 0:
+            degenerate += 1
+            yield Note(line=at["degenerate"], text=f"triangle {number}: D = 0, nothing to solve")
+            continue
+        columns, rows = box_of(triangle, grid)
+        for j in rows:
+            for i in columns:
+                tested += 1
+                _, da, db, dg = cramer(triangle, (i + HALF, j + HALF))
+                weights = (da / d, db / d, dg / d)
+                # The three sub-triangles' areas add up to the triangle's: 1 exactly.
+                frame = (i, j, float(d), float(da), float(db), float(dg),
+                         *(float(w) for w in weights), float(sum(weights)))
+                yield (at["visit"], *frame)
+                if min(weights) >= 0:
+                    filled += 1
+                    yield (at["plot_inside"], *frame)
+    yield Vars(line=at["done"], values={"tested": tested, "filled": filled,
+                                        "degenerate": degenerate})
+
+
+def cramer_explain(trace, i):
+    values = trace.step(i).values
+    if "D_alpha" not in values or values.get("D") != values.get("D"):
+        return []
+    d = values["D"]
+    return [("alpha", f"D_alpha / D = {values['D_alpha']:g} / {d:g} = e0(p) / 2A"),
+            ("areas", "alpha, beta, gamma = area(p P1 P2), area(P0 p P2), area(P0 P1 p) "
+                      "over area(P0 P1 P2)")]
+
+
+register(AlgorithmSpec(
+    name="triangle-cramer",
+    title="Barycentric by Cramer's rule",
+    family="triangles",
+    summary="solve the 3x3 system for alpha, beta, gamma at each centre; inside when all >= 0",
+    inputs=TRIANGLES,
+    options=(),
+    code=listing(cramer_listing),
+    generator=cramer_run,
+    explain=cramer_explain,
+    uses_grid=True,
+    notes=("Each determinant of Cramer's rule is twice a signed area: D of the triangle, "
+           "D_alpha of (p, P1, P2), which is the edge function e0 at p. So the weights from "
+           "the linear system, from the edge functions and from the areas are one and the "
+           "same, and add up to 1 (area_check).",
+           "Exact rational arithmetic on the vertices as given (no sub-pixel snapping). A "
+           "centre on an edge counts as inside (alpha, beta or gamma = 0), so two triangles "
+           "sharing an edge both fill its centres; triangle-barycentric applies the fill rule.",
+           "Clockwise triangles work too: D and the three D's change sign together."),
+))
+
+
+# -------------------------------------------------- wireframe
+def line_in_grid(p, q, grid):
+    """The textbook Bresenham line's pixels from P towards Q, Q left out, only
+    those inside the grid: the closed form of algorithms/lines/bresenham.py
+    (ties to E), evaluated for the steps that land in the grid's columns (or
+    rows), so a line far longer than the grid costs no more than the grid."""
+    octant = Octant(p, q)
+    dx, dy = octant.dx, octant.dy
+    axis = 1 if octant.steep else 0
+    sign = octant.major[axis]
+    size = grid[axis]
+    # The steps u whose major coordinate p + sign u lies in [0, size).
+    lo, hi = (-p[axis], size - 1 - p[axis]) if sign > 0 else (p[axis] - size + 1, p[axis])
+    for u in range(max(0, lo), min(dx - 1, hi) + 1):
+        v = -((dx - 2 * dy * u) // (2 * dx))
+        x, y = octant.to_grid(p, u, v)
+        if 0 <= x < grid[0] and 0 <= y < grid[1]:
+            yield x, y
+
+
+def wireframe_listing(points, options) -> Code:
+    code = Code()
+    code.add("setup", "for each triangle:  Q_k = the pixel holding P_k  (floor x, floor y)",
+             ops={"round": 6})
+    code.add("plot_edge", "    draw the lines Q0 Q1, Q1 Q2, Q2 Q0 with Bresenham (each "
+                          "corner once)", PLOT, ops={"int_add": 2})
+    code.add("done", "done")
+    return code
+
+
+def wireframe_run(points, options, grid):
+    at = wireframe_listing(points, options).at
+    yield Start(line=at["setup"], values=("triangle", "edge"),
+                constants={"triangles": len(points) // 3})
+    width, height = grid
+    written = 0
+    for number, vertices in enumerate(triangles_of(points)):
+        check_coordinates(number, vertices)
+        corners = [(math.floor(x), math.floor(y)) for x, y in vertices]
+        yield Vars(line=at["setup"], values={"triangle": number, "Q0": corners[0],
+                                             "Q1": corners[1], "Q2": corners[2]})
+        edges = [(corners[k], corners[(k + 1) % 3]) for k in range(3)]
+        if corners[0] == corners[1] == corners[2]:
+            edges = [(corners[0], (corners[0][0] + 1, corners[0][1]))]  # one pixel
+        for edge, (p, q) in enumerate(edges):
+            for x, y in line_in_grid(p, q, grid):
+                written += 1
+                yield (at["plot_edge"], x, y, number, edge)
+    yield Vars(line=at["done"], values={"pixels": written})
+
+
+register(AlgorithmSpec(
+    name="triangle-wireframe",
+    title="Triangle as three lines",
+    family="triangles",
+    summary="the outline only: Bresenham lines between the pixels holding the vertices",
+    inputs=TRIANGLES,
+    options=(),
+    code=listing(wireframe_listing),
+    generator=wireframe_run,
+    uses_grid=True,
+    notes=("Compare with a fill (triangle-bbox): the lines' pixels are the nearest to the "
+           "edges, so some lie outside the filled triangle and some filled pixels on the "
+           "edge are not on a line.",
+           "Each line is drawn without its last pixel, which the next line starts from, so "
+           "every corner is plotted once."),
+))
