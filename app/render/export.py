@@ -26,6 +26,7 @@ from algorithms import registry
 from algorithms.trace import FrameState
 
 from app.model.geometry import scene_paths
+from app.render.overlays import COLOURS as OVERLAY_COLOURS, draw_strokes, overlay_strokes
 from app.render.frame import compose_frame, compose_region, frame_marks, primitive_mask
 from app.render.palette import DARK, LIGHT, THEMES, ColourIndex, Theme, build_palette
 from app.render.settings import (MAX_FPS, MAX_HOLD, MAX_SCALE, MIN_FPS, NAMES, ExportCancelled,
@@ -93,7 +94,7 @@ class FrameRenderer:
         if width > MAX_SIDE or height > MAX_SIDE:
             raise ExportError(f"a frame would be {width}x{height} pixels, more than "
                               f"{MAX_SIDE}x{MAX_SIDE}: choose a smaller scale or no side panel")
-        self.colours = build_palette(self.theme, trace)
+        self.colours = build_palette(self.theme, trace, OVERLAY_COLOURS if settings.overlays else ())
         self._outside = self.colours.index_of(self.theme.palette.outside)
         self.grid_lines = settings.grid_lines and scale >= 4
         self._grid = _GridPart(self, incremental)
@@ -111,6 +112,8 @@ class FrameRenderer:
         marks = frame_marks(state, self.paths, self.differences, settings.highlight,
                             settings.primitive)
         grid = self._grid.draw(state.raster, marks, written)
+        if settings.overlays:
+            grid = self._overlaid(grid, index)
         if not self.y_down:
             grid = grid[::-1]  # row 0 is y = 0, the bottom of the picture
         width, height = self.size
@@ -124,6 +127,16 @@ class FrameRenderer:
         if self.caption_height:
             frame[self.body_height:, :] = self._text.caption(state)
         return frame
+
+    def _overlaid(self, grid: np.ndarray, index: int) -> np.ndarray:
+        """The grid with the step's geometric overlays drawn over it (a copy:
+        the grid part keeps its own for the next frame)."""
+        strokes = overlay_strokes(self.trace, index, self.settings.overlays)
+        if not strokes:
+            return grid
+        rgb = draw_strokes(self.colours.rgb[grid], strokes, self.settings.scale)
+        rgba = np.concatenate([rgb, np.full(rgb.shape[:2] + (1,), 255, np.uint8)], axis=2)
+        return self.colours.indices(np.ascontiguousarray(rgba))
 
     def image(self, index: int) -> Image.Image:
         """Frame ``index`` as a Pillow palette image."""

@@ -23,6 +23,7 @@ from algorithms.trace import DEFAULT_STEP_CAP
 
 from app.model.budget import DEFAULT_MEMORY_LIMIT, check_budget
 from app.model.scene import one_line
+from app.render.overlays import OVERLAYS
 from app.render.palette import THEMES
 
 MIN_FPS = 0.1
@@ -68,6 +69,7 @@ class ExportSettings:
     loop: bool = True        # False: play once
     per: str = "auto"        # one of PER
     memory_limit: int = DEFAULT_MEMORY_LIMIT  # bytes the run may need (app/model/budget.py)
+    overlays: tuple = ()     # names from app/render/overlays.py's OVERLAYS
 
     def checked(self) -> "ExportSettings":
         fps = _real(self.fps, "frames per second")
@@ -89,6 +91,9 @@ class ExportSettings:
             raise ExportError(f"theme must be one of {', '.join(THEMES)}, got {self.theme!r}")
         if self.per not in PER:
             raise ExportError(f"frames per must be one of {', '.join(PER)}, got {self.per!r}")
+        if not set(self.overlays) <= set(OVERLAYS):
+            raise ExportError(f"overlays must be among {', '.join(OVERLAYS)}, got "
+                              f"{', '.join(map(str, self.overlays))}")
         return replace(self, fps=fps, hold=hold, scale=None if scale is None else int(scale))
 
     def for_grid(self, width: int, height: int) -> "ExportSettings":
