@@ -81,7 +81,9 @@ def cramer_run(points, options, grid):
         check_coordinates(number, vertices)
         triangle = tuple((Fraction(x), Fraction(y)) for x, y in vertices)
         d = cramer(triangle, triangle[0])[0]
-        yield Vars(line=at["setup"], values={"triangle": number, "D": float(d), "2A": float(d)})
+        yield Vars(line=at["setup"], values={"triangle": number, "D": float(d), "2A": float(d),
+                                             **{f"P{k}": tuple(float(c) for c in vertices[k])
+                                                for k in range(3)}})
         if d == 0:
             degenerate += 1
             yield Note(line=at["degenerate"], text=f"triangle {number}: D = 0, nothing to solve")
