@@ -39,3 +39,12 @@ def test_bezier_scene_is_its_polyline_and_more_segments_change_it():
     assert pixels == polyline_oracle(scene.points, 4)[1]
     _, _, finer = run("curve-bezier-segments", segments=16)
     assert finer == polyline_oracle(scene.points, 16)[1] and set(finer) != set(pixels)
+
+
+def test_jittered_motion_blur_scene_differs_from_even_instants():
+    import numpy as np
+    scene, trace, _ = run("aa-motion-blur-jittered")
+    _, even, _ = run("aa-motion-blur-jittered", times="even")
+    jittered_values, even_values = trace.pixel_values(), even.pixel_values()
+    assert len(jittered_values) and not (len(jittered_values) == len(even_values)
+                                         and np.allclose(jittered_values, even_values))
