@@ -137,6 +137,82 @@ register(AlgorithmSpec(
 ))
 
 
+# -------------------------------------------------- trilinear coordinates
+def trilinear_listing(points, options) -> Code:
+    code = Code()
+    code.add("setup", "for each triangle:  side lengths L_k = |P_(k+2) - P_(k+1)| (the side "
+                      "opposite P_k);  2A = (P1 - P0) x (P2 - P0)",
+             ops={"mul": 8, "float_add": 8, "sqrt": 3})
+    code.add("degenerate", "    if 2A = 0:  skip (the three points are on a line)")
+    code.add("visit", "    for each pixel centre p of the bounding box:  trilinear d_k = e_k(p) / "
+                      "L_k, the signed distance from p to side k (positive inside)", VISIT,
+             ops={"mul": 6, "float_add": 9, "div": 3, "pixels_tested": 1})
+    code.add("plot_inside", "        if d_0, d_1, d_2 >= 0:  plot p   (to barycentric: alpha = "
+                            "L_0 d_0 / |2A|, beta = L_1 d_1 / |2A|, gamma = L_2 d_2 / |2A|)",
+             PLOT, ops={"mul": 3, "div": 3, "compare": 3})
+    code.add("done", "done")
+    return code
+
+
+def trilinear_run(points, options, grid):
+    at = trilinear_listing(points, options).at
+    yield Start(line=at["setup"], values=("d0", "d1", "d2", "alpha", "beta", "gamma"),
+                constants={"triangles": len(points) // 3})
+    tested = filled = degenerate = 0
+    for number, vertices in enumerate(triangles_of(points)):
+        check_coordinates(number, vertices)
+        triangle = tuple((Fraction(x), Fraction(y)) for x, y in vertices)
+        two_a = cramer(triangle, triangle[0])[0]
+        sides = [math.dist(vertices[(k + 1) % 3], vertices[(k + 2) % 3]) for k in range(3)]
+        yield Vars(line=at["setup"], values={"triangle": number, "2A": float(two_a),
+                                             "L0": sides[0], "L1": sides[1], "L2": sides[2],
+                                             **{f"P{k}": tuple(float(c) for c in vertices[k])
+                                                for k in range(3)}})
+        if two_a == 0:
+            degenerate += 1
+            yield Note(line=at["degenerate"], text=f"triangle {number}: 2A = 0, no inside")
+            continue
+        sign = 1 if two_a > 0 else -1
+        columns, rows = box_of(triangle, grid)
+        for j in rows:
+            for i in columns:
+                tested += 1
+                # e_k exact, turned positive inside (a clockwise triangle's are
+                # negative there), so d_k has its exact sign; the division rounds once.
+                e = [sign * v for v in cramer(triangle, (i + HALF, j + HALF))[1:]]
+                d = [float(e[k]) / sides[k] for k in range(3)]
+                weights = [sides[k] * d[k] / abs(float(two_a)) for k in range(3)]
+                frame = (i, j, *d, *weights)
+                yield (at["visit"], *frame)
+                if min(e) >= 0:
+                    filled += 1
+                    yield (at["plot_inside"], *frame)
+    yield Vars(line=at["done"], values={"tested": tested, "filled": filled,
+                                        "degenerate": degenerate})
+
+
+register(AlgorithmSpec(
+    name="triangle-trilinear",
+    title="Trilinear coordinates",
+    family="triangles",
+    summary="the signed distances to the three sides; inside when all >= 0; converted to "
+            "barycentric by alpha = L_0 d_0 / |2A|",
+    inputs=TRIANGLES,
+    options=(),
+    code=listing(trilinear_listing),
+    generator=trilinear_run,
+    uses_grid=True,
+    notes=("Trilinear coordinates (d_0, d_1, d_2) are p's signed distances to the sides "
+           "opposite P0, P1, P2, positive inside whatever the winding. Times the side lengths "
+           "they are twice the sub-triangles' "
+           "areas, so (L_0 d_0, L_1 d_1, L_2 d_2) / |2A| is (alpha, beta, gamma); the other way, "
+           "d_k = |2A| alpha / L_k.",
+           "The inside test uses the exact sign of each edge function (a centre on a side "
+           "counts as inside), as triangle-cramer does; the distances themselves involve a "
+           "square root and are rounded."),
+))
+
+
 # -------------------------------------------------- wireframe
 def line_in_grid(p, q, grid):
     """The textbook Bresenham line's pixels from P towards Q, Q left out, only

@@ -94,7 +94,8 @@ class FrameRenderer:
         if width > MAX_SIDE or height > MAX_SIDE:
             raise ExportError(f"a frame would be {width}x{height} pixels, more than "
                               f"{MAX_SIDE}x{MAX_SIDE}: choose a smaller scale or no side panel")
-        self.colours = build_palette(self.theme, trace, OVERLAY_COLOURS if settings.overlays else ())
+        self.colours = build_palette(self.theme, trace,
+                                     OVERLAY_COLOURS if settings.overlays else ())
         self._outside = self.colours.index_of(self.theme.palette.outside)
         self.grid_lines = settings.grid_lines and scale >= 4
         self._grid = _GridPart(self, incremental)

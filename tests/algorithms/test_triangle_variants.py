@@ -3,6 +3,7 @@ against oracles written in exact arithmetic (tests/support/triangle_variant_orac
 from collections import Counter
 from fractions import Fraction
 
+import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
@@ -68,3 +69,29 @@ def test_wireframe_of_a_huge_triangle_costs_only_the_grid():
     trace = record("triangle-wireframe", huge, {}, GRID)
     assert len(trace) < 200
     assert [tuple(p) for p in trace.written_pixels().tolist()] == wireframe_oracle(huge, GRID)
+
+
+@settings(max_examples=20, deadline=None)
+@given(TRIANGLE)
+def test_trilinear_distances_convert_to_the_barycentric_weights(triangle):
+    trace = record("triangle-trilinear", triangle, {}, GRID)
+    got = Counter(tuple(p) for p in trace.written_pixels().tolist())
+    assert got == cramer_oracle(triangle, GRID)
+    tri = [tuple(Fraction(c) for c in v) for v in triangle]
+    two_a = (tri[1][0] - tri[0][0]) * (tri[2][1] - tri[0][1]) - \
+        (tri[2][0] - tri[0][0]) * (tri[1][1] - tri[0][1])
+    for i in range(len(trace)):
+        step = trace.step(i)
+        if step.record is not None or step.pixel is None:
+            continue
+        p = (step.pixel[0] + Fraction(1, 2), step.pixel[1] + Fraction(1, 2))
+        for k, name in enumerate(("alpha", "beta", "gamma")):
+            a, b = tri[(k + 1) % 3], tri[(k + 2) % 3]
+            e = (b[0] - a[0]) * (p[1] - a[1]) - (b[1] - a[1]) * (p[0] - a[0])
+            side2 = (b[0] - a[0]) ** 2 + (b[1] - a[1]) ** 2
+            d = step.values[f"d{k}"]
+            # d_k^2 = e_k^2 / L_k^2, positive inside whatever the winding, to rounding.
+            inward = e if two_a > 0 else -e
+            assert (d > 0) == (inward > 0) and (d < 0) == (inward < 0)
+            assert d * d == pytest.approx(float(e * e / side2), rel=1e-9, abs=1e-12)
+            assert step.values[name] == pytest.approx(float(e / two_a), rel=1e-9, abs=1e-12)

@@ -81,4 +81,5 @@ def check_wireframe(case, options, trace, pixels):
     assert pixels == wireframe_oracle(case.points, case.grid), f"{case}: unlike the lines"
 
 
-ORACLES = {"triangle-cramer": check_cramer, "triangle-wireframe": check_wireframe}
+ORACLES = {"triangle-cramer": check_cramer, "triangle-trilinear": check_cramer,
+           "triangle-wireframe": check_wireframe}
