@@ -14,6 +14,7 @@ NEW = {"circle-bresenham": ["--points", "10,10", "--set", "radius=6"],
        "circle-wu": ["--points", "10,10", "--set", "radius=6"],
        "curve-bezier": ["--points", "1,1", "4,20", "25,20", "30,2", "--set", "segments=5"],
        "triangle-cramer": ["--points", "2.5,2", "30,6.25", "12,22"],
+       "triangle-trilinear": ["--points", "2.5,2", "30,6.25", "12,22"],
        "triangle-wireframe": ["--points", "2.5,2", "30,6.25", "12,22"]}
 
 

@@ -48,3 +48,40 @@ def test_jittered_motion_blur_scene_differs_from_even_instants():
     jittered_values, even_values = trace.pixel_values(), even.pixel_values()
     assert len(jittered_values) and not (len(jittered_values) == len(even_values)
                                          and np.allclose(jittered_values, even_values))
+
+
+def test_thin_line_scene_lights_few_samples_and_leaves_gaps():
+    import math
+    scene, trace, pixels = run("aa-thin-line-supersample")
+    (x0, y0), (x1, y1) = scene.points
+    n, half = scene.options["n"], scene.options["width"] / 2
+    values = trace.pixel_values()
+    length = math.hypot(x1 - x0, y1 - y0)
+
+    def on_line(x, y):  # a sample within the line's rectangle
+        t = ((x - x0) * (x1 - x0) + (y - y0) * (y1 - y0)) / length ** 2
+        dist = abs((x1 - x0) * (y - y0) - (y1 - y0) * (x - x0)) / length
+        return 0 <= t <= 1 and dist <= half
+    lit = {p: v for p, v in zip(pixels, values.tolist()) if v > 0}
+    for (i, j), value in lit.items():
+        hits = sum(on_line(i + (a + 0.5) / n, j + (b + 0.5) / n)
+                   for a in range(n) for b in range(n))
+        assert value == hits / n ** 2
+    # Faint, and fewer lit pixels than the columns the line crosses: gaps.
+    assert max(lit.values()) <= 1 / n ** 2 + 1e-12
+    assert len({i for i, _ in lit}) < x1 - x0
+
+
+def test_grey_plane_scene_is_the_plane_through_the_vertex_values():
+    from fractions import Fraction
+    scene, trace, pixels = run("triangle-plane-grey")
+    (ax, ay), (bx, by), (cx, cy) = [tuple(Fraction(v) for v in p) for p in scene.points]
+    levels = (0, 128, 255)
+    two_a = (bx - ax) * (cy - ay) - (cx - ax) * (by - ay)
+    for (i, j), colour in zip(pixels, trace.pixel_values().tolist()):
+        px, py = i + Fraction(1, 2), j + Fraction(1, 2)
+        alpha = ((bx - px) * (cy - py) - (cx - px) * (by - py)) / two_a
+        beta = ((cx - px) * (ay - py) - (ax - px) * (cy - py)) / two_a
+        grey = alpha * levels[0] + beta * levels[1] + (1 - alpha - beta) * levels[2]
+        r, g, b = (int(colour) >> 16) & 255, (int(colour) >> 8) & 255, int(colour) & 255
+        assert r == g == b and abs(r - grey) <= 1
