@@ -157,13 +157,13 @@ def wu_circle(points, options):
                 continue
             for dx, dy in mirrors8(x, y + offset):
                 written += 1
-                yield (line, xc + dx, yc + dy, x, h, f, intensity, _grey(intensity))
+                yield (line, xc + dx, yc + dy, x, h, f, intensity, grey_ink(intensity))
         x += 1
         yield (at["next"], NO_PIXEL, NO_PIXEL, x, NAN, NAN, NAN, NAN)
     yield Vars(line=at["done"], values={"pixels": written})
 
 
-def _grey(intensity: float) -> float:
+def grey_ink(intensity: float) -> float:
     """Black ink over white by the intensity, packed 0xRRGGBB."""
     level = round(255 * (1 - intensity))
     return float(level * 0x10101)

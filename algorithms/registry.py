@@ -17,7 +17,7 @@ _FAMILY_MODULES = ("algorithms.lines", "algorithms.circles", "algorithms.circle_
                    "algorithms.curves", "algorithms.polygons",
                    "algorithms.fill", "algorithms.triangles", "algorithms.triangle_variants",
                    "algorithms.visibility",
-                   "algorithms.antialias")
+                   "algorithms.antialias", "algorithms.subpixel_line")
 
 
 @dataclass(frozen=True)

@@ -14,6 +14,7 @@ NEW = {"circle-bresenham": ["--points", "10,10", "--set", "radius=6"],
        "circle-wu": ["--points", "10,10", "--set", "radius=6"],
        "curve-bezier": ["--points", "1,1", "4,20", "25,20", "30,2", "--set", "segments=5"],
        "triangle-cramer": ["--points", "2.5,2", "30,6.25", "12,22"],
+       "line-subpixels": ["--points", "1,1", "14,6", "--set", "n=4"],
        "triangle-trilinear": ["--points", "2.5,2", "30,6.25", "12,22"],
        "triangle-wireframe": ["--points", "2.5,2", "30,6.25", "12,22"]}
 
@@ -52,6 +53,7 @@ def test_printed_circle_json_is_the_printed_code(run_cli):
     ["run", "curve-bezier", "--points", "1,1", "4,20", "25,20", "30,2", "--set", "segments=0"],
     ["run", "triangle-cramer", "--points", "1e300,0", "0,1", "1,0"],
     ["run", "circle-wu", "--points", "5.5,5"],
+    ["run", "line-subpixels", "--points", "1,1", "5,5", "--set", "n=0"],
 ])
 def test_bad_input_is_one_line_and_status_2(run_cli, argv):
     status, out, err = run_cli(*argv)

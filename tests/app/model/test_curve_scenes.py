@@ -85,3 +85,10 @@ def test_grey_plane_scene_is_the_plane_through_the_vertex_values():
         grey = alpha * levels[0] + beta * levels[1] + (1 - alpha - beta) * levels[2]
         r, g, b = (int(colour) >> 16) & 255, (int(colour) >> 8) & 255, int(colour) & 255
         assert r == g == b and abs(r - grey) <= 1
+
+
+def test_subpixel_scene_lights_every_column_the_line_crosses():
+    scene, trace, pixels = run("aa-line-subpixels")
+    (x0, _), (x1, _) = scene.points
+    assert set(range(x0, x1 + 1)) <= {x for x, _ in pixels}
+    assert max(trace.pixel_values()) == 1.0
