@@ -13,8 +13,8 @@ from fractions import Fraction
 from .code import Code, listing
 from .errors import InputError
 from .lines.common import Octant
-from .registry import AlgorithmSpec, register
-from .steps import PLOT, VISIT, Note, Start, Vars
+from .registry import AlgorithmSpec, Option, register
+from .steps import NO_PIXEL, PLOT, VISIT, Note, Start, Vars
 from .triangles.edges import MAX_COORDINATE, TRIANGLES
 
 NAN = math.nan
@@ -210,6 +210,124 @@ register(AlgorithmSpec(
            "The inside test uses the exact sign of each edge function (a centre on a side "
            "counts as inside), as triangle-cramer does; the distances themselves involve a "
            "square root and are rounded."),
+))
+
+
+# -------------------------------------------------- explicit form by columns
+SWAP = Option("swap", "choice", "correct",
+              "correct: if y_min > y_max swap them, for each column of the whole triangle; "
+              "printed: the lecture's code as printed, columns A..B only and the test reversed "
+              "(if y_min < y_max swap), which empties every column it swaps",
+              choices=("correct", "printed"))
+
+
+def column_span(triangle, cx):
+    """(y_min, y_max) of the closed triangle on the vertical line x = cx, or None."""
+    ys = []
+    for k in range(3):
+        (x0, y0), (x1, y1) = triangle[k], triangle[(k + 1) % 3]
+        if x0 == x1 == cx:
+            ys += [y0, y1]
+        elif min(x0, x1) <= cx <= max(x0, x1) and x0 != x1:
+            ys.append(y0 + (y1 - y0) * (cx - x0) / (x1 - x0))
+    return (min(ys), max(ys)) if ys else None
+
+
+def centre_range(low, high, size: int) -> range:
+    """Pixels 0 .. size - 1 whose centres k + 1/2 lie in [low, high]."""
+    return range(max(0, math.ceil(low - HALF)), min(size, math.floor(high - HALF) + 1))
+
+
+def _line_y(p, q, cx):
+    return p[1] + (q[1] - p[1]) * (cx - p[0]) / (q[0] - p[0])
+
+
+def columns_listing(points, options) -> Code:
+    printed = options["swap"] == "printed"
+    code = Code()
+    code.add("setup", "for each triangle:  sort A, B, C so that A_x <= B_x <= C_x")
+    if printed:
+        code.add("column", "    for x = A_x .. B_x   (as printed: the columns B..C are missing):  "
+                           "y_min = y_AC(x);  y_max = y_AB(x)", ops={"mul": 2, "float_add": 4})
+        code.add("swap", "        if y_min < y_max:  swap(y_min, y_max)   (as printed: reversed)",
+                 ops={"compare": 1})
+    else:
+        code.add("column", "    for x = A_x .. C_x:  y_min = y_AC(x);  y_max = y_AB(x) while "
+                           "x <= B_x, else y_BC(x)", ops={"mul": 2, "float_add": 4})
+        code.add("swap", "        if y_min > y_max:  swap(y_min, y_max)   (B below AC)",
+                 ops={"compare": 1})
+    code.add("plot_span", "        for y = y_min .. y_max:  setPixel(x, y)   (pixel centres, "
+                          "ends included)", PLOT, ops={"compare": 1})
+    code.add("done", "done")
+    return code
+
+
+def columns_run(points, options, grid):
+    printed = options["swap"] == "printed"
+    at = columns_listing(points, options).at
+    yield Start(line=at["setup"], values=("y_min", "y_max", "swapped"),
+                constants={"triangles": len(points) // 3, "swap": options["swap"]})
+    filled = 0
+    for number, vertices in enumerate(triangles_of(points)):
+        check_coordinates(number, vertices)
+        a, b, c = sorted(tuple(Fraction(v) for v in p) for p in vertices)
+        yield Vars(line=at["setup"], values={"triangle": number, **{
+            name: tuple(float(v) for v in p) for name, p in zip("ABC", (a, b, c))}})
+        if not printed and cramer((a, b, c), a)[0] == 0:
+            yield Note(line=at["setup"], text=f"triangle {number}: no area, nothing to fill")
+            continue
+        last = b[0] if printed else c[0]
+        for x in centre_range(a[0], last, grid[0]):
+            cx = x + HALF
+            if printed:
+                if a[0] == b[0] or a[0] == c[0]:
+                    continue  # a vertical AB or AC: the printed slopes divide by zero
+                low, high = _line_y(a, c, cx), _line_y(a, b, cx)
+                swapped = low < high
+            else:
+                low, high = column_span((a, b, c), cx)
+                swapped = False
+            if swapped:
+                low, high = high, low
+            yield (at["swap"], NO_PIXEL, NO_PIXEL, float(low), float(high), float(swapped))
+            for y in centre_range(low, high, grid[1]):
+                filled += 1
+                yield (at["plot_span"], x, y, float(low), float(high), float(swapped))
+    yield Vars(line=at["done"], values={"filled": filled,
+                                        "missing": exact_column_count(points, grid) - filled})
+
+
+def exact_column_count(points, grid) -> int:
+    """Pixels of the grid the closed triangles cover, counted column by column."""
+    total = 0
+    for vertices in triangles_of(points):
+        triangle = tuple(tuple(Fraction(v) for v in p) for p in vertices)
+        if cramer(triangle, triangle[0])[0] == 0:
+            continue
+        xs = [p[0] for p in triangle]
+        for x in centre_range(min(xs), max(xs), grid[0]):
+            total += len(centre_range(*column_span(triangle, x + HALF), grid[1]))
+    return total
+
+
+register(AlgorithmSpec(
+    name="triangle-columns",
+    title="Explicit form by columns",
+    family="triangles",
+    summary="sort the vertices by x; per column, fill between the lower and upper edge",
+    inputs=TRIANGLES,
+    options=(SWAP,),
+    code=listing(columns_listing),
+    generator=columns_run,
+    uses_grid=True,
+    notes=("The explicit form y = m x + c scanned column by column, as one lecture writes "
+           "it; triangle-linewise scans rows. Exact rational arithmetic; a centre on an "
+           "edge is filled; a triangle without area fills nothing.",
+           "swap=printed runs the printed code: its test 'if (y_min < y_max) swap' is the "
+           "wrong way round: with B above AC it swaps y_min and y_max into an empty range, "
+           "with B below it leaves them reversed, so every column comes out empty (a pixel "
+           "only where the two edges meet); its loop also stops at B. missing counts the "
+           "pixels the closed triangle has and the run did not fill."),
 ))
 
 

@@ -8,7 +8,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from tests.support import record
-from tests.support.triangle_variant_oracles import cramer_oracle, wireframe_oracle
+from tests.support.triangle_variant_oracles import cramer_oracle, printed_columns, wireframe_oracle
 
 GRID = (24, 20)
 # Vertices on the 1/8 grid, some off the grid, so edges pass through centres.
@@ -95,3 +95,18 @@ def test_trilinear_distances_convert_to_the_barycentric_weights(triangle):
             assert (d > 0) == (inward > 0) and (d < 0) == (inward < 0)
             assert d * d == pytest.approx(float(e * e / side2), rel=1e-9, abs=1e-12)
             assert step.values[name] == pytest.approx(float(e / two_a), rel=1e-9, abs=1e-12)
+
+
+@settings(max_examples=30, deadline=None)
+@given(TRIANGLE)
+def test_columns_fill_the_closed_triangle_and_the_printed_code_fills_nothing_of_it(triangle):
+    correct = record("triangle-columns", triangle, {}, GRID)
+    got = Counter(tuple(p) for p in correct.written_pixels().tolist())
+    expected = cramer_oracle(triangle, GRID)
+    assert got == expected and correct.final_variables()["missing"] == 0
+    printed = record("triangle-columns", triangle, {"swap": "printed"}, GRID)
+    drawn = [tuple(p) for p in printed.written_pixels().tolist()]
+    assert drawn == printed_columns(triangle, GRID)
+    # The difference from the exact result, counted.
+    assert printed.final_variables()["missing"] == sum(expected.values()) - len(drawn)
+    assert len(drawn) <= 1 or sum(expected.values()) == 0 or len(drawn) < sum(expected.values())

@@ -81,5 +81,32 @@ def check_wireframe(case, options, trace, pixels):
     assert pixels == wireframe_oracle(case.points, case.grid), f"{case}: unlike the lines"
 
 
-ORACLES = {"triangle-cramer": check_cramer, "triangle-trilinear": check_cramer,
+def printed_columns(points, grid) -> list:
+    """The lecture's explicit-form loop as printed, pixel centres for x and y:
+    sorted by x, columns A..B, y_min on AC, y_max on AB, the swap test reversed."""
+    pixels = []
+    for k in range(0, len(points) - 2, 3):
+        a, b, c = sorted(tuple(Fraction(v) for v in p) for p in points[k:k + 3])
+        if a[0] == b[0] or a[0] == c[0]:
+            continue
+        for x in range(grid[0]):
+            cx = x + Fraction(1, 2)
+            if not a[0] <= cx <= b[0]:
+                continue
+            y_min = a[1] + (c[1] - a[1]) / (c[0] - a[0]) * (cx - a[0])
+            y_max = a[1] + (b[1] - a[1]) / (b[0] - a[0]) * (cx - a[0])
+            if y_min < y_max:
+                y_min, y_max = y_max, y_min
+            pixels += [(x, y) for y in range(grid[1]) if y_min <= y + Fraction(1, 2) <= y_max]
+    return pixels
+
+
+def check_columns(case, options, trace, pixels):
+    if options["swap"] == "printed":
+        assert pixels == printed_columns(case.points, case.grid), f"{case}: not as printed"
+    else:
+        check_cramer(case, options, trace, pixels)
+
+
+ORACLES = {"triangle-columns": check_columns, "triangle-cramer": check_cramer, "triangle-trilinear": check_cramer,
            "triangle-wireframe": check_wireframe}

@@ -15,6 +15,7 @@ NEW = {"circle-bresenham": ["--points", "10,10", "--set", "radius=6"],
        "curve-bezier": ["--points", "1,1", "4,20", "25,20", "30,2", "--set", "segments=5"],
        "triangle-cramer": ["--points", "2.5,2", "30,6.25", "12,22"],
        "line-subpixels": ["--points", "1,1", "14,6", "--set", "n=4"],
+       "triangle-columns": ["--points", "2.5,2", "30,6.25", "12,22"],
        "triangle-trilinear": ["--points", "2.5,2", "30,6.25", "12,22"],
        "triangle-wireframe": ["--points", "2.5,2", "30,6.25", "12,22"]}
 
@@ -53,6 +54,7 @@ def test_printed_circle_json_is_the_printed_code(run_cli):
     ["run", "curve-bezier", "--points", "1,1", "4,20", "25,20", "30,2", "--set", "segments=0"],
     ["run", "triangle-cramer", "--points", "1e300,0", "0,1", "1,0"],
     ["run", "circle-wu", "--points", "5.5,5"],
+    ["run", "triangle-columns", "--points", "1,1", "5,1", "3,4", "--set", "swap=reversed"],
     ["run", "line-subpixels", "--points", "1,1", "5,5", "--set", "n=0"],
 ])
 def test_bad_input_is_one_line_and_status_2(run_cli, argv):

@@ -92,3 +92,12 @@ def test_subpixel_scene_lights_every_column_the_line_crosses():
     (x0, _), (x1, _) = scene.points
     assert set(range(x0, x1 + 1)) <= {x for x, _ in pixels}
     assert max(trace.pixel_values()) == 1.0
+
+
+def test_printed_columns_scene_is_empty_and_counts_what_is_missing():
+    from tests.support.triangle_variant_oracles import cramer_oracle
+    scene, trace, pixels = run("triangle-columns-printed")
+    expected = cramer_oracle(scene.points, (scene.width, scene.height))
+    assert pixels == [] and trace.final_variables()["missing"] == sum(expected.values()) > 0
+    _, correct, filled = run("triangle-columns-printed", swap="correct")
+    assert sorted(filled) == sorted(expected)
