@@ -16,6 +16,7 @@ FAMILIES = ("lines", "circles", "polygons", "fill", "triangles", "visibility", "
 _FAMILY_MODULES = ("algorithms.lines", "algorithms.circles", "algorithms.circle_variants",
                    "algorithms.curves", "algorithms.polygons",
                    "algorithms.fill", "algorithms.triangles", "algorithms.triangle_variants",
+                   "algorithms.span_interpolation",
                    "algorithms.visibility",
                    "algorithms.antialias", "algorithms.subpixel_line")
 

@@ -274,7 +274,7 @@ TRIANGLE_OPTIONS = [{}, {"fill_rule": "inclusive"}, {"fill_rule": "strict"},
                     {"s": (0.0, 1.0, 0.5), "w": (1e-300, 1e300, 1.0)}]
 SPECIAL_TRIANGLE_OPTIONS = {
     "triangle-cramer": [{}], "triangle-trilinear": [{}], "triangle-wireframe": [{}],
-    "triangle-columns": [{}, {"swap": "printed"}],
+    "triangle-columns": [{}, {"swap": "printed"}], "triangle-span-interpolate": [{}],
     "triangle-plane": [{}, {"colors": ("#ff0000", "#00ff00", "#0000ff"), "z": (0.0, 1e300, -1e300)},
                        {"precision": "float32", "s": (0.0, 1.0, 0.5)}, {"subpixel_bits": 0}],
     "triangle-perspective": [{}, {"w": (1.0, 1e-300, 1.0)}, {"w": (1e-300, 1e300, 1.0)},

@@ -8,7 +8,8 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from tests.support import record
-from tests.support.triangle_variant_oracles import cramer_oracle, printed_columns, wireframe_oracle
+from tests.support.triangle_variant_oracles import (cramer_oracle, plane_value, printed_columns,
+                                                    wireframe_oracle)
 
 GRID = (24, 20)
 # Vertices on the 1/8 grid, some off the grid, so edges pass through centres.
@@ -16,7 +17,7 @@ COORD = st.integers(-40, 220).map(lambda v: v / 8)
 TRIANGLE = st.tuples(*(st.tuples(COORD, COORD) for _ in range(3)))
 
 
-@settings(max_examples=40, deadline=None)
+@settings(max_examples=20, deadline=None)
 @given(TRIANGLE)
 def test_cramer_covers_the_closed_triangle(triangle):
     trace = record("triangle-cramer", triangle, {}, GRID)
@@ -71,7 +72,7 @@ def test_wireframe_of_a_huge_triangle_costs_only_the_grid():
     assert [tuple(p) for p in trace.written_pixels().tolist()] == wireframe_oracle(huge, GRID)
 
 
-@settings(max_examples=20, deadline=None)
+@settings(max_examples=10, deadline=None)
 @given(TRIANGLE)
 def test_trilinear_distances_convert_to_the_barycentric_weights(triangle):
     trace = record("triangle-trilinear", triangle, {}, GRID)
@@ -110,3 +111,13 @@ def test_columns_fill_the_closed_triangle_and_the_printed_code_fills_nothing_of_
     # The difference from the exact result, counted.
     assert printed.final_variables()["missing"] == sum(expected.values()) - len(drawn)
     assert len(drawn) <= 1 or sum(expected.values()) == 0 or len(drawn) < sum(expected.values())
+
+
+@settings(max_examples=12, deadline=None)
+@given(TRIANGLE, st.tuples(*(st.integers(-8, 8).map(lambda v: v / 4) for _ in range(3))))
+def test_edges_then_spans_give_the_plane_exactly(triangle, values):
+    trace = record("triangle-span-interpolate", triangle, {"s": values}, GRID)
+    pixels = [tuple(p) for p in trace.written_pixels().tolist()]
+    assert Counter(pixels) == cramer_oracle(triangle, GRID)
+    for pixel, f in zip(pixels, trace.series("f")[trace.writes()]):
+        assert f == float(plane_value(triangle, values, pixel))

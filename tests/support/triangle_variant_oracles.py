@@ -2,6 +2,7 @@
 (algorithms/triangle_variants.py), shared by their tests and the stability suite."""
 from __future__ import annotations
 
+import functools
 import math
 from collections import Counter
 from fractions import Fraction
@@ -14,25 +15,36 @@ def _side(a, b, p) -> int:
     return (cross > 0) - (cross < 0)
 
 
-def closed_triangle_pixels(vertices, grid) -> set:
+def closed_triangle_pixels(vertices, grid) -> frozenset:
+    """See _closed_pixels; remembered, as several algorithms share the cases."""
+    return _closed_pixels(tuple(tuple(v) for v in vertices), tuple(grid))
+
+
+@functools.lru_cache(maxsize=256)
+def _closed_pixels(vertices, grid) -> frozenset:
     """Grid pixels whose centres lie in the closed triangle: for each edge, the
     centre is not strictly on the other side from the third vertex. Exact;
     a triangle of zero area covers nothing."""
     tri = [tuple(Fraction(c) for c in v) for v in vertices]
     if _side(*tri) == 0:
-        return set()
+        return frozenset()
     found = set()
-    for i in range(grid[0]):
-        for j in range(grid[1]):
+    # Only centres inside the bounding box can be inside.
+    xs, ys = [v[0] for v in tri], [v[1] for v in tri]
+    columns = range(max(0, math.floor(min(xs))), min(grid[0], math.ceil(max(xs)) + 1))
+    rows = range(max(0, math.floor(min(ys))), min(grid[1], math.ceil(max(ys)) + 1))
+    for i in columns:
+        for j in rows:
             p = (i + Fraction(1, 2), j + Fraction(1, 2))
             if all(_side(tri[k], tri[(k + 1) % 3], p) * _side(tri[k], tri[(k + 1) % 3],
                                                               tri[(k + 2) % 3]) >= 0
                    for k in range(3)):
                 found.add((i, j))
-    return found
+    return frozenset(found)
 
 
 def cramer_oracle(points, grid) -> Counter:
+    """Per pixel, how many of the closed triangles hold its centre."""
     counts = Counter()
     for k in range(0, len(points) - 2, 3):
         counts.update(closed_triangle_pixels(points[k:k + 3], grid))
@@ -108,5 +120,31 @@ def check_columns(case, options, trace, pixels):
         check_cramer(case, options, trace, pixels)
 
 
-ORACLES = {"triangle-columns": check_columns, "triangle-cramer": check_cramer, "triangle-trilinear": check_cramer,
+def plane_value(vertices, values, pixel) -> Fraction:
+    """alpha s0 + beta s1 + gamma s2 at the pixel's centre, from the signed areas."""
+    (ax, ay), (bx, by), (cx, cy) = [tuple(Fraction(v) for v in p) for p in vertices]
+    px, py = pixel[0] + Fraction(1, 2), pixel[1] + Fraction(1, 2)
+    two_a = (bx - ax) * (cy - ay) - (cx - ax) * (by - ay)
+    alpha = ((bx - px) * (cy - py) - (cx - px) * (by - py)) / two_a
+    beta = ((cx - px) * (ay - py) - (ax - px) * (cy - py)) / two_a
+    s0, s1, s2 = (Fraction(v) for v in values)
+    return alpha * s0 + beta * s1 + (1 - alpha - beta) * s2
+
+
+def check_span(case, options, trace, pixels):
+    check_cramer(case, options, trace, pixels)
+    values = options["s"] or (0.0,)
+    f = trace.series("f")[trace.writes()]
+    count = 0
+    for k in range(0, len(case.points) - 2, 3):
+        tri = case.points[k:k + 3]
+        owned = [p for p in closed_triangle_pixels(tri, case.grid)]
+        s = [values[(k + j) % len(values)] for j in range(3)]
+        for pixel in sorted(owned, key=lambda p: (p[1], p[0])):
+            assert f[count] == float(plane_value(tri, s, pixel)) or \
+                abs(f[count] - float(plane_value(tri, s, pixel))) < 1e-9, f"{case}: f off the plane"
+            count += 1
+
+
+ORACLES = {"triangle-span-interpolate": check_span, "triangle-columns": check_columns, "triangle-cramer": check_cramer, "triangle-trilinear": check_cramer,
            "triangle-wireframe": check_wireframe}

@@ -16,6 +16,8 @@ NEW = {"circle-bresenham": ["--points", "10,10", "--set", "radius=6"],
        "triangle-cramer": ["--points", "2.5,2", "30,6.25", "12,22"],
        "line-subpixels": ["--points", "1,1", "14,6", "--set", "n=4"],
        "triangle-columns": ["--points", "2.5,2", "30,6.25", "12,22"],
+       "triangle-span-interpolate": ["--points", "2.5,2", "30,6.25", "12,22", "--set",
+                                     "s=0,2,1"],
        "triangle-trilinear": ["--points", "2.5,2", "30,6.25", "12,22"],
        "triangle-wireframe": ["--points", "2.5,2", "30,6.25", "12,22"]}
 

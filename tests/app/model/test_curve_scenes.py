@@ -101,3 +101,12 @@ def test_printed_columns_scene_is_empty_and_counts_what_is_missing():
     assert pixels == [] and trace.final_variables()["missing"] == sum(expected.values()) > 0
     _, correct, filled = run("triangle-columns-printed", swap="correct")
     assert sorted(filled) == sorted(expected)
+
+
+def test_span_interpolation_scene_is_the_plane():
+    from tests.support.triangle_variant_oracles import plane_value
+    scene, trace, pixels = run("triangle-span-interpolate")
+    f = trace.series("f")[trace.writes()]
+    assert len(pixels) > 100
+    assert all(value == float(plane_value(scene.points, scene.options["s"], pixel))
+               for pixel, value in zip(pixels, f))
