@@ -17,7 +17,7 @@ _FAMILY_MODULES = ("algorithms.lines", "algorithms.circles", "algorithms.circle_
                    "algorithms.curves", "algorithms.polygons",
                    "algorithms.fill", "algorithms.triangles", "algorithms.triangle_variants",
                    "algorithms.span_interpolation",
-                   "algorithms.visibility",
+                   "algorithms.visibility", "algorithms.painter_split",
                    "algorithms.antialias", "algorithms.subpixel_line")
 
 

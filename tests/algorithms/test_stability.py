@@ -275,6 +275,7 @@ TRIANGLE_OPTIONS = [{}, {"fill_rule": "inclusive"}, {"fill_rule": "strict"},
 SPECIAL_TRIANGLE_OPTIONS = {
     "triangle-cramer": [{}], "triangle-trilinear": [{}], "triangle-wireframe": [{}],
     "triangle-columns": [{}, {"swap": "printed"}], "triangle-span-interpolate": [{}],
+    "painter-split": [{}],
     "triangle-plane": [{}, {"colors": ("#ff0000", "#00ff00", "#0000ff"), "z": (0.0, 1e300, -1e300)},
                        {"precision": "float32", "s": (0.0, 1.0, 0.5)}, {"subpixel_bits": 0}],
     "triangle-perspective": [{}, {"w": (1.0, 1e-300, 1.0)}, {"w": (1e-300, 1e300, 1.0)},
@@ -297,7 +298,7 @@ def triangle_cases(spec) -> list[Case]:
         label = ",".join(f"{k}={v}" for k, v in options.items())
         for name, points in TRIANGLES.items():
             usable = dict(options)
-            if spec.name in ("zbuffer", "painter") and "z" not in usable:
+            if spec.name in ("zbuffer", "painter", "painter-split") and "z" not in usable:
                 usable["z"] = tuple(0.1 + 0.8 * (k % 3) / 2 for k in range(len(points)))
             valid = None
             if name == "beyond the limit":

@@ -18,6 +18,8 @@ NEW = {"circle-bresenham": ["--points", "10,10", "--set", "radius=6"],
        "triangle-columns": ["--points", "2.5,2", "30,6.25", "12,22"],
        "triangle-span-interpolate": ["--points", "2.5,2", "30,6.25", "12,22", "--set",
                                      "s=0,2,1"],
+       "painter-split": ["--points", "2,3", "29,11", "3,21", "30,3", "29,21", "2,12", "--set",
+                         "z=0.1,0.9,0.1,0.1,0.1,0.9"],
        "triangle-trilinear": ["--points", "2.5,2", "30,6.25", "12,22"],
        "triangle-wireframe": ["--points", "2.5,2", "30,6.25", "12,22"]}
 

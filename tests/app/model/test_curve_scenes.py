@@ -110,3 +110,9 @@ def test_span_interpolation_scene_is_the_plane():
     assert len(pixels) > 100
     assert all(value == float(plane_value(scene.points, scene.options["s"], pixel))
                for pixel, value in zip(pixels, f))
+
+
+def test_split_painter_scene_agrees_with_the_z_buffer():
+    scene, trace, pixels = run("painter-split-cyclic")
+    final = trace.final_variables()
+    assert final["disagree"] == 0 and final["splits"] == 3 and final["pieces"] == 9
