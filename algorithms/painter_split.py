@@ -74,7 +74,7 @@ class Bsp:
     """The tree's pieces in drawing order, and the splits that made them."""
 
     def __init__(self, pieces):
-        self.splits = 0
+        self.splits = self.classified = 0
         self.events = []  # (source, by, pieces made) per split
         self.order = []   # (triangle (3 points), source) far to near
         self._walk(self._build(pieces))
@@ -88,6 +88,7 @@ class Bsp:
         plane = plane_of(root)
         front, back, here = [], [], [(root, source)]
         for tri, owner in rest:
+            self.classified += 1
             sides = [side(plane, v) for v in tri]
             if all(s >= 0 for s in sides) and any(s > 0 for s in sides):
                 front.append((tri, owner))
@@ -114,17 +115,28 @@ class Bsp:
         self._walk(near)
 
 
+# Operation counts: a triangle classified against a plane evaluates n . v + d
+# at its three vertices (3 mul and 3 additions each) and tests the signs; a
+# cut finds two crossing points (a division and a lerp of 3 coordinates
+# each); each piece is set up and walked as the painter sets up and walks a
+# triangle (visibility.TRIANGLE_OPS, WALK_OPS). Building a node's plane (a
+# cross product) is counted on its first classification's line.
+CLASSIFY_OPS = {"mul": 9, "float_add": 9, "compare": 6}
+CUT_OPS = {"div": 2, "mul": 6, "float_add": 12}
+
+
 def split_code(points, options) -> Code:
     code = Code()
-    code.add("build", "build a BSP tree: take a triangle's plane; put each other triangle "
-                      "in front of it, behind it, or split it in two by the plane", ops={
-                          "mul": 9, "float_add": 9})
-    code.add("split", "    (a triangle crossing the plane is cut along it into 3 triangles)",
-             ops={"div": 2, "mul": 12, "float_add": 12})
+    code.add("build", "build a BSP tree: take a triangle's plane n . v + d = 0 (v = (x, y, z))")
+    code.add("classify", "    put each other triangle in front of it (n . v + d >= 0 at every "
+                         "corner), behind it (<= 0), or, when it crosses,", ops=CLASSIFY_OPS)
+    code.add("split", "        cut it along the plane into 3 triangles, the pieces going to "
+                      "their sides", ops=CUT_OPS)
     code.add("order", "walk the tree: at each plane draw the far side first, then the plane's "
-                      "own triangles, then the near side")
-    code.add("plot_paint", "    paint each piece's pixels in its triangle's colour (no depth "
-                           "test)", PLOT, ops={"compare": 3})
+                      "own triangles, then the near side (the viewer looks along +z)")
+    code.add("piece", "for each piece in that order:", ops=visibility.TRIANGLE_OPS)
+    code.add("plot_paint", "    paint its pixels in its triangle's colour (no depth test)",
+             PLOT, ops=visibility.WALK_OPS)
     code.add("compare", "compare with the z-buffer's picture")
     code.add("done", "done")
     return code
@@ -146,7 +158,10 @@ def painter_split(points, options, grid):
         from .errors import InputError
         raise InputError(f"the BSP tree would cut these triangles into more than "
                          f"{MAX_PIECES} pieces") from None
-    for owner, by, made in bsp.events:
+    for k in range(bsp.classified):
+        yield Vars(line=at["classify"], values={"classified": k + 1})
+    for k, (owner, by, made) in enumerate(bsp.events):
+        yield Vars(line=at["split"], values={"splits": k + 1})
         yield Note(line=at["split"], text=f"triangle {owner + 1} crosses the plane of triangle "
                                           f"{by + 1}: cut into {made} pieces")
     yield Table(line=at["order"], name="drawing order",
@@ -154,7 +169,7 @@ def painter_split(points, options, grid):
                 rows=tuple((rank + 1, owner + 1, *(float(v[2]) for v in tri))
                            for rank, (tri, owner) in enumerate(bsp.order[:200])))
     color = np.full((int(grid[1]), int(grid[0])), -1, np.int64)
-    yield from _paint(bsp.order, grid, color, at["plot_paint"])
+    yield from _paint(bsp.order, grid, color, at)
     reference, _, _ = visibility.zbuffer_image(points, {"z": tuple(z), "depth_test": "less"},
                                                grid, clear=math.inf)
     disagree = int((color != reference).sum())
@@ -162,12 +177,14 @@ def painter_split(points, options, grid):
                                            "disagree": disagree})
 
 
-def _paint(order, grid, color, line):
+def _paint(order, grid, color, at):
     flat = [(float(v[0]), float(v[1])) for tri, _ in order for v in tri]
     depths = tuple(float(v[2]) for tri, _ in order for v in tri)
     scene = visibility.Scene(flat, {"z": depths, "fill_rule": "top-left"}, grid)
+    line = at["plot_paint"]
     for setup in scene.drawn():
         owner = order[setup.number][1]
+        yield Vars(line=at["piece"], values={"piece": setup.number + 1, "triangle": owner + 1})
         palette = visibility.PALETTE
         packed = int(palette[owner % len(palette)][1:], 16)
         for i, j, depth, _ in scene.fragments(setup):

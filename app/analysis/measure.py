@@ -47,6 +47,7 @@ from .measure_areas import (TRAVERSALS, exact_cover, measure_fill, measure_preci
                             measure_traversal)
 from .measure_curves import (CIRCLE_VARIANTS, IMPLICIT_MAX_BOX, LINE_VARIANTS, line_errors,
                              measure_circles, measure_lines)
+from .measure_visibility import measure_visibility
 from .measure_shading import (DEPTH_BUFFERS, antialias_available, measure_antialias,
                               measure_interpolation)
 
@@ -119,7 +120,7 @@ def settings(quick: bool) -> Settings:
 
 # ================================================================= run
 FAMILIES = ("lines", "circles", "polygons", "fill", "triangles", "interpolation",
-            "antialiasing")
+            "antialiasing", "visibility")
 
 
 def tasks(config: Settings) -> list[tuple[str, str, Callable]]:
@@ -132,6 +133,7 @@ def tasks(config: Settings) -> list[tuple[str, str, Callable]]:
              ("interpolation", "interpolation and depth", measure_interpolation)]
     if not antialias_available():
         found.append(("antialiasing", "antialiasing", measure_antialias))
+    found.append(("visibility", "painter and splitting", measure_visibility))
     return found
 
 
@@ -139,7 +141,7 @@ def ticks(config: Settings) -> int:
     """How many times the measures call tick(): the progress bar's length."""
     total = len(config.line_lengths) * len(LINE_VARIANTS)
     total += len(CIRCLE_VARIANTS) + len(config.magnitudes) + len(TRAVERSALS) + 1
-    total += len(config.w_ratios)
+    total += len(config.w_ratios) + 1  # and the visibility scenes
     if not antialias_available():
         from algorithms import antialias
         total += len(antialias.PATTERNS)

@@ -36,6 +36,7 @@ from app.model.staging import StagedFolder
 from app.progress import TerminalBar
 
 from .report_findings import View, findings, table
+from .report_visibility import section_visibility
 from .report_sections import (section_antialias, section_circles, section_fill,
                               section_interpolation, section_lines, section_precision)
 
@@ -87,7 +88,7 @@ def markdown(view: View, config, seconds: dict, missing_aa: str, figures=()) -> 
                 section_precision(view, "polygons", "Polygons"),
                 section_precision(view, "triangles", "Triangles"),
                 section_fill(view), section_interpolation(view),
-                section_antialias(view, missing_aa)]
+                section_antialias(view, missing_aa), section_visibility(view)]
     pictures = "## Figures\n\n" + "\n\n".join(f"![{f}]({f}.png)" for f in FIGURE_ORDER
                                                  if f in figures)
     timing = "## Time per part\n\n" + table(["part", "seconds"],
