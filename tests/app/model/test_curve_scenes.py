@@ -116,3 +116,36 @@ def test_split_painter_scene_agrees_with_the_z_buffer():
     scene, trace, pixels = run("painter-split-cyclic")
     final = trace.final_variables()
     assert final["disagree"] == 0 and final["splits"] == 3 and final["pieces"] == 9
+
+
+def test_bresenham_circle_scene_equals_the_midpoint_circle():
+    scene, trace, pixels = run("circle-bresenham")
+    (xc, yc), = scene.points
+    assert {(x - xc, y - yc) for x, y in pixels} == \
+        exact_circles.midpoint_circle(scene.options["radius"])
+
+
+def test_shared_edge_scene_fills_the_diagonal_twice():
+    from collections import Counter
+    scene, trace, pixels = run("triangle-cramer-shared-edge")
+    twice = {p for p, n in Counter(pixels).items() if n == 2}
+    # Centres on the diagonal from (4.5, 4.5) to (26.5, 20.5): 16 (x - 4) = 22 (y - 4).
+    assert twice and all(16 * (x - 4) == 22 * (y - 4) for x, y in twice)
+
+
+def test_wireframe_scene_differs_from_the_fill():
+    from tests.support.triangle_variant_oracles import wireframe_oracle
+    scene, trace, pixels = run("triangle-wireframe")
+    grid = (scene.width, scene.height)
+    assert pixels == wireframe_oracle(scene.points, grid)
+    from algorithms import registry
+    bbox = {tuple(p) for p in registry.get("triangle-bbox").record(
+        scene.points, {}, grid).written_pixels().tolist()}
+    assert set(pixels) - bbox and bbox - set(pixels)
+
+
+def test_trilinear_scene_weights_add_up_to_one():
+    import numpy as np
+    scene, trace, pixels = run("triangle-trilinear")
+    total = sum(trace.series(n)[trace.writes()] for n in ("alpha", "beta", "gamma"))
+    assert len(pixels) > 100 and np.allclose(total, 1.0, atol=1e-12)
