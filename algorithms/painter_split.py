@@ -111,7 +111,9 @@ class Bsp:
         # The viewer is at z = -infinity: on the front side when n_z < 0.
         near, far = (front, back) if n[2] < 0 else (back, front)
         self._walk(far)
-        self.order += here
+        # Triangles in one plane: the first given is drawn last, so that it wins
+        # where they overlap, as the z-buffer's strict depth test keeps the first.
+        self.order += here[::-1]
         self._walk(near)
 
 

@@ -17,8 +17,9 @@ GRID = (24, 18)
 
 def nearest(points, z, pixel, gap=Fraction(1, 50)):
     """The triangle whose plane is nearest at the pixel's centre, among those
-    strictly containing it; None when none does or the nearest two are closer
-    in depth than ``gap`` (near the line where two triangles meet)."""
+    containing it; None when it holds the centre only on an edge (the fill rule
+    decides there), or when another triangle holding it is within ``gap`` in
+    depth (near the line where two triangles meet, or in one plane)."""
     px, py = pixel[0] + Fraction(1, 2), pixel[1] + Fraction(1, 2)
     found = []
     for t in range(len(points) // 3):
@@ -30,11 +31,11 @@ def nearest(points, z, pixel, gap=Fraction(1, 50)):
         alpha = ((bx - px) * (cy - py) - (cx - px) * (by - py)) / two_a
         beta = ((cx - px) * (ay - py) - (ax - px) * (cy - py)) / two_a
         gamma = 1 - alpha - beta
-        if min(alpha, beta, gamma) > 0:
+        if min(alpha, beta, gamma) >= 0:
             za, zb, zc = (Fraction(v) for v in z[3 * t:3 * t + 3])
-            found.append((alpha * za + beta * zb + gamma * zc, t))
+            found.append((alpha * za + beta * zb + gamma * zc, t, min(alpha, beta, gamma) > 0))
     found.sort()
-    if not found or (len(found) > 1 and found[1][0] - found[0][0] < gap):
+    if not found or (len(found) > 1 and found[1][0] - found[0][0] < gap) or not found[0][2]:
         return None
     return found[0][1]
 
