@@ -14,9 +14,13 @@ from .trace import DEFAULT_STEP_CAP, Trace
 FAMILIES = ("lines", "circles", "polygons", "fill", "triangles", "visibility", "antialias",
             "textures", "pipeline")
 # Modules that register specs when imported; add a family's module here.
-_FAMILY_MODULES = ("algorithms.lines", "algorithms.circles", "algorithms.polygons",
-                   "algorithms.fill", "algorithms.triangles", "algorithms.visibility",
-                   "algorithms.antialias", "algorithms.textures", "algorithms.pipeline")
+_FAMILY_MODULES = ("algorithms.lines", "algorithms.circles", "algorithms.circle_variants",
+                   "algorithms.curves", "algorithms.polygons",
+                   "algorithms.fill", "algorithms.triangles", "algorithms.triangle_variants",
+                   "algorithms.span_interpolation",
+                   "algorithms.visibility", "algorithms.painter_split",
+                   "algorithms.antialias", "algorithms.subpixel_line", "algorithms.textures",
+                   "algorithms.pipeline")
 
 
 @dataclass(frozen=True)

@@ -431,11 +431,22 @@ def add_export_command(commands) -> None:
     export.add_argument("--no-primitive", action="store_true", help="no ideal primitive")
     export.add_argument("--no-highlight", action="store_true",
                         help="no outlines on the step's pixel and the candidates")
+    export.add_argument("--overlays", metavar="LIST", default="",
+                        help="triangle runs: geometry of the step drawn over the grid, a comma "
+                             "list of half-planes, sub-triangles, distances, basis, or all")
     export.add_argument("--memory-limit", metavar="SIZE",
                         help="memory the run may need, e.g. 512M or 4G (default 2G); a larger "
                              "request is refused before it starts")
     export.add_argument("--frames-limit", metavar="SIZE",
                         help="disk space the PNG frames may take (default 1G)")
+
+
+def _overlays(text: str) -> tuple:
+    from app.render.overlays import parse_overlays
+    try:
+        return parse_overlays(text)
+    except ValueError as error:
+        raise InputError(f"--overlays: {error}") from None
 
 
 def command_export(args) -> int:
@@ -473,7 +484,7 @@ def command_export(args) -> int:
         highlight=not args.no_highlight, caption=args.caption, panel=args.panel,
         theme=args.theme, loop=not args.once, per=args.per, memory_limit=_memory_limit(args),
         unit=args.unit, reasoning=not args.no_reasoning, text_size=text_size, axes=args.axes,
-        vertex_labels=args.vertex_labels)
+        vertex_labels=args.vertex_labels, overlays=_overlays(args.overlays))
     frames_limit = (exporting.MAX_FRAMES_BYTES if args.frames_limit is None
                     else budget.parse_size(args.frames_limit, "--frames-limit"))
     bar = _ProgressBar(sys.stderr)

@@ -37,6 +37,9 @@ TEMPORAL_OPTIONS = (
     Option("spoke_width", "float", 1.5, "spoke width in px", minimum=0.1, maximum=64),
     Option("phase", "float", 0.0, "angle of the first spoke at t = 0, degrees",
            minimum=-360, maximum=360),
+    Option("times", "choice", "even", "motion-blur instants: even (the middle of each of the "
+           "time_samples strata of the exposure) or jittered (a random instant in each)",
+           choices=("even", "jittered")),
 )
 
 
@@ -89,6 +92,10 @@ def time_samples(options, frame: int) -> list[float]:
     if options["mode"] == "instant":
         return [float(frame)]
     count, shutter = options["time_samples"], options["shutter"]
+    if options.get("times", "even") == "jittered":
+        # One random instant per stratum, the same for every run of the frame.
+        offsets = np.random.default_rng([frame, count]).random(count).tolist()
+        return [frame + shutter * (s + u) / count for s, u in enumerate(offsets)]
     return [frame + shutter * (s + 0.5) / count for s in range(count)]
 
 
@@ -166,8 +173,11 @@ def apparent_speed(points, options) -> float:
 
 def temporal_code(points, options) -> Code:
     blur = options.get("mode", "instant") == "motion-blur"
-    sample = (f"average over {options.get('time_samples', 8)} instants t = k + shutter (s + 1/2) "
-              f"/ {options.get('time_samples', 8)}" if blur else "one instant t = k")
+    within = "u_s" if options.get("times", "even") == "jittered" else "1/2"
+    sample = (f"average over {options.get('time_samples', 8)} instants t = k + shutter "
+              f"(s + {within}) / {options.get('time_samples', 8)}"
+              + ("  (u_s random in [0, 1): jittered)" if within == "u_s" else "")
+              if blur else "one instant t = k")
     # Every pixel frame of line "plot_pixels" stands for the pixel's n^2 samples at each
     # of the frame's instants, each tested against every shape (the images
     # come from the vectorised kernel, which tests them all), at its

@@ -48,6 +48,7 @@ from .measure_areas import (TRAVERSALS, exact_cover, measure_fill, measure_preci
 from .measure_curves import (CIRCLE_VARIANTS, IMPLICIT_MAX_BOX, LINE_VARIANTS, line_errors,
                              measure_circles, measure_lines)
 from .measure_textures import measure_textures, texture_ticks
+from .measure_visibility import measure_visibility
 from .measure_shading import (DEPTH_BUFFERS, antialias_available, measure_antialias,
                               measure_interpolation)
 
@@ -120,7 +121,7 @@ def settings(quick: bool) -> Settings:
 
 # ================================================================= run
 FAMILIES = ("lines", "circles", "polygons", "fill", "triangles", "interpolation",
-            "antialiasing", "textures")
+            "antialiasing", "textures", "visibility")
 
 
 def tasks(config: Settings) -> list[tuple[str, str, Callable]]:
@@ -134,6 +135,7 @@ def tasks(config: Settings) -> list[tuple[str, str, Callable]]:
     if not antialias_available():
         found.append(("antialiasing", "antialiasing", measure_antialias))
     found.append(("textures", "textures", measure_textures))
+    found.append(("visibility", "painter and splitting", measure_visibility))
     return found
 
 
@@ -141,7 +143,7 @@ def ticks(config: Settings) -> int:
     """How many times the measures call tick(): the progress bar's length."""
     total = len(config.line_lengths) * len(LINE_VARIANTS)
     total += len(CIRCLE_VARIANTS) + len(config.magnitudes) + len(TRAVERSALS) + 1
-    total += len(config.w_ratios) + texture_ticks()
+    total += len(config.w_ratios) + texture_ticks() + 1  # and the visibility scenes
     if not antialias_available():
         from algorithms import antialias
         total += len(antialias.PATTERNS)

@@ -37,6 +37,7 @@ from app.progress import TerminalBar
 
 from .report_findings import View, findings, table
 from .report_textures import section_textures
+from .report_visibility import section_visibility
 from .report_sections import (section_antialias, section_circles, section_fill,
                               section_interpolation, section_lines, section_precision)
 
@@ -88,7 +89,8 @@ def markdown(view: View, config, seconds: dict, missing_aa: str, figures=()) -> 
                 section_precision(view, "polygons", "Polygons"),
                 section_precision(view, "triangles", "Triangles"),
                 section_fill(view), section_interpolation(view),
-                section_antialias(view, missing_aa), section_textures(view)]
+                section_antialias(view, missing_aa), section_textures(view),
+                section_visibility(view)]
     pictures = "## Figures\n\n" + "\n\n".join(f"![{f}]({f}.png)" for f in FIGURE_ORDER
                                                  if f in figures)
     timing = "## Time per part\n\n" + table(["part", "seconds"],

@@ -130,6 +130,8 @@ class MainWindow(WindowLayout, WindowMenus, DepthAndAccuracy, TextureDisplay, QM
         self.recording_status = RecordingStatus(self)  # long runs: progress bar and Cancel
         self.exercise_mode = ExerciseMode(self)  # Run > Exercise
         self.student_actions = StudentActions(self)  # File > Open algorithm…, Run > First divergence
+        from app.gui.overlay_actions import TriangleOverlays
+        self.overlays = TriangleOverlays(self)  # View > Overlays (triangle geometry)
 
     # Parts a running program adds (``launch``); tests add them where they need them.
     def add_file_actions(self, settings=None):

@@ -57,6 +57,8 @@ def ideal_paths(spec, points, options) -> list:
     if getattr(inputs, "multiple", False):
         count = inputs.count
         return [(centres[k:k + count], True) for k in range(0, len(centres) - count + 1, count)]
+    if inputs.count == 4 and "segments" in options and len(centres) == 4:
+        return [(bezier_samples(centres), False)]  # a cubic Bezier's control points
     closed = getattr(inputs, "contours", False) or inputs.count >= 3
     return [(centres, closed and len(centres) >= 3)]
 
@@ -82,6 +84,15 @@ def projected_paths(trace) -> list:
         if len(corners) >= 3:
             paths.append(([tuple(float(v) for v in c) for c in corners], True))
     return paths
+
+
+def bezier_samples(points, count: int = 121) -> list:
+    """Points along the cubic Bezier curve of four control points."""
+    t = np.linspace(0.0, 1.0, count)[:, None]
+    p = np.asarray(points, dtype=float)
+    curve = ((1 - t) ** 3 * p[0] + 3 * (1 - t) ** 2 * t * p[1] + 3 * (1 - t) * t * t * p[2]
+             + t ** 3 * p[3])
+    return [tuple(row) for row in curve.tolist()]
 
 
 def scene_paths(spec, points, options) -> list:

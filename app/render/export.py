@@ -27,6 +27,7 @@ from algorithms.trace import FrameState
 
 from app.model.geometry import run_paths
 from app.render.derivation import draw_distances
+from app.render.overlays import COLOURS as OVERLAY_COLOURS, draw_strokes, overlay_strokes
 from app.render.frame import compose_frame, compose_region, frame_marks, primitive_mask
 from app.render.axes import Axes
 from app.render.reasoning import NONE, draw_guides, step_guides, vertex_labels
@@ -106,7 +107,8 @@ class FrameRenderer:
         if width > MAX_SIDE or height > MAX_SIDE:
             raise ExportError(f"a frame would be {width}x{height} pixels, more than "
                               f"{MAX_SIDE}x{MAX_SIDE}: choose a smaller scale or no side panel")
-        self.colours = build_palette(self.theme, trace)
+        self.colours = build_palette(self.theme, trace,
+                                     OVERLAY_COLOURS if settings.overlays else ())
         self._outside = self.colours.index_of(self.theme.palette.outside)
         self._guide = self.colours.index_of(self.theme.palette.guide)
         self._current = self.colours.index_of(self.theme.palette.current)
@@ -133,6 +135,8 @@ class FrameRenderer:
         if guides:
             grid = grid.copy()  # the grid part keeps its own picture for the next frame
             draw_guides(grid, guides, settings.scale, self._guide, self._current)
+        if settings.overlays:
+            grid = self._overlaid(grid, index)
         if not self.y_down:
             grid = grid[::-1]  # row 0 is y = 0, the bottom of the picture
         width, height = self.size
@@ -163,6 +167,16 @@ class FrameRenderer:
         scale = self.settings.scale
         return (self.grid_left + x * scale,
                 y * scale if self.y_down else self.grid_size[1] - y * scale)
+
+    def _overlaid(self, grid: np.ndarray, index: int) -> np.ndarray:
+        """The grid with the step's geometric overlays drawn over it (a copy:
+        the grid part keeps its own for the next frame)."""
+        strokes = overlay_strokes(self.trace, index, self.settings.overlays)
+        if not strokes:
+            return grid
+        rgb = draw_strokes(self.colours.rgb[grid], strokes, self.settings.scale)
+        rgba = np.concatenate([rgb, np.full(rgb.shape[:2] + (1,), 255, np.uint8)], axis=2)
+        return self.colours.indices(np.ascontiguousarray(rgba))
 
     def image(self, index: int) -> Image.Image:
         """Frame ``index`` as a Pillow palette image."""

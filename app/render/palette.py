@@ -136,15 +136,16 @@ def _spare_colour(colours) -> tuple[int, int, int]:
     raise ValueError("no spare colour")
 
 
-def build_palette(theme: Theme, trace=None) -> ColourIndex:
-    """The export's one palette: theme colours, text shades and the run's
-    own colours (see Palette in the module notes)."""
+def build_palette(theme: Theme, trace=None, extra=()) -> ColourIndex:
+    """The export's one palette: theme colours, text shades, ``extra``
+    (r, g, b) colours (an overlay's) and the run's own colours (see Palette
+    in the module notes)."""
     p = theme.palette
     named = [p.background, p.ink, p.overdraw, p.grid, p.outside, p.current, p.candidate,
              p.difference, p.primitive, p.guide, theme.panel, theme.caption, theme.border, theme.text,
              theme.muted, theme.line_number, theme.current_line, theme.current_edge,
              theme.changed]
-    colours = list(dict.fromkeys(_rgb(c) for c in named))
+    colours = list(dict.fromkeys([_rgb(c) for c in named] + [tuple(c) for c in extra]))
     for fg, bg in theme.text_pairs():
         colours += _shades(fg, bg)
     colours = list(dict.fromkeys(colours))

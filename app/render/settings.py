@@ -23,6 +23,7 @@ from algorithms.trace import DEFAULT_STEP_CAP
 
 from app.model.budget import DEFAULT_MEMORY_LIMIT, check_budget
 from app.model.scene import one_line
+from app.render.overlays import OVERLAYS
 from app.render.palette import THEMES
 from app.render.units import UNITS, choose_frames
 
@@ -78,6 +79,7 @@ class ExportSettings:
     unit: str = "auto"       # one of units.UNITS: what a frame stands for
     text_size: int | None = None  # pixels of the caption's text; None: text_pixels()
     memory_limit: int = DEFAULT_MEMORY_LIMIT  # bytes the run may need (app/model/budget.py)
+    overlays: tuple = ()     # names from app/render/overlays.py's OVERLAYS
 
     def checked(self) -> "ExportSettings":
         fps = _real(self.fps, "frames per second")
@@ -106,6 +108,9 @@ class ExportSettings:
                                  or not MIN_TEXT <= text <= MAX_TEXT):
             raise ExportError(f"text size must be a whole number of pixels {MIN_TEXT} .. "
                               f"{MAX_TEXT}, got {text!r}")
+        if not set(self.overlays) <= set(OVERLAYS):
+            raise ExportError(f"overlays must be among {', '.join(OVERLAYS)}, got "
+                              f"{', '.join(map(str, self.overlays))}")
         return replace(self, fps=fps, hold=hold, scale=None if scale is None else int(scale))
 
     def for_grid(self, width: int, height: int) -> "ExportSettings":

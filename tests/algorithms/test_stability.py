@@ -41,6 +41,7 @@ from algorithms.exact import (lines as exact, circles as exact_circles,
 from algorithms import registry
 from algorithms.errors import InputError
 from algorithms.fill import NEIGHBOURS, outline_pixels
+from tests.support import curve_oracles, triangle_variant_oracles
 
 ROOT = Path(__file__).resolve().parents[2]
 GRID = (40, 32)
@@ -298,6 +299,9 @@ TRIANGLE_OPTIONS = [{}, {"fill_rule": "inclusive"}, {"fill_rule": "strict"},
                      "s": (0.0, 1.0, 0.5), "w": (1.0, 1e-300, 2.0), "perspective": True},
                     {"s": (0.0, 1.0, 0.5), "w": (1e-300, 1e300, 1.0)}]
 SPECIAL_TRIANGLE_OPTIONS = {
+    "triangle-cramer": [{}], "triangle-trilinear": [{}], "triangle-wireframe": [{}],
+    "triangle-columns": [{}, {"swap": "printed"}], "triangle-span-interpolate": [{}],
+    "painter-split": [{}],
     "triangle-plane": [{}, {"colors": ("#ff0000", "#00ff00", "#0000ff"), "z": (0.0, 1e300, -1e300)},
                        {"precision": "float32", "s": (0.0, 1.0, 0.5)}, {"subpixel_bits": 0}],
     "triangle-perspective": [{}, {"w": (1.0, 1e-300, 1.0)}, {"w": (1e-300, 1e300, 1.0)},
@@ -326,7 +330,7 @@ def triangle_cases(spec) -> list[Case]:
         label = ",".join(f"{k}={v}" for k, v in options.items())
         for name, points in TRIANGLES.items():
             usable = dict(options)
-            if spec.name in ("zbuffer", "painter") and "z" not in usable:
+            if spec.name in ("zbuffer", "painter", "painter-split") and "z" not in usable:
                 usable["z"] = tuple(0.1 + 0.8 * (k % 3) / 2 for k in range(len(points)))
             valid = None
             if name == "beyond the limit":
@@ -341,6 +345,9 @@ def triangle_cases(spec) -> list[Case]:
 
 def cases_for(spec) -> list[Case]:
     inputs = spec.inputs
+    if spec.name in curve_oracles.ORACLES:
+        return curve_oracles.cases(spec, lambda name, points, options, valid: Case(
+            name, spec.name, points, options, GRID, valid))
     if inputs.contours:
         return fill_cases(spec) if spec.family == "fill" else polygon_cases(spec)
     if inputs.count == 2 and (inputs.integer or spec.family == "lines"):
@@ -575,6 +582,8 @@ def oracle_triangles(case: Case, spec, trace) -> None:
         assert np.allclose(total, 1.0, atol=1e-6), f"{case}: weights do not sum to 1"
 
 
+# Algorithms with oracles of their own, by name.
+VARIANT_ORACLES = {**curve_oracles.ORACLES, **triangle_variant_oracles.ORACLES}
 ORACLES = {"lines": oracle_lines, "circles": oracle_circles,
            "polygons": oracle_polygons, "fill": oracle_fill, "triangles": oracle_triangles}
 
@@ -593,6 +602,10 @@ def test_hard_case(case: Case):
     assert not trace.truncated or len(trace) == trace.step_cap
     check_values(case, trace)
     check_kernel(case, spec, trace)
+    variant = VARIANT_ORACLES.get(spec.name)
+    if variant is not None:
+        variant(case, spec.resolve(case.options), trace, _written(trace))
+        return
     oracle = ORACLES.get(spec.family)
     if oracle is not None:
         oracle(case, spec, trace)

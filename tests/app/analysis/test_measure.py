@@ -77,6 +77,8 @@ def test_every_line_of_every_algorithm_names_known_operations():
                   "triangles": ((1.0, 1.0), (9.0, 2.0), (4.0, 8.0))}[spec.family]
         if spec.inputs.count == 1:
             points = ((6, 6),)  # a circle's centre (a seed fill inside a circle too)
+        if spec.inputs.count == 4:
+            points = ((1, 1), (3, 9), (8, 9), (10, 1))  # a Bezier curve's control points
         trace = spec.record(points, {}, (12, 12))
         counts = measure.op_counts(trace)
         assert measure.total_ops(counts) > 0, spec.name

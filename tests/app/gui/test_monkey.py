@@ -238,6 +238,15 @@ def test_monkey(window, qtbot, tmp_path, monkeypatch, capsys):
             for name in names:
                 monkey = Monkey(window, rng)
                 monkey.choose(name)
+                if window.player.spec.name != name and window.message.text().startswith(name):
+                    # Refused, as designed, when the scene gives it nothing to run (a
+                    # flood fill on a grid one pixel wide has no free pixel inside any
+                    # outline); the scene stays as it was. A person would make the grid
+                    # larger, clear the points and pick it again.
+                    window.set_grid(32, 24)
+                    window.clear_points()
+                    monkey.choose(name)
+                    monkey.count -= 1
                 assert window.player.spec.name == name, (seed, name, window.message.text(),
                                                              window.picker.current_name())
                 window.grid.setFocus()

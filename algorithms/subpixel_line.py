@@ -1,0 +1,112 @@
+"""Line supersampling as one lecture draws it: split each pixel into n x n
+subpixels and make a pixel's intensity depend on how many of them the
+(zero-width) line passes through.
+
+The line runs between the centres of its two end pixels, as the line family
+draws it. Subpixels are half-open squares [a, a + 1/n) x [b, b + 1/n), so
+they tile the plane and every point of the line lies in exactly one: a
+line along a subpixel edge counts the subpixels above or to the right of
+it, and one through a corner counts the subpixel whose corner it is. Every
+test is exact (whole numbers in units of 1/(2n) px).
+"""
+from __future__ import annotations
+
+import math
+from fractions import Fraction
+
+from .curves import grey_ink
+from .code import Code, listing
+from .registry import AlgorithmSpec, Inputs, Option, register
+from .steps import PLOT, Start, Vars
+
+N = Option("n", "int", 3, "subpixels per pixel side", minimum=1, maximum=16)
+SEGMENT = Inputs(2, integer=True, names=("P", "Q"))
+
+
+def clip(p, q, box):
+    """The parameters (t0, t1) of the part of p + t (q - p), 0 <= t <= 1, in the
+    closed box (x0, y0, x1, y1), or None."""
+    lo, hi = Fraction(0), Fraction(1)
+    for axis in (0, 1):
+        d = q[axis] - p[axis]
+        low, high = box[axis], box[axis + 2]
+        if d == 0:
+            if not low <= p[axis] <= high:
+                return None
+            continue
+        a, b = sorted(((low - p[axis]) / d, (high - p[axis]) / d))
+        lo, hi = max(lo, a), min(hi, b)
+    return (lo, hi) if lo <= hi else None
+
+
+def visited_cells(p, q, t0, t1) -> list[tuple[int, int]]:
+    """The unit cells [i, i + 1) x [j, j + 1) holding a point of p + t (q - p),
+    t0 <= t <= t1, in order along the segment (each once)."""
+    d = (q[0] - p[0], q[1] - p[1])
+    ts = {t0, t1}
+    for axis in (0, 1):
+        if d[axis] == 0:
+            continue
+        a, b = sorted((p[axis] + t0 * d[axis], p[axis] + t1 * d[axis]))
+        for k in range(math.ceil(a), math.floor(b) + 1):
+            ts.add((k - p[axis]) / d[axis])  # where the segment meets the line x (or y) = k
+    ts = sorted(ts)
+    probes = ts + [(a + b) / 2 for a, b in zip(ts, ts[1:])]
+    cells = {}
+    for t in sorted(probes):
+        cell = (math.floor(p[0] + t * d[0]), math.floor(p[1] + t * d[1]))
+        cells.setdefault(cell, None)
+    return list(cells)
+
+
+def subpixel_listing(points, options) -> Code:
+    n = options["n"]
+    code = Code()
+    code.add("setup", f"n = {n}:  each pixel is {n} x {n} subpixels;  the line runs from P's "
+                      "centre to Q's, clipped to the grid")
+    code.add("plot_pixel", "for each pixel the line reaches:  k = subpixels it passes through;  "
+                           "intensity = min(1, k / n)   (n: a straight run across one pixel)",
+             PLOT, ops={"samples": 1, "div": 1, "compare": 1})
+    code.add("done", "done")
+    return code
+
+
+def subpixel_line(points, options, grid):
+    n = options["n"]
+    at = subpixel_listing(points, options).at
+    yield Start(line=at["setup"], values=("subpixels", "intensity", "rgb"),
+                constants={"n": n}, pixel_value="intensity", color_value="rgb")
+    # In subpixel units the centre of pixel x is at n x + n / 2.
+    p, q = ((Fraction(2 * c + 1) * n / 2 for c in point) for point in points)
+    p, q = tuple(p), tuple(q)
+    span = clip(p, q, (0, 0, grid[0] * n, grid[1] * n))
+    counts = {}
+    if span is not None:
+        for i, j in visited_cells(p, q, *span):
+            if 0 <= i < grid[0] * n and 0 <= j < grid[1] * n:
+                pixel = (i // n, j // n)
+                counts[pixel] = counts.get(pixel, 0) + 1
+    plot = at["plot_pixel"]
+    for (x, y), k in counts.items():
+        intensity = min(1.0, k / n)
+        yield (plot, x, y, float(k), intensity, grey_ink(intensity))
+    yield Vars(line=at["done"], values={"pixels": len(counts),
+                                        "subpixels": sum(counts.values())})
+
+
+register(AlgorithmSpec(
+    name="line-subpixels",
+    title="Line supersampling (subpixels crossed)",
+    family="antialias",
+    summary="split pixels into n x n subpixels; intensity by the number the line passes through",
+    inputs=SEGMENT,
+    options=(N,),
+    code=listing(subpixel_listing),
+    generator=subpixel_line,
+    uses_grid=True,
+    notes=("A line crossing a pixel straight passes through n of its subpixels, so k / n is "
+           "full ink there; a diagonal one passes through up to 2n - 1 and is capped at 1.",
+           "The line has no width: the count says how long the line runs in the pixel, "
+           "roughly, not how much of the pixel it covers (line-area measures that).",
+           "Only the part of the line inside the grid is counted."),
+))

@@ -1,0 +1,77 @@
+"""Line supersampling by subpixels crossed, against a brute-force oracle: for
+every subpixel of the grid, does the segment meet its half-open square?"""
+from collections import Counter
+from fractions import Fraction
+
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from tests.support import record
+
+GRID = (12, 8)
+
+
+def meets_half_open(p, q, a, b):
+    """Is there t in [0, 1] with a <= x(t) < a + 1 and b <= y(t) < b + 1?
+    Intervals of t as (low, low included, high, high included)."""
+    low, low_in, high, high_in = Fraction(0), True, Fraction(1), True
+    for axis, start in ((0, a), (1, b)):
+        d = q[axis] - p[axis]
+        if d == 0:
+            if not start <= p[axis] < start + 1:
+                return False
+            continue
+        enter, leave = (start - p[axis]) / d, (start + 1 - p[axis]) / d
+        # Going up, the cell's low side is included and its high side not; going down, the reverse.
+        (lo, lo_in), (hi, hi_in) = ((enter, True), (leave, False)) if d > 0 else \
+            ((leave, False), (enter, True))
+        if lo > low or (lo == low and not lo_in):
+            low, low_in = lo, lo_in
+        if hi < high or (hi == high and not hi_in):
+            high, high_in = hi, hi_in
+    return low < high or (low == high and low_in and high_in)
+
+
+def oracle(points, n, grid):
+    p, q = (tuple(Fraction(2 * c + 1) * n / 2 for c in point) for point in points)
+    counts = Counter()
+    for a in range(grid[0] * n):
+        for b in range(grid[1] * n):
+            if meets_half_open(p, q, a, b):
+                counts[(a // n, b // n)] += 1
+    return counts
+
+
+PIXEL = st.tuples(st.integers(-3, GRID[0] + 2), st.integers(-3, GRID[1] + 2))
+
+
+@settings(max_examples=30, deadline=None)
+@given(PIXEL, PIXEL, st.integers(1, 4))
+def test_counts_are_the_subpixels_the_segment_meets(p, q, n):
+    trace = record("line-subpixels", (p, q), {"n": n}, GRID)
+    pixels = [tuple(x) for x in trace.written_pixels().tolist()]
+    counts = oracle((p, q), n, GRID)
+    assert len(pixels) == len(set(pixels)) and set(pixels) == set(counts)
+    for pixel, k, value in zip(pixels, trace.series("subpixels")[trace.writes()],
+                               trace.pixel_values()):
+        assert k == counts[pixel] and value == min(1.0, k / n)
+
+
+@pytest.mark.parametrize("n", [2, 3, 4])
+def test_a_horizontal_line_is_full_and_a_diagonal_counts_each_corner_once(n):
+    flat = record("line-subpixels", ((1, 3), (9, 3)), {"n": n}, GRID)
+    # Along its inside pixels a straight line crosses exactly n subpixels.
+    inside = [k for (x, _), k in zip(flat.written_pixels().tolist(),
+                                     flat.series("subpixels")[flat.writes()]) if 1 < x < 9]
+    assert inside == [n] * 7
+    diagonal = record("line-subpixels", ((1, 1), (6, 6)), {"n": n}, GRID)
+    counts = diagonal.series("subpixels")[diagonal.writes()]
+    # Through the corners of the subpixels: one subpixel per step along the diagonal.
+    assert set(counts[1:-1].tolist()) == {n}
+
+
+def test_a_line_far_outside_counts_nothing_and_a_long_one_only_the_grid():
+    assert len(record("line-subpixels", ((100, 100), (200, 150)), {}, GRID).written_pixels()) == 0
+    long = record("line-subpixels", ((-10 ** 9, 4), (10 ** 9, 4)), {"n": 2}, GRID)
+    assert len(long.written_pixels()) == GRID[0]

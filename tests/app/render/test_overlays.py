@@ -1,0 +1,116 @@
+"""The geometric overlays of a triangle run's step, against exact geometry
+written here, and the same strokes in an exported frame."""
+from fractions import Fraction
+
+import numpy as np
+import pytest
+
+from app.render import overlays
+from app.render.export import ExportSettings, FrameRenderer
+from app.model import scene as scenes
+from tests.support import record
+
+TRIANGLE = ((4.25, 3.5), (27.5, 8.75), (11.125, 21.25))
+
+
+def twice_area(a, b, c):
+    a, b, c = ([Fraction(v) for v in p] for p in (a, b, c))
+    return (b[0] - a[0]) * (c[1] - a[1]) - (c[0] - a[0]) * (b[1] - a[1])
+
+
+@pytest.fixture(scope="module")
+def trace():
+    return record("triangle-bbox", TRIANGLE, {}, (32, 24))
+
+
+def plotted_steps(trace, count=6):
+    steps = [i for i in range(len(trace)) if trace.step(i).writes]
+    return steps[::max(1, len(steps) // count)]
+
+
+def test_sub_triangle_areas_are_the_runs_weights(trace):
+    whole = twice_area(*TRIANGLE)
+    for i in plotted_steps(trace):
+        step = trace.step(i)
+        strokes = overlays.overlay_strokes(trace, i, ["sub-triangles"])
+        assert len(strokes) == 3
+        p = (step.pixel[0] + 0.5, step.pixel[1] + 0.5)
+        for k, stroke in enumerate(strokes):
+            corners = stroke.points[:3]
+            assert corners[k] == p and stroke.points[3] == corners[0]
+            # Area of the sub-triangle opposite P_k over the whole: e_k / 2A.
+            assert float(twice_area(*corners) / whole) == pytest.approx(
+                step.values[f"e{k}"] / float(whole), abs=1e-12)
+
+
+def test_distances_are_perpendicular_and_as_long_as_e_over_the_edge(trace):
+    for i in plotted_steps(trace):
+        step = trace.step(i)
+        strokes = overlays.overlay_strokes(trace, i, ["distances"])
+        p = np.array([step.pixel[0] + 0.5, step.pixel[1] + 0.5])
+        for k, stroke in enumerate(strokes):
+            a, b = np.array(TRIANGLE[(k + 1) % 3]), np.array(TRIANGLE[(k + 2) % 3])
+            start, foot = np.array(stroke.points[0]), np.array(stroke.points[1])
+            assert np.allclose(start, p)
+            edge = b - a
+            assert abs(edge[0] * (foot - a)[1] - edge[1] * (foot - a)[0]) < 1e-9  # on the line
+            assert abs(np.dot(edge, p - foot)) < 1e-9  # at a right angle
+            assert np.linalg.norm(p - foot) == pytest.approx(
+                abs(step.values[f"e{k}"]) / np.linalg.norm(edge), rel=1e-12)
+
+
+def test_half_plane_hatching_stays_on_the_positive_side_inside_the_grid(trace):
+    strokes = overlays.overlay_strokes(trace, 10, ["half-planes"])
+    assert {s.colour for s in strokes} == set(overlays.EDGE_COLOURS)
+    for stroke in strokes:
+        k = overlays.EDGE_COLOURS.index(stroke.colour)
+        a, b = TRIANGLE[(k + 1) % 3], TRIANGLE[(k + 2) % 3]
+        for x, y in stroke.points:
+            assert -1e-9 <= x <= 32 + 1e-9 and -1e-9 <= y <= 24 + 1e-9
+            e = (b[0] - a[0]) * (y - a[1]) - (b[1] - a[1]) * (x - a[0])
+            assert e >= -1e-6
+    assert len(strokes) > 30  # the lines and their hatching
+
+
+def test_basis_vectors_run_from_p0(trace):
+    strokes = overlays.overlay_strokes(trace, 5, ["basis"])
+    assert strokes[0].points == (TRIANGLE[0], TRIANGLE[1])
+    assert (TRIANGLE[0], TRIANGLE[2]) in [s.points for s in strokes]
+
+
+def test_no_triangle_no_overlay():
+    line = record("line-bresenham", ((0, 0), (5, 3)))
+    assert overlays.overlay_strokes(line, 2, overlays.OVERLAYS) == []
+
+
+def test_overlay_names_are_checked():
+    assert overlays.parse_overlays("all") == overlays.OVERLAYS
+    assert overlays.parse_overlays("basis, distances") == ("basis", "distances")
+    with pytest.raises(ValueError, match="unknown overlay"):
+        overlays.parse_overlays("planes")
+
+
+def test_export_draws_the_strokes_in_their_colours(trace):
+    scene = scenes.Scene(algorithm="triangle-bbox", points=TRIANGLE, width=32, height=24)
+    i = plotted_steps(trace)[2]
+    plain = FrameRenderer(scene, ExportSettings(scale=12, panel="none", caption=False))
+    drawn = FrameRenderer(scene, ExportSettings(scale=12, panel="none", caption=False,
+                                                overlays=("distances",)))
+    before, after = plain.rgb(i), drawn.rgb(i)
+    changed = after[(before != after).any(axis=2)]
+    colours = {tuple(c) for c in changed.tolist()}
+    assert colours and colours <= set(overlays.EDGE_COLOURS)
+    # Where the strokes run: the middle of each perpendicular, image row 0 at the top.
+    height = after.shape[0]
+    for stroke in overlays.overlay_strokes(trace, i, ["distances"]):
+        (x0, y0), (x1, y1) = stroke.points
+        if np.hypot(x1 - x0, y1 - y0) < 0.5:
+            continue
+        col, row = int((x0 + x1) / 2 * 12), height - 1 - int((y0 + y1) / 2 * 12)
+        window = after[max(0, row - 2):row + 3, max(0, col - 2):col + 3].reshape(-1, 3)
+        assert any(tuple(c) == stroke.colour for c in window.tolist())
+
+
+def test_cramer_run_names_its_triangle_for_the_overlays():
+    trace = record("triangle-cramer", TRIANGLE, {}, (32, 24))
+    assert overlays.current_triangle(trace, len(trace) // 2) == TRIANGLE
