@@ -60,16 +60,25 @@ class ExerciseMode(QObject):
 
     def set_active(self, on: bool) -> None:
         self.dock.setVisible(on)
-        # The variables panel plots the decision variable over the whole run,
-        # which would give the answers away: it is put aside meanwhile.
-        variables = self.window.variables_dock
+        # The variables panel plots the decision variable over the whole run
+        # and the steps table lists every step to come: either would give the
+        # answers away, so they are put aside meanwhile (and cannot be opened).
+        docks = self._revealing_docks()
         if on:
-            self._variables_shown = variables.isVisible()
-            variables.hide()
+            self._shown = {dock: dock.isVisible() for dock in docks}
+            for dock in docks:
+                dock.hide()
+                dock.toggleViewAction().setEnabled(False)
             self.restart()
         else:
             self.exercise = None
-            variables.setVisible(self._variables_shown)
+            for dock in docks:
+                dock.toggleViewAction().setEnabled(True)
+                dock.setVisible(getattr(self, "_shown", {}).get(dock, False))
+
+    def _revealing_docks(self) -> list:
+        steps = getattr(self.window, "steps", None)
+        return [self.window.variables_dock] + ([steps.dock] if steps is not None else [])
 
     def restart(self, message: str = "") -> None:
         if not self.action.isChecked():

@@ -141,3 +141,14 @@ def test_a_span_is_marked_with_two_clicks(window):
     mode.panel.entry.setText("0, 1")  # Enter answers, though it closes a contour elsewhere
     QTest.keyClick(mode.panel.entry, Qt.Key.Key_Return)
     assert mode.exercise.score == (1, 2) and wrong.kind == "span"
+
+
+def test_the_steps_table_is_put_aside_while_an_exercise_runs(window):
+    steps = window.steps
+    steps.dock.show()
+    assert steps.dock.isVisible()
+    mode = start(window)
+    # The table lists every step to come: it would give the answers away.
+    assert not steps.dock.isVisible() and not steps.action.isEnabled()
+    mode.action.setChecked(False)
+    assert steps.dock.isVisible() and steps.action.isEnabled()
