@@ -9,7 +9,7 @@ from typing import Callable
 from .code import check_family
 from .errors import InputError
 from .steps import CodeLine
-from .trace import DEFAULT_STEP_CAP, Trace
+from .trace import DEFAULT_STEP_CAP, Trace, watching
 
 FAMILIES = ("lines", "circles", "polygons", "fill", "triangles", "visibility", "antialias")
 # Modules that register specs when imported; add a family's module here.
@@ -305,7 +305,8 @@ class AlgorithmSpec:
         options = self.resolve(options)
         points = self.inputs.check(points)
         self.inputs.check_range(points)
-        frames = self._start(points, options, grid)
+        with watching(monitor):  # the work before the first frame hears a cancel too
+            frames = self._start(points, options, grid)
         return Trace.record(frames, self.code(points, options), grid[0], grid[1], step_cap,
                             monitor)
 
