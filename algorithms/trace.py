@@ -46,6 +46,7 @@ MIN_KEYFRAME_GAP = 1024
 # While frames come slowly, the bulk chunk shrinks so that a cancel is heard
 # within about this many seconds, however long each frame takes.
 PACE = 0.02
+FIRST_CHUNK = 64
 
 
 class TraceError(ValueError):
@@ -183,7 +184,9 @@ class Trace:
         trace._monitor = monitor
         trace._next_report = monitor.every if monitor is not None else math.inf
         # Bulk chunks no longer than the report interval, so reports keep time.
-        trace._chunk = trace._max_chunk = CHUNK if monitor is None else min(CHUNK, monitor.every)
+        trace._max_chunk = CHUNK if monitor is None else min(CHUNK, monitor.every)
+        # Watched, the first chunk is small and grows while frames come fast.
+        trace._chunk = trace._max_chunk if monitor is None else min(FIRST_CHUNK, trace._max_chunk)
         with watching(monitor):
             trace._record(iter(frames))
         trace._monitor = None
@@ -246,11 +249,12 @@ class Trace:
 
     def _pace(self, took: float) -> None:
         """Fit the bulk chunk to the frames' speed: a chunk that took longer
-        than PACE is followed by a smaller one and a report (which hears a
-        cancel); fast chunks grow back to the report interval."""
+        than PACE is followed by a smaller one, and a cancel is heard after
+        it; fast chunks grow back to the report interval."""
         if took > PACE:
             self._chunk = max(1, int(self._chunk * PACE / took))
-            self._report()
+            if self._monitor.cancelled:
+                self._report()  # raises Cancelled; progress keeps its interval
         elif took < PACE / 4 and self._chunk < self._max_chunk:
             self._chunk = min(self._max_chunk, 2 * self._chunk)
 

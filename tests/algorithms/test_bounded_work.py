@@ -1,10 +1,12 @@
 """The step cap and a cancel bound the work a run does, not only the steps it keeps."""
-import pytest
-
 import importlib
 
+import numpy as np
+import pytest
+
 from algorithms.registry import get
-from algorithms.trace import Cancelled, RecordMonitor
+from algorithms.steps import PLOT, CodeLine, Start
+from algorithms.trace import Cancelled, RecordMonitor, Trace
 
 temporal_module = importlib.import_module("algorithms.antialias.temporal")
 WHEEL = [(10.0, 10.0)]
@@ -92,3 +94,103 @@ def test_a_many_vertex_polygon_is_checked_for_simplicity_quickly():
     # about 19 s when every pair of edges was tested one by one (100,000
     # vertices: hours), about 1.5 s now; a generous bound
     assert time.perf_counter() - started < 10
+
+
+fill_module = importlib.import_module("algorithms.fill")
+
+
+def _zigzag(vertices: int) -> list:
+    """A polygon whose edges each run the height of a 4096 grid."""
+    return [(4000 * k // vertices, 4000 * (k % 2)) for k in range(vertices)] + [(4000, 4050),
+                                                                               (0, 4050)]
+
+
+def _count_outline_pixels(monkeypatch) -> list:
+    made = [0]
+    real = fill_module._segment_walk
+
+    def counted(p, q, four):
+        for pixel in real(p, q, four):
+            made[0] += 1
+            yield pixel
+    monkeypatch.setattr(fill_module, "_segment_walk", counted)
+    return made
+
+
+def test_a_flood_fill_outline_is_drawn_only_as_far_as_the_step_cap(monkeypatch):
+    made = _count_outline_pixels(monkeypatch)
+    trace = get("flood-fill").record([_zigzag(400)], {"seed": (1, 4049)}, grid=(4096, 4096),
+                                     step_cap=1000)
+    assert trace.truncated
+    # about 1.6 million outline pixels; before, all were drawn before the first step
+    assert made[0] <= 1000 + 64
+
+
+def test_a_flood_fill_outline_is_the_same_drawn_lazily():
+    # the frames' outline pixels are outline_pixels (made at once, deduplicated)
+    contours = [[(2, 2), (30, 5), (12, 20), (2, 2), (30, 5)], [(8, 8), (14, 9), (9, 14)]]
+    for outline in ("4", "8"):
+        trace = get("flood-fill").record(contours, {"seed": (0, 0), "outline": outline},
+                                         grid=(24, 16))
+        at = [k for k, line in enumerate(trace.code) if line.text.startswith("draw")][0]
+        steps = np.flatnonzero(trace.line == at)[1:]  # step 0 is the Start record
+        drawn = list(zip(trace.x[steps].tolist(), trace.y[steps].tolist()))
+        assert drawn == fill_module.outline_pixels(contours, outline == "4")
+
+
+@pytest.mark.parametrize("four", [False, True])
+def test_outline_row_is_the_row_of_the_drawn_outline(four):
+    rng = np.random.default_rng(11)
+    for _ in range(300):
+        contours = [[tuple(int(v) for v in rng.integers(-12, 13, 2))
+                     for _ in range(int(rng.integers(1, 6)))] for _ in range(2)]
+        pixels = fill_module.outline_pixels(contours, four)
+        for y in range(-14, 15):
+            assert fill_module.outline_row(contours, y, four) == {x for x, r in pixels if r == y}
+
+
+def test_the_seed_search_hears_a_cancel_between_rows(monkeypatch):
+    rows = []
+    real = fill_module.outline_row
+    monkeypatch.setattr(fill_module, "outline_row",
+                        lambda *args: rows.append(args[1]) or real(*args))
+    monitor = RecordMonitor()
+    monitor.cancel()
+    # no pixel inside this outline is free: the search would try all 4,050 rows
+    with pytest.raises(Cancelled):
+        get("flood-fill").record([_zigzag(4000)[:-2]], {}, grid=(4096, 4096), monitor=monitor)
+    assert len(rows) <= 1
+
+
+def test_slow_frames_are_recorded_in_small_chunks_so_a_cancel_is_heard_soon():
+    import time
+    monitor = RecordMonitor(every=4096)
+    pulled = [0]
+
+    def frames():
+        yield Start(line=0, values=())
+        for k in range(4096):
+            pulled[0] += 1
+            if k == 200:
+                monitor.cancel()
+            time.sleep(0.001)  # a slow frame
+            yield (0, 0, 0)
+    with pytest.raises(Cancelled):
+        Trace.record(frames(), [CodeLine("a", PLOT)], 4, 4, monitor=monitor)
+    # before, the whole chunk of 4,096 frames was made before the cancel was heard
+    assert pulled[0] < 300
+
+
+def test_a_polygon_of_many_edges_tests_samples_through_crossing_tables():
+    from algorithms.antialias.shapes import TABLE_EDGES, Shape
+    rng = np.random.default_rng(5)
+    for _ in range(40):
+        count = int(rng.integers(TABLE_EDGES + 1, 90))
+        contour = [tuple(int(v) for v in rng.integers(-600, 3000, 2)) for _ in range(count)]
+        for rule in ("evenodd", "nonzero"):
+            shape = Shape([contour], rule, (0, 0, 0), False)
+            sx = rng.integers(-700, 3100, 200)
+            sy = np.concatenate([rng.integers(-700, 3100, 100),
+                                 rng.choice([p[1] for p in contour], 100)])
+            expected = shape.hits(sx, sy)  # numpy, one edge at a time
+            assert [shape.hit(int(a), int(b)) for a, b in zip(sx, sy)] == expected.tolist()
