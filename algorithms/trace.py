@@ -231,7 +231,9 @@ class Trace:
             first = self._count
             began = time.perf_counter()
             try:
-                rows = np.fromiter(islice(group, self._chunk), self._dtype)
+                # never past the next report: progress keeps its interval
+                size = min(self._chunk, max(1, self._next_report - self._count))
+                rows = np.fromiter(islice(group, size), self._dtype)
             except InputError:
                 raise  # the generator refused its input: not a protocol fault
             except (ValueError, TypeError, OverflowError) as error:
@@ -249,14 +251,14 @@ class Trace:
 
     def _pace(self, took: float) -> None:
         """Fit the bulk chunk to the frames' speed: a chunk that took longer
-        than PACE is followed by a smaller one, and a cancel is heard after
-        it; fast chunks grow back to the report interval."""
+        than PACE is followed by a smaller one, fast chunks grow back to the
+        report interval, and a cancel is heard after every chunk."""
         if took > PACE:
             self._chunk = max(1, int(self._chunk * PACE / took))
-            if self._monitor.cancelled:
-                self._report()  # raises Cancelled; progress keeps its interval
         elif took < PACE / 4 and self._chunk < self._max_chunk:
             self._chunk = min(self._max_chunk, 2 * self._chunk)
+        if self._monitor.cancelled:
+            self._report()  # raises Cancelled; progress keeps its interval
 
     def _record_rich(self, record) -> None:
         index = self._count
