@@ -160,7 +160,7 @@ def check_budget(spec, points, options, grid, step_cap: int,
     memory = estimate_memory(spec, points, options, grid, step_cap)
     if memory > memory_limit:
         raise BudgetError(f"{spec.name} on a {grid[0]}x{grid[1]} grid would need about "
-                          f"{_size(memory)} of memory, over the limit of {_size(memory_limit)}; "
+                          f"{size_text(memory)} of memory, over the limit of {size_text(memory_limit)}; "
                           "use a smaller grid, fewer points or samples, or a lower step cap")
     seconds = estimate_seconds(spec, points, options, grid, step_cap)
     if seconds > time_limit:
@@ -169,7 +169,7 @@ def check_budget(spec, points, options, grid, step_cap: int,
                           "use fewer points or samples, a smaller grid or a lower step cap")
 
 
-def _size(count: float) -> str:
+def size_text(count: float) -> str:
     for unit, scale in (("GB", 1024 ** 3), ("MB", 1024 ** 2), ("KB", 1024)):
         if count >= scale:
             return f"{count / scale:.1f} {unit}"
