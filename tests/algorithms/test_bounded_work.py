@@ -194,3 +194,20 @@ def test_a_polygon_of_many_edges_tests_samples_through_crossing_tables():
                                  rng.choice([p[1] for p in contour], 100)])
             expected = shape.hits(sx, sy)  # numpy, one edge at a time
             assert [shape.hit(int(a), int(b)) for a, b in zip(sx, sy)] == expected.tolist()
+
+
+def test_the_mask_of_many_boxes_is_the_union_of_the_boxes():
+    from algorithms.antialias.shapes import UNIT, Shapes
+    rng = np.random.default_rng(9)
+    for _ in range(30):
+        count = int(rng.integers(1, 80))
+        points = [tuple(float(v) for v in rng.uniform(-5, 40, 2)) for _ in range(3 * count)]
+        shapes = Shapes(points, {"shape": "triangles"})
+        window = shapes.window((int(rng.integers(1, 40)), int(rng.integers(1, 30))))
+        x0, y0, x1, y1 = window
+        expected = np.zeros((y1 - y0, x1 - x0), bool)
+        for shape in shapes.items:  # each box painted in turn
+            box = shape.box
+            expected[max(box[1] // UNIT, y0) - y0:max(min(box[3] // UNIT + 1, y1) - y0, 0),
+                     max(box[0] // UNIT, x0) - x0:max(min(box[2] // UNIT + 1, x1) - x0, 0)] = True
+        assert np.array_equal(shapes.mask(window), expected)
