@@ -211,3 +211,22 @@ def test_the_mask_of_many_boxes_is_the_union_of_the_boxes():
             expected[max(box[1] // UNIT, y0) - y0:max(min(box[3] // UNIT + 1, y1) - y0, 0),
                      max(box[0] // UNIT, x0) - x0:max(min(box[2] // UNIT + 1, x1) - x0, 0)] = True
         assert np.array_equal(shapes.mask(window), expected)
+
+
+@pytest.mark.parametrize("grid", [(1, 1), (2, 5), (7, 3), (24, 18)])
+@pytest.mark.parametrize("kernel", ["box3", "seed", "gaussian"])
+def test_the_post_filter_made_row_by_row_writes_what_the_whole_image_filter_does(grid, kernel):
+    # the frames look at the aliased image a row at a time (small grids: a
+    # kernel wider than the grid)
+    from algorithms.antialias.filters import filter_image
+    points = [(0.3, 0.2), (20.5, 3.7), (6.1, 16.9), (3.0, 1.0), (5.5, 1.5), (2.0, 4.0)]
+    options = {"kernel": kernel}
+    expected = filter_image(points, options, grid)  # the whole image at once, in numpy
+    trace = get("aa-filter").record(points, options, grid=grid)
+    last = {}
+    for (x, y), value in zip(trace.written_pixels().tolist(), trace.pixel_values()):
+        last[(x, y)] = value
+    got = np.zeros_like(expected)
+    for (x, y), value in last.items():
+        got[y, x] = value
+    assert np.array_equal(got, expected)
