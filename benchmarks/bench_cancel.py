@@ -4,9 +4,10 @@ For every algorithm on a 4096 x 4096 grid (its example shape made large),
 and for the heavy cases of the issue (100,000-vertex polygons for the seed
 fill, the tessellation and polygon supersampling, 33,333 triangles, the
 temporal wheel), a recording runs in a background job as the window runs
-it, is cancelled after each delay, (at the default step cap, or a lower one the memory budget takes), and the time from the cancel to the
-job's end is printed (a run the budget refuses is named, not run). A run
-that ends before its delay prints "ended first".
+it (at the default step cap, or a lower one the memory budget takes), is
+cancelled after each delay, and the time from the cancel to the job's end
+is printed (a run the budget refuses is named, not run). A run that ends
+before its delay prints "ended first".
 
     python benchmarks/bench_cancel.py [--delays 0.25,1.5] [--only NAME]
 """

@@ -160,7 +160,8 @@ def check_budget(spec, points, options, grid, step_cap: int,
     memory = estimate_memory(spec, points, options, grid, step_cap)
     if memory > memory_limit:
         raise BudgetError(f"{spec.name} on a {grid[0]}x{grid[1]} grid would need about "
-                          f"{size_text(memory)} of memory, over the limit of {size_text(memory_limit)}; "
+                          f"{size_text(memory)} of memory, over the limit of "
+                          f"{size_text(memory_limit)}; "
                           "use a smaller grid, fewer points or samples, or a lower step cap")
     seconds = estimate_seconds(spec, points, options, grid, step_cap)
     if seconds > time_limit:
