@@ -193,7 +193,8 @@ class Session:
     def _switch(self, scene: Scene, previous, carried: dict, monitor) -> _Outcome:
         """Record an algorithm switch (in the worker); an algorithm that
         refuses the points shows its own example shape and says why. When
-        not even that fits the grid, the points are kept without a run."""
+        not even that fits the grid (a fill's on a grid one row high), the
+        points are kept without a run."""
         spec, reason = scene.spec, ""
         if scene.complete:
             try:
@@ -211,7 +212,6 @@ class Session:
                                     refusal=reason and _example_note(spec, reason))
             except InputError as error:
                 reason = reason or str(error)
-        # A fill's example on a grid one row high, say: the switch still happens.
         return _Outcome(scene, previous, None, None, refusal=_kept_note(spec, scene.grid, reason))
 
     def set_option(self, name: str, value) -> None:
