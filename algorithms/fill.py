@@ -28,6 +28,7 @@ from .circles import CENTRE, RADIUS, midpoint_circle_pixels
 from .code import Code, listing
 from .registry import AlgorithmSpec, InputError, Inputs, Option, register
 from .steps import PER_PIXEL, PLOT, VISIT, Note, Span, Start, Vars
+from .trace import checkpoint
 
 NAN = math.nan
 
@@ -87,17 +88,88 @@ def segment_pixels(p, q) -> list[tuple[int, int]]:
 
 def outline_pixels(contours, four: bool = False) -> list[tuple[int, int]]:
     """Every outline pixel once, in drawing order; each contour is closed."""
-    pixels = {}
+    return list(dict.fromkeys(outline_walk(contours, four)))
+
+
+def outline_walk(contours, four: bool = False):
+    """The outline's pixels in drawing order, made as they are asked for.
+
+    A pixel drawn by two segments comes twice; a segment drawn before (the
+    same ends in the same order) is skipped, as it adds no pixel.
+    """
+    drawn = set()
     for contour in contours:
         for k, p in enumerate(contour):
-            path = segment_pixels(p, contour[(k + 1) % len(contour)])
-            for a, b in zip(path, path[1:] + path[-1:]):
-                pixels[a] = True
-                if four and a[0] != b[0] and a[1] != b[1]:
-                    # Step across first, then along: the corner closes the
-                    # diagonal that an 8-connected fill would slip through.
-                    pixels[(b[0], a[1])] = True
-    return list(pixels)
+            q = contour[(k + 1) % len(contour)]
+            if (p, q) not in drawn:
+                drawn.add((p, q))
+                yield from _segment_walk(p, q, four)
+
+
+def _segment_walk(p, q, four: bool):
+    """``segment_pixels(p, q)`` one at a time, with the corner pixel of each
+    diagonal step when ``four``: a segment may be millions of pixels long,
+    mostly off the grid, and the step cap stops it part way."""
+    (x0, y0), (x1, y1) = p, q
+    dx, dy = x1 - x0, y1 - y0
+    n = max(abs(dx), abs(dy))
+    a = (x0, y0)
+    for i in range(1, n + 1):
+        b = (x0 + (2 * i * dx + n) // (2 * n), y0 + (2 * i * dy + n) // (2 * n))
+        yield a
+        if four and a[0] != b[0] and a[1] != b[1]:
+            # Step across first, then along: the corner closes the
+            # diagonal that an 8-connected fill would slip through.
+            yield b[0], a[1]
+        if not i & 4095:
+            checkpoint()
+        a = b
+    yield a
+
+
+def outline_row(contours, y: int, four: bool = False) -> set[int]:
+    """The x of every outline pixel on row y, worked out per segment without
+    drawing the outline (the same pixels as ``outline_pixels``)."""
+    found = set()
+    for contour in contours:
+        for k, p in enumerate(contour):
+            q = contour[(k + 1) % len(contour)]
+            if min(p[1], q[1]) - 1 <= y <= max(p[1], q[1]) + 1:
+                found.update(_segment_row(p, q, y, four))
+    return found
+
+
+def _segment_row(p, q, y: int, four: bool) -> list[int]:
+    (x0, y0), (x1, y1) = p, q
+    dx, dy = x1 - x0, y1 - y0
+    n = max(abs(dx), abs(dy))
+    if n == 0:
+        return [x0] if y == y0 else []
+    if abs(dy) > abs(dx):
+        # one pixel per row: i = |y - y0|; x rounds i dx / n (halves up)
+        i = (y - y0) * (1 if dy > 0 else -1)
+        if not 0 <= i <= n:
+            return []
+        xs = [x0 + (2 * i * dx + n) // (2 * n)]
+        if four and i < n and x0 + (2 * (i + 1) * dx + n) // (2 * n) != xs[0]:
+            xs.append(x0 + (2 * (i + 1) * dx + n) // (2 * n))  # the corner after it
+        return xs
+    # A run of pixels per row: the i with floor((2 i dy + n) / 2n) = y - y0,
+    # that is 2 n k - n <= 2 i dy <= 2 n k + n - 1 for k = y - y0.
+    k, step = y - y0, (1 if dx > 0 else -1)
+    if dy == 0:
+        lo, hi = (0, n) if k == 0 else (1, 0)
+    elif dy > 0:
+        lo, hi = -((n - 2 * n * k) // (2 * dy)), (2 * n * k + n - 1) // (2 * dy)
+    else:
+        lo, hi = -((2 * n * k + n - 1) // (-2 * dy)), (n - 2 * n * k) // (-2 * dy)
+    lo, hi = max(lo, 0), min(hi, n)
+    if lo > hi:
+        return []
+    xs = [x0 + step * i for i in range(lo, hi + 1)]
+    if four and hi < n:
+        xs.append(x0 + step * (hi + 1))  # the corner where the run steps to the next row
+    return xs
 
 
 def circle_outline(centre, radius: int, four: bool = False) -> list[tuple[int, int]]:
@@ -117,21 +189,26 @@ def circle_outline(centre, radius: int, four: bool = False) -> list[tuple[int, i
     return list(pixels)
 
 
-def inside_pixel(contours, free) -> tuple[int, int] | None:
+def inside_pixel(contours, free, grid) -> tuple[int, int] | None:
     """A free pixel whose centre is inside the outlines (even-odd), or None.
 
     Inside counts crossings of all contours, so a hole is outside. Rows are
     tried from the first contour's mean row outwards, and in a row the pixel
     nearest its mean column wins; ``free(x, y)`` says whether a pixel may be
-    filled.
+    filled, and is never true off the ``grid`` (width, height), so only the
+    grid's rows and columns are tried.
     """
+    width, height = grid
     xs, ys = [p[0] for p in contours[0]], [p[1] for p in contours[0]]
     middle_x, middle_y = sum(xs) / len(xs), round(sum(ys) / len(ys))
-    for y in sorted(range(min(ys), max(ys) + 1), key=lambda y: (abs(y - middle_y), y)):
+    rows = range(max(min(ys), 0), min(max(ys) + 1, height))
+    for y in sorted(rows, key=lambda y: (abs(y - middle_y), y)):
+        checkpoint()
         crossings = sorted(c for contour in contours for c in _crossings(contour, y))
         # Pixel centres strictly between two crossings are inside.
         inside = [x for lo, hi in zip(crossings[::2], crossings[1::2])
-                  for x in range(math.floor(lo) + 1, math.ceil(hi)) if free(x, y)]
+                  for x in range(max(math.floor(lo) + 1, 0), min(math.ceil(hi), width))
+                  if free(x, y)]
         if inside:
             return min(inside, key=lambda x: (abs(x - middle_x), x)), y
     return None
@@ -197,8 +274,9 @@ def _colors(options) -> tuple[str, str]:
     return colors[0], colors[1]
 
 
-def _seed(name, options, auto, region) -> tuple[int, int]:
-    """The seed pixel; ``auto()`` finds one inside the outline or None."""
+def _seed(name, options, auto, region, on_outline) -> tuple[int, int]:
+    """The seed pixel; ``auto()`` finds one inside the outline or None;
+    ``on_outline(x, y)`` says whether a grid pixel is an outline pixel."""
     seed = options["seed"]
     if seed == "auto":
         found = auto()
@@ -210,15 +288,15 @@ def _seed(name, options, auto, region) -> tuple[int, int]:
     if not region.inside(x, y):
         raise InputError(f"{name}: the seed ({x}, {y}) lies outside the "
                          f"{region.width}x{region.height} grid")
-    if region.cells[region.index(x, y)] == BOUNDARY and options["mode"] == "boundary":
+    if options["mode"] == "boundary" and on_outline(x, y):
         raise InputError(f"{name}: the seed ({x}, {y}) lies on the boundary; pick a pixel "
                          "inside the outline, or set mode=region to recolour the outline")
     return x, y
 
 
-def _circle_seed(centre, region):
+def _circle_seed(centre, region, on_outline):
     """The centre pixel, when the circle leaves it free."""
-    return tuple(centre) if region.free(*centre) else None
+    return tuple(centre) if region.inside(*centre) and not on_outline(*centre) else None
 
 
 def _neighbour_names(options) -> str:
@@ -298,26 +376,71 @@ def flood_fill(points, options, grid):
     """Check the inputs, then return the frame generator.
 
     The checks run here, before the first frame, so a bad seed is an
-    InputError at once.
+    InputError at once. They look at the outline a row at a time, without
+    drawing it: the frames draw it a pixel at a time, so the step cap and a
+    cancel stop an outline of any length part way.
     """
-    outline = outline_pixels(points, four=options["outline"] == "4")
-    region = Region(*grid, outline)
-    seed = _seed("flood-fill", options, lambda: inside_pixel(points, region.free), region)
-    return _fill(outline, region, seed, options, {}, fill_listing(points, options).at)
+    four = options["outline"] == "4"
+    region = Region(*grid, ())
+    rows = {}
+
+    def on_outline(x, y):
+        if y not in rows:
+            rows.clear()  # one row at a time: the search goes row by row
+            rows[y] = outline_row(points, y, four)
+        return x in rows[y]
+
+    def free(x, y):
+        return region.inside(x, y) and not on_outline(x, y)
+    seed = _seed("flood-fill", options, lambda: inside_pixel(points, free, grid), region,
+                 on_outline)
+    target = BOUNDARY if on_outline(*seed) else FREE
+    outline = _Drawn(outline_walk(points, four), region)
+    return _fill(outline, region, seed, target, options, {}, fill_listing(points, options).at)
 
 
 def circle_fill(points, options, grid):
     """Seed fill inside a midpoint circle around the one point given."""
     (centre,) = points
     radius = options["radius"]
-    outline = circle_outline(centre, radius, four=options["outline"] == "4")
-    region = Region(*grid, outline)
+    # At most about 23,000 pixels (radius 4096): made at once.
+    pixels = circle_outline(centre, radius, four=options["outline"] == "4")
+    region = Region(*grid, ())
+    ring = set(pixels)
+    outline = _Drawn(pixels, region)
     shape = {"C": tuple(centre), "R": radius}
     at = circle_fill_listing(points, options).at
-    if options["seed"] == "auto" and not region.free(*centre):
+    if options["seed"] == "auto" and not (region.inside(*centre) and tuple(centre) not in ring):
         return _outline_only(outline, options, shape, at)
-    seed = _seed("flood-fill-circle", options, lambda: _circle_seed(centre, region), region)
-    return _fill(outline, region, seed, options, shape, at)
+    seed = _seed("flood-fill-circle", options,
+                 lambda: _circle_seed(centre, region, lambda x, y: (x, y) in ring), region,
+                 lambda x, y: (x, y) in ring)
+    target = BOUNDARY if seed in ring else FREE
+    return _fill(outline, region, seed, target, options, shape, at)
+
+
+class _Drawn:
+    """The outline as the frames draw it: each pixel once, the first time it
+    comes, marked on the region then; ``count`` is how many were drawn."""
+
+    def __init__(self, pixels, region: Region):
+        self.pixels, self.region = pixels, region
+        self.count = 0
+
+    def __iter__(self):
+        region, cells, off_grid = self.region, self.region.cells, set()
+        for x, y in self.pixels:
+            if region.inside(x, y):
+                index = region.index(x, y)
+                if cells[index] == BOUNDARY:
+                    continue
+                cells[index] = BOUNDARY
+            elif (x, y) in off_grid:
+                continue
+            else:
+                off_grid.add((x, y))
+            self.count += 1
+            yield x, y
 
 
 def _outline_only(outline, options, shape, at):
@@ -332,14 +455,13 @@ def _outline_only(outline, options, shape, at):
     yield Note(line=at["plot_outline"],
                text="The circle has no free pixel inside it to start from, so nothing is "
                     "filled; give a seed outside it to fill the rest of the grid.")
-    yield Vars(line=at["done"], values={"filled": 0, "boundary": len(outline), "pops": 0})
+    yield Vars(line=at["done"], values={"filled": 0, "boundary": outline.count, "pops": 0})
 
 
-def _fill(outline, region, seed, options, shape: dict, at):
+def _fill(outline, region, seed, target, options, shape: dict, at):
+    """The frames; ``target`` is the state the fill spreads over: free
+    pixels, or the outline's when a region fill starts on it."""
     boundary_color, fill_color = _colors(options)
-    # The fill spreads over the pixels in the seed's state: free ones, or
-    # the outline's when a region fill starts on it.
-    target = region.cells[region.index(*seed)]
     constants = {**shape, "seed": seed, "connectivity": int(options["connectivity"]),
                  "order": options["order"], "mode": options["mode"],
                  "spreads over": "the outline" if target == BOUNDARY else "free pixels",
@@ -407,7 +529,7 @@ def _pixel_frames(constants, outline, region, seed, options, target, rgb, at):
         if size > largest:
             largest = size
         yield (fill, x, y, fill_rgb, size)
-    yield Vars(line=at["done"], values={"filled": filled, "boundary": len(outline),
+    yield Vars(line=at["done"], values={"filled": filled, "boundary": outline.count,
                                         "pops": filled + skipped, "skipped": skipped,
                                         "largest": largest, "next": "(empty)"})
 
@@ -462,7 +584,7 @@ def _span_frames(constants, outline, region, seed, options, target, rgb, at):
             pending.extend(reversed(seeds))
             largest = max(largest, len(pending))
             yield Span(line=push, y=row, x_start=lo, x_end=hi + 1)
-    yield Vars(line=at["done"], values={"filled": filled, "boundary": len(outline), "pops": pops,
+    yield Vars(line=at["done"], values={"filled": filled, "boundary": outline.count, "pops": pops,
                                         "runs": runs, "skipped": skipped, "largest": largest,
                                         "size": 0, "next": "(empty)"})
 

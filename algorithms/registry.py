@@ -9,7 +9,7 @@ from typing import Callable
 from .code import check_family
 from .errors import InputError
 from .steps import CodeLine
-from .trace import DEFAULT_STEP_CAP, Trace
+from .trace import DEFAULT_STEP_CAP, Trace, checkpoint, watching
 
 FAMILIES = ("lines", "circles", "polygons", "fill", "triangles", "visibility", "antialias",
             "textures", "pipeline")
@@ -231,8 +231,12 @@ class Inputs:
             raise InputError(f"{label}expected {self.count} points, got {len(points)}")
         if not exact and len(points) < self.count:
             raise InputError(f"{label}expected at least {self.count} points, got {len(points)}")
-        return tuple(self._check_point(point, f"{label}point {n + 1}")
-                     for n, point in enumerate(points))
+        checked = []
+        for n, point in enumerate(points):
+            if not n & 4095:
+                checkpoint()  # 100,000 points take about a second
+            checked.append(self._check_point(point, f"{label}point {n + 1}"))
+        return tuple(checked)
 
     def _check_point(self, point, label: str) -> tuple:
         if len(point) != 2:
@@ -318,12 +322,13 @@ class AlgorithmSpec:
     def record(self, points, options: dict | None = None, grid=(32, 24),
                step_cap: int = DEFAULT_STEP_CAP, monitor=None) -> Trace:
         """Record a run; ``monitor`` (trace.RecordMonitor) hears progress and may cancel."""
-        options = self.resolve(options)
-        points = self.inputs.check(points)
-        self.inputs.check_range(points)
-        frames = self._start(points, options, grid)
-        return Trace.record(frames, self.code(points, options), grid[0], grid[1], step_cap,
-                            monitor)
+        with watching(monitor):  # the work before the first frame hears a cancel too
+            options = self.resolve(options)
+            points = self.inputs.check(points)
+            self.inputs.check_range(points)
+            frames = self._start(points, options, grid)
+            code = self.code(points, options)
+        return Trace.record(frames, code, grid[0], grid[1], step_cap, monitor)
 
     def _start(self, points, options, grid):
         if self.uses_grid:

@@ -23,6 +23,8 @@ from __future__ import annotations
 
 import math
 import threading
+import time
+from contextlib import contextmanager
 from dataclasses import dataclass
 from itertools import groupby, islice
 from typing import Iterable, NamedTuple, Sequence
@@ -41,6 +43,10 @@ CHUNK = 1 << 16
 KEYFRAME_BUDGET = 64 * 2 ** 20  # bytes all keyframes of one trace may take
 KEYFRAME_BYTES_PER_STEP = 16  # and no more than this per recorded step
 MIN_KEYFRAME_GAP = 1024
+# While frames come slowly, the bulk chunk shrinks so that a cancel is heard
+# within about this many seconds, however long each frame takes.
+PACE = 0.02
+FIRST_CHUNK = 64
 
 
 class TraceError(ValueError):
@@ -77,6 +83,30 @@ class RecordMonitor:
             raise Cancelled(f"recording cancelled after {steps:,} steps")
         if self.progress is not None:
             self.progress(steps)
+
+
+_watched = threading.local()
+
+
+@contextmanager
+def watching(monitor: RecordMonitor | None):
+    """While a run's own code works for ``monitor`` (made, then recorded),
+    ``checkpoint()`` answers to it."""
+    before = getattr(_watched, "monitor", None)
+    _watched.monitor = monitor
+    try:
+        yield
+    finally:
+        _watched.monitor = before
+
+
+def checkpoint() -> None:
+    """Long work of a run between two frames (before its first, say) calls
+    this now and then: it raises Cancelled once the recording it serves is
+    cancelled, so a cancel need not wait for the next frame."""
+    monitor = getattr(_watched, "monitor", None)
+    if monitor is not None and monitor.cancelled:
+        raise Cancelled("recording cancelled between two steps")
 
 
 @dataclass
@@ -139,7 +169,7 @@ class Trace:
         self._flat: np.ndarray | None = None
         self._monitor: RecordMonitor | None = None
         self._next_report = math.inf
-        self._chunk = CHUNK
+        self._chunk = self._max_chunk = CHUNK
         kinds = np.array([line.kind == PLOT for line in self.code], dtype=bool)
         self._line_plots = kinds
 
@@ -154,8 +184,11 @@ class Trace:
         trace._monitor = monitor
         trace._next_report = monitor.every if monitor is not None else math.inf
         # Bulk chunks no longer than the report interval, so reports keep time.
-        trace._chunk = CHUNK if monitor is None else min(CHUNK, monitor.every)
-        trace._record(iter(frames))
+        trace._max_chunk = CHUNK if monitor is None else min(CHUNK, monitor.every)
+        # Watched, the first chunk is small and grows while frames come fast.
+        trace._chunk = trace._max_chunk if monitor is None else min(FIRST_CHUNK, trace._max_chunk)
+        with watching(monitor):
+            trace._record(iter(frames))
         trace._monitor = None
         return trace
 
@@ -183,6 +216,8 @@ class Trace:
             else:
                 for record in group:
                     self._record_rich(record)
+                    if self._monitor is not None and self._monitor.cancelled:
+                        self._report()
             if self._count >= self._next_report:
                 self._report()
         if self._count >= self.step_cap and next(frames, None) is not None:
@@ -194,8 +229,11 @@ class Trace:
     def _record_lean(self, group) -> None:
         while True:
             first = self._count
+            began = time.perf_counter()
             try:
-                rows = np.fromiter(islice(group, self._chunk), self._dtype)
+                # never past the next report: progress keeps its interval
+                size = min(self._chunk, max(1, self._next_report - self._count))
+                rows = np.fromiter(islice(group, size), self._dtype)
             except InputError:
                 raise  # the generator refused its input: not a protocol fault
             except (ValueError, TypeError, OverflowError) as error:
@@ -206,8 +244,21 @@ class Trace:
             self._check_rows(rows, first)
             self._chunks.append(rows)
             self._count += len(rows)
+            if self._monitor is not None:
+                self._pace(time.perf_counter() - began)
             if self._count >= self._next_report:
                 self._report()
+
+    def _pace(self, took: float) -> None:
+        """Fit the bulk chunk to the frames' speed: a chunk that took longer
+        than PACE is followed by a smaller one, fast chunks grow back to the
+        report interval, and a cancel is heard after every chunk."""
+        if took > PACE:
+            self._chunk = max(1, int(self._chunk * PACE / took))
+        elif took < PACE / 4 and self._chunk < self._max_chunk:
+            self._chunk = min(self._max_chunk, 2 * self._chunk)
+        if self._monitor.cancelled:
+            self._report()  # raises Cancelled; progress keeps its interval
 
     def _record_rich(self, record) -> None:
         index = self._count

@@ -539,11 +539,15 @@ def add_report_command(commands) -> None:
                              "report takes one to two minutes")
     report.add_argument("--out", default="rasterlab-report", metavar="DIR",
                         help="the folder to write into, made if needed (default %(default)s)")
+    report.add_argument("--memory-limit", metavar="SIZE",
+                        help="memory the report may need, e.g. 512M (default 2G); a report "
+                             "estimated to need more is refused before it starts")
 
 
 def command_report(args) -> int:
-    from app.analysis import report
+    from app.analysis import measure, report, report_budget
 
+    report_budget.check_report(measure.settings(args.quick), _memory_limit(args))
     bar = report.ProgressBar(sys.stderr)
     result = _with_progress(bar, lambda: report.write_report(args.out, quick=args.quick,
                                                              progress=bar),

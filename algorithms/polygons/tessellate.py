@@ -119,11 +119,12 @@ def covers(functions, x: int, y: int, ties: str) -> bool:
 
 
 def triangle_runs(triangle, ties: str = "left-bottom"):
-    """(row, first, end) runs of the covered pixels of a counter-clockwise triangle."""
+    """(row, first, end) runs of the covered pixels of a counter-clockwise
+    triangle, a row at a time as they are asked for: each row is a frame, so
+    a triangle as large as the grid does not hold up the first of them."""
     functions = edge_functions(triangle)
     xs = [v[0] for v in triangle]
     ys = [v[1] for v in triangle]
-    found = []
     for row in range(first_index(min(ys)) - 1, first_index(max(ys)) + 1):
         centre_y = ONE * row + HALF_PIXEL
         covered = [i for i in range(first_index(min(xs)) - 1, first_index(max(xs)) + 1)
@@ -131,8 +132,7 @@ def triangle_runs(triangle, ties: str = "left-bottom"):
         if covered:
             # A triangle is convex, so one row's pixels are one run.
             assert covered[-1] - covered[0] + 1 == len(covered)
-            found.append((row, covered[0], covered[-1] + 1))
-    return found
+            yield row, covered[0], covered[-1] + 1
 
 
 def tessellate_listing(points, options) -> Code:

@@ -210,8 +210,7 @@ class MainWindow(WindowLayout, WindowMenus, DepthAndAccuracy, TextureDisplay, QM
             return
         self.follow_scene()
         if self.player.refusal:
-            self.say_error(f"{self.player.spec.title} refused the points drawn before "
-                            f"({self.player.refusal}); showing an example shape instead.")
+            self.say_error(self.player.refusal)
 
     def set_option(self, name: str, value) -> None:
         try:

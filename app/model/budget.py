@@ -5,8 +5,8 @@ line, the window and export can all refuse a request that would not fit
 before anything is allocated. The figures are upper estimates: measured
 peaks of small runs of each family (tests/app/model/test_budget.py) stay
 under them. Time is estimated only for the work a step cap cannot stop: the
-work before a step (a polygon's checks, an animation frame's image) and
-steps that are slow one by one (a polygon's point-in-polygon test per sample).
+work before a step (a tessellation's simplicity check, a band of an animation
+frame's image, a row of a seed fill's search for its seed).
 """
 from __future__ import annotations
 
@@ -115,7 +115,8 @@ def estimate_memory(spec, points, options, grid, step_cap: int) -> int:
         band = min(SAMPLES_PER_BAND, pixels * options["n"] ** 2)
         total += 72 * pixels + 100 * band
     elif spec.name == "flood-fill":
-        total += OBJECT_BYTES * _outline_length(spec, points)
+        # drawn segments, and outline pixels off the grid (each one a step)
+        total += OBJECT_BYTES * (count + min(_outline_length(spec, points), steps))
     elif spec.name == "flood-fill-circle":
         total += OBJECT_BYTES * 8 * (int(options.get("radius", 0)) + 1)
     return int(total)
@@ -139,13 +140,16 @@ def estimate_seconds(spec, points, options, grid, step_cap: int) -> float:
         band = max(row, min(SAMPLES_PER_BAND, row * height))
         return 5e-8 * band * shapes
     if spec.name == "aa-supersample" and options.get("shape") == "polygon":
-        # a step per sample, and each sample tests every edge in Python
-        steps = min(int(step_cap), 2 * _box_pixels(points, grid) * options["n"] ** 2)
-        return 1e-5 * steps * count
+        # a sample is one binary search in its row's crossing table; the
+        # longest work between two steps is making one table (numpy, every edge)
+        return 3e-8 * count
     if spec.name == "polygon-scanline":
         return 1e-4 * count  # the edge table, in exact fractions
     if spec.name == "flood-fill":
-        return 1.2e-5 * _outline_length(spec, points)  # the outline, pixel by pixel
+        # the outline is drawn in the frames, so the cap stops it; before
+        # the first frame the seed is looked for a row at a time (each row
+        # tests every edge, and a cancel is heard between rows)
+        return 1.5e-6 * count
     return 0.0
 
 
@@ -156,7 +160,8 @@ def check_budget(spec, points, options, grid, step_cap: int,
     memory = estimate_memory(spec, points, options, grid, step_cap)
     if memory > memory_limit:
         raise BudgetError(f"{spec.name} on a {grid[0]}x{grid[1]} grid would need about "
-                          f"{_size(memory)} of memory, over the limit of {_size(memory_limit)}; "
+                          f"{size_text(memory)} of memory, over the limit of "
+                          f"{size_text(memory_limit)}; "
                           "use a smaller grid, fewer points or samples, or a lower step cap")
     seconds = estimate_seconds(spec, points, options, grid, step_cap)
     if seconds > time_limit:
@@ -165,7 +170,7 @@ def check_budget(spec, points, options, grid, step_cap: int,
                           "use fewer points or samples, a smaller grid or a lower step cap")
 
 
-def _size(count: float) -> str:
+def size_text(count: float) -> str:
     for unit, scale in (("GB", 1024 ** 3), ("MB", 1024 ** 2), ("KB", 1024)):
         if count >= scale:
             return f"{count / scale:.1f} {unit}"

@@ -109,7 +109,7 @@ class Session:
         self.compare_enabled = True
         self.differences = _NO_CELLS
         self.compared = False  # did the last recording run the comparison?
-        self.refusal = ""  # why the last algorithm switch fell back to an example shape
+        self.refusal = ""  # what the last algorithm switch did instead of running the points
         self.history = EditHistory()
         # Optional hook (app/gui/breakpoint_actions.py): stepper(index, delta)
         # gives where a step of delta units goes (None: nowhere).
@@ -192,23 +192,27 @@ class Session:
 
     def _switch(self, scene: Scene, previous, carried: dict, monitor) -> _Outcome:
         """Record an algorithm switch (in the worker); an algorithm that
-        refuses the points shows its own example shape and says why."""
-        spec, refusal = scene.spec, ""
+        refuses the points shows its own example shape and says why. When
+        not even that fits the grid (a fill's on a grid one row high), the
+        points are kept without a run."""
+        spec, reason = scene.spec, ""
         if scene.complete:
             try:
                 return self.outcome(scene, previous, monitor, refusal="")
             except InputError as error:
-                refusal = str(error)  # a concave polygon for the convex fill, say
+                reason = str(error)  # a concave polygon for the convex fill, say
         shape, shape_breaks, defaults = default_scene(spec, scene.grid)
         example = self._flat_scene(spec.name, shape, shape_breaks,
                                    spec.resolve({**carried, **defaults}), scene.grid)
-        try:
-            return self.outcome(example, previous, monitor, refusal=refusal)
-        except InputError as error:
-            # A carried option this run refuses (one colour set while the
-            # points were being placed, say) must not block the switch.
-            example = example.replace(options=spec.resolve(defaults))
-            return self.outcome(example, previous, monitor, refusal=refusal or str(error))
+        # A carried option this run refuses (one colour set while the points
+        # were being placed, say) must not block the switch: then the defaults.
+        for options in (example.options, spec.resolve(defaults)):
+            try:
+                return self.outcome(example.replace(options=options), previous, monitor,
+                                    refusal=reason and _example_note(spec, reason))
+            except InputError as error:
+                reason = reason or str(error)
+        return _Outcome(scene, previous, None, None, refusal=_kept_note(spec, scene.grid, reason))
 
     def set_option(self, name: str, value) -> None:
         """Set one option; raises InputError (and keeps the last good value)
@@ -544,7 +548,7 @@ class Session:
         # scene): it only changes how the run is shown, so it is kept.
         self._put_scene(outcome.scene.replace(origin=self.scene.origin), outcome.previous)
         self._take(outcome, self._job_at_end)
-        self._finished(_finish_note(outcome))
+        self._finished(outcome.refusal or "")
 
     def _finished(self, note: str) -> None:
         self.recording_finished.emit(note)
@@ -651,11 +655,15 @@ class Session:
         return differences(other.raster_at(len(other) - 1), final), True
 
 
-def _finish_note(outcome: _Outcome) -> str:
-    if not outcome.refusal:
-        return ""
-    return (f"{outcome.scene.spec.title} refused the points drawn before "
-            f"({outcome.refusal}); showing an example shape instead.")
+def _example_note(spec, reason: str) -> str:
+    return (f"{spec.title} refused the points drawn before ({reason}); "
+            "showing an example shape instead.")
+
+
+def _kept_note(spec, grid, reason: str) -> str:
+    return (f"{spec.title}: neither the points drawn nor its example shape can run on the "
+            f"{grid[0]}x{grid[1]} grid ({reason}); the points are kept: add or move points, "
+            "enlarge the grid or change the options.")
 
 
 def _failure(error: BaseException) -> str:

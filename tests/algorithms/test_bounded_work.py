@@ -1,10 +1,12 @@
 """The step cap and a cancel bound the work a run does, not only the steps it keeps."""
-import pytest
-
 import importlib
 
+import numpy as np
+import pytest
+
 from algorithms.registry import get
-from algorithms.trace import Cancelled, RecordMonitor
+from algorithms.steps import PLOT, CodeLine, Start
+from algorithms.trace import Cancelled, RecordMonitor, Trace
 
 temporal_module = importlib.import_module("algorithms.antialias.temporal")
 WHEEL = [(10.0, 10.0)]
@@ -92,3 +94,139 @@ def test_a_many_vertex_polygon_is_checked_for_simplicity_quickly():
     # about 19 s when every pair of edges was tested one by one (100,000
     # vertices: hours), about 1.5 s now; a generous bound
     assert time.perf_counter() - started < 10
+
+
+fill_module = importlib.import_module("algorithms.fill")
+
+
+def _zigzag(vertices: int) -> list:
+    """A polygon whose edges each run the height of a 4096 grid."""
+    return [(4000 * k // vertices, 4000 * (k % 2)) for k in range(vertices)] + [(4000, 4050),
+                                                                               (0, 4050)]
+
+
+def _count_outline_pixels(monkeypatch) -> list:
+    made = [0]
+    real = fill_module._segment_walk
+
+    def counted(p, q, four):
+        for pixel in real(p, q, four):
+            made[0] += 1
+            yield pixel
+    monkeypatch.setattr(fill_module, "_segment_walk", counted)
+    return made
+
+
+def test_a_flood_fill_outline_is_drawn_only_as_far_as_the_step_cap(monkeypatch):
+    made = _count_outline_pixels(monkeypatch)
+    trace = get("flood-fill").record([_zigzag(400)], {"seed": (1, 4049)}, grid=(4096, 4096),
+                                     step_cap=1000)
+    assert trace.truncated
+    # about 1.6 million outline pixels; before, all were drawn before the first step
+    assert made[0] <= 1000 + 64
+
+
+def test_a_flood_fill_outline_is_the_same_drawn_lazily():
+    # the frames' outline pixels are outline_pixels (made at once, deduplicated)
+    contours = [[(2, 2), (30, 5), (12, 20), (2, 2), (30, 5)], [(8, 8), (14, 9), (9, 14)]]
+    for outline in ("4", "8"):
+        trace = get("flood-fill").record(contours, {"seed": (0, 0), "outline": outline},
+                                         grid=(24, 16))
+        at = [k for k, line in enumerate(trace.code) if line.text.startswith("draw")][0]
+        steps = np.flatnonzero(trace.line == at)[1:]  # step 0 is the Start record
+        drawn = list(zip(trace.x[steps].tolist(), trace.y[steps].tolist()))
+        assert drawn == fill_module.outline_pixels(contours, outline == "4")
+
+
+@pytest.mark.parametrize("four", [False, True])
+def test_outline_row_is_the_row_of_the_drawn_outline(four):
+    rng = np.random.default_rng(11)
+    for _ in range(300):
+        contours = [[tuple(int(v) for v in rng.integers(-12, 13, 2))
+                     for _ in range(int(rng.integers(1, 6)))] for _ in range(2)]
+        pixels = fill_module.outline_pixels(contours, four)
+        for y in range(-14, 15):
+            assert fill_module.outline_row(contours, y, four) == {x for x, r in pixels if r == y}
+
+
+def test_the_seed_search_hears_a_cancel_between_rows(monkeypatch):
+    rows = []
+    real = fill_module.outline_row
+    monkeypatch.setattr(fill_module, "outline_row",
+                        lambda *args: rows.append(args[1]) or real(*args))
+    monitor = RecordMonitor()
+    monitor.cancel()
+    # no pixel inside this outline is free: the search would try all 4,050 rows
+    with pytest.raises(Cancelled):
+        get("flood-fill").record([_zigzag(4000)[:-2]], {}, grid=(4096, 4096), monitor=monitor)
+    assert len(rows) <= 1
+
+
+def test_slow_frames_are_recorded_in_small_chunks_so_a_cancel_is_heard_soon():
+    import time
+    monitor = RecordMonitor(every=4096)
+    pulled = [0]
+
+    def frames():
+        yield Start(line=0, values=())
+        for k in range(4096):
+            pulled[0] += 1
+            if k == 200:
+                monitor.cancel()
+            time.sleep(0.001)  # a slow frame
+            yield (0, 0, 0)
+    with pytest.raises(Cancelled):
+        Trace.record(frames(), [CodeLine("a", PLOT)], 4, 4, monitor=monitor)
+    # before, the whole chunk of 4,096 frames was made before the cancel was heard
+    assert pulled[0] < 300
+
+
+def test_a_polygon_of_many_edges_tests_samples_through_crossing_tables():
+    from algorithms.antialias.shapes import TABLE_EDGES, Shape
+    rng = np.random.default_rng(5)
+    for _ in range(40):
+        count = int(rng.integers(TABLE_EDGES + 1, 90))
+        contour = [tuple(int(v) for v in rng.integers(-600, 3000, 2)) for _ in range(count)]
+        for rule in ("evenodd", "nonzero"):
+            shape = Shape([contour], rule, (0, 0, 0), False)
+            sx = rng.integers(-700, 3100, 200)
+            sy = np.concatenate([rng.integers(-700, 3100, 100),
+                                 rng.choice([p[1] for p in contour], 100)])
+            expected = shape.hits(sx, sy)  # numpy, one edge at a time
+            assert [shape.hit(int(a), int(b)) for a, b in zip(sx, sy)] == expected.tolist()
+
+
+def test_the_mask_of_many_boxes_is_the_union_of_the_boxes():
+    from algorithms.antialias.shapes import UNIT, Shapes
+    rng = np.random.default_rng(9)
+    for _ in range(30):
+        count = int(rng.integers(1, 80))
+        points = [tuple(float(v) for v in rng.uniform(-5, 40, 2)) for _ in range(3 * count)]
+        shapes = Shapes(points, {"shape": "triangles"})
+        window = shapes.window((int(rng.integers(1, 40)), int(rng.integers(1, 30))))
+        x0, y0, x1, y1 = window
+        expected = np.zeros((y1 - y0, x1 - x0), bool)
+        for shape in shapes.items:  # each box painted in turn
+            box = shape.box
+            expected[max(box[1] // UNIT, y0) - y0:max(min(box[3] // UNIT + 1, y1) - y0, 0),
+                     max(box[0] // UNIT, x0) - x0:max(min(box[2] // UNIT + 1, x1) - x0, 0)] = True
+        assert np.array_equal(shapes.mask(window), expected)
+
+
+@pytest.mark.parametrize("grid", [(1, 1), (2, 5), (7, 3), (24, 18)])
+@pytest.mark.parametrize("kernel", ["box3", "seed", "gaussian"])
+def test_the_post_filter_made_row_by_row_writes_what_the_whole_image_filter_does(grid, kernel):
+    # the frames look at the aliased image a row at a time (small grids: a
+    # kernel wider than the grid)
+    from algorithms.antialias.filters import filter_image
+    points = [(0.3, 0.2), (20.5, 3.7), (6.1, 16.9), (3.0, 1.0), (5.5, 1.5), (2.0, 4.0)]
+    options = {"kernel": kernel}
+    expected = filter_image(points, options, grid)  # the whole image at once, in numpy
+    trace = get("aa-filter").record(points, options, grid=grid)
+    last = {}
+    for (x, y), value in zip(trace.written_pixels().tolist(), trace.pixel_values()):
+        last[(x, y)] = value
+    got = np.zeros_like(expected)
+    for (x, y), value in last.items():
+        got[y, x] = value
+    assert np.array_equal(got, expected)

@@ -42,5 +42,7 @@ def test_cancel_stops_the_recording_at_the_next_report():
 def test_a_monitor_cancelled_before_the_start_records_nothing_long():
     monitor = RecordMonitor(every=1_000)
     monitor.cancel()
-    with pytest.raises(Cancelled, match=r"after 1,\d{3} steps"):
+    # heard while the run checks its points, or after the first (small) chunk
+    with pytest.raises(Cancelled, match=r"cancelled (between two steps|after (\d{1,3}|1,\d{3}) "
+                                        r"steps)"):
         record(*LINE, grid=GRID, monitor=monitor)
