@@ -168,6 +168,7 @@ class MainWindow(WindowLayout, WindowMenus, DepthAndAccuracy, QMainWindow):
 
         g = self.grid
         g.hoverChanged.connect(self._hover)
+        g.pointerMoved.connect(self._pointer_moved)
         # Scene edits (grid gestures, the vertex table, the algorithm, options,
         # grid size, origin) go through the undo history: app/gui/edits.py.
         from app.gui.edits import SceneEdits
@@ -512,6 +513,10 @@ class MainWindow(WindowLayout, WindowMenus, DepthAndAccuracy, QMainWindow):
             self._empty_image = compose(Raster(width, height), None, self.palette_)
         return self._empty_image
 
+    def _pointer_moved(self, where) -> None:
+        self._last_pointer = where
+        self._hover(self._last_hover)
+
     def _hover(self, pixel) -> None:
         self._last_hover = pixel
         if pixel is None:
@@ -519,6 +524,9 @@ class MainWindow(WindowLayout, WindowMenus, DepthAndAccuracy, QMainWindow):
             return
         x, y = pixel
         text = f"pixel ({x}, {y})"
+        where = getattr(self, "_last_pointer", None)
+        if where is not None:  # the real coordinates, as the axes read them
+            text += f" \u00b7 at ({where[0]:.2f}, {where[1]:.2f})"
         state = self.player.state()
         if state is not None and state.raster.inside(x, y):
             count = int(state.raster.counts[y, x])
