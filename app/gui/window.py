@@ -31,7 +31,7 @@ from app.model.drawing import CONTOURS, point_labels
 from app.model.insight import PixelTally, has_insight, inside_chips, row_tones
 from app.model.inputs import split_contours
 from app.model.examples import default_scene
-from app.model.inputs import open_ended
+from app.model.inputs import group_size, open_ended
 from app.model.tables import TableIndex
 from app.model.tools import (circle_kind, circle_options, clamp_option, drawing_mode,
                              marker_option, placing_message, shape_paths, tool_hint)
@@ -209,6 +209,9 @@ class MainWindow(WindowLayout, WindowMenus, DepthAndAccuracy, QMainWindow):
             self.say_error(str(error))
             return
         self.options.accept(name, self.player.options[name])
+        if name == "shape":  # another grouping of the points
+            self._set_grid_input()
+            self.sync_points()
 
     def _set_grid_options(self, values: dict) -> None:
         """Options set by a gesture on the grid: the editors follow."""
@@ -250,7 +253,7 @@ class MainWindow(WindowLayout, WindowMenus, DepthAndAccuracy, QMainWindow):
 
     def _labels(self) -> list[str]:
         spec, player = self.player.spec, self.player
-        return point_labels(drawing_mode(spec), spec.inputs.count, len(player.points),
+        return point_labels(drawing_mode(spec), group_size(spec, player.options), len(player.points),
                             player.breaks, spec.inputs.names)
 
     def drag_radius(self, rx: float, ry: float) -> None:
@@ -320,13 +323,10 @@ class MainWindow(WindowLayout, WindowMenus, DepthAndAccuracy, QMainWindow):
         self.setWindowTitle(f"{spec.title} \u2014 {APP_NAME}")
         self.options.set_options(spec.options, player.options, spec.inputs.count,
                                  spec.inputs.names)
-        self.points.set_input(spec.inputs.count, spec.inputs.names, spec.inputs.integer,
-                              open_ended(spec), spec.inputs.count if spec.inputs.multiple else 0)
         self.points.set_grid(*player.grid)
         self.grid_editor.set_grid(*player.grid)
         self.grid.set_grid(*player.grid)
-        self.grid.set_input(spec.inputs.count, spec.inputs.integer, spec.inputs.names,
-                            closed=mode == CONTOURS, open_ended=open_ended(spec), mode=mode)
+        self._set_grid_input()
         marker = marker_option(spec)
         self.grid.set_marker_name(marker.name if marker else "")
         self.actions_["marker"].setVisible(marker is not None)
@@ -338,6 +338,16 @@ class MainWindow(WindowLayout, WindowMenus, DepthAndAccuracy, QMainWindow):
         self.hint.setText(tool_hint(spec))
         self.sync_points()
         self._show_inputs()
+
+    def _set_grid_input(self) -> None:
+        """The grid's drawing tool: its points come in groups the options name."""
+        spec, mode = self.player.spec, drawing_mode(self.player.spec)
+        size = group_size(spec, self.player.options)
+        self.points.set_input(spec.inputs.count, spec.inputs.names, spec.inputs.integer,
+                              open_ended(spec), size if spec.inputs.multiple else 0)
+        self.grid.set_input(size, spec.inputs.integer,
+                            spec.inputs.names, closed=mode == CONTOURS,
+                            open_ended=open_ended(spec), mode=mode)
 
     def _show_inputs(self) -> None:
         """The circle's rim handle and the seed marker follow the options."""
@@ -551,7 +561,7 @@ class MainWindow(WindowLayout, WindowMenus, DepthAndAccuracy, QMainWindow):
         if not text and trace is not None and trace.truncated:
             text = trace.message
         if not text:
-            text = placing_message(player.spec, player.points, player.breaks)
+            text = placing_message(player.spec, player.points, player.breaks, player.options)
         if not text and trace is not None and self._notes:
             k = bisect.bisect_right(self._notes, player.index) - 1
             if k >= 0:
