@@ -118,6 +118,8 @@ class MainWindow(WindowLayout, WindowMenus, DepthAndAccuracy, QMainWindow):
         self.breakpoints = Breakpoints(self)  # step units, breakpoints, bookmarks
         self.inspector = InspectorDock(self)  # View > Pixel inspector (Ctrl+I)
         self.recording_status = RecordingStatus(self)  # long runs: progress bar and Cancel
+        from app.gui.input_guard import InputGuard
+        self.input_guard = InputGuard(self)  # no wheel edits by accident; Ctrl+Z everywhere
 
     # Parts a running program adds (``launch``); tests add them where they need them.
     def add_file_actions(self, settings=None):

@@ -1,0 +1,77 @@
+"""Two guards against edits nobody meant, for every control of a window.
+
+* The mouse wheel changes a spin box or a combo box only while it has the
+  focus; over an unfocused one it scrolls the panel underneath instead (a
+  scroll through the Scene panel must not shrink the grid on its way).
+* Ctrl+Z and Ctrl+Shift+Z (Ctrl+Y) reach the window's undo and redo even
+  when a spin box or a combo box has the focus: their values are scene
+  edits already made, which the window's history holds. A text field (a
+  spin box's too) keeps them while it has typing of its own to take back.
+"""
+from __future__ import annotations
+
+from PySide6.QtCore import QEvent, QObject, Qt
+from PySide6.QtGui import QKeySequence
+from PySide6.QtWidgets import (QAbstractScrollArea, QAbstractSpinBox, QApplication, QComboBox,
+                               QLineEdit, QWidget)
+
+VALUE_CONTROLS = (QAbstractSpinBox, QComboBox)
+UNDO_KEYS = (QKeySequence.StandardKey.Undo, QKeySequence.StandardKey.Redo)
+
+
+def value_control(obj) -> QWidget | None:
+    """The spin box or combo box ``obj`` is, or is the text field of."""
+    for widget in (obj, obj.parent() if isinstance(obj, QLineEdit) else None):
+        if isinstance(widget, VALUE_CONTROLS):
+            return widget
+    return None
+
+
+class InputGuard(QObject):
+    """Installed on the application; acts on the widgets inside ``window``."""
+
+    def __init__(self, window):
+        super().__init__(window)
+        self.window = window
+        QApplication.instance().installEventFilter(self)
+
+    def _ours(self, widget) -> bool:
+        return isinstance(widget, QWidget) and widget.window() is self.window
+
+    def eventFilter(self, obj, event) -> bool:  # noqa: N802
+        kind = event.type()
+        if kind == QEvent.Type.Polish and isinstance(obj, VALUE_CONTROLS):
+            # A wheel would otherwise give the control the focus, then the value.
+            obj.setFocusPolicy(Qt.FocusPolicy.StrongFocus)
+        elif kind == QEvent.Type.Wheel:
+            control = value_control(obj)
+            if control is not None and self._ours(control) and not control.hasFocus():
+                scroll_instead(control, event)
+                return True
+        elif kind == QEvent.Type.ShortcutOverride and self._ours(obj):
+            if any(event.matches(key) for key in UNDO_KEYS) and not _keeps_undo(obj):
+                event.ignore()  # not overridden: the window's shortcut runs
+                return True
+        return False
+
+
+def _keeps_undo(obj) -> bool:
+    """A text field (a spin box's too) keeps Ctrl+Z while it holds typing
+    of its own not yet taken back or committed."""
+    control = value_control(obj)
+    if isinstance(control, QAbstractSpinBox):
+        obj = control.lineEdit()
+    elif control is not None:
+        obj = control.lineEdit() if control.isEditable() else None
+    return isinstance(obj, QLineEdit) and obj.isUndoAvailable()
+
+
+def scroll_instead(control, event) -> None:
+    """Hand the wheel to the scroll area the control sits in, if any."""
+    widget = control.parentWidget()
+    while widget is not None and not isinstance(widget, QAbstractScrollArea):
+        widget = widget.parentWidget()
+    if widget is not None:
+        bar = widget.verticalScrollBar()
+        steps = event.angleDelta().y() / 120
+        bar.setValue(bar.value() - round(steps * bar.singleStep() * 3))
