@@ -5,7 +5,7 @@ import math
 
 import numpy as np
 import pyqtgraph as pg
-from PySide6.QtCore import Qt
+from PySide6.QtCore import Qt, QTimer, Signal
 from PySide6.QtGui import QBrush, QColor, QFont, QFontDatabase, QFontMetrics
 from PySide6.QtWidgets import (QAbstractItemView, QFrame, QHeaderView, QLabel, QScrollArea,
                                QTableWidget, QTableWidgetItem, QVBoxLayout, QWidget)
@@ -46,11 +46,15 @@ def _as_color(text) -> str:
 
 
 class _WrappingTable(QTableWidget):
-    """A table whose rows grow and shrink with its width, for wrapped text."""
+    """A table whose rows grow and shrink with its width, for wrapped text;
+    ``rowsFitted`` says when the rows have their new heights."""
+
+    rowsFitted = Signal()
 
     def resizeEvent(self, event):  # noqa: N802
         super().resizeEvent(event)
         self.resizeRowsToContents()
+        self.rowsFitted.emit()
 
 
 class CodePanel(QWidget):
@@ -67,6 +71,7 @@ class CodePanel(QWidget):
         self.lines.verticalHeader().setVisible(False)
         self.lines.setShowGrid(False)
         self.lines.setWordWrap(True)
+        self.lines.setTextElideMode(Qt.TextElideMode.ElideNone)  # wrapped, never cut
         self.lines.setEditTriggers(QAbstractItemView.EditTrigger.NoEditTriggers)
         self.lines.setSelectionMode(QAbstractItemView.SelectionMode.NoSelection)
         self.lines.setFocusPolicy(Qt.FocusPolicy.NoFocus)
@@ -75,7 +80,12 @@ class CodePanel(QWidget):
         header = self.lines.horizontalHeader()
         header.setSectionResizeMode(0, QHeaderView.ResizeMode.ResizeToContents)
         header.setSectionResizeMode(1, QHeaderView.ResizeMode.Stretch)
-        header.sectionResized.connect(lambda *_: self.lines.resizeRowsToContents())
+        header.sectionResized.connect(lambda *_: self._fit_rows())
+        # Rows change height as the panel narrows or widens (a dock opens
+        # beside it): the marked line is brought back into view each time.
+        self.lines.rowsFitted.connect(self._reveal_later)
+        # The scroll range follows the heights later still.
+        self.lines.verticalScrollBar().rangeChanged.connect(self._reveal_later)
         self.notes = QLabel()
         self.notes.setObjectName("codeNotes")
         self.notes.setWordWrap(True)
@@ -130,16 +140,29 @@ class CodePanel(QWidget):
         self.notes_area.setFixedHeight(min(NOTES_MAX_HEIGHT, needed + 2))
 
     def set_current(self, line: int | None) -> None:
-        """Mark line ``line`` (0-based), or none."""
-        if line == self._current:
-            return
-        if self._current is not None and self._current < self.lines.rowCount():
-            self._paint(self._current, False)
-        self._current = line
+        """Mark line ``line`` (0-based), or none, and scroll it into view."""
+        if line != self._current:
+            if self._current is not None and self._current < self.lines.rowCount():
+                self._paint(self._current, False)
+            self._current = line
+            if line is not None and 0 <= line < self.lines.rowCount():
+                self._paint(line, True)
+        self.reveal()
+
+    def reveal(self) -> None:
+        """Scroll the marked line (all of it, if it fits) into view."""
+        line = self._current
         if line is not None and 0 <= line < self.lines.rowCount():
-            self._paint(line, True)
             self.lines.scrollToItem(self.lines.item(line, 1),
                                     QAbstractItemView.ScrollHint.EnsureVisible)
+
+    def _fit_rows(self) -> None:
+        self.lines.resizeRowsToContents()
+        self._reveal_later()
+
+    def _reveal_later(self) -> None:
+        # After the layout has settled: heights change once more on the way.
+        QTimer.singleShot(0, self, self.reveal)
 
     @property
     def current(self) -> int | None:
