@@ -12,8 +12,8 @@ from __future__ import annotations
 
 from PySide6.QtCore import QEvent, QObject, Qt
 from PySide6.QtGui import QKeySequence
-from PySide6.QtWidgets import (QAbstractScrollArea, QAbstractSpinBox, QApplication, QComboBox,
-                               QLineEdit, QWidget)
+from PySide6.QtWidgets import (QAbstractScrollArea, QAbstractSpinBox, QComboBox, QLineEdit,
+                               QWidget)
 
 VALUE_CONTROLS = (QAbstractSpinBox, QComboBox)
 UNDO_KEYS = (QKeySequence.StandardKey.Undo, QKeySequence.StandardKey.Redo)
@@ -28,27 +28,39 @@ def value_control(obj) -> QWidget | None:
 
 
 class InputGuard(QObject):
-    """Installed on the application; acts on the widgets inside ``window``."""
+    """Watches the spin boxes, combo boxes and text fields of ``window``.
+
+    It is installed on each of them, not on the application: a filter there
+    would call Python for every event of the program. Editors made later
+    (an algorithm's options) are picked up after each new run."""
 
     def __init__(self, window):
         super().__init__(window)
         self.window = window
-        QApplication.instance().installEventFilter(self)
+        self._guarded: set[int] = set()
+        self.scan()
+        window.player.traceChanged.connect(self.scan)
 
-    def _ours(self, widget) -> bool:
-        return isinstance(widget, QWidget) and widget.window() is self.window
+    def scan(self) -> None:
+        """Guard the window's controls not guarded yet."""
+        for widget in self.window.findChildren(QWidget):
+            if isinstance(widget, (*VALUE_CONTROLS, QLineEdit)) and id(widget) not in self._guarded:
+                self._guarded.add(id(widget))
+                widget.destroyed.connect(lambda _obj=None, key=id(widget):
+                                         self._guarded.discard(key))
+                widget.installEventFilter(self)
+                if isinstance(widget, VALUE_CONTROLS):
+                    # A wheel would otherwise give it the focus, then the value.
+                    widget.setFocusPolicy(Qt.FocusPolicy.StrongFocus)
 
     def eventFilter(self, obj, event) -> bool:  # noqa: N802
         kind = event.type()
-        if kind == QEvent.Type.Polish and isinstance(obj, VALUE_CONTROLS):
-            # A wheel would otherwise give the control the focus, then the value.
-            obj.setFocusPolicy(Qt.FocusPolicy.StrongFocus)
-        elif kind == QEvent.Type.Wheel:
+        if kind == QEvent.Type.Wheel:
             control = value_control(obj)
-            if control is not None and self._ours(control) and not control.hasFocus():
+            if control is not None and not control.hasFocus():
                 scroll_instead(control, event)
                 return True
-        elif kind == QEvent.Type.ShortcutOverride and self._ours(obj):
+        elif kind == QEvent.Type.ShortcutOverride:
             if any(event.matches(key) for key in UNDO_KEYS) and not _keeps_undo(obj):
                 event.ignore()  # not overridden: the window's shortcut runs
                 return True
