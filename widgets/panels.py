@@ -327,6 +327,13 @@ class VariablesPanel(QWidget):
     def rows(self) -> list[tuple[str, str]]:
         return list(self._rows)
 
+    def set_type_scale(self, factor: float) -> None:
+        """Values (and rows) ``factor`` times their usual size: the window's
+        zoom, or presentation mode's large type; the next ``set_rows`` shows them."""
+        self._value_font = monospace_font(factor)
+        height = max(QFontMetrics(self._value_font).height(), self.fontMetrics().height())
+        self.table.verticalHeader().setDefaultSectionSize(height + 6)
+
     def _fit_long_rows(self, rows) -> None:
         """A value too long for its cell (a fill's queue, say) wraps onto a
         second line instead of losing its end; the others keep one line."""

@@ -120,6 +120,8 @@ class MainWindow(WindowLayout, WindowMenus, DepthAndAccuracy, QMainWindow):
         self.recording_status = RecordingStatus(self)  # long runs: progress bar and Cancel
         from app.gui.input_guard import InputGuard
         self.input_guard = InputGuard(self)  # no wheel edits by accident; Ctrl+Z everywhere
+        from app.gui.window_view import WindowView
+        self.view = WindowView(self)  # screen fit, layout, presentation (F11), zoom, Copy view
 
     # Parts a running program adds (``launch``); tests add them where they need them.
     def add_file_actions(self, settings=None):
@@ -636,6 +638,8 @@ def launch(argv=None) -> int:
     window = MainWindow()
     window.add_file_actions()
     window.add_report_entry()
+    from app.gui.appdata import open_settings
+    window.view.remember(open_settings())  # the layout and zoom of the last run
     from app.gui.preferences import reopen_last_scene
     reopen_last_scene(window)
     window.add_crash_handler()
