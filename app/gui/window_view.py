@@ -131,7 +131,7 @@ class WindowView(QObject):
             return
         shown = [d for d in w.findChildren(QDockWidget) if d.isVisibleTo(w)]
         bars = [b for b in w.findChildren(QToolBar) if b.isVisibleTo(w)]
-        self._before = (w.saveState(), w.isMaximized(), shown, bars)
+        self._before = (w.saveState(), w.saveGeometry(), w.isMaximized(), shown, bars)
         self.presenting = True
         for widget in (*shown, *bars, w.menuBar(), w.statusBar()):
             widget.hide()
@@ -143,6 +143,8 @@ class WindowView(QObject):
         for extra in self._extras:
             extra.hide()
         w.showFullScreen()
+        if w.screen() is not None:  # without a window manager to do it
+            w.setGeometry(w.screen().geometry())
         self._apply_fonts()
         third = max(320, w.width() // 3)
         w.resizeDocks([w.code_dock], [third], Qt.Orientation.Horizontal)
@@ -154,7 +156,7 @@ class WindowView(QObject):
         w = self.window
         if not self.presenting:
             return
-        state, maximized, shown, bars = self._before
+        state, geometry, maximized, shown, bars = self._before
         self.presenting = False
         self.leave.setEnabled(False)
         for extra in self._extras:
@@ -166,6 +168,7 @@ class WindowView(QObject):
             w.showMaximized()
         else:
             w.showNormal()
+            w.restoreGeometry(geometry)
         w.restoreState(state)
         for widget in (*shown, *bars):
             widget.show()
