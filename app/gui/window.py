@@ -179,6 +179,7 @@ class MainWindow(WindowLayout, WindowMenus, DepthAndAccuracy, QMainWindow):
         self.edits = SceneEdits(self)
         self.show_primitive.toggled.connect(g.set_show_primitive)
         self.compare.toggled.connect(p.set_compare)
+        p.set_compare(self.compare.isChecked())
         self.coverage.toggled.connect(self._coverage_toggled)
 
     # ------------------------------------------------------- scene input

@@ -91,7 +91,7 @@ class WindowLayout:
         self.show_primitive.setChecked(True)
         self.show_primitive.setToolTip("Draw the exact primitive the pixels stand for")
         self.compare = QCheckBox("Compare with previous algorithm", panel)
-        self.compare.setChecked(True)
+        self.compare.setChecked(False)  # on when asked: its outlines are noise otherwise
         self.compare.setToolTip("After switching algorithm, outline the pixels where the "
                                 "previous algorithm's final result differs")
         self.coverage = QCheckBox("Coverage counts", panel)

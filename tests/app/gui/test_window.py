@@ -61,6 +61,8 @@ def test_dragging_a_handle(window):
 
 
 def test_choosing_an_algorithm_and_the_comparison(window, qtbot):
+    assert not window.compare.isChecked()  # off until asked for
+    window.compare.setChecked(True)
     item = window.picker.item_for("line-dda")
     rect = window.picker.visualItemRect(item)
     QTest.mouseClick(window.picker.viewport(), LEFT, NONE, rect.center())

@@ -138,3 +138,18 @@ def test_copy_view_puts_the_grid_on_the_clipboard(window):
     colours = {image.pixelColor(x, y).name() for x in range(0, image.width(), 7)
                for y in range(0, image.height(), 7)}
     assert window.palette_.ink.lower() in colours or len(colours) > 3
+
+
+def test_compare_is_off_by_default_and_its_colour_is_not_the_pins(window):
+    from app.gui.inspector_dock import PIN_COLOUR
+    from app.gui.preferences import BASE_PALETTES
+    assert not window.compare.isChecked() and not window.player.session.compare_enabled
+    assert not window.actions_["view-Compare with previous algorithm"].isChecked()
+
+    def rgb(text):
+        return [int(text[k:k + 2], 16) for k in (1, 3, 5)]
+    for palette in BASE_PALETTES.values():
+        for name in ("difference", "current", "candidate", "primitive"):
+            other = getattr(palette, name)
+            distance = sum((a - b) ** 2 for a, b in zip(rgb(PIN_COLOUR), rgb(other))) ** 0.5
+            assert distance > 100, (name, other)
