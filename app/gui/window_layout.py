@@ -4,7 +4,7 @@ bar: built once, by ``MainWindow.__init__``."""
 from __future__ import annotations
 
 from PySide6.QtCore import Qt
-from PySide6.QtWidgets import (QCheckBox, QFrame, QLabel, QPushButton, QScrollArea,
+from PySide6.QtWidgets import (QCheckBox, QFrame, QLabel, QLineEdit, QPushButton, QScrollArea,
                                QSizePolicy, QVBoxLayout, QWidget)
 
 from algorithms.raster import MAX_GRID
@@ -58,10 +58,18 @@ class WindowLayout:
     def _add_input_sections(self, panel, layout) -> None:
         """Algorithm, Options and Points: what the run takes."""
         layout.addWidget(section("Algorithm"))
+        self.picker_search = QLineEdit(panel)
+        self.picker_search.setPlaceholderText("Search algorithms\u2026")
+        self.picker_search.setClearButtonEnabled(True)
+        self.picker_search.setToolTip("Type part of a name, family or idea (\"edge\", "
+                                      "\"circle\"); Enter picks the first one listed")
+        layout.addWidget(self.picker_search)
         self.picker = AlgorithmPicker(panel)
-        self.picker.setMinimumHeight(150)
-        self.picker.setMaximumHeight(260)
+        self.picker.setMinimumHeight(300)
+        self.picker.setMaximumHeight(420)  # about ten of the algorithms at once
         layout.addWidget(self.picker)
+        self.picker_search.textChanged.connect(self.picker.set_filter)
+        self.picker_search.returnPressed.connect(self.picker.choose_first_shown)
 
         layout.addWidget(section("Options"))
         self.options = OptionsEditor(panel)
