@@ -38,6 +38,7 @@ class WindowView(QObject):
         self._build_actions()
         window.installEventFilter(self)
         window.player.traceChanged.connect(self._new_editors)
+        window.player.frameChanged.connect(lambda _index: self.follow_current())
 
     # ------------------------------------------------------------ actions
     def _build_actions(self) -> None:
@@ -60,6 +61,22 @@ class WindowView(QObject):
         w.add_action(edit, "copy-view", "Copy view as &image", "Ctrl+Shift+C",
                      self.copy_view).setToolTip("The grid as shown, to the clipboard, for a "
                                                 "slide or a document")
+
+    # --------------------------------------------------- follow the step
+    def follow_current(self) -> bool:
+        """Zoomed in on a large grid, the view pans (keeping its zoom) to the
+        pixel of the step when it is out of sight. True when it panned."""
+        grid = self.window.grid
+        cells = grid.outlines.layer("current")
+        if not len(cells):
+            return False
+        x, y = (float(v) + 0.5 for v in cells[0])
+        (x0, x1), (y0, y1) = grid.view_box.viewRange()
+        margin_x, margin_y = min(1.0, (x1 - x0) / 4), min(1.0, (y1 - y0) / 4)
+        if x0 + margin_x <= x <= x1 - margin_x and y0 + margin_y <= y <= y1 - margin_y:
+            return False
+        grid.view_box.translateBy(x=x - (x0 + x1) / 2, y=y - (y0 + y1) / 2)
+        return True
 
     # ------------------------------------------------------- copy the view
     def copy_view(self):

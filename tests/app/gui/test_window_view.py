@@ -153,3 +153,23 @@ def test_compare_is_off_by_default_and_its_colour_is_not_the_pins(window):
             other = getattr(palette, name)
             distance = sum((a - b) ** 2 for a, b in zip(rgb(PIN_COLOUR), rgb(other))) ** 0.5
             assert distance > 100, (name, other)
+
+
+def test_zoomed_in_on_a_large_grid_the_view_follows_the_step(make_window, qtbot):
+    window = make_window("line-bresenham", [(2, 3), (120, 80)], grid=(128, 96))
+    from PySide6.QtCore import QRectF
+    box = window.grid.view_box
+    box.setRange(QRectF(0, 0, 16, 12), padding=0)  # zoomed in on the start
+    qtbot.wait(20)
+    trace = window.player.trace
+    width = box.viewRange()[0][1] - box.viewRange()[0][0]
+    for index in range(0, len(trace), 7):
+        window.player.seek(index)
+        cells = window.grid.outlines.layer("current")
+        if not len(cells):
+            continue
+        x, y = (int(v) for v in cells[0])
+        (x0, x1), (y0, y1) = box.viewRange()
+        assert x0 <= x + 0.5 <= x1 and y0 <= y + 0.5 <= y1, (index, (x, y), box.viewRange())
+        assert x1 - x0 == pytest.approx(width)  # panned, not zoomed out
+    assert box.viewRange()[0][0] > 60  # it went along the line to its far end
