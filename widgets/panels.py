@@ -27,6 +27,11 @@ CHIP_COLORS = {"positive": ("#d3f9d8", "#1f6b35"), "negative": ("#ffe3e3", "#a61
                "out": ("#868e96", "#ffffff"), "info": ("#e7ecf2", "#3d4754")}
 
 
+SERIES_DOTS = 300  # more steps than this: no dot per step on the plot over the run
+# A decision variable's dots by sign, the branch it picks: <= 0, > 0.
+BRANCH_COLORS = ("#2563a8", "#2f9e44")
+
+
 def monospace_font(scale: float = 1.0) -> QFont:
     font = QFontDatabase.systemFont(QFontDatabase.SystemFont.FixedFont)
     if scale != 1.0 and font.pointSizeF() > 0:
@@ -261,7 +266,11 @@ class VariablesPanel(QWidget):
         self.marker = pg.InfiniteLine(0, angle=90, pen=pg.mkPen("#f08c00", width=2))
         self.point = pg.ScatterPlotItem(size=9, brush=pg.mkBrush("#f08c00"),
                                         pen=pg.mkPen("#ffffff", width=1.5))
-        for part in (self.zero, self.curve, self.marker, self.point):
+        # A decision variable's dots, one item per sign (the branch it picks).
+        self.branch_dots = tuple(
+            pg.PlotDataItem(pen=None, symbol="o", symbolSize=4, symbolBrush=color,
+                            symbolPen=None) for color in BRANCH_COLORS)
+        for part in (self.zero, self.curve, *self.branch_dots, self.marker, self.point):
             plot.addItem(part)
         self.marker.setZValue(10)
         self.point.setZValue(11)
@@ -383,6 +392,8 @@ class VariablesPanel(QWidget):
         if not finite:
             self._series = None
             self.curve.setData([], [])
+            for dots in self.branch_dots:
+                dots.setData([], [])
             self.point.setData([], [])
             return
         self._series = values
@@ -390,10 +401,11 @@ class VariablesPanel(QWidget):
         # other step (a fill's stack size) still reads as one curve. A long
         # run is thinned to each stretch's extremes (widgets/series_points.py).
         steps, known = plot_points(values)
-        # Markers on every step only while there are few enough to see.
-        self.curve.setSymbol("o" if len(known) <= 300 else None)
-        self.curve.setData(steps, known)
-        self.plot_title.setText(f"{name} over the run" + (" (its sign decides)" if decision else ""))
+        self._draw_series(steps, known, decision)
+        self.plot_title.setText(f"{name} over the run" + (
+            f" (its sign decides: <span style='color:{BRANCH_COLORS[0]}'>\u25cf \u2264 0</span>"
+            f", <span style='color:{BRANCH_COLORS[1]}'>\u25cf &gt; 0</span>)"
+            if decision else ""))
         low, high = float(known.min()), float(known.max())
         self.zero.setVisible(decision)
         if decision:
@@ -401,6 +413,24 @@ class VariablesPanel(QWidget):
         pad = max(0.5, (high - low) * 0.08)
         self.plot.getPlotItem().getViewBox().setRange(
             xRange=(0, max(1, len(values) - 1)), yRange=(low - pad, high + pad), padding=0.02)
+
+    def _draw_series(self, steps, known, decision: bool) -> None:
+        """Few steps: a line with a dot per step. Many: the line would be a
+        solid block of zigzags, so a decision variable keeps its dots only,
+        coloured by sign (the branch it picks), and another value its line."""
+        few = len(known) <= SERIES_DOTS
+        if decision:
+            self.curve.setPen(pg.mkPen("#9aa5b1", width=1))
+            self.curve.setData(steps if few else [], known if few else [], symbol=None)
+            high = known > 0
+            for dots, part in zip(self.branch_dots, (~high, high)):
+                dots.setData(steps[part], known[part], symbolSize=4 if few else 3)
+            return
+        for dots in self.branch_dots:
+            dots.setData([], [])
+        self.curve.setPen(pg.mkPen("#2563a8", width=1.5))
+        self.curve.setData(steps, known, symbol="o" if few else None, symbolSize=4,
+                           symbolBrush="#2563a8", symbolPen=None)
 
     def set_marker(self, index: int) -> None:
         self.marker.setValue(index)

@@ -1,5 +1,6 @@
 """Pseudo-code panel, variables panel and transport bar."""
 import numpy as np
+import pyqtgraph as pg
 from PySide6.QtCore import Qt
 
 from widgets.panels import CURRENT_LINE, CodePanel, VariablesPanel
@@ -98,3 +99,29 @@ def test_transport_speed(qtbot):
     assert bar.speed == 1
     bar.set_speed(1e6)
     assert bar.speed == 2000
+
+
+def test_a_long_decision_run_is_dots_coloured_by_branch(qtbot):
+    from widgets.panels import BRANCH_COLORS, SERIES_DOTS
+    p = VariablesPanel()
+    qtbot.addWidget(p)
+    rng = np.random.default_rng(7)
+    long = rng.integers(-30, 30, size=5000).astype(float)
+    p.set_series(long, "d", decision=True)
+    # No line: thousands of zigzags would fill the plot solid.
+    assert p.curve.xData is None or len(p.curve.xData) == 0
+    low, high = p.branch_dots
+    assert [pg.mkBrush(d.opts["symbolBrush"]).color().name() for d in (low, high)] == \
+        list(BRANCH_COLORS)
+    # The oracle: each plotted value's sign picks its colour.
+    assert (p.branch_dots[0].yData <= 0).all() and (p.branch_dots[1].yData > 0).all()
+    for dots in p.branch_dots:
+        assert np.array_equal(long[dots.xData.astype(int)], dots.yData)
+    assert len(low.xData) + len(high.xData) > SERIES_DOTS
+    # A short run keeps its line under the dots.
+    p.set_series(long[:40], "d", decision=True)
+    assert len(p.curve.xData) == 40
+    assert len(low.xData) == int((long[:40] <= 0).sum())
+    # A value that does not decide keeps its line however long the run.
+    p.set_series(np.cumsum(long), "x", decision=False)
+    assert len(p.curve.xData) > SERIES_DOTS and (low.xData is None or not len(low.xData))
