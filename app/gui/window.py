@@ -443,7 +443,8 @@ class MainWindow(WindowLayout, WindowMenus, DepthAndAccuracy, QMainWindow):
             return
         accuracy = self._accuracy if self.error_action.isChecked() else None
         if accuracy is not None and not self.coverage.isChecked():
-            self.grid.set_image(error_image(accuracy.error, accuracy.max))
+            self.grid.set_image(error_image(accuracy.estimate - accuracy.exact, accuracy.max,
+                                            signed=True))
         else:
             self.grid.set_image(compose(state.raster, None, self.palette_,
                                         coverage=self.coverage.isChecked()))

@@ -11,6 +11,7 @@ from algorithms.raster import MAX_GRID
 from widgets.depth_view import DepthView
 from widgets.docks import panel_dock
 from widgets.editors import AlgorithmPicker, GridEditor, OptionsEditor
+from widgets.error_scale import ErrorScale
 from widgets.grid_view import PixelGridView
 from widgets.panels import CodePanel, VariablesPanel
 from widgets.tables import TablesPanel
@@ -158,5 +159,8 @@ class WindowLayout:
         self.error_label = QLabel(self)
         self.error_label.setObjectName("coverageError")
         status.addPermanentWidget(self.error_label)
+        self.error_scale = ErrorScale(self)  # the coverage-error map's colours and sign
+        self.error_scale.hide()
+        status.addPermanentWidget(self.error_scale)
         status.addPermanentWidget(self.difference_label)
         status.addPermanentWidget(self.cursor_label)
