@@ -137,12 +137,14 @@ class CodePanel(QWidget):
         self._fit_notes()
 
     def _fit_notes(self) -> None:
-        """As tall as the notes need, up to NOTES_MAX_HEIGHT."""
+        """As tall as the notes need, up to NOTES_MAX_HEIGHT and a third of
+        the panel: on a short screen the code keeps most of the room."""
         width = max(50, self.notes_area.viewport().width())
         needed = self.notes.heightForWidth(width)
         if needed <= 0:
             needed = self.notes.sizeHint().height()
-        self.notes_area.setFixedHeight(min(NOTES_MAX_HEIGHT, needed + 2))
+        room = max(40, self.height() // 3)
+        self.notes_area.setFixedHeight(min(NOTES_MAX_HEIGHT, room, needed + 2))
 
     def set_current(self, line: int | None) -> None:
         """Mark line ``line`` (0-based), or none, and scroll it into view."""

@@ -173,3 +173,14 @@ def test_zoomed_in_on_a_large_grid_the_view_follows_the_step(make_window, qtbot)
         assert x0 <= x + 0.5 <= x1 and y0 <= y + 0.5 <= y1, (index, (x, y), box.viewRange())
         assert x1 - x0 == pytest.approx(width)  # panned, not zoomed out
     assert box.viewRange()[0][0] > 60  # it went along the line to its far end
+
+
+def test_at_720_pixels_the_code_keeps_most_of_its_panel(window, qtbot):
+    window.resize(1280, 720)
+    qtbot.wait(50)
+    code = window.code
+    assert code.notes_area.height() <= code.height() // 3 + 1
+    lines = code.lines
+    shown = sum(1 for row in range(lines.rowCount())
+                if 0 <= lines.rowViewportPosition(row) < lines.viewport().height())
+    assert shown >= min(5, lines.rowCount())
