@@ -184,11 +184,13 @@ class CodePanel(QWidget):
         code.setForeground(QBrush(CURRENT_TEXT) if current else QBrush())
         for item in (number, code):
             item.setBackground(QBrush(CURRENT_LINE) if current else QBrush())
-            font = item.font()
+            font = QFont(self.lines.font())  # the table's, at the window's zoom
             font.setBold(current)
             item.setFont(font)
         number.setText(("\u25b6 " if current else "  ") + str(row + 1))
         number.setForeground(QBrush(CURRENT_EDGE if current else LINE_NUMBER))
+        # Bold text is wider: the row wraps again rather than lose its end.
+        self.lines.resizeRowToContents(row)
 
 
 class VariablesPanel(QWidget):

@@ -125,3 +125,31 @@ def test_a_long_decision_run_is_dots_coloured_by_branch(qtbot):
     # A value that does not decide keeps its line however long the run.
     p.set_series(np.cumsum(long), "x", decision=False)
     assert len(p.curve.xData) > SERIES_DOTS and (low.xData is None or not len(low.xData))
+
+
+def test_the_marked_line_wraps_whole_never_cut(qtbot):
+    from PySide6.QtGui import QFontMetrics
+    p = CodePanel()
+    qtbot.addWidget(p)
+    p.resize(400, 400)
+    p.show()
+    text = "if d <= 0:  d += incrE;  x += 1;  plot(x, y)"
+    p.set_code(["start", text, "done"])
+    table = p.lines
+    narrow = QFontMetrics(table.font()).horizontalAdvance(text)
+    # A column just wide enough for the line unmarked ...
+    for _ in range(5):
+        p.resize(p.width() + narrow + 10 - table.columnWidth(1), 400)
+        qtbot.wait(10)
+    one_line = table.rowHeight(1)
+    # ... loses room to the marker "▶" and the bold type when marked.
+    p.set_current(1)
+    qtbot.wait(20)
+    item = table.item(1, 1)
+    metrics = QFontMetrics(item.font())
+    needed = metrics.boundingRect(0, 0, table.columnWidth(1) - 8, 10_000,
+                                  int(Qt.TextFlag.TextWordWrap), text).height()
+    assert needed > one_line - 4  # it no longer fits one line
+    assert table.rowHeight(1) >= needed  # so the row grows: the end is kept
+    assert item.font().family() == table.font().family()  # the code's own type
+    assert table.textElideMode() == Qt.TextElideMode.ElideNone
