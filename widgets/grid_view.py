@@ -103,9 +103,7 @@ class PixelGridView(pg.PlotWidget):
     gestured = Signal(object)
     #: The pixel under the cursor, (x, y) in the current frame, or None.
     hoverChanged = Signal(object)
-    #: The pointer's real coordinates (x, y) in the current frame, or None
-    #: when it leaves the grid.
-    pointerMoved = Signal(object)
+    pointerMoved = Signal(object)  #: the pointer's real (x, y), or None off the grid
     #: The person asked to clear the points (context menu).
     clearRequested = Signal()
     #: A radius was dragged out: (rx, ry) in pixels, not yet rounded. Equal

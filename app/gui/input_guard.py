@@ -40,22 +40,34 @@ class InputGuard(QObject):
         self._guarded: set[int] = set()
         self.scan()
         window.player.traceChanged.connect(self.scan)
+        # An algorithm's option editors are made as it is chosen: each is
+        # guarded as it first shows (its parent hears of it).
+        window.options.installEventFilter(self)
 
     def scan(self) -> None:
         """Guard the window's controls not guarded yet."""
         for widget in self.window.findChildren(QWidget):
-            if isinstance(widget, (*VALUE_CONTROLS, QLineEdit)) and id(widget) not in self._guarded:
-                self._guarded.add(id(widget))
-                widget.destroyed.connect(lambda _obj=None, key=id(widget):
-                                         self._guarded.discard(key))
-                widget.installEventFilter(self)
-                if isinstance(widget, VALUE_CONTROLS):
-                    # A wheel would otherwise give it the focus, then the value.
-                    widget.setFocusPolicy(Qt.FocusPolicy.StrongFocus)
+            self._guard(widget)
+
+    def _guard(self, widget) -> None:
+        if isinstance(widget, (*VALUE_CONTROLS, QLineEdit)) and id(widget) not in self._guarded:
+            self._guarded.add(id(widget))
+            widget.destroyed.connect(lambda _obj=None, key=id(widget):
+                                     self._guarded.discard(key))
+            widget.installEventFilter(self)
+            if isinstance(widget, VALUE_CONTROLS):
+                # A wheel would otherwise give it the focus, then the value.
+                widget.setFocusPolicy(Qt.FocusPolicy.StrongFocus)
 
     def eventFilter(self, obj, event) -> bool:  # noqa: N802
         kind = event.type()
-        if kind == QEvent.Type.Wheel:
+        if kind in (QEvent.Type.ChildAdded, QEvent.Type.ChildPolished):
+            child = event.child()
+            if isinstance(child, QWidget):
+                self._guard(child)
+                for inner in child.findChildren(QWidget):
+                    self._guard(inner)
+        elif kind == QEvent.Type.Wheel:
             control = value_control(obj)
             if control is not None and not control.hasFocus():
                 scroll_instead(control, event)

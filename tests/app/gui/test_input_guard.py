@@ -64,3 +64,13 @@ def test_ctrl_z_reaches_the_history_wherever_the_focus_is(window, qtbot, where):
     QTest.keyClick(QApplication.focusWidget() or target, Qt.Key.Key_Z,
                    Qt.KeyboardModifier.ControlModifier)
     assert window.player.spec.name == "line-bresenham"
+
+
+def test_the_wheel_over_an_options_editor_made_for_a_run_changes_nothing(window, qtbot):
+    window.picker.algorithmChosen.emit("circle-midpoint")
+    box = window.options.editor("radius")  # made when the algorithm was chosen
+    qtbot.wait(10)  # it shows
+    window.grid.setFocus()
+    radius = window.player.options["radius"]
+    wheel(box, -4)
+    assert box.value() == radius and window.player.options["radius"] == radius
