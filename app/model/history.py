@@ -43,7 +43,7 @@ def _describe_points(old: tuple, new: tuple) -> str:
     before, after = len(old), len(new)
     if after == 0:
         return "clear points"
-    if after < before and new != old[:after]:
+    if after < before and not _kept_in_order(new, old):
         # The first click of a new segment (or circle) replaces the old points.
         return "start a new shape"
     if after > before:
@@ -51,6 +51,12 @@ def _describe_points(old: tuple, new: tuple) -> str:
     if after < before:
         return "remove point" + ("s" if before - after > 1 else "")
     return "move point"
+
+
+def _kept_in_order(new: tuple, old: tuple) -> bool:
+    """Is ``new`` ``old`` with some points taken out?"""
+    rest = iter(old)
+    return all(any(point == kept for kept in rest) for point in new)
 
 
 @dataclass
