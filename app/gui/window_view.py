@@ -199,6 +199,7 @@ class WindowView(QObject):
             self.leave_presentation()
         w.restoreState(self.default_state)
         w.resizeDocks([w.scene_dock, w.code_dock], [255, SIDE_WIDTH], Qt.Orientation.Horizontal)
+        w.resizeDocks([w.code_dock, w.variables_dock], [330, 430], Qt.Orientation.Vertical)
         w.grid.fit()
 
     def remember(self, settings) -> None:
