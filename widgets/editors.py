@@ -132,6 +132,34 @@ class AlgorithmPicker(QTreeWidget):
     def item_for(self, name: str) -> QTreeWidgetItem:
         return self._items[name]
 
+    def set_filter(self, text: str) -> list[str]:
+        """Show only the algorithms whose title, name, summary or family
+        holds every word of ``text`` (any case); returns their names."""
+        words = text.lower().split()
+        shown = []
+        for k in range(self.topLevelItemCount()):
+            family = self.topLevelItem(k)
+            any_shown = False
+            for j in range(family.childCount()):
+                item = family.child(j)
+                haystack = " ".join(str(v) for v in (
+                    item.text(0), item.data(0, NAME_ROLE), item.data(0, SUMMARY_ROLE),
+                    family.text(0))).lower()
+                hit = all(word in haystack for word in words)
+                item.setHidden(not hit)
+                if hit:
+                    shown.append(item.data(0, NAME_ROLE))
+                    any_shown = True
+            family.setHidden(not any_shown)
+        return shown
+
+    def choose_first_shown(self) -> None:
+        """Enter in the search field: the first algorithm the filter left."""
+        for name, item in self._items.items():
+            if not item.isHidden() and not item.parent().isHidden():
+                self.setCurrentItem(item)
+                return
+
     def _changed(self, item, _previous) -> None:
         if item is None:
             return

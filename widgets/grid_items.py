@@ -22,20 +22,22 @@ MARKER_SIZE = 22  # the seed marker
 
 
 class PixelAxis(pg.AxisItem):
-    """An axis whose ticks stand at pixel centres and read as pixel indices."""
+    """An axis whose ticks stand at cell boundaries, at whole coordinates:
+    pixel i is [i, i+1), so tick "k" is the left (or lower) edge of pixel k
+    and a vertex typed as (3, 3) sits on the ticks 3 and 3."""
 
     def tickValues(self, minVal, maxVal, size):  # noqa: N802 (Qt naming)
         levels = []
-        for spacing, values in super().tickValues(minVal - 0.5, maxVal - 0.5, size):
+        for spacing, values in super().tickValues(minVal, maxVal, size):
             if spacing >= 1:
-                levels.append((spacing, [v + 0.5 for v in values if float(v).is_integer()]))
+                levels.append((spacing, [v for v in values if float(v).is_integer()]))
         if not levels:
-            first, last = math.ceil(minVal - 0.5), math.floor(maxVal - 0.5)
-            levels = [(1.0, [v + 0.5 for v in range(first, last + 1)])]
+            first, last = math.ceil(minVal), math.floor(maxVal)
+            levels = [(1.0, [float(v) for v in range(first, last + 1)])]
         return levels
 
     def tickStrings(self, values, scale, spacing):  # noqa: N802
-        return [str(math.floor(v)) for v in values]
+        return [str(round(v)) for v in values]
 
 
 def visible_grid_lines(left, right, bottom, top, width, height, cell_px):

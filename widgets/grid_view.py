@@ -103,6 +103,7 @@ class PixelGridView(pg.PlotWidget):
     gestured = Signal(object)
     #: The pixel under the cursor, (x, y) in the current frame, or None.
     hoverChanged = Signal(object)
+    pointerMoved = Signal(object)  #: the pointer's real (x, y), or None off the grid
     #: The person asked to clear the points (context menu).
     clearRequested = Signal()
     #: A radius was dragged out: (rx, ry) in pixels, not yet rounded. Equal
@@ -551,6 +552,7 @@ class PixelGridView(pg.PlotWidget):
                 self.viewport().setCursor(QCursor(self._cursor_shape(scene_pos)))
             self._cursor_at = where
             self._draw_preview()
+            self.pointerMoved.emit((where.x(), where.y()))
         if pixel != self._hover:
             self._hover = pixel
             self.hoverChanged.emit(pixel)
@@ -569,6 +571,7 @@ class PixelGridView(pg.PlotWidget):
         super().leaveEvent(event)
         self._cursor_at = None
         self._draw_preview()
+        self.pointerMoved.emit(None)
         if self._hover is not None:
             self._hover = None
             self.hoverChanged.emit(None)

@@ -5,7 +5,7 @@ import math
 
 import numpy as np
 import pyqtgraph as pg
-from PySide6.QtCore import Qt
+from PySide6.QtCore import Qt, QTimer, Signal
 from PySide6.QtGui import QBrush, QColor, QFont, QFontDatabase, QFontMetrics
 from PySide6.QtWidgets import (QAbstractItemView, QFrame, QHeaderView, QLabel, QScrollArea,
                                QTableWidget, QTableWidgetItem, QVBoxLayout, QWidget)
@@ -27,6 +27,11 @@ CHIP_COLORS = {"positive": ("#d3f9d8", "#1f6b35"), "negative": ("#ffe3e3", "#a61
                "out": ("#868e96", "#ffffff"), "info": ("#e7ecf2", "#3d4754")}
 
 
+SERIES_DOTS = 300  # more steps than this: no dot per step on the plot over the run
+# A decision variable's dots by sign, the branch it picks: <= 0, > 0.
+BRANCH_COLORS = ("#2563a8", "#2f9e44")
+
+
 def monospace_font(scale: float = 1.0) -> QFont:
     font = QFontDatabase.systemFont(QFontDatabase.SystemFont.FixedFont)
     if scale != 1.0 and font.pointSizeF() > 0:
@@ -46,11 +51,15 @@ def _as_color(text) -> str:
 
 
 class _WrappingTable(QTableWidget):
-    """A table whose rows grow and shrink with its width, for wrapped text."""
+    """A table whose rows grow and shrink with its width, for wrapped text;
+    ``rowsFitted`` says when the rows have their new heights."""
+
+    rowsFitted = Signal()
 
     def resizeEvent(self, event):  # noqa: N802
         super().resizeEvent(event)
         self.resizeRowsToContents()
+        self.rowsFitted.emit()
 
 
 class CodePanel(QWidget):
@@ -67,6 +76,7 @@ class CodePanel(QWidget):
         self.lines.verticalHeader().setVisible(False)
         self.lines.setShowGrid(False)
         self.lines.setWordWrap(True)
+        self.lines.setTextElideMode(Qt.TextElideMode.ElideNone)  # wrapped, never cut
         self.lines.setEditTriggers(QAbstractItemView.EditTrigger.NoEditTriggers)
         self.lines.setSelectionMode(QAbstractItemView.SelectionMode.NoSelection)
         self.lines.setFocusPolicy(Qt.FocusPolicy.NoFocus)
@@ -75,7 +85,12 @@ class CodePanel(QWidget):
         header = self.lines.horizontalHeader()
         header.setSectionResizeMode(0, QHeaderView.ResizeMode.ResizeToContents)
         header.setSectionResizeMode(1, QHeaderView.ResizeMode.Stretch)
-        header.sectionResized.connect(lambda *_: self.lines.resizeRowsToContents())
+        header.sectionResized.connect(lambda *_: self._fit_rows())
+        # Rows change height as the panel narrows or widens (a dock opens
+        # beside it): the marked line is brought back into view each time.
+        self.lines.rowsFitted.connect(self._reveal_later)
+        # The scroll range follows the heights later still.
+        self.lines.verticalScrollBar().rangeChanged.connect(self._reveal_later)
         self.notes = QLabel()
         self.notes.setObjectName("codeNotes")
         self.notes.setWordWrap(True)
@@ -122,24 +137,39 @@ class CodePanel(QWidget):
         self._fit_notes()
 
     def _fit_notes(self) -> None:
-        """As tall as the notes need, up to NOTES_MAX_HEIGHT."""
+        """As tall as the notes need, up to NOTES_MAX_HEIGHT and a third of
+        the panel: on a short screen the code keeps most of the room."""
         width = max(50, self.notes_area.viewport().width())
         needed = self.notes.heightForWidth(width)
         if needed <= 0:
             needed = self.notes.sizeHint().height()
-        self.notes_area.setFixedHeight(min(NOTES_MAX_HEIGHT, needed + 2))
+        room = max(40, self.height() // 3)
+        self.notes_area.setFixedHeight(min(NOTES_MAX_HEIGHT, room, needed + 2))
 
     def set_current(self, line: int | None) -> None:
-        """Mark line ``line`` (0-based), or none."""
-        if line == self._current:
-            return
-        if self._current is not None and self._current < self.lines.rowCount():
-            self._paint(self._current, False)
-        self._current = line
+        """Mark line ``line`` (0-based), or none, and scroll it into view."""
+        if line != self._current:
+            if self._current is not None and self._current < self.lines.rowCount():
+                self._paint(self._current, False)
+            self._current = line
+            if line is not None and 0 <= line < self.lines.rowCount():
+                self._paint(line, True)
+        self.reveal()
+
+    def reveal(self) -> None:
+        """Scroll the marked line (all of it, if it fits) into view."""
+        line = self._current
         if line is not None and 0 <= line < self.lines.rowCount():
-            self._paint(line, True)
             self.lines.scrollToItem(self.lines.item(line, 1),
                                     QAbstractItemView.ScrollHint.EnsureVisible)
+
+    def _fit_rows(self) -> None:
+        self.lines.resizeRowsToContents()
+        self._reveal_later()
+
+    def _reveal_later(self) -> None:
+        # After the layout has settled: heights change once more on the way.
+        QTimer.singleShot(0, self, self.reveal)
 
     @property
     def current(self) -> int | None:
@@ -154,11 +184,13 @@ class CodePanel(QWidget):
         code.setForeground(QBrush(CURRENT_TEXT) if current else QBrush())
         for item in (number, code):
             item.setBackground(QBrush(CURRENT_LINE) if current else QBrush())
-            font = item.font()
+            font = QFont(self.lines.font())  # the table's, at the window's zoom
             font.setBold(current)
             item.setFont(font)
         number.setText(("\u25b6 " if current else "  ") + str(row + 1))
         number.setForeground(QBrush(CURRENT_EDGE if current else LINE_NUMBER))
+        # Bold text is wider: the row wraps again rather than lose its end.
+        self.lines.resizeRowToContents(row)
 
 
 class VariablesPanel(QWidget):
@@ -238,7 +270,11 @@ class VariablesPanel(QWidget):
         self.marker = pg.InfiniteLine(0, angle=90, pen=pg.mkPen("#f08c00", width=2))
         self.point = pg.ScatterPlotItem(size=9, brush=pg.mkBrush("#f08c00"),
                                         pen=pg.mkPen("#ffffff", width=1.5))
-        for part in (self.zero, self.curve, self.marker, self.point):
+        # A decision variable's dots, one item per sign (the branch it picks).
+        self.branch_dots = tuple(
+            pg.PlotDataItem(pen=None, symbol="o", symbolSize=4, symbolBrush=color,
+                            symbolPen=None) for color in BRANCH_COLORS)
+        for part in (self.zero, self.curve, *self.branch_dots, self.marker, self.point):
             plot.addItem(part)
         self.marker.setZValue(10)
         self.point.setZValue(11)
@@ -304,6 +340,13 @@ class VariablesPanel(QWidget):
     def rows(self) -> list[tuple[str, str]]:
         return list(self._rows)
 
+    def set_type_scale(self, factor: float) -> None:
+        """Values (and rows) ``factor`` times their usual size: the window's
+        zoom, or presentation mode's large type; the next ``set_rows`` shows them."""
+        self._value_font = monospace_font(factor)
+        height = max(QFontMetrics(self._value_font).height(), self.fontMetrics().height())
+        self.table.verticalHeader().setDefaultSectionSize(height + 6)
+
     def _fit_long_rows(self, rows) -> None:
         """A value too long for its cell (a fill's queue, say) wraps onto a
         second line instead of losing its end; the others keep one line."""
@@ -353,6 +396,8 @@ class VariablesPanel(QWidget):
         if not finite:
             self._series = None
             self.curve.setData([], [])
+            for dots in self.branch_dots:
+                dots.setData([], [])
             self.point.setData([], [])
             return
         self._series = values
@@ -360,10 +405,11 @@ class VariablesPanel(QWidget):
         # other step (a fill's stack size) still reads as one curve. A long
         # run is thinned to each stretch's extremes (widgets/series_points.py).
         steps, known = plot_points(values)
-        # Markers on every step only while there are few enough to see.
-        self.curve.setSymbol("o" if len(known) <= 300 else None)
-        self.curve.setData(steps, known)
-        self.plot_title.setText(f"{name} over the run" + (" (its sign decides)" if decision else ""))
+        self._draw_series(steps, known, decision)
+        self.plot_title.setText(f"{name} over the run" + (
+            f" (its sign decides: <span style='color:{BRANCH_COLORS[0]}'>\u25cf \u2264 0</span>"
+            f", <span style='color:{BRANCH_COLORS[1]}'>\u25cf &gt; 0</span>)"
+            if decision else ""))
         low, high = float(known.min()), float(known.max())
         self.zero.setVisible(decision)
         if decision:
@@ -371,6 +417,24 @@ class VariablesPanel(QWidget):
         pad = max(0.5, (high - low) * 0.08)
         self.plot.getPlotItem().getViewBox().setRange(
             xRange=(0, max(1, len(values) - 1)), yRange=(low - pad, high + pad), padding=0.02)
+
+    def _draw_series(self, steps, known, decision: bool) -> None:
+        """Few steps: a line with a dot per step. Many: the line would be a
+        solid block of zigzags, so a decision variable keeps its dots only,
+        coloured by sign (the branch it picks), and another value its line."""
+        few = len(known) <= SERIES_DOTS
+        if decision:
+            self.curve.setPen(pg.mkPen("#9aa5b1", width=1))
+            self.curve.setData(steps if few else [], known if few else [], symbol=None)
+            high = known > 0
+            for dots, part in zip(self.branch_dots, (~high, high)):
+                dots.setData(steps[part], known[part], symbolSize=4 if few else 3)
+            return
+        for dots in self.branch_dots:
+            dots.setData([], [])
+        self.curve.setPen(pg.mkPen("#2563a8", width=1.5))
+        self.curve.setData(steps, known, symbol="o" if few else None, symbolSize=4,
+                           symbolBrush="#2563a8", symbolPen=None)
 
     def set_marker(self, index: int) -> None:
         self.marker.setValue(index)

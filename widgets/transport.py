@@ -4,9 +4,12 @@ from __future__ import annotations
 
 import math
 
-from PySide6.QtCore import QSize, Qt, Signal
-from PySide6.QtWidgets import (QHBoxLayout, QLabel, QSizePolicy, QSlider, QSpinBox, QStyle,
+from PySide6.QtCore import QEvent, QSize, Qt, Signal
+from PySide6.QtGui import QFontMetrics
+from PySide6.QtWidgets import (QHBoxLayout, QLabel, QSizePolicy, QSlider, QSpinBox,
                                QToolButton, QVBoxLayout, QWidget)
+
+from .media_icons import media_icon
 
 SPEED_MIN = 1
 SPEED_MAX = 2000
@@ -27,13 +30,8 @@ class TransportBar(QWidget):
     def __init__(self, parent=None):
         super().__init__(parent)
         self.setObjectName("transport")
-        style = self.style()
-        self._icons = {
-            "play": style.standardIcon(QStyle.StandardPixmap.SP_MediaPlay),
-            "pause": style.standardIcon(QStyle.StandardPixmap.SP_MediaPause),
-        }
-
-        self._make_buttons(style)
+        self._playing = False
+        self._make_buttons()
         self._make_timeline()
         speed_label = self._make_speed()
         self._lay_out(speed_label)
@@ -43,12 +41,12 @@ class TransportBar(QWidget):
         self.set_speed(8)
         self.set_range(0)
 
-    def _make_buttons(self, style) -> None:
-        """First, back, play, forward and last."""
+    def _make_buttons(self) -> None:
+        """First, back, play, forward and last (their icons: ``_paint_icons``)."""
 
         def button(icon, tip, signal):
             b = QToolButton(self)
-            b.setIcon(style.standardIcon(icon))
+            b.setObjectName(icon)
             b.setIconSize(QSize(20, 20))
             b.setToolTip(tip)
             b.setAutoRaise(True)
@@ -58,17 +56,25 @@ class TransportBar(QWidget):
             b.clicked.connect(signal.emit)
             return b
 
-        self.first_button = button(QStyle.StandardPixmap.SP_MediaSkipBackward, "First step (Home)",
-                                   self.firstRequested)
-        self.back_button = button(QStyle.StandardPixmap.SP_MediaSeekBackward, "Step back (Left)",
-                                  self.backRequested)
-        self.play_button = button(QStyle.StandardPixmap.SP_MediaPlay, "Play (Space)",
-                                  self.playRequested)
+        self.first_button = button("first", "First step (Home)", self.firstRequested)
+        self.back_button = button("back", "Step back (Left)", self.backRequested)
+        self.play_button = button("play", "Play (Space)", self.playRequested)
         self.play_button.setIconSize(QSize(26, 26))
-        self.forward_button = button(QStyle.StandardPixmap.SP_MediaSeekForward,
-                                     "Step forward (Right)", self.forwardRequested)
-        self.last_button = button(QStyle.StandardPixmap.SP_MediaSkipForward, "Last step (End)",
-                                  self.lastRequested)
+        self.forward_button = button("forward", "Step forward (Right)", self.forwardRequested)
+        self.last_button = button("last", "Last step (End)", self.lastRequested)
+        self._paint_icons()
+
+    def _paint_icons(self) -> None:
+        """Icons in the palette's text colour: redrawn when the theme changes."""
+        palette = self.palette()
+        for b in (self.first_button, self.back_button, self.forward_button, self.last_button):
+            b.setIcon(media_icon(b.objectName(), palette))
+        self.play_button.setIcon(media_icon("pause" if self._playing else "play", palette))
+
+    def changeEvent(self, event):  # noqa: N802
+        super().changeEvent(event)
+        if event.type() == QEvent.Type.PaletteChange:
+            self._paint_icons()
 
     def _make_timeline(self) -> None:
         """The scrub slider and the step counter."""
@@ -141,8 +147,10 @@ class TransportBar(QWidget):
                        self.last_button, self.timeline):
             widget.setEnabled(enabled)
         digits = len(f"{max(last, 0):,}")
-        self.counter.setMinimumWidth(self.counter.fontMetrics().horizontalAdvance(
-            "step " + "8" * (2 * digits + 1) + " / "))
+        bold = self.counter.font()
+        bold.setBold(True)  # the style sheet draws it bold: measure it so
+        self.counter.setMinimumWidth(QFontMetrics(bold).horizontalAdvance(
+            "step " + "8" * (2 * digits + 1) + " / ") + 12)
         self._update_counter()
 
     def set_position(self, index: int) -> None:
@@ -154,7 +162,8 @@ class TransportBar(QWidget):
         self._update_counter()
 
     def set_playing(self, playing: bool) -> None:
-        self.play_button.setIcon(self._icons["pause" if playing else "play"])
+        self._playing = playing
+        self._paint_icons()
         self.play_button.setToolTip("Pause (Space)" if playing else "Play (Space)")
 
     @property

@@ -27,6 +27,7 @@ from app.render.compose import OUTLINE_STYLE, PALETTE, compose, diff_image
 
 WINDOW_KEY = "window"  # the comparison of the main window's algorithm and the one before
 MIN_TICK_MS = 16
+ZOOM_CELLS = (4, 3)  # Next difference shows 8 x 6 cells around the difference
 
 
 class CompareWindow(QMainWindow):
@@ -57,8 +58,16 @@ class CompareWindow(QMainWindow):
         self._owed = 0.0
         if main is not None:
             main.player.traceChanged.connect(self._main_changed)
-        self.resize(1400, 720)
+        self._fit_to_screen(1400, 720)
         self.apply_preset(WINDOW_KEY if main is not None else PRESETS[0].key)
+
+    def _fit_to_screen(self, width: int, height: int) -> None:
+        """As large as asked, but never larger than the screen it opens on."""
+        screen = (self.main.screen() if self.main is not None else None) or self.screen()
+        if screen is not None:
+            room = screen.availableGeometry()
+            width, height = min(width, room.width() - 40), min(height, room.height() - 60)
+        self.resize(max(width, 640), max(height, 400))
 
     # ------------------------------------------------------------ building
     def _build(self) -> None:
@@ -86,7 +95,7 @@ class CompareWindow(QMainWindow):
         t.seekRequested.connect(lambda k: self.seek(k, pause=True))
         self._shortcuts()
 
-    def _build_bar(self) -> QHBoxLayout:
+    def _build_bar(self) -> QVBoxLayout:
         bar = QHBoxLayout()
         bar.setSpacing(6)
         self.preset_box = QComboBox(self)
@@ -121,10 +130,20 @@ class CompareWindow(QMainWindow):
         for widget in (QLabel("Compare", self), self.preset_box):
             bar.addWidget(widget)
         bar.addStretch(1)
+        # The controls in a second row: one row would not fit a 1280 px screen.
+        controls = QHBoxLayout()
+        controls.setSpacing(6)
         for widget in (QLabel("Link by", self), self.link_box, QLabel("Diff", self), self.a_box,
-                       QLabel("vs", self), self.b_box, self.add_button, self.next_button, fit):
-            bar.addWidget(widget)
-        return bar
+                       QLabel("vs", self), self.b_box):
+            controls.addWidget(widget)
+        controls.addStretch(1)
+        for widget in (self.add_button, self.next_button, fit):
+            controls.addWidget(widget)
+        rows = QVBoxLayout()
+        rows.setSpacing(4)
+        rows.addLayout(bar)
+        rows.addLayout(controls)
+        return rows
 
     def _shortcuts(self) -> None:
         for keys, slot in (("Space", self.toggle), ("Right", lambda: self.step(1)),
@@ -133,7 +152,8 @@ class CompareWindow(QMainWindow):
                            ("Shift+Left", lambda: self.step(-10)),
                            ("Home", lambda: self.seek(0, pause=True)),
                            ("End", lambda: self.seek(self.last, pause=True)),
-                           ("F", self.view.fit), ("N", self.next_difference)):
+                           ("F", self.view.fit), ("N", self.next_difference),
+                           ("Esc", self.close), ("Ctrl+W", self.close)):
             action = QAction(self)
             action.setShortcut(QKeySequence(keys))
             action.triggered.connect(slot)
@@ -331,7 +351,8 @@ class CompareWindow(QMainWindow):
         k = 0 if last is None else int(np.searchsorted(keys, last, side="right")) % len(keys)
         x, y = (int(v) for v in cells[k])
         self._last_shown = int(keys[k])
-        half_w, half_h = 16, 12
+        # Close enough that the cell and its neighbours fill the panes.
+        half_w, half_h = ZOOM_CELLS
         self.view.show_region(x + 0.5 - half_w, y + 0.5 - half_h, x + 0.5 + half_w,
                               y + 0.5 + half_h)
         return (x, y)

@@ -165,19 +165,30 @@ class FileActions(QObject):
         self.bookmarks = [dict(b) for b in scene.bookmarks]
         self.bookmarksChanged.emit()
 
+    def may_replace(self) -> bool:
+        """Unsaved changes are saved, discarded or kept (Cancel: False)
+        before another scene replaces them, as on Quit."""
+        recovery = self.window.recovery  # it knows what is unsaved
+        return recovery is None or recovery.confirm_close("opening another scene")
+
     def open_dialog(self) -> bool:
+        if not self.may_replace():
+            return False
         start = str(self.path.parent) if self.path else str(Path.home())
         path, _ = QFileDialog.getOpenFileName(self.window, "Open scene", start, SCENE_FILTER)
-        return self.open_path(path) if path else False
+        return self.open_path(path, asked=True) if path else False
 
-    def open_path(self, path, remember: bool = True) -> bool:
+    def open_path(self, path, remember: bool = True, asked: bool = False) -> bool:
         """Open a scene file; on failure say why and change nothing.
 
         A scene too large to record at once records in the background: the
         file counts as opened (its name, the unsaved mark) only once its run
         is installed. Cancelled or failed, the scene on show, its name and
         its unsaved mark stay as they were, so a later save cannot write the
-        previous scene over the file."""
+        previous scene over the file. Unsaved changes are asked about
+        first unless ``asked``."""
+        if not asked and not self.may_replace():
+            return False
         path = Path(path)
         # A second open while the first still records goes back to what
         # was on show before the first.

@@ -23,7 +23,9 @@ from widgets.inspector_panel import InspectorPanel
 
 from app.model.inspector import PixelInspector
 
-PIN_COLOUR = "#d6336c"
+# Violet: apart from every highlight colour of the grid (the compared run's
+# differences are pink) in both themes.
+PIN_COLOUR = "#7950f2"
 
 
 class InspectorDock:

@@ -93,10 +93,12 @@ class RecordingStatus:
 
     def _finished(self, message: str) -> None:
         self._show(False)
-        if message and self.window.player.spec is not None:
+        player = self.window.player
+        shown = tuple(tuple(p) for p in self.window.grid.points)
+        if player.spec is not None and (message or shown != tuple(player.sketch.points)):
             # The scene went back (cancelled, refused) or was replaced by an
-            # example shape: the editors follow the player again. (The
-            # session's message listener shows the message.)
+            # example shape (points too few for it, too): the editors follow
+            # the player again. (The session's message listener shows the message.)
             self.window.follow_scene()
 
 

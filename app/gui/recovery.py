@@ -243,15 +243,16 @@ class Recovery(QObject):
             self.shutdown()
         return False
 
-    def confirm_close(self) -> bool:
-        """Ask about unsaved changes; True when the window may close."""
+    def confirm_close(self, before: str = "closing") -> bool:
+        """Ask about unsaved changes; True when the window may close (or,
+        with ``before="opening another scene"``, the scene may be replaced)."""
         self.check()
         if not self.dirty:
             return True
         buttons = QMessageBox.StandardButton
         answer = QMessageBox.question(
             self.window, "Unsaved changes",
-            f"Save the changes to {self.scene_name()} before closing?",
+            f"Save the changes to {self.scene_name()} before {before}?",
             buttons.Save | buttons.Discard | buttons.Cancel, buttons.Save)
         if answer == buttons.Save:
             return bool(self.files.save())  # a cancelled save dialog keeps the window

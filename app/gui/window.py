@@ -34,7 +34,7 @@ from app.model.notes import note_at
 from app.gui.window_guides import WindowGuides
 from app.model.inputs import split_contours
 from app.model.examples import default_scene
-from app.model.inputs import open_ended
+from app.model.inputs import group_size, open_ended
 from app.model.tables import TableIndex
 from app.model.tools import (circle_kind, circle_options, clamp_option, drawing_mode,
                              marker_option, placing_message, shape_paths, tool_hint)
@@ -132,6 +132,10 @@ class MainWindow(WindowLayout, WindowMenus, DepthAndAccuracy, TextureDisplay, QM
         self.student_actions = StudentActions(self)  # File > Open algorithm…, Run > First divergence
         from app.gui.overlay_actions import TriangleOverlays
         self.overlays = TriangleOverlays(self)  # View > Overlays (triangle geometry)
+        from app.gui.input_guard import InputGuard
+        self.input_guard = InputGuard(self)  # no wheel edits by accident; Ctrl+Z everywhere
+        from app.gui.window_view import WindowView
+        self.view = WindowView(self)  # screen fit, layout, presentation (F11), zoom, Copy view
 
     # Parts a running program adds (``launch``); tests add them where they need them.
     def add_file_actions(self, settings=None):
@@ -182,12 +186,14 @@ class MainWindow(WindowLayout, WindowMenus, DepthAndAccuracy, TextureDisplay, QM
 
         g = self.grid
         g.hoverChanged.connect(self._hover)
+        g.pointerMoved.connect(self._pointer_moved)
         # Scene edits (grid gestures, the vertex table, the algorithm, options,
         # grid size, origin) go through the undo history: app/gui/edits.py.
         from app.gui.edits import SceneEdits
         self.edits = SceneEdits(self)
         self.show_primitive.toggled.connect(g.set_show_primitive)
         self.compare.toggled.connect(p.set_compare)
+        p.set_compare(self.compare.isChecked())
         self.coverage.toggled.connect(self._coverage_toggled)
 
     # ------------------------------------------------------- scene input
@@ -221,6 +227,9 @@ class MainWindow(WindowLayout, WindowMenus, DepthAndAccuracy, TextureDisplay, QM
             self.say_error(str(error))
             return
         self.options.accept(name, self.player.options[name])
+        if name == "shape":  # another grouping of the points
+            self._set_grid_input()
+            self.sync_points()
 
     def _set_grid_options(self, values: dict) -> None:
         """Options set by a gesture on the grid: the editors follow."""
@@ -262,7 +271,7 @@ class MainWindow(WindowLayout, WindowMenus, DepthAndAccuracy, TextureDisplay, QM
 
     def _labels(self) -> list[str]:
         spec, player = self.player.spec, self.player
-        return point_labels(drawing_mode(spec), spec.inputs.count, len(player.points),
+        return point_labels(drawing_mode(spec), group_size(spec, player.options), len(player.points),
                             player.breaks, spec.inputs.names)
 
     def drag_radius(self, rx: float, ry: float) -> None:
@@ -333,13 +342,10 @@ class MainWindow(WindowLayout, WindowMenus, DepthAndAccuracy, TextureDisplay, QM
         self.setWindowTitle(f"{spec.title} \u2014 {APP_NAME}")
         self.options.set_options(spec.options, player.options, spec.inputs.count,
                                  spec.inputs.names)
-        self.points.set_input(spec.inputs.count, spec.inputs.names, spec.inputs.integer,
-                              open_ended(spec), spec.inputs.count if spec.inputs.multiple else 0)
         self.points.set_grid(*player.grid)
         self.grid_editor.set_grid(*player.grid)
         self.grid.set_grid(*player.grid)
-        self.grid.set_input(spec.inputs.count, spec.inputs.integer, spec.inputs.names,
-                            closed=mode == CONTOURS, open_ended=open_ended(spec), mode=mode)
+        self._set_grid_input()
         marker = marker_option(spec)
         self.grid.set_marker_name(marker.name if marker else "")
         self.actions_["marker"].setVisible(marker is not None)
@@ -351,6 +357,16 @@ class MainWindow(WindowLayout, WindowMenus, DepthAndAccuracy, TextureDisplay, QM
         self.hint.setText(tool_hint(spec))
         self.sync_points()
         self._show_inputs()
+
+    def _set_grid_input(self) -> None:
+        """The grid's drawing tool: its points come in groups the options name."""
+        spec, mode = self.player.spec, drawing_mode(self.player.spec)
+        size = group_size(spec, self.player.options)
+        self.points.set_input(spec.inputs.count, spec.inputs.names, spec.inputs.integer,
+                              open_ended(spec), size if spec.inputs.multiple else 0)
+        self.grid.set_input(size, spec.inputs.integer,
+                            spec.inputs.names, closed=mode == CONTOURS,
+                            open_ended=open_ended(spec), mode=mode)
 
     def _show_inputs(self) -> None:
         """The circle's rim handle and the seed marker follow the options."""
@@ -444,7 +460,8 @@ class MainWindow(WindowLayout, WindowMenus, DepthAndAccuracy, TextureDisplay, QM
             return
         accuracy = self._accuracy if self.error_action.isChecked() else None
         if accuracy is not None and not self.coverage.isChecked():
-            self.grid.set_image(error_image(accuracy.error, accuracy.max))
+            self.grid.set_image(error_image(accuracy.estimate - accuracy.exact, accuracy.max,
+                                            signed=True))
         else:
             self.grid.set_image(compose(state.raster, None, self.palette_,
                                         coverage=self.coverage.isChecked()))
@@ -534,6 +551,10 @@ class MainWindow(WindowLayout, WindowMenus, DepthAndAccuracy, TextureDisplay, QM
             self._empty_image = compose(Raster(width, height), None, self.palette_)
         return self._empty_image
 
+    def _pointer_moved(self, where) -> None:
+        self._last_pointer = where
+        self._hover(self._last_hover)
+
     def _hover(self, pixel) -> None:
         self._last_hover = pixel
         if pixel is None:
@@ -541,6 +562,9 @@ class MainWindow(WindowLayout, WindowMenus, DepthAndAccuracy, TextureDisplay, QM
             return
         x, y = pixel
         text = f"pixel ({x}, {y})"
+        where = getattr(self, "_last_pointer", None)
+        if where is not None:  # the real coordinates, as the axes read them
+            text += f" \u00b7 at ({where[0]:.2f}, {where[1]:.2f})"
         state = self.player.state()
         if state is not None and state.raster.inside(x, y):
             count = int(state.raster.counts[y, x])
@@ -565,7 +589,7 @@ class MainWindow(WindowLayout, WindowMenus, DepthAndAccuracy, TextureDisplay, QM
         if not text and trace is not None and trace.truncated:
             text = trace.message
         if not text:
-            text = placing_message(player.spec, player.points, player.breaks)
+            text = placing_message(player.spec, player.points, player.breaks, player.options)
         if not text and trace is not None and self._notes:
             step = note_at(trace, self._notes, player.index)
             if step is not None:
@@ -638,6 +662,8 @@ def launch(argv=None) -> int:
     window = MainWindow()
     window.add_file_actions()
     window.add_report_entry()
+    from app.gui.appdata import open_settings
+    window.view.remember(open_settings())  # the layout and zoom of the last run
     from app.gui.preferences import reopen_last_scene
     reopen_last_scene(window)
     window.add_crash_handler()

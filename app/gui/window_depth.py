@@ -68,13 +68,16 @@ class DepthAndAccuracy:
 
     def _show_error_summary(self) -> None:
         accuracy = self._accuracy if self.error_action.isChecked() else None
+        self.error_scale.setVisible(accuracy is not None and not self.coverage.isChecked())
         if accuracy is None:
             self.error_label.setText("")
             return
+        self.error_scale.set_range(accuracy.max)
         self.error_label.setText(f"Coverage error: RMS {accuracy.rms:.4f} \u00b7 "
                                  f"max {accuracy.max:.4f}")
-        self.error_label.setToolTip("|coverage - exact coverage| per pixel; the RMS is taken "
-                                    "over the pixels the run or the exact shape covers")
+        self.error_label.setToolTip("coverage - exact coverage per pixel (blue: too little, "
+                                    "red: too much); the RMS is taken over the pixels the "
+                                    "run or the exact shape covers")
 
     def _accuracy_rows(self, state, rows) -> list:
         """Exact coverage and error of the step's pixel, unless the

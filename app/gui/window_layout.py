@@ -4,13 +4,14 @@ bar: built once, by ``MainWindow.__init__``."""
 from __future__ import annotations
 
 from PySide6.QtCore import Qt
-from PySide6.QtWidgets import (QCheckBox, QFrame, QLabel, QPushButton, QScrollArea,
+from PySide6.QtWidgets import (QCheckBox, QFrame, QLabel, QLineEdit, QPushButton, QScrollArea,
                                QSizePolicy, QVBoxLayout, QWidget)
 
 from algorithms.raster import MAX_GRID
 from widgets.depth_view import DepthView
 from widgets.docks import panel_dock
 from widgets.editors import AlgorithmPicker, GridEditor, OptionsEditor
+from widgets.error_scale import ErrorScale
 from widgets.grid_view import PixelGridView
 from widgets.panels import CodePanel, VariablesPanel
 from widgets.tables import TablesPanel
@@ -58,10 +59,18 @@ class WindowLayout:
     def _add_input_sections(self, panel, layout) -> None:
         """Algorithm, Options and Points: what the run takes."""
         layout.addWidget(section("Algorithm"))
+        self.picker_search = QLineEdit(panel)
+        self.picker_search.setPlaceholderText("Search algorithms\u2026")
+        self.picker_search.setClearButtonEnabled(True)
+        self.picker_search.setToolTip("Type part of a name, family or idea (\"edge\", "
+                                      "\"circle\"); Enter picks the first one listed")
+        layout.addWidget(self.picker_search)
         self.picker = AlgorithmPicker(panel)
-        self.picker.setMinimumHeight(150)
-        self.picker.setMaximumHeight(260)
+        self.picker.setMinimumHeight(300)
+        self.picker.setMaximumHeight(420)  # about ten of the algorithms at once
         layout.addWidget(self.picker)
+        self.picker_search.textChanged.connect(self.picker.set_filter)
+        self.picker_search.returnPressed.connect(self.picker.choose_first_shown)
 
         layout.addWidget(section("Options"))
         self.options = OptionsEditor(panel)
@@ -91,7 +100,7 @@ class WindowLayout:
         self.show_primitive.setChecked(True)
         self.show_primitive.setToolTip("Draw the exact primitive the pixels stand for")
         self.compare = QCheckBox("Compare with previous algorithm", panel)
-        self.compare.setChecked(True)
+        self.compare.setChecked(False)  # on when asked: its outlines are noise otherwise
         self.compare.setToolTip("After switching algorithm, outline the pixels where the "
                                 "previous algorithm's final result differs")
         self.coverage = QCheckBox("Coverage counts", panel)
@@ -150,5 +159,8 @@ class WindowLayout:
         self.error_label = QLabel(self)
         self.error_label.setObjectName("coverageError")
         status.addPermanentWidget(self.error_label)
+        self.error_scale = ErrorScale(self)  # the coverage-error map's colours and sign
+        self.error_scale.hide()
+        status.addPermanentWidget(self.error_scale)
         status.addPermanentWidget(self.difference_label)
         status.addPermanentWidget(self.cursor_label)

@@ -127,8 +127,9 @@ class WindowMenus:
         self.actions_["view-Depth buffer"] = self.depth_action
         self.error_action = view.addAction("Coverage error")
         self.error_action.setCheckable(True)
-        self.error_action.setToolTip("Colour each pixel by |coverage - exact coverage| "
-                                     "(white: none, red: the run's largest)")
+        self.error_action.setToolTip("Colour each pixel by coverage - exact coverage (white: "
+                                     "none; red: too much, blue: too little, fullest at the "
+                                     "run's largest)")
         self.error_action.toggled.connect(lambda _on: self.show_frame())
         self.actions_["view-Coverage error"] = self.error_action
         view.addSeparator()

@@ -502,8 +502,10 @@ def _painter_scene() -> Scene:
 
 PRESETS = (
     Preset("dda-bresenham", "DDA vs Bresenham",
-           "Slope 5/12 passes exactly half-way between two pixels twice: the rounding DDA "
-           "goes up there, Bresenham's d <= 0 goes east.",
+           "Slope 5/12 passes exactly half-way between two pixels twice (x = 10 and "
+           "x = 22). Bresenham's d <= 0 goes east at both. The DDA adds m = 5/12 in "
+           "float64, which is not exact: at x = 10 its y is a hair above 7.5 and rounds up, "
+           "at x = 22 a hair below 12.5 and rounds down, so the two differ in one pixel.",
            (Pane.of("line-dda"), Pane.of("line-bresenham")),
            Scene(algorithm="line-bresenham", points=((4, 5), (28, 15)),
                  title="a segment of slope 5/12"),
@@ -522,8 +524,8 @@ PRESETS = (
                  title="a circle of radius 10"),
            follows=("circles",)),
     Preset("scanline-edge", "Scan-line fill vs edge-function fill",
-           "The ET/AET scan line on two contours against the bounding-box edge-function "
-           "fill on the same two triangles. Both follow the top-left rule, so they agree; "
+           "The ET/AET scan line, one contour per triangle, against the bounding-box "
+           "edge-function fill of the same triangles. Both follow the top-left rule, so they agree; "
            "set arithmetic=float32 or fill_rule=inclusive on a pane to see them part.",
            (Pane.of("polygon-scanline"), Pane.of("triangle-bbox")),
            Scene(algorithm="triangle-bbox", points=((3.5, 2.5), (27.5, 5.5), (12.5, 21.5),

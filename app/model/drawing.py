@@ -208,7 +208,8 @@ def point_labels(mode: str, count: int, n: int, breaks=(), names=()) -> list[str
     """A short name for each of n points: the algorithm's names for a fixed
     set (P, Q); P1, P2 ... for one contour and C2.P1 ... (contour 2, vertex
     1) when there are several, as a scan-line fill names its edges; the
-    algorithm's P0 P1 P2 for one triangle and T2.P0 ... for more."""
+    algorithm's P0 P1 P2 for one triangle and T2.P0 ... for more; unnamed
+    points of k triangles T1.P1 ... T2.P1 ... (S1.P1 ... for segments)."""
     if mode == CONTOURS:
         edges = [0, *(b for b in breaks if 0 < b < n), n]
         several = len(edges) > 2
@@ -216,8 +217,11 @@ def point_labels(mode: str, count: int, n: int, breaks=(), names=()) -> list[str
         for c, (a, b) in enumerate(zip(edges, edges[1:])):
             result += [f"C{c + 1}.P{k + 1}" if several else f"P{k + 1}" for k in range(b - a)]
         return result
-    if mode == GROUPS and n > count:
-        return [f"T{k // count + 1}.{_name(names, k % count)}" for k in range(n)]
+    if mode == GROUPS and count > 1 and (n > count or not names):
+        # Unnamed points are numbered within their triangle (or segment)
+        # even while there is one, since a second may follow.
+        prefix = "S" if count == 2 else "T"
+        return [f"{prefix}{k // count + 1}.{_name(names, k % count)}" for k in range(n)]
     return [_name(names, k) for k in range(n)]
 
 

@@ -29,7 +29,7 @@ def describe(before: Scene, after: Scene) -> str:
     if before.origin != after.origin:
         return "origin"
     if before.flat != after.flat:
-        return _describe_points(len(before.flat), len(after.flat))
+        return _describe_points(tuple(before.flat), tuple(after.flat))
     if before.breaks != after.breaks:
         return "contours"
     old, new = dict(before.options), dict(after.options)
@@ -39,14 +39,24 @@ def describe(before: Scene, after: Scene) -> str:
     return "edit"
 
 
-def _describe_points(before: int, after: int) -> str:
+def _describe_points(old: tuple, new: tuple) -> str:
+    before, after = len(old), len(new)
     if after == 0:
         return "clear points"
+    if after < before and not _kept_in_order(new, old):
+        # The first click of a new segment (or circle) replaces the old points.
+        return "start a new shape"
     if after > before:
         return "add point" + ("s" if after - before > 1 else "")
     if after < before:
         return "remove point" + ("s" if before - after > 1 else "")
     return "move point"
+
+
+def _kept_in_order(new: tuple, old: tuple) -> bool:
+    """Is ``new`` ``old`` with some points taken out?"""
+    rest = iter(old)
+    return all(any(point == kept for kept in rest) for point in new)
 
 
 @dataclass

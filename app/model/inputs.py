@@ -4,18 +4,32 @@ here imports Qt, so the session, the scene and the compare logic share it."""
 from __future__ import annotations
 
 
-def complete(spec, points, breaks=()) -> bool:
+# The antialiasing family takes any number of points and reads them in the
+# groups its "shape" option names: 3 per triangle, 2 per thick segment.
+SHAPE_GROUPS = {"triangles": 3, "thick-line": 2}
+
+
+def group_size(spec, options=None) -> int:
+    """How many points make one primitive: the spec's count, or for a run
+    whose ``shape`` option groups its points, that group's size."""
+    inputs = spec.inputs
+    if inputs.multiple and options:
+        return SHAPE_GROUPS.get(options.get("shape"), inputs.count)
+    return inputs.count
+
+
+def complete(spec, points, breaks=(), options=None) -> bool:
     """Is there enough to run: at least one whole contour, one whole
     triangle, or exactly the points a fixed-count algorithm takes?"""
     inputs = spec.inputs
     if inputs.contours:
         return any(size >= inputs.count for size in contour_sizes(len(points), breaks))
     if inputs.multiple:
-        return len(points) >= inputs.count
+        return len(points) >= group_size(spec, options)
     return len(points) == inputs.count
 
 
-def runnable_input(spec, points, breaks=()):
+def runnable_input(spec, points, breaks=(), options=None):
     """The points in the shape the algorithm takes, leaving out what is
     still being drawn: contours with too few vertices, a last incomplete
     triangle."""
@@ -25,7 +39,8 @@ def runnable_input(spec, points, breaks=()):
         contours = split_contours(points, breaks)
         return [contour for contour in contours if len(contour) >= inputs.count]
     if inputs.multiple:
-        return points[:len(points) - len(points) % inputs.count]
+        size = group_size(spec, options)
+        return points[:len(points) - len(points) % size]
     return points
 
 

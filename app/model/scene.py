@@ -172,12 +172,12 @@ class Scene:
     @property
     def complete(self) -> bool:
         """Is there enough to run (see ``inputs.complete``)?"""
-        return complete(self.spec, self.flat, self.breaks)
+        return complete(self.spec, self.flat, self.breaks, self.options)
 
     def runnable(self):
         """The points as the algorithm takes them, without anything still
         being drawn (see ``inputs.runnable_input``)."""
-        return runnable_input(self.spec, self.flat, self.breaks)
+        return runnable_input(self.spec, self.flat, self.breaks, self.options)
 
     def to_json(self) -> dict:
         return {

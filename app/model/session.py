@@ -246,19 +246,19 @@ class Session:
     def sketch(self) -> drawing.Sketch:
         """The points as the grid draws them: a contour is still being drawn
         while the points are those the gesture that opened it left."""
-        key = (drawing_tool(self.spec), tuple(self.points), self.breaks)
+        key = (drawing_tool(self.spec, self.options), tuple(self.points), self.breaks)
         return drawing.Sketch(key[1], key[2], key == self._open_sketch)
 
     def draw(self, gesture) -> None:
         """Apply a gesture on the grid (app/model/drawing.py) to the points;
         InputError when the run refuses them: nothing changes then."""
         before = self.sketch
-        after = drawing.apply(drawing_tool(self.spec), before, gesture)
+        after = drawing.apply(drawing_tool(self.spec, self.options), before, gesture)
         try:
             if (after.points, after.breaks) != (before.points, before.breaks):
                 self.set_points(after.points, after.breaks)
         finally:
-            key = (drawing_tool(self.spec), tuple(self.points), self.breaks)
+            key = (drawing_tool(self.spec, self.options), tuple(self.points), self.breaks)
             self._open_sketch = key if after.open and self.points else None
 
     def restore(self, points, breaks, options: dict, algorithm: str | None = None,
@@ -645,10 +645,10 @@ class Session:
             return None
         spec, options = previous
         flat, breaks = scene.flat, scene.breaks
-        if not complete(spec, flat, breaks):
+        if not complete(spec, flat, breaks, options):
             return None
         try:
-            other = self.record(spec, runnable_input(spec, flat, breaks), options, scene.grid,
+            other = self.record(spec, runnable_input(spec, flat, breaks, options), options, scene.grid,
                                 monitor)
         except InputError:
             return None  # the other algorithm does not take this input

@@ -10,7 +10,7 @@ from __future__ import annotations
 
 from app.model.drawing import CIRCLE, CONTOURS, FIXED, GROUPS, Tool
 from app.model.geometry import ideal_paths, scene_paths, takes_circle
-from app.model.inputs import contour_sizes, runnable_input
+from app.model.inputs import contour_sizes, group_size, runnable_input
 
 
 def drawing_mode(spec) -> str:
@@ -24,9 +24,10 @@ def drawing_mode(spec) -> str:
     return FIXED
 
 
-def drawing_tool(spec) -> Tool:
-    """The drawing tool that places this algorithm's points."""
-    return Tool(drawing_mode(spec), spec.inputs.count)
+def drawing_tool(spec, options=None) -> Tool:
+    """The drawing tool that places this algorithm's points (in groups as
+    the run's ``options`` name them)."""
+    return Tool(drawing_mode(spec), group_size(spec, options))
 
 
 def circle_options(spec) -> tuple[str, ...]:
@@ -96,9 +97,10 @@ def tool_hint(spec) -> str:
     return "Click the grid to place points; drag a handle to move one."
 
 
-def placing_message(spec, points, breaks=()) -> str:
+def placing_message(spec, points, breaks=(), options=None) -> str:
     """What to do next while the input is not complete, or ""."""
     inputs = spec.inputs
+    size = group_size(spec, options)
     mode = drawing_mode(spec)
     n = len(points)
     if mode == CONTOURS:
@@ -109,12 +111,12 @@ def placing_message(spec, points, breaks=()) -> str:
         return (f"Click on the grid to place vertices: {missing} more for "
                 f"{'a polygon' if not breaks else 'this contour'}.")
     if mode == GROUPS:
-        missing = (inputs.count - n % inputs.count) % inputs.count
+        missing = (size - n % size) % size
         if not missing:
             return ""
-        which = n // inputs.count + 1
+        which = n // size + 1
         return (f"Click on the grid to place {missing} more point{'s' if missing > 1 else ''} "
-                f"for triangle {which}.")
+                f"for {'segment' if size == 2 else 'triangle'} {which}.")
     if n >= inputs.count:
         return ""
     names = inputs.names
@@ -131,4 +133,4 @@ def shape_paths(spec, points, options, breaks=()) -> list:
     inputs = spec.inputs
     if inputs.contours:
         return scene_paths(spec, runnable_input(spec, points, breaks), options)
-    return ideal_paths(spec, runnable_input(spec, points), options)
+    return ideal_paths(spec, runnable_input(spec, points, (), options), options)

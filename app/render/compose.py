@@ -352,16 +352,21 @@ def error_stats(estimate, exact) -> tuple[float, float, np.ndarray]:
     return (float(np.sqrt(np.mean(error[touched] ** 2))), float(error.max()), error)
 
 
-def error_image(error, top: float | None = None) -> np.ndarray:
+def error_image(error, top: float | None = None, signed: bool = False) -> np.ndarray:
     """Per-pixel error as a uint8 RGBA image (H, W, 4): white for none,
-    to pure red for ``top`` (the largest error when not given) and above."""
+    to pure red for ``top`` (the largest error when not given) and above.
+    ``signed``: a negative error (too little) goes to pure blue instead."""
     error = np.asarray(error, dtype=np.float64)
+    size = np.abs(error)
     if top is None:
-        top = float(error.max()) if error.size else 0.0
-    t = np.zeros(error.shape) if not top > 0 else np.clip(error / top, 0.0, 1.0)
+        top = float(size.max()) if error.size else 0.0
+    t = np.zeros(error.shape) if not top > 0 else np.clip(size / top, 0.0, 1.0)
+    fade = np.rint(255 * (1 - t)).astype(np.uint8)
     image = np.empty(error.shape + (4,), np.uint8)
-    image[..., 0] = 255
-    image[..., 1] = image[..., 2] = np.rint(255 * (1 - t)).astype(np.uint8)
+    image[..., 0] = image[..., 1] = image[..., 2] = fade
+    low = (error < 0) if signed else np.zeros(error.shape, bool)
+    image[..., 0][~low] = 255  # red stays full where there is too much
+    image[..., 2][low] = 255   # blue where there is too little
     image[..., 3] = 255
     return image
 

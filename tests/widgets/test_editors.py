@@ -127,3 +127,25 @@ def test_grid_editor(qtbot):
     with qtbot.waitSignal(grid.originChanged, timeout=500) as blocker:
         grid.origin.setCurrentIndex(1)
     assert blocker.args == [True]
+
+
+def test_the_algorithm_search_keeps_only_matching_entries(qtbot):
+    from algorithms import registry
+    from widgets.editors import AlgorithmPicker
+    picker = AlgorithmPicker()
+    qtbot.addWidget(picker)
+    specs = registry.all_specs()
+    picker.set_specs(specs)
+    shown = picker.set_filter("circle")
+    # The oracle: the specs whose own words mention "circle".
+    expected = [s.name for s in specs if "circle" in
+                f"{s.title} {s.name} {s.summary} {s.family.replace('-', ' ')}".lower()]
+    assert shown == expected and len(shown) >= 3
+    for name in picker.names():
+        assert picker.item_for(name).isHidden() == (name not in expected)
+    assert picker.set_filter("") == [s.name for s in specs]
+    chosen = []
+    picker.algorithmChosen.connect(chosen.append)
+    picker.set_filter("midpoint ellipse")
+    picker.choose_first_shown()
+    assert chosen == ["ellipse-midpoint"]

@@ -176,3 +176,57 @@ def test_large_grid_paints(view):
     view.fit()
     # The whole grid in view: one cell is less than a screen pixel.
     assert colours_at(view, [(2048.5, 2048.5)]) == ["#000000"]
+
+
+def drawn_ticks(view, name):
+    """(label, viewport position) of every tick label the axis draws: a
+    label is centred on its tick."""
+    from PySide6.QtGui import QImage, QPainter
+    axis = view.getPlotItem().getAxis(name)
+    image = QImage(10, 10, QImage.Format.Format_ARGB32)
+    painter = QPainter(image)
+    try:
+        _line, _ticks, texts = axis.generateDrawSpecs(painter)
+    finally:
+        painter.end()
+    assert len(texts) >= 3
+    return [(text, view.mapFromScene(axis.mapToScene(rect.center())))
+            for rect, _flags, text in texts]
+
+
+@pytest.mark.parametrize("y_down", [False, True])
+def test_axis_ticks_stand_at_cell_boundaries(view, qtbot, y_down):
+    """Pixel i is [i, i+1): a few screen pixels after the tick labelled k
+    (rightwards, or the way y grows) lies pixel k, a few before it pixel k - 1."""
+    view.set_y_down(y_down)
+    view.fit()
+    qtbot.wait(100)  # pyqtgraph lays the axes out after the range settles
+    middle = view.viewport().rect().center()
+    checked = 0
+    for name, index in (("bottom", 0), ("left", 1)):
+        # Screen y grows downwards: with y up, larger y is higher on screen.
+        growing = 1 if name == "bottom" or y_down else -1
+        for label, spot in drawn_ticks(view, name):
+            k = int(label)
+            if not 1 <= k < 20:
+                continue
+            for offset, pixel in ((3 * growing, k), (-3 * growing, k - 1)):
+                point = _point(spot.x() + offset, middle.y()) if name == "bottom" \
+                    else _point(middle.x(), spot.y() + offset)
+                assert view.pixel_at(view.mapToScene(point))[index] == pixel, (name, label)
+                checked += 1
+    assert checked >= 8
+
+
+def _point(x, y):
+    from PySide6.QtCore import QPoint
+    return QPoint(round(x), round(y))
+
+
+def test_the_pointer_reports_its_real_coordinates(view, qtbot):
+    seen = []
+    view.pointerMoved.connect(seen.append)
+    QTest.mouseMove(view.viewport(), view.widget_pos_of((7.25, 4.75)))
+    qtbot.waitUntil(lambda: bool(seen) and seen[-1] is not None, timeout=1000)
+    x, y = seen[-1]
+    assert abs(x - 7.25) < 0.1 and abs(y - 4.75) < 0.1

@@ -1,5 +1,6 @@
 """Pseudo-code panel, variables panel and transport bar."""
 import numpy as np
+import pyqtgraph as pg
 from PySide6.QtCore import Qt
 
 from widgets.panels import CURRENT_LINE, CodePanel, VariablesPanel
@@ -98,3 +99,57 @@ def test_transport_speed(qtbot):
     assert bar.speed == 1
     bar.set_speed(1e6)
     assert bar.speed == 2000
+
+
+def test_a_long_decision_run_is_dots_coloured_by_branch(qtbot):
+    from widgets.panels import BRANCH_COLORS, SERIES_DOTS
+    p = VariablesPanel()
+    qtbot.addWidget(p)
+    rng = np.random.default_rng(7)
+    long = rng.integers(-30, 30, size=5000).astype(float)
+    p.set_series(long, "d", decision=True)
+    # No line: thousands of zigzags would fill the plot solid.
+    assert p.curve.xData is None or len(p.curve.xData) == 0
+    low, high = p.branch_dots
+    assert [pg.mkBrush(d.opts["symbolBrush"]).color().name() for d in (low, high)] == \
+        list(BRANCH_COLORS)
+    # The oracle: each plotted value's sign picks its colour.
+    assert (p.branch_dots[0].yData <= 0).all() and (p.branch_dots[1].yData > 0).all()
+    for dots in p.branch_dots:
+        assert np.array_equal(long[dots.xData.astype(int)], dots.yData)
+    assert len(low.xData) + len(high.xData) > SERIES_DOTS
+    # A short run keeps its line under the dots.
+    p.set_series(long[:40], "d", decision=True)
+    assert len(p.curve.xData) == 40
+    assert len(low.xData) == int((long[:40] <= 0).sum())
+    # A value that does not decide keeps its line however long the run.
+    p.set_series(np.cumsum(long), "x", decision=False)
+    assert len(p.curve.xData) > SERIES_DOTS and (low.xData is None or not len(low.xData))
+
+
+def test_the_marked_line_wraps_whole_never_cut(qtbot):
+    from PySide6.QtGui import QFontMetrics
+    p = CodePanel()
+    qtbot.addWidget(p)
+    p.resize(400, 400)
+    p.show()
+    text = "if d <= 0:  d += incrE;  x += 1;  plot(x, y)"
+    p.set_code(["start", text, "done"])
+    table = p.lines
+    narrow = QFontMetrics(table.font()).horizontalAdvance(text)
+    # A column just wide enough for the line unmarked ...
+    for _ in range(5):
+        p.resize(p.width() + narrow + 10 - table.columnWidth(1), 400)
+        qtbot.wait(10)
+    one_line = table.rowHeight(1)
+    # ... loses room to the marker "▶" and the bold type when marked.
+    p.set_current(1)
+    qtbot.wait(20)
+    item = table.item(1, 1)
+    metrics = QFontMetrics(item.font())
+    needed = metrics.boundingRect(0, 0, table.columnWidth(1) - 8, 10_000,
+                                  int(Qt.TextFlag.TextWordWrap), text).height()
+    assert needed > one_line - 4  # it no longer fits one line
+    assert table.rowHeight(1) >= needed  # so the row grows: the end is kept
+    assert item.font().family() == table.font().family()  # the code's own type
+    assert table.textElideMode() == Qt.TextElideMode.ElideNone

@@ -2,7 +2,7 @@
 import pytest
 from PySide6.QtCore import QSettings, Qt
 from PySide6.QtTest import QTest
-from PySide6.QtWidgets import QApplication, QInputDialog
+from PySide6.QtWidgets import QApplication, QInputDialog, QMessageBox
 
 from app.model import scene as scenes
 
@@ -187,7 +187,7 @@ def test_bookmarks_add_rename_delete_and_jump(window, qtbot, monkeypatch):
     assert window.bookmarks == [{"name": "the second tie", "step": 12}]
 
 
-def test_bookmarks_are_saved_and_loaded_with_the_scene(window, qtbot, tmp_path):
+def test_bookmarks_are_saved_and_loaded_with_the_scene(window, qtbot, tmp_path, monkeypatch):
     marks = window.breakpoints
     window.player.seek(7)
     marks.add_bookmark("first tie")
@@ -208,6 +208,8 @@ def test_bookmarks_are_saved_and_loaded_with_the_scene(window, qtbot, tmp_path):
     assert recovery.dirty
     marks.delete_bookmark(0)
     assert rows(window) == []
+    discard = QMessageBox.StandardButton.Discard  # the unsaved deletions go
+    monkeypatch.setattr(QMessageBox, "question", lambda *a, **k: discard)
     assert files.open_path(path)
     assert not recovery.dirty
     assert rows(window) == [("first tie", 7), ("second tie", 19)]

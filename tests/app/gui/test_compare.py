@@ -218,3 +218,45 @@ def test_play_runs_every_pane_to_its_end_and_stops(comparing, qtbot):
     qtbot.waitUntil(lambda: not c.playing, timeout=5000)
     assert c.position == c.last
     assert c.indices() == [run.last for run in c.runs]
+
+
+@pytest.mark.parametrize("keys", [(Qt.Key.Key_Escape, Qt.KeyboardModifier.NoModifier),
+                                  (Qt.Key.Key_W, Qt.KeyboardModifier.ControlModifier)])
+def test_esc_and_ctrl_w_close_compare(comparing, qtbot, keys):
+    from PySide6.QtTest import QTest
+    c = comparing
+    c.activateWindow()
+    QTest.keyClick(c.view.grids()[0], *keys)
+    qtbot.waitUntil(lambda: not c.isVisible(), timeout=1000)
+
+
+def test_n_zooms_to_the_next_difference(comparing, qtbot):
+    from PySide6.QtTest import QTest
+    c = comparing
+    differing = set(bresenham_pixels(*DEMO_POINTS)) ^ set(dda_pixels(*DEMO_POINTS, FLOAT64_BITS))
+    assert differing  # the oracles: the demo pair differs
+    QTest.keyClick(c.view.grids()[0], Qt.Key.Key_N)
+    qtbot.wait(20)
+    for grid in c.view.grids():
+        (x0, x1), (y0, y1) = grid.view_box.viewRange()
+        # Zoomed in: under half the grid's width (the panes' shape sets the
+        # height), around a differing cell.
+        assert x1 - x0 < 16 or y1 - y0 < 12, (x0, x1, y0, y1)
+        assert any(x0 < x + 0.5 < x1 and y0 < y + 0.5 < y1 for x, y in differing)
+
+
+def test_the_dda_caption_counts_the_pixels_that_differ(comparing):
+    c = comparing
+    choose_preset(c, "dda-bresenham")
+    a = set(bresenham_pixels(*DEMO_POINTS))
+    b = set(dda_pixels(*DEMO_POINTS, FLOAT64_BITS))
+    words = {1: "one pixel", 2: "two pixels"}
+    assert len(a - b) in words  # the oracle's count, said in words by the caption
+    assert f"differ in {words[len(a - b)]}" in c.description.text()
+    assert "float64" in c.description.text()
+
+
+def test_compare_opens_within_the_screen(comparing):
+    room = comparing.screen().availableGeometry()
+    assert comparing.frameGeometry().width() <= room.width()
+    assert comparing.frameGeometry().height() <= room.height()

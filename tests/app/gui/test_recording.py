@@ -288,3 +288,16 @@ def test_an_algorithm_switch_refused_in_the_background_shows_an_example(
     assert player.trace_spec.name == "polygon-convex" and player.points != notched
     assert window.grid.points == player.points  # the editors show the example shape
     assert "refused the points drawn before" in window.message.text()
+
+
+def test_an_example_shape_recorded_in_the_background_is_shown_on_the_grid(make_window, qtbot):
+    """Two points are too few for a triangle: the switch records the
+    algorithm's example in the background, and the grid then shows it."""
+    w = make_window("line-bresenham", grid=(32, 24), sync_wait=0.0)
+    assert len(w.player.points) == 2
+    w.set_algorithm("aa-supersample")
+    qtbot.waitUntil(lambda: not w.player.recording, timeout=30_000)
+    qtbot.wait(10)
+    assert len(w.player.points) == 3
+    assert [tuple(p) for p in w.grid.points] == [tuple(p) for p in w.player.points]
+    assert w.grid.labels() == ["T1.P1", "T1.P2", "T1.P3"]

@@ -100,13 +100,60 @@ def test_a_clean_save_removes_the_recovery_file(window, qtbot, tmp_path):
     assert recovery.dirty
 
 
-def test_opening_a_file_is_clean(window, tmp_path):
+def test_opening_a_file_is_clean(window, tmp_path, answers):
     path = tmp_path / "other.json"
     scenes.save(line_scene([(0, 0), (9, 3)], title="Other"), path)
     window.set_option("symmetric", True)
+    answers[0].append(BUTTONS.Discard)
     assert window.file_actions.open_path(path)
     assert not window.recovery.dirty
     assert window.player.points == [(0, 0), (9, 3)]
+
+
+def _open_by(window, how, path, monkeypatch):
+    """Open ``path`` the way a person would: the dialog, the recent list,
+    the examples menu or the gallery."""
+    files = window.file_actions
+    if how == "dialog":
+        monkeypatch.setattr(QFileDialog, "getOpenFileName", lambda *a, **k: (str(path), ""))
+        files.open_dialog()
+    elif how == "recent":
+        files._remember(path)
+        files.recent_menu.actions()[0].trigger()
+    elif how == "example":
+        files.examples_menu.actions()[0].trigger()
+    else:
+        from app.gui.gallery import GalleryDialog
+        GalleryDialog(window).open_row(0)
+
+
+@pytest.mark.parametrize("how", ["dialog", "recent", "example", "gallery"])
+def test_every_open_asks_before_replacing_unsaved_work(window, tmp_path, answers, how,
+                                                       monkeypatch):
+    queue, asked = answers
+    path = tmp_path / "other.json"
+    scenes.save(line_scene([(0, 0), (9, 3)], title="Other"), path)
+    window.edits.once(lambda: window.set_points([(1, 2), (20, 9)]))  # an undoable edit
+    assert window.recovery.dirty
+    queue.append(BUTTONS.Cancel)
+    _open_by(window, how, path, monkeypatch)
+    assert len(asked) == 1 and "before opening another scene" in asked[0][1]
+    assert window.player.points == [(1, 2), (20, 9)] and window.recovery.dirty
+    window.undo()  # the undo history is kept too
+    assert window.player.points != [(1, 2), (20, 9)]
+    window.redo()
+    queue.append(BUTTONS.Discard)
+    _open_by(window, how, path, monkeypatch)
+    assert len(asked) == 2 and window.player.points != [(1, 2), (20, 9)]
+    assert not window.recovery.dirty
+
+
+def test_a_clean_scene_opens_without_asking(window, tmp_path, answers, monkeypatch):
+    queue, asked = answers
+    path = tmp_path / "other.json"
+    scenes.save(line_scene([(0, 0), (9, 3)], title="Other"), path)
+    _open_by(window, "dialog", path, monkeypatch)
+    assert asked == [] and window.player.points == [(0, 0), (9, 3)]
 
 
 # ---------------------------------------------------------------- close

@@ -333,3 +333,15 @@ def test_history_merges_by_key_within_its_time():
     # After an undo or redo the next edit never merges into an older entry.
     history.push(scene(3), scene(7), ("option", "a"), 1.5)
     assert len(history) == 2 and not history.can_redo
+
+
+def test_the_first_click_of_a_new_segment_is_named_for_what_it_does(make):
+    w = make("line-bresenham")
+    from app.model.drawing import Place, Remove
+    w.grid.gestured.emit(Place((9, 3)))
+    assert w.player.points == [(9, 3)]  # the segment starts anew at the click
+    assert w.actions_["undo"].text() == "&Undo start a new shape"
+    w.undo()
+    assert w.player.points == [(4, 5), (28, 15)]
+    w.grid.gestured.emit(Remove(1))
+    assert w.actions_["undo"].text() == "&Undo remove point"

@@ -62,6 +62,8 @@ def test_dragging_a_handle(window):
 
 
 def test_choosing_an_algorithm_and_the_comparison(window, qtbot):
+    assert not window.compare.isChecked()  # off until asked for
+    window.compare.setChecked(True)
     item = window.picker.item_for("line-dda")
     rect = window.picker.visualItemRect(item)
     QTest.mouseClick(window.picker.viewport(), LEFT, NONE, rect.center())
@@ -252,6 +254,20 @@ def test_status_bar_shows_the_pixel_under_the_cursor(window, qtbot):
     QTest.mouseMove(window.grid.viewport(), window.grid.widget_pos_of((4.5, 5.5)))
     qtbot.waitUntil(lambda: window.cursor_label.text().startswith("pixel (4, 5)"), timeout=1000)
     assert "written" in window.cursor_label.text()
+
+
+@pytest.mark.parametrize("y_down", [False, True])
+def test_status_bar_shows_the_real_coordinates_under_the_cursor(window, qtbot, y_down):
+    window.set_y_down(y_down)
+    qtbot.wait(50)
+    QTest.mouseMove(window.grid.viewport(), window.grid.widget_pos_of((6.25, 3.75)))
+    qtbot.waitUntil(lambda: "at (" in window.cursor_label.text(), timeout=1000)
+    text = window.cursor_label.text()
+    x, y = (float(v) for v in text.split("at (")[1].rstrip(")").split(", "))
+    # Within a screen pixel of where the pointer is, in the frame of the axes.
+    cell = abs(window.grid.widget_pos_of((1, 0)).x() - window.grid.widget_pos_of((0, 0)).x())
+    assert abs(x - 6.25) <= 1.5 / cell and abs(y - 3.75) <= 1.5 / cell
+    assert text.startswith("pixel (6, 3)")
 
 
 def test_step_cap_message(qtbot):

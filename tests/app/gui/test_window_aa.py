@@ -127,13 +127,24 @@ def test_coverage_error_overlay_matches_exact_coverage(window):
     assert accuracy.max == pytest.approx(expected_max, rel=1e-9, abs=1e-12)
     assert f"RMS {expected_rms:.4f}" in w.error_label.text()
     assert f"max {expected_max:.4f}" in w.error_label.text()
-    # The grid shows the heat map: white where right, red at the largest error.
+    # The grid shows the signed map: white where right, red where the run
+    # covers too much, blue where too little, fullest at the largest error.
     image = w.grid.image.image
-    assert np.array_equal(image, error_image(np.abs(estimate - exact), expected_max))
-    worst = np.unravel_index(np.argmax(np.abs(estimate - exact)), estimate.shape)
-    assert tuple(image[worst][:3]) == (255, 0, 0)
+    signed = estimate - exact
+    fade = np.rint(255 * (1 - np.abs(signed) / expected_max)).astype(np.uint8)
+    red = np.stack([np.full_like(fade, 255), fade, fade], axis=-1)
+    blue = np.stack([fade, fade, np.full_like(fade, 255)], axis=-1)
+    expected = np.where((signed < 0)[..., None], blue, red)
+    assert np.array_equal(image[..., :3], expected)
+    assert (signed < 0).any() and (signed > 0).any()  # both signs are on show
+    worst = np.unravel_index(np.argmax(np.abs(signed)), estimate.shape)
+    assert tuple(image[worst][:3]) == ((255, 0, 0) if signed[worst] > 0 else (0, 0, 255))
+    # The colour bar says what the colours mean, with the largest error at its ends.
+    assert w.error_scale.isVisible()
+    assert f"{expected_max:.3g}" in w.error_scale.high.text()
+    assert "too little" in w.error_scale.low.text()
     w.error_action.setChecked(False)
-    assert w.error_label.text() == ""
+    assert w.error_label.text() == "" and not w.error_scale.isVisible()
 
 
 def test_the_current_pixel_shows_exact_coverage_and_error(window):

@@ -227,6 +227,31 @@ def test_two_triangles_and_their_edge_values(open_window, qtbot):
     assert w.variables.value_color("e0").name() == "#1f7a3d"
 
 
+@pytest.mark.parametrize("name", ["aa-supersample", "aa-adaptive"])
+def test_four_clicks_make_one_triangle_and_a_point(open_window, name):
+    """The antialiasing family reads its points three at a time (shape
+    triangles): the fourth click starts a second triangle."""
+    w = open_window(name)
+    assert w.player.options["shape"] == "triangles"
+    w.clear_points()
+    corners = [(4, 4), (20, 5), (10, 18), (24, 8)]
+    for point in corners:
+        click(w, point)
+    assert w.player.points == [tuple(float(v) for v in p) for p in corners]
+    assert not w.message.styleSheet()  # no refusal
+    assert "2 more points for triangle 2" in w.message.text()
+    assert [w.points.label_text(k) for k in range(4)] == ["T1.P1", "T1.P2", "T1.P3", "T2.P1"]
+    assert w.grid.labels()[:4] == ["T1.P1", "T1.P2", "T1.P3", "T2.P1"]
+    # The run draws the one whole triangle: its exact coverage is not empty.
+    assert w.player.trace is not None and not w.player.trace.truncated
+    for point in [(30, 20), (14, 22)]:
+        click(w, point)
+    assert len(w.player.points) == 6 and "more point" not in w.message.text()
+    assert w.points.label_text(5) == "T2.P3"
+    w.set_option("shape", "thick-line")  # the same points read two at a time
+    assert w.grid.labels()[:3] == ["S1.P1", "S1.P2", "S2.P1"]
+
+
 def test_coverage_counts_overlaps_of_two_triangles(open_window, qtbot):
     w = open_window("triangle-scan")
     w.options.valueEdited.emit("fill_rule", "inclusive")
