@@ -79,7 +79,7 @@ def _scan_guides(trace, state, paths) -> Guides:
         # An edge whose ymax is this row leaves the AET here: it has no crossing.
         columns = found[1].columns
         x_column, top = columns.index("x"), columns.index("ymax")
-        crossings = [float(row[x_column]) for row in found[1].rows if row[top] > y]
+        crossings = [_x_value(row[x_column]) for row in found[1].rows if row[top] > y]
     dots = [(x, centre, "crossing") for x in crossings]
     if isinstance(state.step.record, Span) and found is not None:
         pair = _span_pair(trace, found, state.index)
@@ -87,6 +87,15 @@ def _scan_guides(trace, state, paths) -> Guides:
             lines.append((pair[0], centre, pair[1], centre, "pair"))
     labels = [(0.05, centre, f"y + \u00bd = {_short(centre)}")]
     return Guides(tuple(lines), tuple(dots), tuple(labels))
+
+
+def _x_value(cell) -> float:
+    """An AET's x as a number: the integer edge walk shows it as (whole, "e/dy")."""
+    if isinstance(cell, (tuple, list)) and len(cell) == 2:
+        whole, error = cell
+        numerator, over = (int(part) for part in str(error).split("/"))
+        return float(whole) + numerator / over
+    return float(cell)
 
 
 def _is_scan_line_run(trace) -> bool:
@@ -116,7 +125,7 @@ def _span_pair(trace, found, index: int):
     sort_step, aet = found
     ordinal = len(trace.steps_of(Span, lo=sort_step + 1, hi=index))
     x_column = aet.columns.index("x")
-    xs = [float(row[x_column]) for row in aet.rows]
+    xs = [_x_value(row[x_column]) for row in aet.rows]
     if "dir" in aet.columns:
         turns = [int(row[aet.columns.index("dir")]) for row in aet.rows]
         found, winding, left = [], 0, None

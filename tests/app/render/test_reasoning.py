@@ -154,3 +154,23 @@ def test_vector_frames_draw_the_same_reasoning():
     assert f"y + \u00bd = {y + 0.5:g}" in drawing.texts()
     plain = draw_frame(ex.FrameRenderer(scene, ex.ExportSettings(scale=4, reasoning=False)), i)
     assert not [shape for shape in plain.shapes if guide in shape]
+
+
+def test_the_integer_edge_walks_crossings_are_its_exact_x():
+    from fractions import Fraction
+
+    from app.render.reasoning import step_guides
+    from tests.support import record
+    contour = [(2, 2), (12, 3), (8, 9)]
+    trace = record("polygon-scanline-integer", [contour])
+    spans = [i for i in range(len(trace)) if trace.step(i).record is not None
+             and type(trace.step(i).record).__name__ == "Span"]
+    assert spans
+    for index in spans:
+        guides = step_guides(trace, trace.state_at(index), [])
+        y = trace.variables_at(index)["y"]
+        line = Fraction(int(y)) + Fraction(1, 2)
+        expected = sorted(float(Fraction(ax) + (line - ay) * Fraction(bx - ax, by - ay))
+                          for (ax, ay), (bx, by) in zip(contour, contour[1:] + contour[:1])
+                          if min(ay, by) <= line < max(ay, by))
+        assert sorted(x for x, _, _ in guides.dots) == pytest.approx(expected)
