@@ -30,6 +30,7 @@ from typing import Iterable, NamedTuple, Sequence
 import numpy as np
 
 from .errors import InputError
+from .keyframes import Keyframes, color_dtype, smallest_unsigned
 from .raster import Raster
 from .steps import NO_PIXEL, PLOT, RICH_RECORDS, CodeLine, Span, Start, Step, Vars
 
@@ -38,9 +39,12 @@ DEFAULT_STEP_CAP = 5_000_000
 # at about 22 bytes a step (README, "Performance") a trace stays near 1.1 GB.
 MAX_STEP_CAP = 50_000_000
 CHUNK = 1 << 16
-KEYFRAME_BUDGET = 64 * 2 ** 20  # bytes all keyframes of one trace may take
-KEYFRAME_BYTES_PER_STEP = 16  # and no more than this per recorded step
+KEYFRAME_BUDGET = 64 * 2 ** 20  # bytes the dense keyframes of one trace may take
+KEYFRAME_BYTES_PER_STEP = 16  # or this per recorded step, when that is more
 MIN_KEYFRAME_GAP = 1024
+# Steps between keyframes on long runs: a replay of this many steps takes a
+# few milliseconds, so any step of any run is that far from a keyframe.
+MAX_KEYFRAME_GAP = 1 << 16
 
 
 class TraceError(ValueError):
@@ -133,9 +137,10 @@ class Trace:
         self._steps_by_type: dict[type, list[int] | np.ndarray] = {}
         self._rich_steps: list[int] | np.ndarray = []
         self._span_table: np.ndarray | None = None
+        self._vars_index: dict | None = None  # name -> (steps, values) of its Vars updates
         self._chunks: list[np.ndarray] = []
-        self._keyframes: list[Raster] | None = None
-        self._gap = 0
+        self._keyframes: Keyframes | None = None
+        self._dtypes = (np.int32, np.int64)  # of the rasters raster_at gives
         self._flat: np.ndarray | None = None
         self._monitor: RecordMonitor | None = None
         self._next_report = math.inf
@@ -276,7 +281,7 @@ class Trace:
 
     def cache_nbytes(self) -> int:
         """Bytes held by the replay caches: keyframes, the pixel index, the span table."""
-        keyframes = sum(raster.bytes() for raster in self._keyframes or () if raster)
+        keyframes = 0 if self._keyframes is None else self._keyframes.nbytes()
         spans = 0 if self._span_table is None else self._span_table.nbytes
         return keyframes + spans + (0 if self._flat is None else self._flat.nbytes)
 
@@ -396,13 +401,33 @@ class Trace:
         """Constants, every Vars update up to step i, and step i's own values."""
         i = self._index(i)
         result = dict(self.start.constants)
-        for _, record in self.records_of(Vars, hi=i + 1):
-            result.update(record.values)
+        # Each name's latest update by binary search, names in the order
+        # they first appear: the same dict as applying every Vars record in
+        # turn, without walking them (a flood fill has one per pop).
+        for name, (steps, values) in self._variable_updates().items():
+            k = int(np.searchsorted(steps, i, side="right")) - 1
+            if k < 0:
+                continue
+            result[name] = values[k]
         result.update(self.step(i).values)
         branch = self.code[int(self.line[i])].branch
         if branch:
             result["choice"] = branch
         return result
+
+    def _variable_updates(self) -> dict:
+        """name -> (ascending steps, values) of the Vars records that set it,
+        names in the order they first appear (built once)."""
+        if self._vars_index is None:
+            index: dict = {}
+            for step, record in self.records_of(Vars):
+                for name, value in record.values.items():
+                    steps, values = index.setdefault(name, ([], []))
+                    steps.append(step)
+                    values.append(value)
+            self._vars_index = {name: (np.array(steps, np.int64), values)
+                                for name, (steps, values) in index.items()}
+        return self._vars_index
 
     def final_variables(self) -> dict:
         """The named variables at the end of the run: for each name, the
@@ -430,18 +455,23 @@ class Trace:
             return []
         return [(px + dx, py + dy) for dx, dy in offsets]
 
-    def state_at(self, i: int) -> FrameState:
+    def state_at(self, i: int, compact: bool = False) -> FrameState:
         i = self._index(i)
-        raster = self.raster_at(i)
+        raster = self.raster_at(i, compact)
         return FrameState(i, self.step(i), raster, self.variables_at(i), self.candidates_at(i))
 
-    def raster_at(self, i: int) -> Raster:
-        """The framebuffer after step i: nearest keyframe plus a numpy replay."""
+    def raster_at(self, i: int, compact: bool = False) -> Raster:
+        """The framebuffer after step i: nearest keyframe plus a numpy replay.
+
+        ``compact``: counts and colours in the smallest dtypes this run
+        needs (uint8 counts, say, rather than int32), which is what makes a
+        large grid quick to show; otherwise int32 counts and int64 colours.
+        """
         i = self._index(i)
         keyframes = self._ensure_keyframes()
-        slot = min((i + 1) // self._gap, len(keyframes) - 1)
-        raster = keyframes[slot].copy() if slot else self._empty_raster()
-        self.replay(slot * self._gap, i + 1, raster)
+        slot = min((i + 1) // keyframes.gap, len(keyframes) - 1)
+        raster = keyframes.restore(slot, *(self._dtypes if compact else (np.int32, np.int64)))
+        self.replay(slot * keyframes.gap, i + 1, raster)
         return raster
 
     def replay(self, lo: int, hi: int, raster: Raster) -> None:
@@ -454,8 +484,11 @@ class Trace:
         none). Pixels outside the grid are clipped.
         """
         lo, hi = self._range(lo, hi)
-        if hi <= lo:
-            return
+        if hi > lo:
+            raster.write_many(*self._replay_writes(lo, hi))
+
+    def _replay_writes(self, lo: int, hi: int):
+        """Flat pixels (-1: none), colours and depths steps lo..hi-1 write, in order."""
         column = self._value_column()
         values = None if column is None else self.values[lo:hi, column]
         depth_column = self._depth_column()
@@ -473,7 +506,7 @@ class Trace:
                 values = np.concatenate([values, span_values])[order]
             if depths is not None:
                 depths = np.concatenate([depths, np.full(len(orders), math.nan)])[order]
-        raster.write_many(flat, values, depths)
+        return flat, values, depths
 
     # ---------------------------------------------------------- internals
     def _range(self, lo: int, hi: int | None) -> tuple[int, int]:
@@ -510,20 +543,27 @@ class Trace:
             self._flat = np.where(inside, y * self.width + x, -1).astype(np.int32)
         return self._flat
 
-    def _ensure_keyframes(self) -> list[Raster]:
+    def _ensure_keyframes(self) -> Keyframes:
+        """Keyframes every gap steps (see keyframes.py), built in one replay;
+        it also finds the smallest dtypes the run's rasters need."""
         if self._keyframes is not None:
             return self._keyframes
         empty = self._empty_raster()
-        budget = min(KEYFRAME_BUDGET, KEYFRAME_BYTES_PER_STEP * len(self))
-        most = max(1, budget // max(1, empty.bytes()))
-        self._gap = max(MIN_KEYFRAME_GAP, math.ceil(len(self) / most))
-        # Slot 0 is the empty raster, made afresh when needed (np.zeros is
-        # cheaper than a copy and holds no memory until written).
-        keyframes = [None]
-        for lo in range(0, len(self) - self._gap, self._gap):
-            raster = keyframes[-1].copy() if keyframes[-1] else self._empty_raster()
-            self.replay(lo, lo + self._gap, raster)
-            keyframes.append(raster)
+        colors = np.int64
+        if empty.colors is not None:
+            colors = color_dtype(np.concatenate([self.values[:, self._value_column()],
+                                                 self.spans()["value"]]))
+            empty.colors = empty.colors.astype(colors)
+        budget = max(KEYFRAME_BUDGET, KEYFRAME_BYTES_PER_STEP * len(self))
+        gap = max(MIN_KEYFRAME_GAP, min(MAX_KEYFRAME_GAP, math.ceil(len(self) / 64)))
+        keyframes = Keyframes(empty, gap, budget)
+        raster = empty.copy()
+        for lo in range(0, len(self), gap):
+            writes = self._replay_writes(lo, min(lo + gap, len(self)))
+            raster.write_many(*writes)
+            if lo + gap < len(self):
+                keyframes.add(writes[0], raster)
+        self._dtypes = (smallest_unsigned(int(raster.counts.max(initial=0))), colors)
         self._keyframes = keyframes
         return keyframes
 

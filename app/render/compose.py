@@ -191,7 +191,7 @@ def _cells(raster, palette: Palette) -> np.ndarray:
     if colors is not None:
         valued = colors >= 0
         if valued.any():
-            values = colors[valued]
+            values = colors[valued].astype(np.uint32)  # int32 in compact rasters
             packed = (((values >> 16) & 255) | (values & 0xFF00) | ((values & 255) << 16)
                       | 0xFF000000).astype(_RGBA)
             again = counts[valued] > 1
