@@ -164,7 +164,7 @@ def test_rich_records_mid_stream():
     note = trace.step(4)
     assert note.record.text == "a remark" and note.pixel == (5, 5) and note.kind == CALC
     assert not note.writes and note.values == {}
-    assert trace.step(5).record is table and trace.step(5).pixel is None
+    assert trace.step(5).record == table and trace.step(5).pixel is None
     assert trace.step(2).record.values == {"a": 1, "b": "two"}
     assert trace.written_pixels().tolist() == [[0, 0], [1, 0], [2, 0]]
     assert trace.final_variables() == {"k": 7, "a": 3, "b": "two", "v": 3}
