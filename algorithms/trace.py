@@ -178,7 +178,7 @@ class Trace:
         self.start = start
         self._dtype = np.dtype([("line", "u2"), ("x", "i4"), ("y", "i4")]
                                + [(f"v{k}", "f8") for k in range(len(start.values))])
-        self._columns = Columns(self._dtype.names[3:], self._chunk)
+        self._columns = Columns(self._dtype.names[3:], min(self._chunk, PENDING_ROWS))
         self._nans = (math.nan,) * len(start.values)
         # Every frame, lean or rich, goes to this list first and to numpy a
         # chunk at a time: one conversion per chunk, never one per record.

@@ -16,7 +16,7 @@ from collections import OrderedDict
 
 import numpy as np
 
-GROWTH = 1.5  # the columns grow by half when a chunk does not fit
+GROWTH = 1.25  # the columns grow by a quarter when a chunk does not fit
 BATCH = 512  # rich records pickled together
 CACHED_BATCHES = 8  # unpickled batches kept for the next look-up
 

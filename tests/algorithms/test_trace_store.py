@@ -86,5 +86,5 @@ def test_recording_peak_stays_well_under_twice_what_is_kept():
         tracemalloc.stop()
     kept -= base
     assert kept >= trace.nbytes()
-    # Growth by half and one chunk on top; joining chunks at the end took 2.4x.
+    # Growth by a quarter and one chunk on top; joining chunks at the end took 2.4x.
     assert (peak - base) < 1.6 * kept
