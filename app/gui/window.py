@@ -37,6 +37,7 @@ from app.model.tools import (circle_kind, circle_options, clamp_option, drawing_
                              marker_option, placing_message, shape_paths, tool_hint)
 from app.render import frame as frame_view
 from app.render.compose import PALETTE, compose, coverage_counts, error_image
+from app.render.incremental import StepImages
 # What a frame shows is worked out in app/render/frame.py, shared with export.
 from app.render.frame import step_cells as _step_cells
 from app.render.frame import html_caption as _caption
@@ -66,6 +67,7 @@ class MainWindow(WindowLayout, WindowMenus, DepthAndAccuracy, QMainWindow):
         self.player = Player(self)
         self.history = self.player.session.history  # undo and redo of scene edits
         self._empty_image = None
+        self._step_images = StepImages()  # patched cell by cell between nearby steps
         self._last_hover = None
         self._error = ""  # the last refusal, shown until the next good change
         self._tables = TableIndex(None)
@@ -429,8 +431,8 @@ class MainWindow(WindowLayout, WindowMenus, DepthAndAccuracy, QMainWindow):
         if accuracy is not None and not self.coverage.isChecked():
             self.grid.set_image(error_image(accuracy.error, accuracy.max))
         else:
-            self.grid.set_image(compose(state.raster, None, self.palette_,
-                                        coverage=self.coverage.isChecked()))
+            self.grid.set_image(self._step_images.image(player.trace, state, self.palette_,
+                                                        coverage=self.coverage.isChecked()))
         self._show_depth(state)
         self._show_samples(state)
         self._show_error_summary()
