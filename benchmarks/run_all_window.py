@@ -35,11 +35,16 @@ def main() -> int:
         app.processEvents()
     player = window.player
     player.pause()
-    view = pg.GraphicsView()
+    view = pg.GraphicsLayoutWidget()
+    box = view.addViewBox()
     item = pg.ImageItem(axisOrder="row-major")
-    view.addItem(item)
+    box.addItem(item)
     view.resize(800, 800)
     view.show()
+    item.setImage(np.zeros((side, side, 4), np.uint8), autoLevels=False)
+    box.autoRange()
+    for _ in range(5):
+        app.processEvents()
     images = [np.full((side, side, 4), k * 40, np.uint8) for k in range(2)]
     start = len(player.trace) // 3
     for k in range(pairs):

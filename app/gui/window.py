@@ -553,9 +553,14 @@ class MainWindow(WindowLayout, WindowMenus, DepthAndAccuracy, QMainWindow):
         self._say(text, error)
 
     def _say(self, text: str, error: bool = False) -> None:
-        self.message.setText(text)
-        self.message.setToolTip(text)
-        self.message.setStyleSheet(ERROR_STYLE if error else "")
+        # Called on every step: only what changed is set (a style sheet
+        # costs milliseconds even when it is the same).
+        style = ERROR_STYLE if error else ""
+        if self.message.text() != text:
+            self.message.setText(text)
+            self.message.setToolTip(text)
+        if self.message.styleSheet() != style:
+            self.message.setStyleSheet(style)
 
     # ------------------------------------------------------------ dialogs
     def show_shortcuts(self) -> None:
