@@ -21,6 +21,7 @@ ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 
 from algorithms import registry, triangles  # noqa: E402
+from algorithms.batch import bresenham_lines, midpoint_circles  # noqa: E402
 from algorithms.antialias.lines import wu  # noqa: E402
 from algorithms.circles import midpoint_circle_pixels  # noqa: E402
 from algorithms.lines.bresenham import bresenham_pixels  # noqa: E402
@@ -127,10 +128,17 @@ def _line_figures(results, rng, repeats, count):
             pixels = bresenham_pixels(points, {"symmetric": False})
             canvas[pixels[:, 1], pixels[:, 0]] = 1
 
-    ratio = results.pair(f"{count} short lines (Bresenham kernel)", ours,
-                         lambda: [cv2.line(canvas, p, q, 1, 1, cv2.LINE_8) for p, q in lines],
-                         repeats, "cv2.line")
-    _kernel_target(results, "short lines", ratio, f"{count} lines")
+    peer = lambda: [cv2.line(canvas, p, q, 1, 1, cv2.LINE_8) for p, q in lines]  # noqa: E731
+    results.pair(f"{count} short lines (kernel per line)", ours, peer, repeats, "cv2.line")
+    starts, stops = ends[:, 0], ends[:, 1]
+
+    def batched():
+        pixels, _ = bresenham_lines(starts, stops)
+        canvas[pixels[:, 1], pixels[:, 0]] = 1
+
+    ratio = results.pair(f"{count} short lines (batched kernel)", batched, peer, repeats,
+                         "cv2.line")
+    _kernel_target(results, "short lines", ratio, f"{count} lines, batched")
     long_lines = [((int(a), 0), (int(b), SIZE - 1)) for a, b in rng.integers(0, SIZE, (32, 2))]
 
     def ours_long():
@@ -175,17 +183,23 @@ def _circle_figures(results, rng, repeats):
             pixels = midpoint_circle_pixels([centre], {"radius": 10})
             canvas[pixels[:, 1], pixels[:, 0]] = 1
 
-    ratio = results.pair("1000 circles r = 10 (midpoint kernel)", ours,
-                         lambda: [cv2.circle(canvas, c, 10, 1, 1, cv2.LINE_8) for c in centres],
-                         repeats, "cv2.circle")
-    _kernel_target(results, "circles r = 10", ratio)
+    peer = lambda: [cv2.circle(canvas, c, 10, 1, 1, cv2.LINE_8) for c in centres]  # noqa: E731
+    results.pair("1000 circles r = 10 (kernel per circle)", ours, peer, repeats, "cv2.circle")
+
+    def batched():
+        pixels, _ = midpoint_circles(centres, 10)
+        canvas[pixels[:, 1], pixels[:, 0]] = 1
+
+    ratio = results.pair("1000 circles r = 10 (batched kernel)", batched, peer, repeats,
+                         "cv2.circle")
+    _kernel_target(results, "circles r = 10", ratio, "batched")
 
     def skimage_circles():
         for x, y in centres:
             rr, cc = circle_perimeter(y, x, 10)
             canvas[rr, cc] = 1
 
-    results.pair("1000 circles r = 10 (midpoint kernel)", ours, skimage_circles, repeats,
+    results.pair("1000 circles r = 10 (batched kernel)", batched, skimage_circles, repeats,
                  "skimage")
 
 
