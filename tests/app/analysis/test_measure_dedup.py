@@ -47,3 +47,15 @@ def test_distinct_pixels_are_the_set_of_rows():
     got = distinct_pixels(pixels)
     assert sorted(map(tuple, got.tolist())) == sorted(set(map(tuple, pixels.tolist())))
     assert len(distinct_pixels(np.zeros((0, 2), np.int64))) == 0
+
+
+def test_asymmetry_counts_pixels_of_one_direction_only():
+    from app.analysis.measure_curves import asymmetry
+
+    rng = np.random.default_rng(5)
+    for _ in range(5):
+        a = rng.integers(0, 12, (40, 2))
+        b = rng.integers(0, 12, (30, 2))
+        expected = len(set(map(tuple, a.tolist())) ^ set(map(tuple, b.tolist())))
+        assert asymmetry(a, b) == expected
+    assert asymmetry(np.zeros((0, 2), np.int64), a) == len(set(map(tuple, a.tolist())))
