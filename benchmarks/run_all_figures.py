@@ -8,6 +8,7 @@ import collections
 import gc
 import os
 import random
+import statistics
 import subprocess
 import sys
 import tempfile
@@ -297,19 +298,13 @@ def access(results, quick: bool) -> None:
         results.spread("  state_at(compact) at random steps", times, "ms")
         plain = [_timed(lambda i=i: trace.state_at(i)) * 1000 for i in picks[:5]]
         results.spread("  state_at (int32/int64 raster)", plain, "ms")
-        medians.append(statistics_median(times))
+        medians.append(statistics.median(times))
         worst = max(worst, max(times))
-        print(f"{'  keyframes':<44} {len(trace._keyframes)} every {trace._keyframes.gap:,} steps,"
-              f" {trace.cache_nbytes() / 2 ** 20:.0f} MiB of caches for "
-              f"{trace.nbytes() / 2 ** 20:.0f} MiB of trace")
+        print(f"{'  replay caches (keyframes, pixel index)':<44} "
+              f"{trace.cache_nbytes() / 2 ** 20:.0f} MiB for {trace.nbytes() / 2 ** 20:.0f} MiB "
+              f"of trace")
     results.target("state_at median on big runs (worst run)", max(medians), 20.0, "ms")
     results.target("state_at slowest of the sampled steps", worst, 20.0, "ms")
-
-
-def statistics_median(values):
-    import statistics
-
-    return statistics.median(values)
 
 
 def _timed(action) -> float:
@@ -346,10 +341,10 @@ def window(results, quick: bool) -> None:
         window_ms = [float(v) for v in out[1::2]]
         bare_ms = [float(v) for v in out[0::2]]
         ratios = [w / b for w, b in zip(window_ms, bare_ms)]
-        median = statistics_median(window_ms)
+        median = statistics.median(window_ms)
         print(f"{'window step ' + str(side) + '^2':<44} ours {median:9.2f} ms  "
-              f"{'bare ImageItem':<14} {statistics_median(bare_ms):9.2f} ms  ratio min "
-              f"{min(ratios):7.2f}x median {statistics_median(ratios):7.2f}x max "
+              f"{'bare ImageItem':<14} {statistics.median(bare_ms):9.2f} ms  ratio min "
+              f"{min(ratios):7.2f}x median {statistics.median(ratios):7.2f}x max "
               f"{max(ratios):7.2f}x  ({len(ratios)} pairs)")
         results.target(f"window step {side}^2", median, 5.0, "ms")
 
