@@ -18,6 +18,14 @@ PANELS = (("code", "Pseudo-code"), ("variables", "Variables"), ("both", "Pseudo-
           ("none", "None"))
 THEMES = (("light", "Light"), ("dark", "Dark"))
 PER = (("auto", "Automatic"), ("step", "Step"), ("animation", "Animation frame"))
+# The further formats: (key, label, placeholder, file filter; None for a folder).
+MORE_OUTPUTS = (
+    ("mp4", "MP4 video", "optional: video.mp4 (H.264, for slides)", "MP4 video (*.mp4)"),
+    ("webm", "WebM video", "optional: video.webm", "WebM video (*.webm)"),
+    ("pdf", "PDF", "optional: frames.pdf (a vector page per frame)", "PDF (*.pdf)"),
+    ("svg_dir", "SVG frames", "optional: a folder for frame_0000.svg, ...", None),
+    ("html", "Interactive page", "optional: run.html (opens in any browser)", "Web page (*.html)"),
+)
 
 
 class ExportDialog(QDialog):
@@ -199,7 +207,27 @@ class ExportDialog(QDialog):
         where.addWidget(QLabel("PNG frames", output), 1, 0)
         where.addWidget(self.frames_dir, 1, 1)
         where.addWidget(self.browse_frames, 1, 2)
+        self.more: dict[str, QLineEdit] = {}
+        for row, (key, label, placeholder, pattern) in enumerate(MORE_OUTPUTS, 2):
+            edit = self.more[key] = QLineEdit(output)
+            edit.setPlaceholderText(placeholder)
+            browse = QPushButton("Browse\u2026", output)
+            browse.clicked.connect(lambda _=False, e=edit, t=label, p=pattern: self._choose(e, t, p))
+            where.addWidget(QLabel(label, output), row, 0)
+            where.addWidget(edit, row, 1)
+            where.addWidget(browse, row, 2)
         return output
+
+    def _choose(self, edit: QLineEdit, title: str, pattern: str | None) -> None:
+        if pattern is None:
+            path = QFileDialog.getExistingDirectory(self, title, edit.text())
+        else:
+            path, _ = QFileDialog.getSaveFileName(self, title, edit.text(), pattern)
+            suffix = pattern[pattern.index("*") + 1:-1]
+            if path and not path.lower().endswith(suffix):
+                path += suffix
+        if path:
+            edit.setText(path)
 
     def _buttons(self) -> QHBoxLayout:
         """Progress, the message line and the Export, Cancel and Close buttons."""
@@ -295,6 +323,7 @@ class ExportDialog(QDialog):
             "caption": self.caption.isChecked(), "panel": self.panel.currentData(),
             "theme": self.theme.currentData(), "gif": self.path.text().strip(),
             "frames_dir": self.frames_dir.text().strip(), "per": self.per.currentData(),
+            **{key: edit.text().strip() for key, edit in self.more.items()},
         }
 
     def set_values(self, values: dict) -> None:
@@ -316,6 +345,9 @@ class ExportDialog(QDialog):
             self.path.setText(values["gif"])
         if "frames_dir" in values:
             self.frames_dir.setText(values["frames_dir"])
+        for key, edit in self.more.items():
+            if key in values:
+                edit.setText(values[key])
 
     # ------------------------------------------------------------ running
     @property
@@ -346,8 +378,9 @@ class ExportDialog(QDialog):
     # ------------------------------------------------------------ private
     def _export_clicked(self) -> None:
         values = self.values()
-        if not values["gif"] and not values["frames_dir"]:
-            self.set_message("Choose a GIF file or a folder for PNG frames first.", error=True)
+        if not any(values[key] for key in ("gif", "frames_dir", *self.more)):
+            self.set_message("Choose where to export first: a GIF file, a folder for PNG "
+                             "frames, or one of the further formats.", error=True)
             return
         self.exportRequested.emit()
 

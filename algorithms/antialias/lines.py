@@ -9,7 +9,7 @@ from algorithms.code import Code
 from algorithms.exact import coverage as exact_coverage
 from algorithms.lines import Octant
 from algorithms.registry import Option
-from algorithms.steps import NO_PIXEL, PLOT, VISIT, Start, Vars
+from algorithms.steps import NO_PIXEL, PLOT, VISIT, Note, Start, Vars
 
 from .shapes import CAPS, LOOP, NAN, ink_blend, ops_sum
 
@@ -172,6 +172,11 @@ def line_area(points, options):
     table = coverage if steep else coverage.T
     columns = [c for c in range(table.shape[0]) if table[c].any()]
     columns.sort(key=lambda c: major_sign * c)
+    if tuple(p) == tuple(q) and options["caps"] == "butt":
+        # Said aloud because every other line algorithm plots the one pixel.
+        yield Note(line=at["done"], text="P = Q: with butt caps the rectangle has no length, "
+                                         "so it covers no area and nothing is drawn "
+                                         "(caps=square draws a w x w square)")
     written = 0
     total_area = 0.0
     pixel_line, touch_line = at["plot_pixel"], at["touch"]

@@ -54,14 +54,19 @@ def section_lines(view: View) -> str:
     if costs:
         at = costs[-1]
         out += ["", f"Cost per plotted pixel at {fmt(at)} px, counted from the pseudo-code "
-                    "lines each run executed (implicit: only the segments whose bounding box "
-                    "the generator can walk), and generator recording time:", ""]
-        out.append(table(["variant"] + OPS_HEADERS + ["generator us/px"],
-                         [[v] + _ops_cells(view, "lines", "length sweep", v,
-                                           at if view.get("lines", "length sweep", v, at, "ops")
-                                           is not None else costs[0])
-                          + [view.get("lines", "length sweep", v, at, "generator time")]
-                          for v in variants]))
+                    "lines each run executed, and generator recording time. A variant not "
+                    f"measured at {fmt(at)} px (the implicit form walks only bounding boxes of "
+                    f"at most {measure.IMPLICIT_MAX_BOX:,} pixels) shows its longest measured "
+                    "length, named in the *length* column:", ""]
+        rows = []
+        for v in variants:
+            length = max((n for n in costs
+                          if view.get("lines", "length sweep", v, n, "ops") is not None),
+                         default=at)
+            rows.append([v, f"{fmt(length)} px"] + _ops_cells(view, "lines", "length sweep", v,
+                                                             length)
+                        + [view.get("lines", "length sweep", v, length, "generator time")])
+        out.append(table(["variant", "length"] + OPS_HEADERS + ["generator us/px"], rows))
     dda = view.values("lines", "DDA precision", "segments wrong")
     if dda:
         out += ["", "DDA precision: the share of random segments of each length with at "

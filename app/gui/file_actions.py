@@ -23,6 +23,7 @@ from algorithms.registry import InputError
 from widgets.export_dialog import ExportDialog
 
 from app.render import export as exporting
+from app.render import formats
 from app.gui.appdata import open_settings
 from app.model import scene as scenes
 from app.model.scene import Scene, SceneError, one_line
@@ -91,6 +92,8 @@ class FileActions(QObject):
                                      self.save_as)
         menu.insertSeparator(first)
         self.export_action = action("&Export Animation\u2026", "Ctrl+E", self.export_animation)
+        self.export_page_action = action("Export Interactive &Page\u2026", "Ctrl+Shift+E",
+                                         self.export_page)
         if first is not None:
             menu.insertSeparator(first)
         self._fill_examples()
@@ -282,6 +285,14 @@ class FileActions(QObject):
         return True
 
     # ------------------------------------------------------------ export
+    def export_page(self) -> "ExportController | None":
+        """The export dialog set to write only the interactive page (HTML)."""
+        controller = self.export_animation()
+        if controller is not None:
+            gif = controller.dialog.values()["gif"]
+            controller.dialog.set_values({"gif": "", "html": str(Path(gif).with_suffix(".html"))})
+        return controller
+
     def export_animation(self) -> "ExportController | None":
         """Open the export dialog for the run on show."""
         window = self.window
@@ -341,20 +352,21 @@ class ExportThread(QThread):
     failed = Signal(str)
     cancelled = Signal()
 
-    def __init__(self, scene, trace, differences, settings, gif, frames_dir, parent=None):
+    def __init__(self, scene, trace, differences, settings, outputs, parent=None):
         super().__init__(parent)
-        self.job = (scene, trace, differences, settings, gif, frames_dir)
+        self.job = (scene, trace, differences, settings, outputs)
         self._stop = threading.Event()
 
     def cancel(self) -> None:
         self._stop.set()
 
     def run(self) -> None:  # the thread's body
-        scene, trace, differences, settings, gif, frames_dir = self.job
+        scene, trace, differences, settings, outputs = self.job
         try:
-            result = exporting.export(scene, settings, gif=gif, frames_dir=frames_dir,
-                                      progress=self.progressed.emit, cancelled=self._stop.is_set,
-                                      trace=trace, differences=differences)
+            result = formats.export_all(outputs, scene, settings, exporting.MAX_FRAMES_BYTES,
+                                        progress=self.progressed.emit,
+                                        cancelled=self._stop.is_set, trace=trace,
+                                        differences=differences, names=exporting.NAMES)
         except exporting.ExportCancelled:
             self.cancelled.emit()
         except exporting.ExportError as error:
@@ -389,7 +401,7 @@ class ExportController(QObject):
         self.dialog.finished.connect(lambda _result: self._stop_thread())
         self._summarise()
 
-    def export_settings(self) -> tuple[exporting.ExportSettings, str | None, str | None]:
+    def export_settings(self) -> tuple[exporting.ExportSettings, formats.Outputs]:
         values = self.dialog.values()
         settings = exporting.ExportSettings(
             first=values["first"], last=values["last"], fps=values["fps"], hold=values["hold"],
@@ -397,7 +409,8 @@ class ExportController(QObject):
             primitive=values["primitive"], highlight=values["highlight"],
             caption=values["caption"], panel=values["panel"], theme=values["theme"],
             loop=values["loop"], per=values["per"])
-        return settings, values["gif"] or None, values["frames_dir"] or None
+        return settings, formats.Outputs(**{key: values[key] or None for key in (
+            "gif", "frames_dir", "mp4", "webm", "svg_dir", "pdf", "html")})
 
     def _summarise(self) -> None:
         values = self.dialog.values()
@@ -414,10 +427,11 @@ class ExportController(QObject):
     def start(self) -> None:
         if self.thread is not None:
             return
-        settings, gif, frames_dir = self.export_settings()
+        settings, outputs = self.export_settings()
+        self.outputs = outputs
         self.result = None
-        self.thread = ExportThread(self.scene, self.trace, self.differences, settings, gif,
-                                   frames_dir, self)
+        self.thread = ExportThread(self.scene, self.trace, self.differences, settings, outputs,
+                                   self)
         self.thread.progressed.connect(self.dialog.set_progress)
         self.thread.succeeded.connect(self._succeeded)
         self.thread.failed.connect(self._failed)
@@ -446,13 +460,12 @@ class ExportController(QObject):
             thread.cancel()
             thread.wait()
 
-    def _succeeded(self, result) -> None:
+    def _succeeded(self, done) -> None:
+        result, page = done
         self.result = result
-        written = [str(p) for p in (result.gif, result.frames_dir) if p is not None]
-        width, height = result.size
-        self.dialog.set_message(f"Wrote {' and '.join(written)}: {result.frames} frames of "
-                                f"{width}x{height} pixels.")
-        if self.settings is not None and result.gif is not None:
+        self.dialog.set_message("Wrote " + "; ".join(formats.summary(self.outputs, result, page))
+                                + ".")
+        if self.settings is not None and result is not None and result.gif is not None:
             self.settings.setValue(EXPORT_FOLDER_KEY, str(Path(result.gif).resolve().parent))
 
     def _failed(self, message: str) -> None:

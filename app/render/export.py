@@ -279,9 +279,7 @@ def export(scene, settings: ExportSettings = ExportSettings(), gif=None, frames_
             for done, index in enumerate(steps, 1):
                 if cancelled is not None and cancelled():
                     raise ExportCancelled("the export was cancelled")
-                image = renderer.image(index)
-                for output in outputs:
-                    output.grab_frame(image)
+                hand_over(outputs, renderer, index)
                 if progress is not None:
                     progress(done, len(steps))
             if cancelled is not None and cancelled():
@@ -294,6 +292,20 @@ def export(scene, settings: ExportSettings = ExportSettings(), gif=None, frames_
     return ExportResult(len(steps), renderer.size, durations,
                         Path(gif) if gif is not None else None,
                         Path(frames_dir) if frames_dir is not None else None)
+
+
+def hand_over(outputs, renderer: FrameRenderer, index: int) -> None:
+    """Frame ``index`` to every writer: the picture, or the step itself to a
+    writer that draws it (vector frames have ``grab_step``); the picture
+    is drawn only when a writer takes it."""
+    image = None
+    for output in outputs:
+        if hasattr(output, "grab_step"):
+            output.grab_step(renderer, index)
+            continue
+        if image is None:
+            image = renderer.image(index)
+        output.grab_frame(image)
 
 
 def check_frames_size(renderer: FrameRenderer, steps, limit: int) -> None:

@@ -34,7 +34,7 @@ from app.render.settings import ExportError
 
 FRAME_NAME = "frame_{:0{width}d}.png"
 MANIFEST = ".rasterlab-frames.json"  # what the last export wrote into a frames folder
-_FRAME_FILE = re.compile(r"^frame_\d{4,}\.png$")
+_FRAME_FILE = re.compile(r"^frame_\d{4,}\.(png|svg)$")
 
 
 class FrameWriter(Protocol):
@@ -89,19 +89,7 @@ class GifWriter:
         self._frames: deque = deque()
 
     def setup(self, size, count, palette, transparent) -> None:
-        directory = _folder_of(self.path)
-        if self.path.is_dir():
-            raise ExportError(f"{self.path}: is a folder, not a file name")
-        remove_leftovers(self.path)
-        try:
-            handle, name = tempfile.mkstemp(prefix=f".{self.path.name}.{os.getpid()}.",
-                                            suffix=".tmp", dir=directory)
-        except OSError as error:
-            raise ExportError(f"cannot write {self.path}: the folder {directory} is not writable "
-                              f"({error.strerror or error})") from None
-        os.close(handle)
-        self.temporary = Path(name)
-        _readable_by_all(self.temporary)
+        self.temporary = temporary_beside(self.path)
         self.palette, self.transparent = palette, transparent
 
     def grab_frame(self, image: Image.Image) -> None:
@@ -253,6 +241,27 @@ def remove_leftovers(path: Path) -> list[Path]:
             leftover.unlink(missing_ok=True)
             removed.append(leftover)
     return removed
+
+
+def temporary_beside(path: Path) -> Path:
+    """A new empty temporary file beside ``path`` (named so that
+    ``remove_leftovers`` finds it once its process is gone), after removing
+    what killed exports to ``path`` left; refused when ``path`` is a folder
+    or its folder cannot be written."""
+    path = Path(path)
+    directory = _folder_of(path)
+    if path.is_dir():
+        raise ExportError(f"{path}: is a folder, not a file name")
+    remove_leftovers(path)
+    try:
+        handle, name = tempfile.mkstemp(prefix=f".{path.name}.{os.getpid()}.", suffix=".tmp",
+                                        dir=directory)
+    except OSError as error:
+        raise ExportError(f"cannot write {path}: the folder {directory} is not writable "
+                          f"({error.strerror or error})") from None
+    os.close(handle)
+    _readable_by_all(Path(name))
+    return Path(name)
 
 
 def _readable_by_all(path: Path) -> None:

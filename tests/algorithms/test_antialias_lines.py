@@ -9,6 +9,8 @@ from hypothesis import given, settings
 
 from algorithms import antialias as aa
 from algorithms.registry import get
+from algorithms.steps import Note
+from tests.support import record
 from tests.support.linecases import NAMED_CASES, OCTANT_CASES, points
 
 
@@ -159,3 +161,17 @@ def test_area_line_generator_walks_the_columns_from_p_to_q(p, q):
     assert np.all(np.diff(majors) * direction >= 0)
     final = trace.final_variables()
     assert final["area"] == pytest.approx(math.dist(p, q), rel=1e-12)
+
+
+def test_a_zero_length_area_line_says_why_it_draws_nothing():
+    trace = record("line-area", [(3, 3), (3, 3)], grid=(8, 8))
+    assert not trace.written_pixels().size
+    notes = [r.text for _, r in trace.records_of(Note)]
+    assert len(notes) == 1 and "no area" in notes[0] and "caps=square" in notes[0]
+
+
+def test_a_zero_length_square_capped_area_line_fills_its_one_pixel():
+    # A w x w square centred on the pixel centre is exactly that pixel for w = 1.
+    trace = record("line-area", [(3, 3), (3, 3)], {"caps": "square"}, grid=(8, 8))
+    assert [tuple(p) for p in trace.written_pixels()] == [(3, 3)]
+    assert not trace.records_of(Note)

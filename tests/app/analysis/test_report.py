@@ -271,3 +271,23 @@ def test_a_killed_report_is_cleaned_up_by_the_next(old_report):
     assert names == {"report.md", "measurements.csv", "measurements.json", "lines.png",
                      "notes.txt"}
     assert (folder / "report.md").read_bytes() != old["report.md"]
+
+
+def test_the_cost_table_names_the_length_each_row_was_measured_at():
+    from app.analysis.report_findings import View
+    from app.analysis.report_sections import section_lines
+
+    def row(variant, length, metric, value):
+        return {"family": "lines", "experiment": "length sweep", "variant": variant,
+                "parameter_value": length, "metric": metric, "value": value}
+
+    rows = [row("Bresenham", n, "differing pixels", 0) for n in (100, 10000)]
+    rows += [row("implicit", 100, "differing pixels", 0)]
+    rows += [row("Bresenham", 100, "ops", 5.0), row("Bresenham", 10000, "ops", 4.0),
+             row("implicit", 100, "ops", 77.0)]
+    text = section_lines(View(rows))
+    cost = [line for line in text.splitlines() if line.startswith("| implicit") and "77" in line]
+    assert len(cost) == 1 and "| 100 px |" in cost[0]
+    bresenham = [line for line in text.splitlines() if line.startswith("| Bresenham")
+                 and "| 4" in line]
+    assert len(bresenham) == 1 and "| 10 000 px |" in bresenham[0]

@@ -58,7 +58,7 @@ def test_the_file_menu_holds_the_actions(window, files):
     menu = fa._file_menu(window)
     texts = [a.text() for a in menu.actions() if not a.isSeparator()]
     assert texts == ["&Open\u2026", "Open &Recent", "Open &Example", "&Save", "Save &As\u2026",
-                     "&Export Animation\u2026", "&Quit"]
+                     "&Export Animation\u2026", "Export Interactive &Page\u2026", "&Quit"]
     assert files.export_action.shortcut().toString() == "Ctrl+E"
     assert files.open_action.shortcut().toString() == "Ctrl+O"
     assert files.save_action.shortcut().toString() == "Ctrl+S"
@@ -282,7 +282,7 @@ def test_export_problems_show_in_the_dialog(window, files, qtbot, tmp_path):
     assert "does not exist" in dialog.message.text()
     dialog.set_values({"gif": "", "frames_dir": ""})
     qtbot.mouseClick(dialog.export_button, Qt.MouseButton.LeftButton)
-    assert not controller.busy and "Choose a GIF file" in dialog.message.text()
+    assert not controller.busy and "Choose where to export" in dialog.message.text()
 
 
 def test_escape_while_exporting_cancels(window, files, qtbot, tmp_path, monkeypatch):
@@ -452,3 +452,28 @@ def test_saving_while_an_open_records_is_refused(qtbot, held, messages):
     with qtbot.waitSignal(window.player.recordingFinished, timeout=10_000):
         window.player.cancel_recording()
     gate.set()
+
+
+def test_the_dialog_exports_every_format_at_once(window, files, qtbot, tmp_path):
+    window.set_scene("line-bresenham", [(2, 3), (12, 7)], None, (16, 10))
+    controller = files.export_animation()
+    dialog = controller.dialog
+    targets = {"mp4": tmp_path / "a.mp4", "webm": tmp_path / "a.webm", "pdf": tmp_path / "a.pdf",
+               "svg_dir": tmp_path / "svg", "html": tmp_path / "a.html"}
+    dialog.set_values({"gif": "", "scale": 8, **{k: str(v) for k, v in targets.items()}})
+    qtbot.mouseClick(dialog.export_button, Qt.MouseButton.LeftButton)
+    wait_done(qtbot, controller)
+    text = dialog.message.text()
+    assert text.startswith("Wrote") and "interactive page" in text, text
+    frames = len(window.player.trace)
+    assert len(list(targets["svg_dir"].glob("frame_*.svg"))) == frames
+    assert all(path.exists() for path in targets.values())
+    assert "a.gif" not in {p.name for p in tmp_path.iterdir()}
+
+
+def test_export_interactive_page_asks_only_for_the_page(window, files):
+    window.set_scene("line-bresenham", [(2, 3), (12, 7)], None, (16, 10))
+    controller = files.export_page()
+    values = controller.dialog.values()
+    assert values["gif"] == "" and values["html"].endswith(".html")
+    assert files.export_page_action.shortcut().toString() == "Ctrl+Shift+E"

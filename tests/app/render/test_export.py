@@ -445,7 +445,7 @@ def test_cli_exports_gif_and_frames(run_cli, line_scene, tmp_path):
 
 
 @pytest.mark.parametrize("args, words", [
-    ([], "--gif OUT.gif, --frames-dir DIR"),
+    ([], "export needs an output: --gif, --frames-dir, --mp4, --webm, --svg-dir, --pdf or --html"),
     (["--gif", "{tmp}/x.gif", "--fps", "0"], "--fps"),
     (["--gif", "{tmp}/x.gif", "--fps", "1e9"], "--fps"),
     (["--gif", "{tmp}/x.gif", "--fps", "inf"], "--fps"),

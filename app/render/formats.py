@@ -1,0 +1,119 @@
+"""The export's further formats, as the command line asks for them: video
+(MP4, WebM), vector frames (an SVG folder, a PDF) and a Beamer snippet.
+Each is a writer of the export's one writer protocol (``app.render.writers``),
+so every format gets the same frames, range, timing and look."""
+from __future__ import annotations
+
+import os
+from pathlib import Path
+from typing import NamedTuple
+
+from app.model.files import write_atomically
+from app.render.settings import ExportError
+
+
+class Outputs(NamedTuple):
+    """Where an export goes: any of these paths (None: not that format)."""
+
+    gif: str | None = None
+    frames_dir: str | None = None
+    mp4: str | None = None
+    webm: str | None = None
+    svg_dir: str | None = None
+    pdf: str | None = None
+    beamer: str | None = None
+    html: str | None = None
+    force: bool = False  # a page over its size budget is written all the same
+
+
+def export_all(args, scene, settings, frames_limit: int, progress=None, cancelled=None,
+               trace=None, differences=None, names=("--from", "--to")):
+    """Every output ``args`` (Outputs, or the command line's arguments) asks
+    for: the frames (GIF, PNG, video, vector, Beamer) in one pass, then the
+    page; (ExportResult or None, Page or None)."""
+    from app.render import export as exporting
+
+    result = None
+    frame_outputs = (args.gif, args.frames_dir, args.mp4, args.webm, args.svg_dir, args.pdf)
+    if any(output is not None for output in frame_outputs):
+        more = writers(args, settings, scene)
+        result = exporting.export(scene, settings, gif=args.gif, frames_dir=args.frames_dir,
+                                  progress=progress, cancelled=cancelled, names=names,
+                                  frames_limit=frames_limit, writers=more, trace=trace,
+                                  differences=differences)
+        finish(args, scene, more)
+    page = write_html(args, scene, settings, trace) if args.html is not None else None
+    return result, page
+
+
+def summary(args, result, page) -> list[str]:
+    """The command's lines: what was written, how many frames, how long, how large."""
+    lines = []
+    if result is not None:
+        width, height = result.size
+        written = [str(path) for path in (result.gif, result.frames_dir) if path is not None] \
+            + [str(path) for path in (args.mp4, args.webm, args.svg_dir, args.pdf, args.beamer)
+               if path is not None]
+        lines.append(f"{' and '.join(written)}: {result.frames} "
+                     f"frame{'s' if result.frames != 1 else ''} of {width}x{height} pixels, "
+                     f"{sum(result.durations) / 1000:g} s")
+    if page is not None:
+        lines.append(f"{args.html}: an interactive page of {page.steps:,} steps, "
+                     f"{page.size / 2 ** 20:.2f} MB")
+    return lines
+
+
+def writers(args, settings, scene) -> list:
+    """The writers for the format options given (--mp4, --webm, --svg-dir, --pdf)."""
+    out = []
+    if args.mp4 is not None or args.webm is not None:
+        from app.render.video import VideoWriter
+        out += [VideoWriter(path, kind, settings.fps, settings.hold)
+                for path, kind in ((args.mp4, "mp4"), (args.webm, "webm")) if path is not None]
+    if args.svg_dir is not None or args.pdf is not None:
+        from app.render.vector import PdfWriter, SvgFolderWriter
+        only = bookmark_steps(scene) if getattr(args, "pages", "frames") == "bookmarks" else None
+        out += [SvgFolderWriter(args.svg_dir, only)] if args.svg_dir is not None else []
+        out += [PdfWriter(args.pdf, only)] if args.pdf is not None else []
+    return out
+
+
+def bookmark_steps(scene) -> set[int]:
+    """The steps of the scene's bookmarks: the vector frames of --pages bookmarks."""
+    if not scene.bookmarks:
+        raise ExportError("--pages bookmarks: the scene has no bookmarks (set them in the "
+                          "window's Bookmarks panel, Ctrl+B)")
+    return {int(b["step"]) for b in scene.bookmarks}
+
+
+def finish(args, scene, done_writers) -> None:
+    """What is written once the frames are: the Beamer snippet (--beamer)."""
+    if args.beamer is None:
+        return
+    from app.render.vector import PdfWriter, beamer_snippet
+    pdf = next(w for w in done_writers if isinstance(w, PdfWriter))
+    beamer = Path(args.beamer)
+    reference = os.path.relpath(Path(args.pdf).resolve(), beamer.resolve().parent)
+    title = scene.title or f"{scene.algorithm}"
+    text = beamer_snippet(Path(reference).as_posix(), pdf.pages, title)
+    write_atomically(beamer, text.encode("utf-8"), ExportError)
+
+
+class Page(NamedTuple):
+    """What --html wrote: the run's steps and the page's size in bytes."""
+
+    steps: int
+    size: int
+
+
+def write_html(args, scene, settings, trace=None) -> Page:
+    """The interactive page (--html), from the scene's run (recorded here
+    unless ``trace`` is the run already recorded)."""
+    from app.render.html import write_page
+    from app.render.settings import record
+
+    if trace is None:
+        trace = record(scene, memory_limit=settings.memory_limit)
+    size = write_page(scene, trace, args.html, settings.for_grid(trace.width, trace.height),
+                      force=args.force)
+    return Page(len(trace), size)

@@ -1,0 +1,36 @@
+"""A real browser for the interactive page's tests: Debian's Chromium,
+headless, driven by Selenium through chromedriver, with the network off."""
+from __future__ import annotations
+
+import time
+
+from selenium import webdriver
+from selenium.webdriver.chrome.service import Service
+
+CHROMIUM, DRIVER = "/usr/bin/chromium", "/usr/bin/chromedriver"
+
+
+def start_browser():
+    options = webdriver.ChromeOptions()
+    options.binary_location = CHROMIUM
+    for argument in ("--headless=new", "--no-sandbox", "--disable-gpu", "--disable-dev-shm-usage",
+                     "--window-size=1400,900", "--force-device-scale-factor=1"):
+        options.add_argument(argument)
+    driver = webdriver.Chrome(service=Service(DRIVER), options=options)
+    driver.set_network_conditions(offline=True, latency=0, download_throughput=0,
+                                  upload_throughput=0)
+    return driver
+
+
+def open_page(driver, path, timeout: float = 20.0):
+    """Load the page and wait until its player says it is ready (or failed)."""
+    driver.get(path.resolve().as_uri())
+    end = time.monotonic() + timeout
+    while time.monotonic() < end:
+        state = driver.execute_script(
+            "return [document.body.dataset.ready || null, document.body.dataset.error || null]")
+        if state[0] or state[1]:
+            assert state[1] is None, f"the page failed: {state[1]}"
+            return
+        time.sleep(0.05)
+    raise AssertionError("the page did not become ready")
