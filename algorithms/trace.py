@@ -32,6 +32,8 @@ from typing import Iterable, NamedTuple, Sequence
 import numpy as np
 
 from .errors import InputError
+from .keyframes import Keyframes, color_dtype, smallest_unsigned
+from .trace_store import Columns, Records
 from .raster import Raster
 from .steps import NO_PIXEL, PLOT, RICH_RECORDS, CodeLine, Span, Start, Step, Vars
 
@@ -40,13 +42,18 @@ DEFAULT_STEP_CAP = 5_000_000
 # at about 22 bytes a step (README, "Performance") a trace stays near 1.1 GB.
 MAX_STEP_CAP = 50_000_000
 CHUNK = 1 << 16
-KEYFRAME_BUDGET = 64 * 2 ** 20  # bytes all keyframes of one trace may take
-KEYFRAME_BYTES_PER_STEP = 16  # and no more than this per recorded step
+KEYFRAME_BUDGET = 64 * 2 ** 20  # bytes the dense keyframes of one trace may take
+KEYFRAME_BYTES_PER_STEP = 16  # or this per recorded step, when that is more
 MIN_KEYFRAME_GAP = 1024
 # While frames come slowly, the bulk chunk shrinks so that a cancel is heard
 # within about this many seconds, however long each frame takes.
 PACE = 0.02
 FIRST_CHUNK = 64
+SHORT_GROUP = 64  # tuples between rich records gathered in a list, not converted alone
+PENDING_ROWS = 8192  # frames the list holds before they go to numpy (a few MB at most)
+# Steps between keyframes on long runs: a replay of this many steps takes a
+# few milliseconds, so any step of any run is that far from a keyframe.
+MAX_KEYFRAME_GAP = 1 << 16
 
 
 class TraceError(ValueError):
@@ -155,7 +162,7 @@ class Trace:
         self.width, self.height = width, height
         self.step_cap = step_cap
         self.start: Start | None = None
-        self._records: dict[int, object] = {}
+        self._store = Records()  # the rich records, by step
         self.truncated = False
         self.message = ""
         # Steps of the rich records, per record type and of all types: lists
@@ -163,9 +170,9 @@ class Trace:
         self._steps_by_type: dict[type, list[int] | np.ndarray] = {}
         self._rich_steps: list[int] | np.ndarray = []
         self._span_table: np.ndarray | None = None
-        self._chunks: list[np.ndarray] = []
-        self._keyframes: list[Raster] | None = None
-        self._gap = 0
+        self._vars_index: dict | None = None  # name -> (steps, values) of its Vars updates
+        self._keyframes: Keyframes | None = None
+        self._dtypes = (np.int32, np.int64)  # of the rasters raster_at gives
         self._flat: np.ndarray | None = None
         self._monitor: RecordMonitor | None = None
         self._next_report = math.inf
@@ -204,12 +211,15 @@ class Trace:
         self.start = start
         self._dtype = np.dtype([("line", "u2"), ("x", "i4"), ("y", "i4")]
                                + [(f"v{k}", "f8") for k in range(len(start.values))])
-        self._chunks.append(self._rich_row(start))
-        self._count = 1
+        self._columns = Columns(self._dtype.names[3:], min(self._chunk, PENDING_ROWS))
+        self._nans = (math.nan,) * len(start.values)
+        # Every frame, lean or rich, goes to this list first and to numpy a
+        # chunk at a time: one conversion per chunk, never one per record.
+        self._pending = [(start.line, NO_PIXEL, NO_PIXEL) + self._nans]
         self._store_rich(0, start)
         capped = islice(frames, self.step_cap - 1)
-        # Lean tuples go to numpy in bulk; groupby(type) sets the rare rich
-        # records aside without a Python-level test per frame.
+        # groupby(type) sets the rare rich records aside without a
+        # Python-level test per frame.
         for kind, group in groupby(capped, type):
             if kind is tuple:
                 self._record_lean(group)
@@ -218,17 +228,32 @@ class Trace:
                     self._record_rich(record)
                     if self._monitor is not None and self._monitor.cancelled:
                         self._report()
-            if self._count >= self._next_report:
-                self._report()
+        self._flush()
         if self._count >= self.step_cap and next(frames, None) is not None:
             self.truncated = True
             self.message = (f"Recording stopped at the step cap of {self.step_cap:,} steps; "
                             "the run goes on beyond it. Raise the cap or use a smaller input.")
         self._finish()
 
+    @property
+    def _count(self) -> int:
+        """Frames recorded so far, converted or waiting."""
+        return self._columns.count + len(self._pending)
+
     def _record_lean(self, group) -> None:
+        # A short run of tuples between rich records waits in the list; a
+        # long one goes to numpy straight from the generator, which is
+        # quicker than building the list first.
+        pending = self._pending
+        before = len(pending)
+        pending.extend(islice(group, SHORT_GROUP))
+        if len(pending) - before < SHORT_GROUP:
+            if len(pending) >= min(self._chunk, PENDING_ROWS):
+                self._flush()
+            return
+        self._flush()
         while True:
-            first = self._count
+            first = self._columns.count
             began = time.perf_counter()
             try:
                 # never past the next report: progress keeps its interval
@@ -237,13 +262,11 @@ class Trace:
             except InputError:
                 raise  # the generator refused its input: not a protocol fault
             except (ValueError, TypeError, OverflowError) as error:
-                raise TraceError(f"near step {first}: a frame is not (line, x, y"
-                                 f"{', value' * len(self.start.values)}): {error}") from None
+                raise self._frame_error(first, error) from None
             if not len(rows):
                 return
             self._check_rows(rows, first)
-            self._chunks.append(rows)
-            self._count += len(rows)
+            self._columns.append(rows)
             if self._monitor is not None:
                 self._pace(time.perf_counter() - began)
             if self._count >= self._next_report:
@@ -264,19 +287,28 @@ class Trace:
         index = self._count
         if not isinstance(record, RICH_RECORDS) or isinstance(record, Start):
             raise TraceError(f"step {index}: {record!r} is not a frame steps.py allows here")
-        row = self._rich_row(record)
-        self._check_rows(row, index)
-        self._store_rich(index, record)
-        self._chunks.append(row)
-        self._count += 1
-
-    def _rich_row(self, record) -> np.ndarray:
-        row = np.zeros(1, self._dtype)
         pixel = getattr(record, "pixel", None) or (NO_PIXEL, NO_PIXEL)
-        row["line"], row["x"], row["y"] = record.line, pixel[0], pixel[1]
-        for name in self._dtype.names[3:]:
-            row[name] = math.nan
-        return row
+        self._pending.append((record.line, pixel[0], pixel[1]) + self._nans)
+        self._store_rich(index, record)
+        if len(self._pending) >= min(self._chunk, PENDING_ROWS):
+            self._flush()
+
+    def _flush(self) -> None:
+        """The waiting frames to numpy and into the columns; report progress."""
+        first = self._columns.count
+        try:
+            rows = np.fromiter(self._pending, self._dtype, len(self._pending))
+        except (ValueError, TypeError, OverflowError) as error:
+            raise self._frame_error(first, error) from None
+        self._check_rows(rows, first)
+        self._columns.append(rows)
+        self._pending = []
+        if self._count >= self._next_report:
+            self._report()
+
+    def _frame_error(self, first: int, error) -> TraceError:
+        return TraceError(f"near step {first}: a frame is not (line, x, y"
+                          f"{', value' * len(self.start.values)}): {error}")
 
     def _check_rows(self, rows: np.ndarray, first_index: int) -> None:
         bad = rows["line"] >= len(self.code)
@@ -286,30 +318,17 @@ class Trace:
                              f"does not exist")
 
     def _store_rich(self, index: int, record) -> None:
-        self._records[index] = record
+        self._store.add(record)
         self._rich_steps.append(index)
         self._steps_by_type.setdefault(type(record), []).append(index)
 
     def _finish(self) -> None:
-        # Chunk by chunk into the columns rather than one concatenate: each
-        # copy is short, so a recording in a worker thread hands the
-        # interpreter lock back often (and one copy of the frames is saved).
-        count = sum(len(chunk) for chunk in self._chunks)
-        names = self._dtype.names[3:]
-        self.line = np.empty(count, "u2")
-        self.x = np.empty(count, "i4")
-        self.y = np.empty(count, "i4")
-        self.values = np.empty((count, len(names)))
-        at = 0
-        for block in _blocks(self._chunks):
-            end = at + len(block)
-            self.line[at:end], self.x[at:end], self.y[at:end] = \
-                block["line"], block["x"], block["y"]
-            for column, name in enumerate(names):
-                self.values[at:end, column] = block[name]
-            at = end
-        self._chunks = []
+        columns = self._columns
+        columns.finish()
+        self.line, self.x, self.y, self.values = columns.line, columns.x, columns.y, columns.values
+        self._columns = None
         self._rich_steps = _frozen_steps(self._rich_steps)
+        self._store.finish(self._rich_steps)
         self._steps_by_type = {kind: _frozen_steps(steps)
                                for kind, steps in self._steps_by_type.items()}
 
@@ -327,7 +346,7 @@ class Trace:
 
     def cache_nbytes(self) -> int:
         """Bytes held by the replay caches: keyframes, the pixel index, the span table."""
-        keyframes = sum(raster.bytes() for raster in self._keyframes or () if raster)
+        keyframes = 0 if self._keyframes is None else self._keyframes.nbytes()
         spans = 0 if self._span_table is None else self._span_table.nbytes
         return keyframes + spans + (0 if self._flat is None else self._flat.nbytes)
 
@@ -338,7 +357,8 @@ class Trace:
     # ------------------------------------------------------- rich records
     def record_at(self, i: int):
         """The rich record of step i (a Start, Vars, Table, Note or Span), or None."""
-        return self._records.get(self._index(i))
+        i = self._index(i)
+        return self.start if i == 0 else self._store.get(i)
 
     def steps_of(self, *types: type, lo: int = 0, hi: int | None = None) -> np.ndarray:
         """Ascending steps in lo..hi-1 that hold a rich record of one of
@@ -351,8 +371,11 @@ class Trace:
 
     def records_of(self, *types: type, lo: int = 0, hi: int | None = None) -> list:
         """(step, record) pairs of the rich records ``steps_of`` finds, in step order."""
-        return [(step, self._records[step])
-                for step in self.steps_of(*types, lo=lo, hi=hi).tolist()]
+        steps = self.steps_of(*types, lo=lo, hi=hi)
+        records = self._store.at_positions(self._store.position(steps))
+        if len(steps) and steps[0] == 0:
+            records[0] = self.start
+        return list(zip(steps.tolist(), records))
 
     def last_of(self, *types: type, at: int):
         """The (step, record) pair of the latest record of one of ``types``
@@ -363,7 +386,7 @@ class Trace:
             k = int(np.searchsorted(steps, at, side="right")) - 1
             if k >= 0:
                 latest = max(latest, int(steps[k]))
-        return None if latest < 0 else (latest, self._records[latest])
+        return None if latest < 0 else (latest, self.record_at(latest))
 
     def spans(self, lo: int = 0, hi: int | None = None) -> np.ndarray:
         """The Span records of steps lo..hi-1, on lines of any kind, one row
@@ -441,19 +464,39 @@ class Trace:
         pixel = None if x == NO_PIXEL else (x, y)
         values = {name: float(v) for name, v in zip(self.value_names, self.values[i])
                   if not math.isnan(v)}
-        return Step(i, line, code.kind, pixel, values, code.branch, self._records.get(i))
+        return Step(i, line, code.kind, pixel, values, code.branch, self.record_at(i))
 
     def variables_at(self, i: int) -> dict:
         """Constants, every Vars update up to step i, and step i's own values."""
         i = self._index(i)
         result = dict(self.start.constants)
-        for _, record in self.records_of(Vars, hi=i + 1):
-            result.update(record.values)
+        # Each name's latest update by binary search, names in the order
+        # they first appear: the same dict as applying every Vars record in
+        # turn, without walking them (a flood fill has one per pop).
+        for name, (steps, values) in self._variable_updates().items():
+            k = int(np.searchsorted(steps, i, side="right")) - 1
+            if k < 0:
+                continue
+            result[name] = values[k]
         result.update(self.step(i).values)
         branch = self.code[int(self.line[i])].branch
         if branch:
             result["choice"] = branch
         return result
+
+    def _variable_updates(self) -> dict:
+        """name -> (ascending steps, values) of the Vars records that set it,
+        names in the order they first appear (built once)."""
+        if self._vars_index is None:
+            index: dict = {}
+            for step, record in self.records_of(Vars):
+                for name, value in record.values.items():
+                    steps, values = index.setdefault(name, ([], []))
+                    steps.append(step)
+                    values.append(value)
+            self._vars_index = {name: (np.array(steps, np.int64), values)
+                                for name, (steps, values) in index.items()}
+        return self._vars_index
 
     def final_variables(self) -> dict:
         """The named variables at the end of the run: for each name, the
@@ -481,18 +524,23 @@ class Trace:
             return []
         return [(px + dx, py + dy) for dx, dy in offsets]
 
-    def state_at(self, i: int) -> FrameState:
+    def state_at(self, i: int, compact: bool = False) -> FrameState:
         i = self._index(i)
-        raster = self.raster_at(i)
+        raster = self.raster_at(i, compact)
         return FrameState(i, self.step(i), raster, self.variables_at(i), self.candidates_at(i))
 
-    def raster_at(self, i: int) -> Raster:
-        """The framebuffer after step i: nearest keyframe plus a numpy replay."""
+    def raster_at(self, i: int, compact: bool = False) -> Raster:
+        """The framebuffer after step i: nearest keyframe plus a numpy replay.
+
+        ``compact``: counts and colours in the smallest dtypes this run
+        needs (uint8 counts, say, rather than int32), which is what makes a
+        large grid quick to show; otherwise int32 counts and int64 colours.
+        """
         i = self._index(i)
         keyframes = self._ensure_keyframes()
-        slot = min((i + 1) // self._gap, len(keyframes) - 1)
-        raster = keyframes[slot].copy() if slot else self._empty_raster()
-        self.replay(slot * self._gap, i + 1, raster)
+        slot = min((i + 1) // keyframes.gap, len(keyframes) - 1)
+        raster = keyframes.restore(slot, *(self._dtypes if compact else (np.int32, np.int64)))
+        self.replay(slot * keyframes.gap, i + 1, raster)
         return raster
 
     def replay(self, lo: int, hi: int, raster: Raster) -> None:
@@ -505,8 +553,11 @@ class Trace:
         none). Pixels outside the grid are clipped.
         """
         lo, hi = self._range(lo, hi)
-        if hi <= lo:
-            return
+        if hi > lo:
+            raster.write_many(*self._replay_writes(lo, hi))
+
+    def _replay_writes(self, lo: int, hi: int):
+        """Flat pixels (-1: none), colours and depths steps lo..hi-1 write, in order."""
         column = self._value_column()
         values = None if column is None else self.values[lo:hi, column]
         depth_column = self._depth_column()
@@ -524,7 +575,7 @@ class Trace:
                 values = np.concatenate([values, span_values])[order]
             if depths is not None:
                 depths = np.concatenate([depths, np.full(len(orders), math.nan)])[order]
-        raster.write_many(flat, values, depths)
+        return flat, values, depths
 
     # ---------------------------------------------------------- internals
     def _range(self, lo: int, hi: int | None) -> tuple[int, int]:
@@ -561,36 +612,29 @@ class Trace:
             self._flat = np.where(inside, y * self.width + x, -1).astype(np.int32)
         return self._flat
 
-    def _ensure_keyframes(self) -> list[Raster]:
+    def _ensure_keyframes(self) -> Keyframes:
+        """Keyframes every gap steps (see keyframes.py), built in one replay;
+        it also finds the smallest dtypes the run's rasters need."""
         if self._keyframes is not None:
             return self._keyframes
         empty = self._empty_raster()
-        budget = min(KEYFRAME_BUDGET, KEYFRAME_BYTES_PER_STEP * len(self))
-        most = max(1, budget // max(1, empty.bytes()))
-        self._gap = max(MIN_KEYFRAME_GAP, math.ceil(len(self) / most))
-        # Slot 0 is the empty raster, made afresh when needed (np.zeros is
-        # cheaper than a copy and holds no memory until written).
-        keyframes = [None]
-        for lo in range(0, len(self) - self._gap, self._gap):
-            raster = keyframes[-1].copy() if keyframes[-1] else self._empty_raster()
-            self.replay(lo, lo + self._gap, raster)
-            keyframes.append(raster)
+        colors = np.int64
+        if empty.colors is not None:
+            colors = color_dtype(np.concatenate([self.values[:, self._value_column()],
+                                                 self.spans()["value"]]))
+            empty.colors = empty.colors.astype(colors)
+        budget = max(KEYFRAME_BUDGET, KEYFRAME_BYTES_PER_STEP * len(self))
+        gap = max(MIN_KEYFRAME_GAP, min(MAX_KEYFRAME_GAP, math.ceil(len(self) / 64)))
+        keyframes = Keyframes(empty, gap, budget)
+        raster = empty.copy()
+        for lo in range(0, len(self), gap):
+            writes = self._replay_writes(lo, min(lo + gap, len(self)))
+            raster.write_many(*writes)
+            if lo + gap < len(self):
+                keyframes.add(writes[0], raster)
+        self._dtypes = (smallest_unsigned(int(raster.counts.max(initial=0))), colors)
         self._keyframes = keyframes
         return keyframes
-
-
-def _blocks(chunks):
-    """The chunks joined into blocks of about CHUNK rows: one-row chunks
-    (rich records) are not copied one by one, long ones are not joined."""
-    batch, rows = [], 0
-    for chunk in chunks:
-        batch.append(chunk)
-        rows += len(chunk)
-        if rows >= CHUNK:
-            yield batch[0] if len(batch) == 1 else np.concatenate(batch)
-            batch, rows = [], 0
-    if batch:
-        yield batch[0] if len(batch) == 1 else np.concatenate(batch)
 
 
 _NO_STEPS = np.zeros(0, np.int64)

@@ -56,14 +56,16 @@ def line_errors(p, q, pixels) -> dict:
     pixels = np.asarray(pixels, np.int64).reshape(-1, 2)
     (x0, y0), (x1, y1) = p, q
     dx, dy = x1 - x0, y1 - y0
+    # Sort-based deduplication of the keys (np.unique's return_index sorts
+    # the indices too, several times slower); the position along and across
+    # the line depends only on the pixel, so distinct pixels are enough.
+    distinct = distinct_pixels(pixels)
     if abs(dx) >= abs(dy):
-        along, across, n, m = pixels[:, 0] - x0, pixels[:, 1] - y0, dx, dy
+        along, v_d, n, m = distinct[:, 0] - x0, distinct[:, 1] - y0, dx, dy
     else:
-        along, across, n, m = pixels[:, 1] - y0, pixels[:, 0] - x0, dy, dx
+        along, v_d, n, m = distinct[:, 1] - y0, distinct[:, 0] - x0, dy, dx
     sign = 1 if n >= 0 else -1
-    u, big_n = along * sign, abs(n)
-    distinct = np.unique(pixel_keys(pixels), return_index=True)[1]
-    u_d, v_d = u[distinct], across[distinct]
+    u_d, big_n = along * sign, abs(n)
     if big_n == 0:
         ok = (u_d == 0) & (v_d == 0)
     else:
@@ -73,7 +75,7 @@ def line_errors(p, q, pixels) -> dict:
         nearest = low + (2 * remainder >= big_n)
         tie = 2 * remainder == big_n
         ok = (u_d >= 0) & (u_d <= big_n) & ((v_d == nearest) | (tie & (v_d == low)))
-    hit = len(np.unique(u_d[ok]))
+    hit = int(np.count_nonzero(np.bincount(u_d[ok], minlength=1)))  # 0 <= u_d <= N where ok
     differing = (len(distinct) - hit) + (big_n + 1 - hit)
     cross = dx * (pixels[:, 1] - y0) - dy * (pixels[:, 0] - x0)
     if dx == 0 and dy == 0:
@@ -90,9 +92,26 @@ def line_errors(p, q, pixels) -> dict:
             "pixels": int(len(pixels))}
 
 
+def _distinct_keys(pixels) -> np.ndarray:
+    """The sorted distinct keys of some pixels (np.unique's hash table is
+    many times slower on these keys than one sort)."""
+    keys = np.sort(pixel_keys(pixels))
+    return keys[np.concatenate([[True], keys[1:] != keys[:-1]])] if len(keys) else keys
+
+
+def distinct_pixels(pixels: np.ndarray) -> np.ndarray:
+    """The distinct rows of an (n, 2) int64 pixel array, in key order."""
+    keys = _distinct_keys(pixels)
+    return np.stack([(keys >> 32) - (1 << 30), (keys & 0xFFFFFFFF) - (1 << 30)], axis=1)
+
+
 def asymmetry(forward, backward) -> int:
     """Pixels drawn by one direction of a segment and not by the other."""
-    return int(len(np.setxor1d(pixel_keys(forward), pixel_keys(backward))))
+    # Sort-based: each side's distinct keys, then both sorted together; a
+    # key of both sides shows up twice, next to itself.
+    both = np.concatenate([_distinct_keys(forward), _distinct_keys(backward)])
+    both.sort()
+    return int(len(both) - 2 * np.count_nonzero(both[1:] == both[:-1]))
 
 
 def _implicit_fits(p, q) -> bool:

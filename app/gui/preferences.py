@@ -265,7 +265,9 @@ class PreferencesController(QObject):
         apply_theme(theme)
         # The window's own sheet is the light look; the dark one goes over it.
         sheet = window.styleSheet().replace(DARK_STYLE, "")
-        window.setStyleSheet(sheet + (DARK_STYLE if theme == "dark" else ""))
+        sheet += DARK_STYLE if theme == "dark" else ""
+        if sheet != window.styleSheet():  # restyling every widget takes long: only on a change
+            window.setStyleSheet(sheet)
         palette = dataclasses.replace(BASE_PALETTES[theme], **values["colors"][theme])
         window.set_palette(palette)
         _theme_panels(window, theme == "dark")

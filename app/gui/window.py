@@ -40,6 +40,7 @@ from app.model.tools import (circle_kind, circle_options, clamp_option, drawing_
                              marker_option, placing_message, shape_paths, tool_hint)
 from app.render import frame as frame_view
 from app.render.compose import PALETTE, compose, coverage_counts, error_image
+from app.render.incremental import StepImages
 # What a frame shows is worked out in app/render/frame.py, shared with export.
 from app.render.frame import step_cells as _step_cells
 from app.render.frame import html_caption as _caption
@@ -69,6 +70,7 @@ class MainWindow(WindowLayout, WindowMenus, DepthAndAccuracy, TextureDisplay, QM
         self.player = Player(self)
         self.history = self.player.session.history  # undo and redo of scene edits
         self._empty_image = None
+        self._step_images = StepImages()  # patched cell by cell between nearby steps
         self._last_hover = None
         self._error = ""  # the last refusal, shown until the next good change
         self._tables = TableIndex(None)
@@ -463,8 +465,8 @@ class MainWindow(WindowLayout, WindowMenus, DepthAndAccuracy, TextureDisplay, QM
             self.grid.set_image(error_image(accuracy.estimate - accuracy.exact, accuracy.max,
                                             signed=True))
         else:
-            self.grid.set_image(compose(state.raster, None, self.palette_,
-                                        coverage=self.coverage.isChecked()))
+            self.grid.set_image(self._step_images.image(player.trace, state, self.palette_,
+                                                        coverage=self.coverage.isChecked()))
         self._show_depth(state)
         self._show_texture(state)
         self._show_samples(state)
@@ -597,9 +599,14 @@ class MainWindow(WindowLayout, WindowMenus, DepthAndAccuracy, TextureDisplay, QM
         self._say(text, error)
 
     def _say(self, text: str, error: bool = False) -> None:
-        self.message.setText(text)
-        self.message.setToolTip(text)
-        self.message.setStyleSheet(ERROR_STYLE if error else "")
+        # Called on every step: only what changed is set (a style sheet
+        # costs milliseconds even when it is the same).
+        style = ERROR_STYLE if error else ""
+        if self.message.text() != text:
+            self.message.setText(text)
+            self.message.setToolTip(text)
+        if self.message.styleSheet() != style:
+            self.message.setStyleSheet(style)
 
     # ------------------------------------------------------------ dialogs
     def show_shortcuts(self) -> None:

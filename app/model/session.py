@@ -424,7 +424,7 @@ class Session:
         if self.trace is None:
             return None
         if self._state is None or self._state.index != self.index:
-            self._state = self.trace.state_at(self.index)
+            self._state = self.trace.state_at(self.index, compact=True)
         return self._state
 
     def final_raster(self) -> Raster | None:

@@ -181,18 +181,23 @@ def coverage_counts(raster) -> tuple[int, int, int, int]:
 # ------------------------------------------------------------------ parts
 def _cells(raster, palette: Palette) -> np.ndarray:
     """One packed RGBA uint32 per cell."""
+    return cell_colors(raster.counts, raster.colors, getattr(raster, "replaces", False), palette)
+
+
+def cell_colors(counts: np.ndarray, colors: np.ndarray | None, replaces: bool,
+                palette: Palette) -> np.ndarray:
+    """Packed RGBA of cells given by their counts and colours (any shape:
+    the whole grid, or some of its cells when only they changed)."""
     lut = np.array([packed_rgba(palette.background), packed_rgba(palette.ink),
                     packed_rgba(palette.overdraw)], dtype=_RGBA)
     # take(mode="clip") maps every count of 2 or more to the overdraw entry
     # in one pass over the buffer.
-    replaces = getattr(raster, "replaces", False)
-    counts = np.minimum(raster.counts, 1) if replaces else raster.counts
+    counts = np.minimum(counts, 1) if replaces else counts
     cells = lut.take(counts, mode="clip")
-    colors = raster.colors
     if colors is not None:
         valued = colors >= 0
         if valued.any():
-            values = colors[valued]
+            values = colors[valued].astype(np.uint32)  # int32 in compact rasters
             packed = (((values >> 16) & 255) | (values & 0xFF00) | ((values & 255) << 16)
                       | 0xFF000000).astype(_RGBA)
             again = counts[valued] > 1
@@ -203,8 +208,13 @@ def _cells(raster, palette: Palette) -> np.ndarray:
 
 
 def _coverage_cells(raster, palette: Palette) -> np.ndarray:
+    return coverage_colors(raster.counts, palette)
+
+
+def coverage_colors(counts: np.ndarray, palette: Palette) -> np.ndarray:
+    """Packed RGBA of cells by their write count (0, 1, 2, 3 or more)."""
     lut = np.array([packed_rgba(color) for color in palette.coverage], dtype=_RGBA)
-    return lut.take(raster.counts, mode="clip")
+    return lut.take(counts, mode="clip")
 
 
 def _darken(packed: np.ndarray, factor: float) -> np.ndarray:

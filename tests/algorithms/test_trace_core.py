@@ -57,7 +57,7 @@ def test_random_steps_of_a_long_line_on_a_big_grid(small_keyframes):
     trace = get("line-bresenham").record(((0, 0), (1499, 997)), grid=(1500, 1000))
     n = len(trace)
     trace.raster_at(0)
-    gap = trace._gap
+    gap = trace._keyframes.gap
     assert len(trace._keyframes) >= 10 and gap < n // 5
     rng = random.Random(7)
     picks = {0, gap - 1, gap, gap + 1, 2 * gap - 1, n - 2, n - 1} | {rng.randrange(n) for _ in range(8)}
@@ -73,7 +73,7 @@ def test_random_steps_of_a_long_run_with_colours_and_repeats(small_keyframes):
     n = len(trace)
     assert n > 10_000 and trace.nbytes() / n <= 64
     trace.raster_at(n - 1)
-    assert len(trace._keyframes) > 50 and trace._gap < n // 50
+    assert len(trace._keyframes) > 50 and trace._keyframes.gap < n // 50
     rng = random.Random(11)
     for i in sorted({37, 38, 74, n - 1} | {rng.randrange(n) for _ in range(6)}):
         same_raster(trace.raster_at(i), slow_replay(trace, i))
@@ -164,7 +164,7 @@ def test_rich_records_mid_stream():
     note = trace.step(4)
     assert note.record.text == "a remark" and note.pixel == (5, 5) and note.kind == CALC
     assert not note.writes and note.values == {}
-    assert trace.step(5).record is table and trace.step(5).pixel is None
+    assert trace.step(5).record == table and trace.step(5).pixel is None
     assert trace.step(2).record.values == {"a": 1, "b": "two"}
     assert trace.written_pixels().tolist() == [[0, 0], [1, 0], [2, 0]]
     assert trace.final_variables() == {"k": 7, "a": 3, "b": "two", "v": 3}

@@ -155,7 +155,7 @@ def test_records_of_and_steps_of_are_a_scan_of_the_frames(found, types):
     assert trace.steps_of(lo=lo, hi=hi).tolist() == [k for k, _ in run.rich(RICH, lo, hi)]
     for k in range(lo, hi):
         frame = run.frames[k]
-        assert trace.record_at(k) is (None if isinstance(frame, tuple) else frame)
+        assert trace.record_at(k) == (None if isinstance(frame, tuple) else frame)
 
 
 @QUERIES
