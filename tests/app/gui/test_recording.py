@@ -222,7 +222,9 @@ def test_the_event_loop_stays_responsive_while_recording(qtbot, window):
           f"{worst * 1000:.1f} ms, p99 {p99 * 1000:.1f} ms; installing and showing the "
           f"trace: {max(after) * 1000:.1f} ms")
     assert len(recording) > 20
-    assert worst < 0.100
+    # Generous: a loaded 2-core machine stretches gaps several times; a
+    # recording that held the GIL would freeze the window for seconds.
+    assert worst < 0.250
 
 
 def test_closing_the_window_stops_the_recording(qtbot):
