@@ -10,20 +10,23 @@ from __future__ import annotations
 import os
 
 from PySide6.QtCore import QMarginsF, QPointF, QRectF, Qt
-from PySide6.QtGui import (QColor, QFont, QGuiApplication, QPageLayout, QPageSize, QPainter,
+from PySide6.QtGui import (QColor, QFont, QPageLayout, QPageSize, QPainter,
                            QPdfWriter, QPen)
+from PySide6.QtWidgets import QApplication
 
 ROWS_PER_PAGE = 30
 DPI = 150
 
 
 def application():
-    """Qt needs an application to lay out text; without a display, an offscreen one."""
-    app = QGuiApplication.instance()
+    """Qt needs an application to lay out text; without a display, an offscreen one.
+    A full QApplication, not a QGuiApplication: the process (the window's, or
+    a test run's) may make widgets afterwards, which a QGuiApplication forbids."""
+    app = QApplication.instance()
     if app is None:
         if not os.environ.get("DISPLAY") and not os.environ.get("WAYLAND_DISPLAY"):
             os.environ.setdefault("QT_QPA_PLATFORM", "offscreen")
-        app = QGuiApplication([])
+        app = QApplication([])
     return app
 
 
