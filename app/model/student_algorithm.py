@@ -15,6 +15,7 @@ import re
 from pathlib import Path
 
 from algorithms import registry
+from algorithms.antialias.lines import ink_grey
 from algorithms.code import Code, listing
 from algorithms.registry import AlgorithmSpec
 from algorithms.steps import PLOT, Note, Start
@@ -76,10 +77,18 @@ def with_seed(reference, kind: str, points, options: dict, grid) -> dict:
 
 def frames(outcome: student.Outcome, at, value_name: str | None = None):
     names = tuple(sorted({name for _, _, values in outcome.steps for name in values}))
-    yield Start(line=at["run"], values=names,
-                pixel_value=value_name if value_name in names else None)
-    for x, y, values in outcome.steps:
-        yield (at["plot_yield"], x, y, *(float(values.get(n, math.nan)) for n in names))
+    if value_name not in names:
+        yield Start(line=at["run"], values=names)
+        for x, y, values in outcome.steps:
+            yield (at["plot_yield"], x, y, *(float(values.get(n, math.nan)) for n in names))
+    else:
+        # Intensities show as grey ink on white, as the built-in antialiased lines do.
+        yield Start(line=at["run"], values=names + ("rgb",), pixel_value=value_name,
+                    color_value="rgb")
+        for x, y, values in outcome.steps:
+            shade = values.get(value_name, math.nan)
+            yield (at["plot_yield"], x, y, *(float(values.get(n, math.nan)) for n in names),
+                   ink_grey(min(max(shade, 0.0), 1.0)) if shade == shade else math.nan)
     if not outcome.ok:
         yield Note(line=at["done"], text=outcome.error.strip().splitlines()[-1])
 
