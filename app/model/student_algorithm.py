@@ -117,7 +117,8 @@ def first_divergence(trace, against: str, points, options: dict, grid) -> tuple:
     found = compare(expected, got)
     versus_exact = None if exact is None else compare(exact, got)
     if found is None and versus_exact is None:
-        return None, f"Same pixels as {against}" + (" and the exact result." if exact else ".")
+        what = "pixels and intensities" if kind == "antialias" else "pixels"
+        return None, f"Same {what} as {against}" + (" and the exact result." if exact else ".")
     which, divergence = (against, found) if found is not None else ("the exact result", versus_exact)
     steps = writes.steps.tolist()
     step = steps[divergence.step] if divergence.step < len(steps) else len(trace) - 1

@@ -57,6 +57,7 @@ def test_an_antialiased_line_shows_its_intensities_and_d_finds_the_swap(window, 
     ref = reference_writes("line-wu", ((1, 1), (12, 5)), {}, (16, 12))
     assert np.allclose(trace.pixel_values(), ref.values)
     assert window.student_actions.first_divergence() is None
+    assert "intensities" in window.statusBar().currentMessage()
     trace = run_file(window, qtbot, "wu_swapped.py", "line-wu")
     window.player.first()
     QTest.keyClick(window, Qt.Key.Key_D)
