@@ -197,3 +197,19 @@ def test_a_third_item_that_is_not_a_number_is_a_shape_failure(tmp_path):
 def test_other_algorithms_of_these_families_are_refused(name):
     with pytest.raises(checking.InputError, match="check compares"):
         checking.kind_of(registry.get(name))
+
+
+def test_a_fill_that_leaks_through_the_diagonal_outline_is_cut_off(tmp_path):
+    """Eight neighbours slip between the outline's diagonal steps: the fill
+    never ends, and the case fails once it yields far more than the reference."""
+    source = (SAMPLES / "fill_correct.py").read_text()
+    path = tmp_path / "leaks.py"
+    path.write_text(source.replace(
+        "stack += [(x + 1, y), (x - 1, y), (x, y + 1), (x, y - 1)]",
+        "stack += [(x + a, y + b) for a in (-1, 0, 1) for b in (-1, 0, 1) if a or b]"))
+    case = case_named(FLOOD, "hard 2:")
+    result = checking.check(path, "flood-fill", [case], limits=LIMITS)[0]
+    region = region_oracle(*case.args)
+    assert result.outcome.kind == "too-long" and not result.passed
+    assert len(result.outcome.steps) == 4 * len(region) + 1000
+    assert "does the loop end" in result.message()
