@@ -28,7 +28,8 @@ def add_check_command(commands) -> None:
     check.add_argument("--against", required=True, metavar="ALG",
                        help="the reference algorithm: a line, circle, triangle or polygon "
                             "algorithm of `rasterlab list` (e.g. line-bresenham, circle-midpoint, "
-                            "triangle-bbox, polygon-scanline)")
+                            "triangle-bbox, polygon-scanline), or flood-fill, zbuffer, painter, "
+                            "line-wu or line-area")
     check.add_argument("--cases", nargs="+", default=["hard"], metavar="CASE",
                        help="hard (the hard-case catalogue), random N (N seeded random "
                             "inputs) and SCENE.json files, in any mix (default: hard)")

@@ -120,7 +120,7 @@ class StudentActions(QObject):
             window.statusBar().showMessage("First divergence: open your algorithm first "
                                            "(File > Open algorithm…).", 5000)
             return None
-        step, text = first_divergence(player.trace, against, player.points, player.options,
+        step, text = first_divergence(player.trace, against, player.scene.points, player.options,
                                       player.grid)
         if step is not None:
             player.pause()

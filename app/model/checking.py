@@ -23,12 +23,13 @@ from algorithms.exact import lines as exact_lines
 from algorithms.exact import polygons as exact_polygons
 from algorithms.exact import triangles as exact_triangles
 
+from . import check_families as families
 from .student import Limits, Outcome, run_student
 
 # What the student's draw() takes, per family: the template's signature.
 SIGNATURES = {"lines": "draw(x0, y0, x1, y1)", "circles": "draw(xc, yc, r)",
               "ellipse": "draw(xc, yc, rx, ry)", "triangles": "draw(x0, y0, x1, y1, x2, y2)",
-              "polygons": "draw(contours)"}
+              "polygons": "draw(contours)", **families.SIGNATURES}
 CIRCLE_CENTRE = (16, 16)
 ORACLE_GRID = (64, 64)
 
@@ -87,8 +88,10 @@ def kind_of(spec) -> str:
         return "ellipse"
     if spec.family in ("circles", "triangles", "polygons"):
         return spec.family
-    raise InputError(f"check compares lines, circles, triangles and polygons; {spec.name} is "
-                     f"in the {spec.family} family")
+    if families.kind_of(spec):
+        return families.kind_of(spec)
+    raise InputError(f"check compares lines, circles, triangles, polygons, flood-fill, zbuffer, "
+                     f"painter, line-wu and line-area; {spec.name} is in the {spec.family} family")
 
 
 # -------------------------------------------------------------------- cases
@@ -126,6 +129,8 @@ def make_cases(spec, selectors, seed: int = 0) -> list[Case]:
 
 def student_args(kind: str, points, options: dict) -> tuple:
     """draw()'s arguments for a run on these points and options."""
+    if kind in families.SIGNATURES:
+        return families.student_args(kind, points, options)
     if kind == "triangles":
         return tuple(v for point in points for v in point)
     if kind == "polygons":
@@ -158,6 +163,8 @@ def polygon_case(name, contours) -> Case:
 
 
 def hard_cases(kind: str) -> list[Case]:
+    if kind in families.SIGNATURES:
+        return families.hard_cases(Case, kind)
     if kind == "triangles":
         return [triangle_case(f"hard {n + 1}: " + " ".join(f"({x:g},{y:g})" for x, y in t), t)
                 for n, t in enumerate(catalogue.TRIANGLE_CASES)]
@@ -176,6 +183,8 @@ def hard_cases(kind: str) -> list[Case]:
 
 def random_cases(kind: str, count: int, seed: int) -> list[Case]:
     """``count`` inputs from a seeded generator: the same seed, the same cases."""
+    if kind in families.SIGNATURES:
+        return families.random_cases(Case, kind, count, seed)
     rng = random.Random(seed)
     made = []
     for n in range(count):
@@ -209,6 +218,11 @@ def scene_case(spec, kind: str, path: str) -> Case:
     if kind_of(scene.spec) != kind:
         raise InputError(f"{path}: a {scene.spec.family} scene; {spec.name} takes {kind}")
     name = f"{Path(path).name}"
+    if kind in families.SIGNATURES:
+        made = families.scene_case(Case, kind, scene, name, scene.spec.resolve(scene.options))
+        if made is None:
+            raise InputError(f"{path}: check needs the scene's seed as a point, not auto")
+        return made
     if kind == "triangles":
         if len(scene.points) != 3:
             raise InputError(f"{path}: check takes one triangle, the scene has "
@@ -229,6 +243,8 @@ def scene_case(spec, kind: str, path: str) -> Case:
 def reference_steps(spec, case: Case) -> list:
     """(x, y, {variables}) per pixel the reference writes, in order."""
     trace = spec.record(case.points, case.options, grid=ORACLE_GRID)
+    if kind_of(spec) in families.SIGNATURES:
+        return families.reference(spec, trace, kind_of(spec))
     writes = trace.written()
     return [(int(x), int(y), trace.variables_at(int(step)))
             for step, (x, y) in zip(writes.steps.tolist(), writes.pixels.tolist())]
@@ -322,7 +338,11 @@ def number_text(value) -> str:
 def check_case(spec, options: dict, path, case: Case, limits: Limits) -> CaseResult:
     case = Case(case.name, case.points, {**options, **case.options}, case.args)
     expected = reference_steps(spec, case)
-    outcome = run_student(path, case.args, limits.steps_for(len(expected)))
+    kind = kind_of(spec)
+    outcome = run_student(path, case.args, limits.steps_for(len(expected)),
+                          value_name="intensity" if kind == "antialias" else None)
+    if kind in families.SIGNATURES:
+        return family_result(spec, case, outcome, expected)
     exact = exact_pixels(spec, case, spec.resolve(case.options))
     got = list(outcome.steps)
     if kind_of(spec) == "lines":
@@ -339,6 +359,17 @@ def check_case(spec, options: dict, path, case: Case, limits: Limits) -> CaseRes
     if not outcome.ok:
         reference = versus_exact = None
     return CaseResult(case, outcome, reference, versus_exact, exact is not None, names)
+
+
+def family_result(spec, case: Case, outcome: Outcome, expected: list) -> CaseResult:
+    """A fill, visibility or antialias case: compared as check_families says."""
+    kind, got = kind_of(spec), list(outcome.steps)
+    exact = families.exact(spec, case, spec.resolve(case.options))
+    reference = versus_exact = None
+    if outcome.ok:
+        reference = families.divergence(kind, expected, got, Divergence)
+        versus_exact = None if exact is None else families.divergence(kind, exact, got, Divergence)
+    return CaseResult(case, outcome, reference, versus_exact, exact is not None)
 
 
 def check(path, against: str, made: list[Case], options: dict | None = None,

@@ -75,9 +75,12 @@ def check_file(path) -> Path:
     return path.resolve()
 
 
-def run_student(path, args, limits: Limits = Limits(), function: str = FUNCTION) -> Outcome:
-    """Run ``function(*args)`` of the file in a child process and collect its pixels."""
-    request = {"file": str(path), "function": function, "args": list(args),
+def run_student(path, args, limits: Limits = Limits(), function: str = FUNCTION,
+                value_name: str | None = None) -> Outcome:
+    """Run ``function(*args)`` of the file in a child process and collect its pixels.
+    With ``value_name``, a step may also be ``x, y, number``: the number is
+    kept under that name (an antialiased line's ``x, y, intensity``)."""
+    request = {"file": str(path), "function": function, "args": list(args), "value": value_name,
                "max_steps": limits.max_steps, "memory": limits.memory,
                "cpu_seconds": max(1, math.ceil(limits.seconds))}
     started = time.perf_counter()

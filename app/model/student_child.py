@@ -33,10 +33,14 @@ def whole(value) -> bool:
     return isinstance(value, int) and not isinstance(value, bool)
 
 
-def checked(item, n: int) -> list:
-    """One step as [x, y, {name: number}], or Shape with what is wrong."""
+def checked(item, n: int, value_name=None) -> list:
+    """One step as [x, y, {name: number}], or Shape with what is wrong. With
+    ``value_name``, ``x, y, number`` is [x, y, {value_name: number}]."""
     if not isinstance(item, (tuple, list)) or len(item) not in (2, 3):
-        raise Shape(f"step {n}: yielded {brief(item)}; expected x, y or x, y, {{name: value}}")
+        expected = f"x, y, {value_name}" if value_name else "x, y or x, y, {name: value}"
+        raise Shape(f"step {n}: yielded {brief(item)}; expected {expected}")
+    if value_name and len(item) == 3 and not isinstance(item[2], dict):
+        item = (item[0], item[1], {value_name: item[2]})
     x, y = item[0], item[1]
     if not (whole(x) and whole(y)):
         raise Shape(f"step {n}: yielded ({brief(x)}, {brief(y)}); pixel coordinates must be "
@@ -86,7 +90,7 @@ def run(request: dict) -> dict:
             return {"kind": "too-long", "steps": steps,
                     "error": f"yielded more than {request['max_steps']:,} pixels: "
                              "does the loop end?"}
-        steps.append(checked(item, n))
+        steps.append(checked(item, n, request.get("value")))
     return {"kind": "ok", "steps": steps}
 
 
