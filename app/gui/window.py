@@ -323,6 +323,7 @@ class MainWindow(WindowLayout, WindowMenus, DepthAndAccuracy, TextureDisplay, QM
         self.grid.set_y_down(y_down)
         self.depth_view.set_y_down(y_down)
         self.grid_editor.set_y_down(y_down)
+        self.guides.show(self.player.trace, self.player.state())  # words such as "above" flip
         self.y_down_action.blockSignals(True)
         self.y_down_action.setChecked(y_down)
         self.y_down_action.blockSignals(False)
