@@ -33,10 +33,15 @@ class PixelAxis(pg.AxisItem):
     def __init__(self, *args, **kwargs):
         super().__init__(*args, **kwargs)
         self.cells = 0          # cells along this axis (0: not known yet)
+        self.widest = 0         # the largest cell index on either axis
         self.index_labels = False
 
-    def set_cells(self, count: int) -> None:
+    def set_cells(self, count: int, widest: int | None = None) -> None:
+        """``count`` cells along this axis; ``widest``: the largest index
+        on either axis, so that both axes (their cells are squares) choose
+        the same labelling and never mix cell numbers with boundaries."""
         self.cells = int(count)
+        self.widest = max(0, (count if widest is None else widest) - 1)
         self.picture = None
         self.update()
 
@@ -60,9 +65,8 @@ class PixelAxis(pg.AxisItem):
             return False
         cell_px = size / abs(high - low)
         metrics = QFontMetricsF(self.style["tickFont"] or self.font())
-        if self.orientation in ("left", "right"):
-            return cell_px >= metrics.height() + 2
-        return cell_px >= metrics.horizontalAdvance(str(self.cells - 1)) + 6
+        return cell_px >= max(metrics.height() + 2,
+                              metrics.horizontalAdvance(str(self.widest)) + 6)
 
     def tickStrings(self, values, scale, spacing):  # noqa: N802
         return [str(round(v)) for v in values]

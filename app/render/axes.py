@@ -39,9 +39,11 @@ class Axes:
         self.scale = renderer.settings.scale
         self.step_x = label_step(self.scale, widest)
         self.step_y = label_step(self.scale, face.ascent + face.descent)
-        # Cells numbered at their centres when every number fits in its cell.
-        self.cells_x = self.scale >= face.width(str(width - 1)) + 6
-        self.cells_y = self.scale >= face.ascent + face.descent + 2
+        # Cells numbered at their centres when every number fits in its
+        # cell; both axes alike, never cell numbers on one and boundaries
+        # on the other.
+        self.cells_x = self.cells_y = self.scale >= max(
+            face.width(str(max(width, height) - 1)) + 6, face.ascent + face.descent + 2)
 
     def label_at(self, k: int, count: int, cells: bool, step: int) -> float | None:
         """Where along the axis, in cells, boundary k's label goes: at k
