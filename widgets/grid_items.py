@@ -54,7 +54,9 @@ class PixelAxis(pg.AxisItem):
         levels = []
         for spacing, values in super().tickValues(minVal, maxVal, size):
             if spacing >= 1:
-                levels.append((spacing, [v for v in values if float(v).is_integer()]))
+                # Whole coordinates on the grid: 0 .. cells (its far edge).
+                levels.append((spacing, [v for v in values if float(v).is_integer()
+                                         and (self.cells <= 0 or 0 <= v <= self.cells)]))
         if not levels:
             first, last = math.ceil(minVal), math.floor(maxVal)
             levels = [(1.0, [float(v) for v in range(first, last + 1)])]

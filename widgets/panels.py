@@ -158,6 +158,13 @@ class CodePanel(QWidget):
                 self._paint(line, True)
         self.reveal()
 
+    def restyle(self) -> None:
+        """The table's font changed (the window's zoom, presentation): the
+        marked line carries a font of its own, so it is set again."""
+        line = self._current
+        if line is not None and 0 <= line < self.lines.rowCount():
+            self._paint(line, True)
+
     def reveal(self) -> None:
         """Scroll the marked line (all of it, if it fits) into view."""
         line = self._current

@@ -129,6 +129,7 @@ class WindowView(QObject):
             axis.setStyle(tickFont=tick)
         if redraw:
             w.show_frame()
+        w.code.restyle()
         w.code.lines.resizeColumnToContents(0)
         w.code.lines.resizeRowsToContents()
         w.code.reveal()

@@ -184,3 +184,22 @@ def test_at_720_pixels_the_code_keeps_most_of_its_panel(window, qtbot):
     shown = sum(1 for row in range(lines.rowCount())
                 if 0 <= lines.rowViewportPosition(row) < lines.viewport().height())
     assert shown >= min(5, lines.rowCount())
+
+
+def test_the_marked_code_line_takes_the_presentation_type_too(window, qtbot):
+    """The marked line carries its own (bold) font: it grows with the rest
+    of the code when presenting and shrinks back after."""
+    window.player.seek(3)
+    qtbot.wait(10)
+    row = window.code.current
+    assert row is not None
+
+    def marked_size():
+        return window.code.lines.item(row, 1).font().pointSizeF()
+    before = marked_size()
+    QTest.keyClick(window.grid, Qt.Key.Key_F11)
+    qtbot.waitUntil(lambda: window.view.presenting, timeout=2000)
+    assert marked_size() == point_size(window.code.lines) >= 1.5 * before
+    QTest.keyClick(window.grid, Qt.Key.Key_Escape)
+    qtbot.waitUntil(lambda: not window.view.presenting, timeout=2000)
+    assert marked_size() == before
