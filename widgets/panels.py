@@ -193,9 +193,13 @@ class CodePanel(QWidget):
         code.setForeground(QBrush(CURRENT_TEXT) if current else QBrush())
         for item in (number, code):
             item.setBackground(QBrush(CURRENT_LINE) if current else QBrush())
-            font = QFont(self.lines.font())  # the table's, at the window's zoom
-            font.setBold(current)
-            item.setFont(font)
+            if current:
+                font = QFont(self.lines.font())  # the table's, at the window's zoom
+                font.setBold(True)
+                item.setFont(font)
+            else:
+                # No font of its own: the line follows the table's as it zooms.
+                item.setData(Qt.ItemDataRole.FontRole, None)
         number.setText(("\u25b6 " if current else "  ") + str(row + 1))
         number.setForeground(QBrush(CURRENT_EDGE if current else LINE_NUMBER))
         # Bold text is wider: the row wraps again rather than lose its end.

@@ -200,6 +200,15 @@ def test_the_marked_code_line_takes_the_presentation_type_too(window, qtbot):
     QTest.keyClick(window.grid, Qt.Key.Key_F11)
     qtbot.waitUntil(lambda: window.view.presenting, timeout=2000)
     assert marked_size() == point_size(window.code.lines) >= 1.5 * before
+    # A line marked before is plain again: no font of its own, so it is
+    # drawn in the table's (presentation) font like the rest.
+    window.player.seek(len(window.player.trace) - 1)
+    qtbot.wait(10)
+    assert window.code.lines.item(row, 1).data(Qt.ItemDataRole.FontRole) is None
     QTest.keyClick(window.grid, Qt.Key.Key_Escape)
     qtbot.waitUntil(lambda: not window.view.presenting, timeout=2000)
-    assert marked_size() == before
+    lines = window.code.lines
+    marked = window.code.current
+    assert lines.item(marked, 1).font().pointSizeF() == point_size(lines) == before
+    assert all(lines.item(k, 1).data(Qt.ItemDataRole.FontRole) is None
+               for k in range(lines.rowCount()) if k != marked)
