@@ -127,6 +127,8 @@ class WindowView(QObject):
             if tick.pointSizeF() > 0:
                 tick.setPointSizeF(tick.pointSizeF() * self.zoom * (1.4 if self.presenting else 1))
             axis.setStyle(tickFont=tick)
+        # The words on the grid (M's side, the scan line) grow as the axes do.
+        w.guides.item.set_text_scale(self.zoom * (1.4 if self.presenting else 1))
         if redraw:
             w.show_frame()
         w.code.restyle()

@@ -212,3 +212,19 @@ def test_the_marked_code_line_takes_the_presentation_type_too(window, qtbot):
     assert lines.item(marked, 1).font().pointSizeF() == point_size(lines) == before
     assert all(lines.item(k, 1).data(Qt.ItemDataRole.FontRole) is None
                for k in range(lines.rowCount()) if k != marked)
+
+
+def test_the_words_on_the_grid_grow_when_presenting(window, qtbot):
+    """M's label is read from the back row too: larger while presenting."""
+    trace = window.player.trace
+    step = next(i for i in range(len(trace)) if len(trace.candidates_at(i)) == 2)
+    window.player.seek(step)
+    qtbot.wait(10)
+    (before,) = window.guides.item.label_sizes()
+    QTest.keyClick(window.grid, Qt.Key.Key_F11)
+    qtbot.waitUntil(lambda: window.view.presenting, timeout=2000)
+    (presenting,) = window.guides.item.label_sizes()
+    assert presenting >= 1.3 * before
+    QTest.keyClick(window.grid, Qt.Key.Key_Escape)
+    qtbot.waitUntil(lambda: not window.view.presenting, timeout=2000)
+    assert window.guides.item.label_sizes() == [before]
