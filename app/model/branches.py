@@ -17,17 +17,29 @@ def decision_branches(trace) -> tuple[np.ndarray, tuple[str, str]]:
     pseudo-code gives them ("E", "NE"; "E/S", "SE/SW" for a run with two
     pairs, such as the ellipse's two regions)."""
     by_line = np.full(len(trace.code), NO_BRANCH, dtype=np.int8)
-    pairs: dict[tuple, list[str]] = {}
-    default = tuple(getattr(trace.start, "candidates", ()) or ())
+    pairs = branch_pairs(trace)
     for k, line in enumerate(trace.code):
-        if not line.branch:
-            continue
-        names = pairs.setdefault(tuple(line.candidates or default), [])
-        if line.branch not in names:
-            names.append(line.branch)
-        position = names.index(line.branch)
-        if position < 2:
-            by_line[k] = position
+        if line.branch:
+            position = pairs[candidate_offsets(trace, line)].index(line.branch)
+            by_line[k] = position if position < 2 else NO_BRANCH
     first = "/".join(names[0] for names in pairs.values() if names)
     second = "/".join(names[1] for names in pairs.values() if len(names) > 1)
     return by_line[np.asarray(trace.line, dtype=np.int64)], (first, second)
+
+
+def candidate_offsets(trace, line) -> tuple:
+    """The candidate offsets frames on ``line`` (a CodeLine) decide between."""
+    return tuple(line.candidates or getattr(trace.start, "candidates", ()) or ())
+
+
+def branch_pairs(trace) -> dict[tuple, list[str]]:
+    """{candidate offsets: the branch names of the lines deciding between
+    them, in pseudo-code order}: the order of the candidates themselves
+    (E then NE; E then SE, S then SW for the ellipse's second region)."""
+    pairs: dict[tuple, list[str]] = {}
+    for line in trace.code:
+        if line.branch:
+            names = pairs.setdefault(candidate_offsets(trace, line), [])
+            if line.branch not in names:
+                names.append(line.branch)
+    return pairs

@@ -24,6 +24,7 @@ import numpy as np
 
 from algorithms.steps import Span, Table
 
+from app.model.branches import branch_pairs, candidate_offsets
 from app.model.drawing import point_labels
 from app.model.tools import drawing_mode
 from app.render.frame import pixel_samples
@@ -160,8 +161,7 @@ def _midpoint_guides(trace, state, paths, y_down=False) -> Guides:
     if side is not None:
         noun = "circle" if circle is not None else \
             "curve" if _nearest_segment(paths, mx, my)[1] else "line"
-        label = f"{side_words(candidates, side, y_down, noun)}" \
-                f"{_branch_of(trace, state, side)}"
+        label = side_words(candidates, side, y_down, noun) + _branch_of(trace, state, side)
     return Guides(tuple(lines), ((mx, my, "midpoint"),), ((mx, my, label),))
 
 
@@ -230,16 +230,11 @@ def side_words(candidates, side: int, y_down: bool, noun: str) -> str:
 
 def _branch_of(trace, state, side: int) -> str:
     """": NE" -- the branch named for the candidate on the primitive's
-    side, read from the pseudo-code: the branched lines with this step's
-    candidates, in the order of the candidates."""
+    side, read from the pseudo-code's lines deciding between this step's
+    candidates."""
     if side == -1:
         return ""
-    offsets = trace.code[state.step.line].candidates or trace.start.candidates
-    names = []
-    for line in trace.code:
-        if line.branch and (line.candidates or trace.start.candidates) == offsets \
-                and line.branch not in names:
-            names.append(line.branch)
+    names = branch_pairs(trace).get(candidate_offsets(trace, trace.code[state.step.line]), [])
     return f": {names[side]}" if len(names) == 2 else ""
 
 
