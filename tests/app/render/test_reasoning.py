@@ -163,13 +163,16 @@ def test_the_label_at_m_names_a_tie():
     assert "line above M: NE" in texts and "line below M: E" in texts
 
 
+@pytest.mark.parametrize("name", ["circle-midpoint", "circle-bresenham"])
 @pytest.mark.parametrize("radius", [7, 10])
-def test_the_label_at_m_says_which_side_the_circle_passes(radius):
-    """The midpoint circle: F(M) = |M - C|^2 - R^2 < 0 puts M inside, so
-    the circle passes above M and E is its candidate; F(M) > 0, below and
-    SE. The midpoint algorithm decides exactly, so it takes that branch."""
+def test_the_label_at_m_says_which_side_the_circle_passes(name, radius):
+    """F(M) = |M - C|^2 - R^2 < 0 puts M inside, so the circle passes above
+    M and E is its candidate; F(M) > 0, below and SE. The midpoint circle
+    decides exactly so, and Bresenham's (d = 3 - 2R) lands on the same
+    pixels for a whole radius, though its mirrors come before its
+    decisions."""
     centre = (12, 12)
-    trace = record("circle-midpoint", [centre], {"radius": radius}, grid=(25, 25))
+    trace = record(name, [centre], {"radius": radius}, grid=(25, 25))
     checked = 0
     for i in range(len(trace)):
         state = trace.state_at(i)
