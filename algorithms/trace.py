@@ -522,7 +522,21 @@ class Trace:
         px, py = int(self.x[i - 1]), int(self.y[i - 1])
         if px == NO_PIXEL:
             return []
-        return [(px + dx, py + dy) for dx, dy in offsets]
+        found = [(px + dx, py + dy) for dx, dy in offsets]
+        here = (int(self.x[i]), int(self.y[i]))
+        if here in found or here[0] == NO_PIXEL:
+            return found
+        # Frames came between the pixel decided from and this one (mirrors
+        # plotted before the decision): this step's pixel is the candidate
+        # its branch names, so the pixel decided from is found from it.
+        names = [other.branch for other in self.code if other.branch
+                 and (other.candidates or self.start.candidates) == offsets]
+        names = list(dict.fromkeys(names))
+        if line.branch not in names or names.index(line.branch) >= len(offsets):
+            return found
+        dx, dy = offsets[names.index(line.branch)]
+        bx, by = here[0] - dx, here[1] - dy
+        return [(bx + ox, by + oy) for ox, oy in offsets]
 
     def state_at(self, i: int, compact: bool = False) -> FrameState:
         i = self._index(i)

@@ -7,7 +7,7 @@ import math
 import numpy as np
 import pyqtgraph as pg
 from PySide6.QtCore import QLineF, QRectF, Qt
-from PySide6.QtGui import QColor, QPen
+from PySide6.QtGui import QColor, QFontMetricsF, QPen
 
 # Grid lines appear once a cell is this many screen pixels wide, and reach
 # full strength at FULL_CELL_PX.
@@ -24,20 +24,84 @@ MARKER_SIZE = 22  # the seed marker
 class PixelAxis(pg.AxisItem):
     """An axis whose ticks stand at cell boundaries, at whole coordinates:
     pixel i is [i, i+1), so tick "k" is the left (or lower) edge of pixel k
-    and a vertex typed as (3, 3) sits on the ticks 3 and 3."""
+    and a vertex typed as (3, 3) sits on the ticks 3 and 3.
+
+    When a cell is large enough on screen to hold its number, the labels
+    name the cells instead: "k" stands at the centre k + 1/2 of cell k,
+    between the boundary ticks k and k + 1 (which keep their place)."""
+
+    def __init__(self, *args, **kwargs):
+        super().__init__(*args, **kwargs)
+        self.cells = 0          # cells along this axis (0: not known yet)
+        self.widest = 0         # the largest cell index on either axis
+        self.index_labels = False
+
+    def set_cells(self, count: int, widest: int | None = None) -> None:
+        """``count`` cells along this axis; ``widest``: the largest index
+        on either axis, so that both axes (their cells are squares) choose
+        the same labelling and never mix cell numbers with boundaries."""
+        self.cells = int(count)
+        self.widest = max(0, (count if widest is None else widest) - 1)
+        self.picture = None
+        self.update()
 
     def tickValues(self, minVal, maxVal, size):  # noqa: N802 (Qt naming)
+        self.index_labels = self._cells_hold_labels(minVal, maxVal, size)
+        if self.index_labels:
+            # Every boundary in view, one level: each labels the cell after it.
+            first, last = math.ceil(min(minVal, maxVal)), math.floor(max(minVal, maxVal))
+            return [(1.0, [float(v) for v in range(first, last + 1)])]
         levels = []
         for spacing, values in super().tickValues(minVal, maxVal, size):
             if spacing >= 1:
-                levels.append((spacing, [v for v in values if float(v).is_integer()]))
+                # Whole coordinates on the grid: 0 .. cells (its far edge).
+                levels.append((spacing, [v for v in values if float(v).is_integer()
+                                         and (self.cells <= 0 or 0 <= v <= self.cells)]))
         if not levels:
             first, last = math.ceil(minVal), math.floor(maxVal)
             levels = [(1.0, [float(v) for v in range(first, last + 1)])]
         return levels
 
+    def _cells_hold_labels(self, low, high, size) -> bool:
+        if self.cells <= 0 or high == low:
+            return False
+        cell_px = size / abs(high - low)
+        metrics = QFontMetricsF(self.style["tickFont"] or self.font())
+        return cell_px >= max(metrics.height() + 2,
+                              metrics.horizontalAdvance(str(self.widest)) + 6)
+
     def tickStrings(self, values, scale, spacing):  # noqa: N802
         return [str(round(v)) for v in values]
+
+    def generateDrawSpecs(self, p):  # noqa: N802
+        specs = super().generateDrawSpecs(p)
+        if specs is None or not self.index_labels:
+            return specs
+        axis_spec, tick_specs, text_specs = specs
+        return axis_spec, tick_specs, self._cell_texts(text_specs)
+
+    def _cell_texts(self, text_specs):
+        """Move each boundary's label "k" half a cell on, to the centre of
+        cell k; a boundary with no cell after it (the grid's far edge, or
+        outside the grid) loses its label."""
+        low, high = self.range
+        if high == low:
+            return text_specs
+        bounds = self.mapRectFromParent(self.geometry())
+        vertical = self.orientation in ("left", "right")
+        # The same value-to-position scale pyqtgraph uses (signed: it
+        # follows an inverted axis).
+        per_unit = -bounds.height() / (high - low) if vertical else bounds.width() / (high - low)
+        shift = per_unit / 2
+        box = self.boundingRect()
+        moved = []
+        for rect, flags, text in text_specs:
+            if not 0 <= int(text) < self.cells:
+                continue
+            rect = rect.translated(0, shift) if vertical else rect.translated(shift, 0)
+            if box & rect == rect:
+                moved.append((rect, flags, text))
+        return moved
 
 
 def visible_grid_lines(left, right, bottom, top, width, height, cell_px):

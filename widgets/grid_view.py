@@ -200,6 +200,9 @@ class PixelGridView(pg.PlotWidget):
         if (width, height) == self._size:
             return
         self._size = (width, height)
+        plot = self.getPlotItem()
+        plot.getAxis("bottom").set_cells(width, max(width, height))
+        plot.getAxis("left").set_cells(height, max(width, height))
         self.grid_lines.set_size(width, height)
         self.outlines.set_size(width, height)
         margin = max(width, height) * 0.5 + 2

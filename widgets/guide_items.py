@@ -6,7 +6,7 @@ from __future__ import annotations
 
 import pyqtgraph as pg
 from PySide6.QtCore import QPointF, QRectF, Qt
-from PySide6.QtGui import QBrush, QColor, QPen
+from PySide6.QtGui import QBrush, QColor, QFont, QPen
 
 # Screen pixels: line widths, and the radius of a dot.
 LINE_PX = {"scan": 1.5, "pair": 5.0, "drop": 2.0}
@@ -22,6 +22,7 @@ class GuidesItem(pg.GraphicsObject):
         self.guides = None
         self._size = (1, 1)
         self._labels: list[pg.TextItem] = []
+        self._text_scale = 1.0  # the window's zoom (larger while presenting)
         self.setZValue(3.6)
         self.set_palette(palette)
 
@@ -49,9 +50,9 @@ class GuidesItem(pg.GraphicsObject):
         view = self.getViewBox()
         while self.guides and len(self._labels) < len(self.guides.labels):
             label = pg.TextItem(color=self._colour, anchor=(0, 1))
-            font = label.textItem.font()
-            font.setBold(True)
-            label.setFont(font)
+            label.base_font = label.textItem.font()
+            label.base_font.setBold(True)
+            self._scale_font(label)
             label.setZValue(3.7)
             if view is not None:
                 view.addItem(label)
@@ -65,6 +66,23 @@ class GuidesItem(pg.GraphicsObject):
                 label.show()
             else:
                 label.hide()
+
+    def set_text_scale(self, scale: float) -> None:
+        """Labels at ``scale`` times their own size (the window's zoom)."""
+        self._text_scale = float(scale)
+        for label in self._labels:
+            self._scale_font(label)
+
+    def _scale_font(self, label) -> None:
+        font = QFont(label.base_font)
+        if font.pointSizeF() > 0:
+            font.setPointSizeF(font.pointSizeF() * self._text_scale)
+        label.setFont(font)
+
+    def label_sizes(self) -> list[float]:
+        """The point sizes of the labels on show, in order."""
+        count = len(self.guides.labels) if self.guides else 0
+        return [label.textItem.font().pointSizeF() for label in self._labels[:count]]
 
     def label_texts(self) -> list[str]:
         """The labels on show, in order."""

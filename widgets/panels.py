@@ -28,8 +28,10 @@ CHIP_COLORS = {"positive": ("#d3f9d8", "#1f6b35"), "negative": ("#ffe3e3", "#a61
 
 
 SERIES_DOTS = 300  # more steps than this: no dot per step on the plot over the run
-# A decision variable's dots by sign, the branch it picks: <= 0, > 0.
+# A decision variable's dots by the branch its step took (E, NE), and the
+# steps that decide nothing.
 BRANCH_COLORS = ("#2563a8", "#2f9e44")
+UNDECIDED_COLOR = "#9aa5b1"
 
 
 def monospace_font(scale: float = 1.0) -> QFont:
@@ -156,6 +158,13 @@ class CodePanel(QWidget):
                 self._paint(line, True)
         self.reveal()
 
+    def restyle(self) -> None:
+        """The table's font changed (the window's zoom, presentation): the
+        marked line carries a font of its own, so it is set again."""
+        line = self._current
+        if line is not None and 0 <= line < self.lines.rowCount():
+            self._paint(line, True)
+
     def reveal(self) -> None:
         """Scroll the marked line (all of it, if it fits) into view."""
         line = self._current
@@ -184,9 +193,13 @@ class CodePanel(QWidget):
         code.setForeground(QBrush(CURRENT_TEXT) if current else QBrush())
         for item in (number, code):
             item.setBackground(QBrush(CURRENT_LINE) if current else QBrush())
-            font = QFont(self.lines.font())  # the table's, at the window's zoom
-            font.setBold(current)
-            item.setFont(font)
+            if current:
+                font = QFont(self.lines.font())  # the table's, at the window's zoom
+                font.setBold(True)
+                item.setFont(font)
+            else:
+                # No font of its own: the line follows the table's as it zooms.
+                item.setData(Qt.ItemDataRole.FontRole, None)
         number.setText(("\u25b6 " if current else "  ") + str(row + 1))
         number.setForeground(QBrush(CURRENT_EDGE if current else LINE_NUMBER))
         # Bold text is wider: the row wraps again rather than lose its end.
@@ -270,11 +283,15 @@ class VariablesPanel(QWidget):
         self.marker = pg.InfiniteLine(0, angle=90, pen=pg.mkPen("#f08c00", width=2))
         self.point = pg.ScatterPlotItem(size=9, brush=pg.mkBrush("#f08c00"),
                                         pen=pg.mkPen("#ffffff", width=1.5))
-        # A decision variable's dots, one item per sign (the branch it picks).
+        # A decision variable's dots, one item per branch taken, one for
+        # the steps that decide nothing.
         self.branch_dots = tuple(
             pg.PlotDataItem(pen=None, symbol="o", symbolSize=4, symbolBrush=color,
                             symbolPen=None) for color in BRANCH_COLORS)
-        for part in (self.zero, self.curve, *self.branch_dots, self.marker, self.point):
+        self.undecided_dots = pg.PlotDataItem(pen=None, symbol="o", symbolSize=3,
+                                              symbolBrush=UNDECIDED_COLOR, symbolPen=None)
+        for part in (self.zero, self.curve, self.undecided_dots, *self.branch_dots,
+                     self.marker, self.point):
             plot.addItem(part)
         self.marker.setZValue(10)
         self.point.setZValue(11)
@@ -384,11 +401,13 @@ class VariablesPanel(QWidget):
 
     # ------------------------------------------------------------ plot
     def set_series(self, values: np.ndarray | None, name: str = "",
-                   decision: bool = False) -> None:
+                   decision: bool = False, branches=None) -> None:
         """Plot ``values`` against the step index, or hide the plot.
 
-        For a decision variable (whose sign picks the branch) the zero line
-        is drawn and kept in view.
+        For a decision variable the zero line is drawn and kept in view,
+        and ``branches`` = (codes, (first, second)) colours each step's dot
+        by the branch it took (codes 0, 1; -1 for a step that decides
+        nothing), as app/model/branches.py works it out.
         """
         finite = values is not None and bool(np.isfinite(values).any())
         self.plot.setVisible(finite)
@@ -396,20 +415,22 @@ class VariablesPanel(QWidget):
         if not finite:
             self._series = None
             self.curve.setData([], [])
-            for dots in self.branch_dots:
+            for dots in (*self.branch_dots, self.undecided_dots):
                 dots.setData([], [])
             self.point.setData([], [])
             return
         self._series = values
+        coloured = decision and branches is not None
         # Only the steps that carry the value, joined: a value set every
         # other step (a fill's stack size) still reads as one curve. A long
         # run is thinned to each stretch's extremes (widgets/series_points.py).
         steps, known = plot_points(values)
-        self._draw_series(steps, known, decision)
+        self._draw_series(steps, known,
+                          branches[0][steps.astype(np.int64)] if coloured else None)
         self.plot_title.setText(f"{name} over the run" + (
-            f" (its sign decides: <span style='color:{BRANCH_COLORS[0]}'>\u25cf \u2264 0</span>"
-            f", <span style='color:{BRANCH_COLORS[1]}'>\u25cf &gt; 0</span>)"
-            if decision else ""))
+            f" (the branch taken: <span style='color:{BRANCH_COLORS[0]}'>\u25cf "
+            f"{branches[1][0]}</span>, <span style='color:{BRANCH_COLORS[1]}'>\u25cf "
+            f"{branches[1][1]}</span>)" if coloured else ""))
         low, high = float(known.min()), float(known.max())
         self.zero.setVisible(decision)
         if decision:
@@ -418,19 +439,20 @@ class VariablesPanel(QWidget):
         self.plot.getPlotItem().getViewBox().setRange(
             xRange=(0, max(1, len(values) - 1)), yRange=(low - pad, high + pad), padding=0.02)
 
-    def _draw_series(self, steps, known, decision: bool) -> None:
+    def _draw_series(self, steps, known, taken) -> None:
         """Few steps: a line with a dot per step. Many: the line would be a
         solid block of zigzags, so a decision variable keeps its dots only,
-        coloured by sign (the branch it picks), and another value its line."""
+        coloured by the branch each step took (``taken``, per plotted
+        step), and another value its line."""
         few = len(known) <= SERIES_DOTS
-        if decision:
-            self.curve.setPen(pg.mkPen("#9aa5b1", width=1))
+        if taken is not None:
+            self.curve.setPen(pg.mkPen(UNDECIDED_COLOR, width=1))
             self.curve.setData(steps if few else [], known if few else [], symbol=None)
-            high = known > 0
-            for dots, part in zip(self.branch_dots, (~high, high)):
+            for dots, part in zip((*self.branch_dots, self.undecided_dots),
+                                  (taken == 0, taken == 1, (taken != 0) & (taken != 1))):
                 dots.setData(steps[part], known[part], symbolSize=4 if few else 3)
             return
-        for dots in self.branch_dots:
+        for dots in (*self.branch_dots, self.undecided_dots):
             dots.setData([], [])
         self.curve.setPen(pg.mkPen("#2563a8", width=1.5))
         self.curve.setData(steps, known, symbol="o" if few else None, symbolSize=4,

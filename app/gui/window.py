@@ -36,6 +36,7 @@ from app.model.inputs import split_contours
 from app.model.examples import default_scene
 from app.model.inputs import group_size, open_ended
 from app.model.tables import TableIndex
+from app.model.branches import decision_branches
 from app.model.tools import (circle_kind, circle_options, clamp_option, drawing_mode,
                              marker_option, placing_message, shape_paths, tool_hint)
 from app.render import frame as frame_view
@@ -323,6 +324,7 @@ class MainWindow(WindowLayout, WindowMenus, DepthAndAccuracy, TextureDisplay, QM
         self.grid.set_y_down(y_down)
         self.depth_view.set_y_down(y_down)
         self.grid_editor.set_y_down(y_down)
+        self.guides.show(self.player.trace, self.player.state())  # words such as "above" flip
         self.y_down_action.blockSignals(True)
         self.y_down_action.setChecked(y_down)
         self.y_down_action.blockSignals(False)
@@ -421,7 +423,7 @@ class MainWindow(WindowLayout, WindowMenus, DepthAndAccuracy, TextureDisplay, QM
         name = _series_name(trace)
         decision = name is not None and name == trace.start.decision
         self.variables.set_series(None if name is None else trace.series(name), name or "",
-                                  decision)
+                                  decision, decision_branches(trace) if decision else None)
 
     def _show_tables_dock(self) -> None:
         """The tables dock appears for runs with tables and goes for runs

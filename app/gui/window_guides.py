@@ -12,6 +12,7 @@ class WindowGuides:
 
     def __init__(self, grid, palette):
         self.item = GuidesItem(palette)
+        self.grid = grid
         grid.view_box.addItem(self.item)
         self.paths: list = []
 
@@ -28,4 +29,4 @@ class WindowGuides:
             self.item.set_guides(None)
             return
         self.item.set_size(trace.width, trace.height)
-        self.item.set_guides(step_guides(trace, state, self.paths) or None)
+        self.item.set_guides(step_guides(trace, state, self.paths, self.grid.y_down) or None)

@@ -127,8 +127,11 @@ class WindowView(QObject):
             if tick.pointSizeF() > 0:
                 tick.setPointSizeF(tick.pointSizeF() * self.zoom * (1.4 if self.presenting else 1))
             axis.setStyle(tickFont=tick)
+        # The words on the grid (M's side, the scan line) grow as the axes do.
+        w.guides.item.set_text_scale(self.zoom * (1.4 if self.presenting else 1))
         if redraw:
             w.show_frame()
+        w.code.restyle()
         w.code.lines.resizeColumnToContents(0)
         w.code.lines.resizeRowsToContents()
         w.code.reveal()

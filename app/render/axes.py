@@ -1,6 +1,8 @@
 """Coordinate axes beside an exported grid: ticks at the cell boundaries,
 which are the integer coordinates (pixel i is [i, i+1)), labelled often
-enough to read and never crowded; in both origins."""
+enough to read and never crowded; in both origins. When a cell is large
+enough to hold its number, the labels name the cells instead, each at
+its cell's centre i + 1/2 between two boundary ticks."""
 from __future__ import annotations
 
 import numpy as np
@@ -37,6 +39,19 @@ class Axes:
         self.scale = renderer.settings.scale
         self.step_x = label_step(self.scale, widest)
         self.step_y = label_step(self.scale, face.ascent + face.descent)
+        # Cells numbered at their centres when every number fits in its
+        # cell; both axes alike, never cell numbers on one and boundaries
+        # on the other.
+        self.cells_x = self.cells_y = self.scale >= max(
+            face.width(str(max(width, height) - 1)) + 6, face.ascent + face.descent + 2)
+
+    def label_at(self, k: int, count: int, cells: bool, step: int) -> float | None:
+        """Where along the axis, in cells, boundary k's label goes: at k
+        (every ``step``-th boundary), or at the centre k + 1/2 of cell k
+        when cells are labelled; None for no label."""
+        if cells:
+            return k + 0.5 if k < count else None
+        return float(k) if k % step == 0 else None
 
     def ticks(self, count: int) -> list[int]:
         """The integer coordinates 0 .. count (every cell boundary)."""
@@ -52,21 +67,34 @@ class Axes:
         half_height = (self.face.ascent + self.face.descent) // 2
         for k in self.ticks(r.trace.width):
             x = min(gw - 1, k * self.scale)
-            long = k % self.step_x == 0
+            at = self.label_at(k, r.trace.width, self.cells_x, self.step_x)
+            long = self.cells_x or k % self.step_x == 0
             bd.line((x, 0, x, self.tick * (2 if long else 1) - 1), fill=theme.muted)
+            if at is None:
+                continue
+            x = at * self.scale
             half = self.face.width(str(k)) // 2 + 1
             # A label that would not fit whole is left out, not pushed
             # onto its neighbour.
-            if long and (x - half >= 0 or k == 0) and x + half <= gw:
+            if (x - half >= 0 or k == 0) and x + half <= gw:
                 bd.text((max(x, half), 2 * self.tick), str(k), font=self.face.face,
                         fill=theme.text, anchor="mt")
         for k in self.ticks(r.trace.height):
-            y = min(gh - 1, k * self.scale if r.y_down else gh - k * self.scale)
-            long = k % self.step_y == 0
+            y = min(gh - 1, self._row(k))
+            at = self.label_at(k, r.trace.height, self.cells_y, self.step_y)
+            long = self.cells_y or k % self.step_y == 0
             ld.line((self.left - self.tick * (2 if long else 1), y, self.left - 1, y),
                     fill=theme.muted)
-            if long and y - half_height >= 0 and y + half_height <= gh + self.bottom:
+            if at is None:
+                continue
+            y = self._row(at)
+            if y - half_height >= 0 and y + half_height <= gh + self.bottom:
                 ld.text((self.left - 2 * self.tick - 2, y), str(k), font=self.face.face,
                         fill=theme.text, anchor="rm")
         colours = r.colours
         return colours.indices(np.asarray(left)), colours.indices(np.asarray(bottom))
+
+    def _row(self, value: float) -> float:
+        """The image row of coordinate y = ``value`` in the scene's origin."""
+        scaled = value * self.scale
+        return scaled if self.r.y_down else self.r.grid_size[1] - scaled

@@ -130,7 +130,7 @@ class FrameRenderer:
         marks = frame_marks(state, self.paths, self.differences, settings.highlight,
                             settings.primitive)
         grid = self._grid.draw(state.raster, marks, written)
-        guides = (step_guides(self.trace, state, self.ideal)
+        guides = (step_guides(self.trace, state, self.ideal, self.y_down)
                   if settings.reasoning and settings.highlight else NONE)
         if guides:
             grid = grid.copy()  # the grid part keeps its own picture for the next frame

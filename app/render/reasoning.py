@@ -4,7 +4,7 @@ frames show over the pixels, worked out once for both.
 * A decision between two candidate pixels (Bresenham's lines, the midpoint
   circle): the midpoint M between the candidates' centres, and a short
   drop from M to the ideal primitive, which shows on which side of M it
-  passes.
+  passes; the label at M says so in words ("line above M: NE").
 * The scan-line fill: the scan line through the pixel centres at
   y + 1/2, its crossings with the edges (the AET's x values), and the pair
   of crossings a span is filled between.
@@ -18,11 +18,13 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from fractions import Fraction
 
 import numpy as np
 
 from algorithms.steps import Span, Table
 
+from app.model.branches import branch_pairs, candidate_offsets
 from app.model.drawing import point_labels
 from app.model.tools import drawing_mode
 from app.render.frame import pixel_samples
@@ -50,20 +52,22 @@ class Guides:
 NONE = Guides()
 
 
-def step_guides(trace, state, paths=()) -> Guides:
+def step_guides(trace, state, paths=(), y_down: bool = False) -> Guides:
     """The guides of ``state`` (a FrameState of ``trace``); ``paths`` is the
-    ideal primitive as [(points, closed), ...] in grid units."""
+    ideal primitive as [(points, closed), ...] in grid units; ``y_down``:
+    the scene's origin is top-left (words such as "above" follow the
+    picture)."""
     if trace is None or state is None:
         return NONE
     for make in (_scan_guides, _midpoint_guides, _sample_guides):
-        guides = make(trace, state, paths)
+        guides = make(trace, state, paths, y_down)
         if guides:
             return guides
     return NONE
 
 
 # ------------------------------------------------------------ scan line
-def _scan_guides(trace, state, paths) -> Guides:
+def _scan_guides(trace, state, paths, y_down=False) -> Guides:
     if not _is_scan_line_run(trace) or "y" not in state.variables:
         return NONE
     y = state.variables["y"]
@@ -141,7 +145,7 @@ def _span_pair(trace, found, index: int):
 
 
 # ------------------------------------------------------------ midpoint
-def _midpoint_guides(trace, state, paths) -> Guides:
+def _midpoint_guides(trace, state, paths, y_down=False) -> Guides:
     candidates = state.candidates
     if len(candidates) != 2 or getattr(trace.start, "decision", None) is None:
         return NONE
@@ -151,10 +155,105 @@ def _midpoint_guides(trace, state, paths) -> Guides:
     nearest = _nearest_on_paths(paths, mx, my)
     if nearest is not None and math.dist(nearest, (mx, my)) > 1e-9:
         lines.append((mx, my, nearest[0], nearest[1], "drop"))
-    return Guides(tuple(lines), ((mx, my, "midpoint"),), ((mx, my, "M"),))
+    label = "M"
+    circle = _circle_of(trace)
+    side = passing_side(paths, candidates, circle)
+    if side is not None:
+        noun = "circle" if circle is not None else \
+            "curve" if _nearest_segment(paths, mx, my)[1] else "line"
+        label = side_words(candidates, side, y_down, noun) + _branch_of(trace, state, side)
+    return Guides(tuple(lines), ((mx, my, "midpoint"),), ((mx, my, label),))
+
+
+def passing_side(paths, candidates, circle=None) -> int | None:
+    """Which candidate's side of M the ideal primitive passes on: 0 (the
+    first candidate's), 1 (the second's), -1 (through M, a tie), or None
+    (no primitive, or one running along the candidates).
+
+    Exact, in rationals: g(P) is the circle's F(P) = |P - C|^2 - R^2 when
+    ``circle`` = (cx, cy, R) is given, else the cross product of the
+    primitive's segment nearest M with P (its side of that line). Along
+    the candidates' centres A, M, B, g is affine (nearly so for the
+    circle, one cell away), so the primitive crosses A-B on B's side of M
+    when g falls towards 0 going from M to B."""
+    (ax, ay), (bx, by) = candidates
+    a = (Fraction(ax) + Fraction(1, 2), Fraction(ay) + Fraction(1, 2))
+    b = (Fraction(bx) + Fraction(1, 2), Fraction(by) + Fraction(1, 2))
+    m = ((a[0] + b[0]) / 2, (a[1] + b[1]) / 2)
+    g = _circle_function(circle) if circle is not None else _line_function(paths, m)
+    if g is None:
+        return None
+    at_m, towards_b = g(m), g(b) - g(a)
+    if at_m == 0:
+        return -1
+    if towards_b == 0:
+        return None
+    return 1 if (at_m > 0) != (towards_b > 0) else 0
+
+
+def _line_function(paths, m):
+    found = _nearest_segment(paths, float(m[0]), float(m[1]))
+    if found is None:
+        return None
+    (x0, y0), (x1, y1) = ((Fraction(x), Fraction(y)) for x, y in found[0])
+    return lambda p: (x1 - x0) * (p[1] - y0) - (y1 - y0) * (p[0] - x0)
+
+
+def _circle_function(circle):
+    cx, cy, radius = (Fraction(value) for value in circle)
+    return lambda p: (p[0] - cx) ** 2 + (p[1] - cy) ** 2 - radius ** 2
+
+
+def _circle_of(trace):
+    """(cx, cy, R) of a circle run, in grid units (its centre pixel's
+    centre), from the run's constants; None for other runs."""
+    constants = getattr(trace.start, "constants", None) or {}
+    values = [constants.get(name) for name in ("xc", "yc", "R")]
+    if any(not isinstance(v, (int, float, Fraction)) or isinstance(v, bool) for v in values):
+        return None
+    xc, yc, radius = values
+    return Fraction(xc) + Fraction(1, 2), Fraction(yc) + Fraction(1, 2), Fraction(radius)
+
+
+def side_words(candidates, side: int, y_down: bool, noun: str) -> str:
+    """"line above M", "curve left of M", "line through M" ... as the
+    picture shows it: with the origin top-left larger y is lower."""
+    if side == -1:
+        return f"{noun} through M (a tie)"
+    (ax, ay), (bx, by) = candidates
+    (px, py), (qx, qy) = (candidates[side], candidates[1 - side])
+    if ay != by:
+        up = (py > qy) != y_down
+        return f"{noun} {'above' if up else 'below'} M"
+    return f"{noun} {'right of' if px > qx else 'left of'} M"
+
+
+def _branch_of(trace, state, side: int) -> str:
+    """": NE" -- the branch named for the candidate on the primitive's
+    side, read from the pseudo-code's lines deciding between this step's
+    candidates."""
+    if side == -1:
+        return ""
+    names = branch_pairs(trace).get(candidate_offsets(trace, trace.code[state.step.line]), [])
+    return f": {names[side]}" if len(names) == 2 else ""
 
 
 def _nearest_on_paths(paths, x: float, y: float):
+    found = _nearest(paths, x, y)
+    return None if found is None else found[0]
+
+
+def _nearest_segment(paths, x: float, y: float):
+    """(segment, closed) nearest (x, y), or None; a point is no segment."""
+    found = _nearest(paths, x, y)
+    if found is None or found[1][0] == found[1][1]:
+        return None
+    return found[1], found[2]
+
+
+def _nearest(paths, x: float, y: float):
+    """(nearest point, its segment, its path is closed) of the paths to
+    (x, y), or None."""
     best, where = math.inf, None
     for points, closed in paths:
         points = [(float(px), float(py)) for px, py in points]
@@ -167,12 +266,12 @@ def _nearest_on_paths(paths, x: float, y: float):
             px, py = x0 + t * dx, y0 + t * dy
             distance = math.hypot(px - x, py - y)
             if distance < best:
-                best, where = distance, (px, py)
+                best, where = distance, ((px, py), ((x0, y0), (x1, y1)), closed)
     return where
 
 
 # ------------------------------------------------------------ samples
-def _sample_guides(trace, state, paths) -> Guides:
+def _sample_guides(trace, state, paths, y_down=False) -> Guides:
     samples = pixel_samples(trace, state.index)
     if samples is None:
         return NONE

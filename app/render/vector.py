@@ -83,7 +83,7 @@ def draw_frame(renderer, index: int) -> Drawing:
                      2.0, closed)
     _outlines(drawing, marks, palette, y_of)
     if settings.reasoning and settings.highlight:
-        _guides(drawing, step_guides(trace, state, renderer.ideal), palette, y_of)
+        _guides(drawing, step_guides(trace, state, renderer.ideal, renderer.y_down), palette, y_of)
     if panel_width:
         drawing.rect(grid_w, 0, panel_width, body_h, fill=theme.panel)
     if code:

@@ -111,3 +111,24 @@ def test_printed_goes_wrong_outside_the_circle():
     assert wrong and all(residual(x, y, 20) > 0 for x, y in wrong)
     first = min(abs(x) for x, y in wrong if abs(x) <= abs(y))
     assert final["first_wrong_column"] == first
+
+
+def test_bresenham_circle_candidates_are_e_and_se_of_the_pixel_decided_from():
+    """The eight mirrors are plotted between the pixel decided from and the
+    decision, yet the candidates are E and SE of that pixel (x - 1, y or
+    y + 1 before the step, from the step's own x and y) and hold the pixel
+    the step plots."""
+    xc, yc, radius = 15, 11, 9
+    trace = record("circle-bresenham", [(xc, yc)], {"radius": radius})
+    checked = 0
+    for i in range(len(trace)):
+        step = trace.step(i)
+        if step.branch not in ("E", "SE"):
+            continue
+        x, y = int(step.values["x"]), int(step.values["y"])
+        before = (xc + x - 1, yc + y + (1 if step.branch == "SE" else 0))
+        assert trace.candidates_at(i) == [(before[0] + 1, before[1]),
+                                          (before[0] + 1, before[1] - 1)], i
+        assert tuple(step.pixel) in trace.candidates_at(i)
+        checked += 1
+    assert checked >= 5

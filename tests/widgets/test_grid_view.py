@@ -179,43 +179,79 @@ def test_large_grid_paints(view):
 
 
 def drawn_ticks(view, name):
-    """(label, viewport position) of every tick label the axis draws: a
-    label is centred on its tick."""
+    """(label, viewport position) of every tick label the axis draws, and
+    the viewport positions of its tick marks."""
     from PySide6.QtGui import QImage, QPainter
     axis = view.getPlotItem().getAxis(name)
     image = QImage(10, 10, QImage.Format.Format_ARGB32)
     painter = QPainter(image)
     try:
-        _line, _ticks, texts = axis.generateDrawSpecs(painter)
+        _line, ticks, texts = axis.generateDrawSpecs(painter)
     finally:
         painter.end()
     assert len(texts) >= 3
-    return [(text, view.mapFromScene(axis.mapToScene(rect.center())))
-            for rect, _flags, text in texts]
+    labels = [(text, view.mapFromScene(axis.mapToScene(rect.center())))
+              for rect, _flags, text in texts]
+    marks = [view.mapFromScene(axis.mapToScene(start)) for _pen, start, _end in ticks]
+    assert marks
+    return labels, marks
+
+
+def check_axes(view, qtbot, y_down, cells_labelled):
+    """Tick marks stand at cell boundaries (whole coordinates); a label
+    names the boundary k (pixel k just after it, pixel k - 1 just before)
+    or, when cells hold their numbers, the cell under the label's centre."""
+    qtbot.wait(100)  # pyqtgraph lays the axes out after the range settles
+    middle = view.viewport().rect().center()
+    cell = abs(view.widget_pos_of((1.0, 0.0)).x() - view.widget_pos_of((0.0, 0.0)).x())
+    near = max(1, min(3, round(cell / 3)))
+    checked = 0
+    for name, index in (("bottom", 0), ("left", 1)):
+        axis = view.getPlotItem().getAxis(name)
+        labels, marks = drawn_ticks(view, name)
+        assert axis.index_labels == cells_labelled, name
+        # Screen y grows downwards: with y up, larger y is higher on screen.
+        growing = 1 if name == "bottom" or y_down else -1
+
+        def pixel(along):
+            point = _point(along, middle.y()) if name == "bottom" else _point(middle.x(), along)
+            return view.pixel_at(view.mapToScene(point))[index]
+        for mark in marks:
+            value = view.view_box.mapSceneToView(view.mapToScene(mark))
+            value = value.x() if name == "bottom" else value.y()
+            # A whole coordinate, to within a screen pixel.
+            assert abs(value - round(value)) * cell <= 1.0, (name, value)
+            checked += 1
+        for label, spot in labels:
+            k = int(label)
+            along = spot.x() if name == "bottom" else spot.y()
+            if cells_labelled:
+                assert pixel(along) == k, (name, label)
+            elif 1 <= k < view.grid_size[index]:
+                assert (pixel(along + near * growing), pixel(along - near * growing)) == (k, k - 1)
+            checked += 1
+    assert checked >= 8
 
 
 @pytest.mark.parametrize("y_down", [False, True])
 def test_axis_ticks_stand_at_cell_boundaries(view, qtbot, y_down):
-    """Pixel i is [i, i+1): a few screen pixels after the tick labelled k
-    (rightwards, or the way y grows) lies pixel k, a few before it pixel k - 1."""
+    """A large grid: cells too small for their numbers, boundaries labelled."""
+    view.set_grid(120, 90)
     view.set_y_down(y_down)
     view.fit()
-    qtbot.wait(100)  # pyqtgraph lays the axes out after the range settles
-    middle = view.viewport().rect().center()
-    checked = 0
-    for name, index in (("bottom", 0), ("left", 1)):
-        # Screen y grows downwards: with y up, larger y is higher on screen.
-        growing = 1 if name == "bottom" or y_down else -1
-        for label, spot in drawn_ticks(view, name):
-            k = int(label)
-            if not 1 <= k < 20:
-                continue
-            for offset, pixel in ((3 * growing, k), (-3 * growing, k - 1)):
-                point = _point(spot.x() + offset, middle.y()) if name == "bottom" \
-                    else _point(middle.x(), spot.y() + offset)
-                assert view.pixel_at(view.mapToScene(point))[index] == pixel, (name, label)
-                checked += 1
-    assert checked >= 8
+    check_axes(view, qtbot, y_down, cells_labelled=False)
+
+
+@pytest.mark.parametrize("y_down", [False, True])
+def test_large_cells_are_labelled_by_index_at_their_centres(view, qtbot, y_down):
+    """Zoomed in, each cell's number stands at its centre i + 1/2 and the
+    ticks stay at the boundaries; zoomed out again, the boundaries are
+    labelled once more."""
+    view.set_y_down(y_down)
+    view.view_box.setRange(xRange=(3, 13), yRange=(2, 10), padding=0)
+    check_axes(view, qtbot, y_down, cells_labelled=True)
+    labels, _marks = drawn_ticks(view, "bottom")
+    assert {int(text) for text, _ in labels} >= set(range(4, 12))
 
 
 def _point(x, y):

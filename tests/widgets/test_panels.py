@@ -107,21 +107,25 @@ def test_a_long_decision_run_is_dots_coloured_by_branch(qtbot):
     qtbot.addWidget(p)
     rng = np.random.default_rng(7)
     long = rng.integers(-30, 30, size=5000).astype(float)
-    p.set_series(long, "d", decision=True)
+    # Branches that do not follow the sign: the panel must show these.
+    taken = rng.integers(-1, 2, size=5000).astype(np.int8)
+    p.set_series(long, "d", decision=True, branches=(taken, ("E", "NE")))
     # No line: thousands of zigzags would fill the plot solid.
     assert p.curve.xData is None or len(p.curve.xData) == 0
     low, high = p.branch_dots
     assert [pg.mkBrush(d.opts["symbolBrush"]).color().name() for d in (low, high)] == \
         list(BRANCH_COLORS)
-    # The oracle: each plotted value's sign picks its colour.
-    assert (p.branch_dots[0].yData <= 0).all() and (p.branch_dots[1].yData > 0).all()
-    for dots in p.branch_dots:
-        assert np.array_equal(long[dots.xData.astype(int)], dots.yData)
+    assert "E" in p.plot_title.text() and "NE" in p.plot_title.text()
+    # The oracle: each dot's colour is its step's branch.
+    for dots, code in ((low, 0), (high, 1), (p.undecided_dots, -1)):
+        steps = dots.xData.astype(int)
+        assert (taken[steps] == code).all()
+        assert np.array_equal(long[steps], dots.yData)
     assert len(low.xData) + len(high.xData) > SERIES_DOTS
     # A short run keeps its line under the dots.
-    p.set_series(long[:40], "d", decision=True)
+    p.set_series(long[:40], "d", decision=True, branches=(taken[:40], ("E", "NE")))
     assert len(p.curve.xData) == 40
-    assert len(low.xData) == int((long[:40] <= 0).sum())
+    assert len(low.xData) == int((taken[:40] == 0).sum())
     # A value that does not decide keeps its line however long the run.
     p.set_series(np.cumsum(long), "x", decision=False)
     assert len(p.curve.xData) > SERIES_DOTS and (low.xData is None or not len(low.xData))

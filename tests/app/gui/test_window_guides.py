@@ -65,3 +65,25 @@ def test_the_left_out_note_leaves_the_status_line_once_the_scan_lines_start(qtbo
     window.player.seek(int(trace.steps_of(Span)[0]))
     qtbot.wait(10)
     assert "left out" not in window.message.text()
+
+
+def test_the_label_at_m_follows_the_origin(qtbot, window):
+    """The same step reads "line above M" with y up and "line below M"
+    once the origin moves to the top-left (the picture flips)."""
+    _show(qtbot, window, "demo-bresenham")
+    trace = window.player.trace
+    steps = [i for i in range(len(trace)) if len(trace.candidates_at(i)) == 2]
+    step = next(i for i in steps if trace.step(i).branch == "NE")
+    window.player.seek(step)
+    qtbot.wait(10)
+    (before,) = window.guides.item.label_texts()
+    window.set_y_down(True)
+    qtbot.waitUntil(lambda: window.player.trace is not None and not window.player.recording,
+                    timeout=10000)
+    window.player.seek(step)
+    qtbot.wait(10)
+    (after,) = window.guides.item.label_texts()
+    words = {"above": "below", "below": "above", "left of": "right of", "right of": "left of"}
+    side = next(word for word in words if f"line {word} M" in before)
+    assert after == before.replace(f"line {side} M", f"line {words[side]} M")
+    assert before.endswith(": NE")

@@ -184,3 +184,47 @@ def test_at_720_pixels_the_code_keeps_most_of_its_panel(window, qtbot):
     shown = sum(1 for row in range(lines.rowCount())
                 if 0 <= lines.rowViewportPosition(row) < lines.viewport().height())
     assert shown >= min(5, lines.rowCount())
+
+
+def test_the_marked_code_line_takes_the_presentation_type_too(window, qtbot):
+    """The marked line carries its own (bold) font: it grows with the rest
+    of the code when presenting and shrinks back after."""
+    window.player.seek(3)
+    qtbot.wait(10)
+    row = window.code.current
+    assert row is not None
+
+    def marked_size():
+        return window.code.lines.item(row, 1).font().pointSizeF()
+    before = marked_size()
+    QTest.keyClick(window.grid, Qt.Key.Key_F11)
+    qtbot.waitUntil(lambda: window.view.presenting, timeout=2000)
+    assert marked_size() == point_size(window.code.lines) >= 1.5 * before
+    # A line marked before is plain again: no font of its own, so it is
+    # drawn in the table's (presentation) font like the rest.
+    window.player.seek(len(window.player.trace) - 1)
+    qtbot.wait(10)
+    assert window.code.lines.item(row, 1).data(Qt.ItemDataRole.FontRole) is None
+    QTest.keyClick(window.grid, Qt.Key.Key_Escape)
+    qtbot.waitUntil(lambda: not window.view.presenting, timeout=2000)
+    lines = window.code.lines
+    marked = window.code.current
+    assert lines.item(marked, 1).font().pointSizeF() == point_size(lines) == before
+    assert all(lines.item(k, 1).data(Qt.ItemDataRole.FontRole) is None
+               for k in range(lines.rowCount()) if k != marked)
+
+
+def test_the_words_on_the_grid_grow_when_presenting(window, qtbot):
+    """M's label is read from the back row too: larger while presenting."""
+    trace = window.player.trace
+    step = next(i for i in range(len(trace)) if len(trace.candidates_at(i)) == 2)
+    window.player.seek(step)
+    qtbot.wait(10)
+    (before,) = window.guides.item.label_sizes()
+    QTest.keyClick(window.grid, Qt.Key.Key_F11)
+    qtbot.waitUntil(lambda: window.view.presenting, timeout=2000)
+    (presenting,) = window.guides.item.label_sizes()
+    assert presenting >= 1.3 * before
+    QTest.keyClick(window.grid, Qt.Key.Key_Escape)
+    qtbot.waitUntil(lambda: not window.view.presenting, timeout=2000)
+    assert window.guides.item.label_sizes() == [before]

@@ -80,7 +80,8 @@ def test_bresenham_midpoint_lies_between_the_candidates_and_drops_onto_the_line(
         (ax, ay), (bx, by) = state.candidates
         (mx, my, role), = guides.dots
         assert role == "midpoint" and (mx, my) == ((ax + bx) / 2 + 0.5, (ay + by) / 2 + 0.5)
-        assert guides.labels == ((mx, my, "M"),)
+        (lx, ly, text), = guides.labels
+        assert (lx, ly) == (mx, my) and "M" in text
         drops = [line for line in guides.lines if line[4] == "drop"]
         dx, dy = q[0] - p[0], q[1] - p[1]
         # 2 * F(M): the decision's own quantity, d = 2 (dy x - dx y + c) at M.
@@ -98,6 +99,96 @@ def test_bresenham_midpoint_lies_between_the_candidates_and_drops_onto_the_line(
         assert (y1 > y0) == (f > 0)
         checked += 1
     assert checked > 10
+
+
+def exact_side(p, q, a, b):
+    """Where the line through the centres of pixels p and q crosses the
+    line through the centres of candidates a and b, as t along a -> b
+    (M at t = 1/2), exactly; None when the two are parallel."""
+    (px, py), (qx, qy) = [(Fraction(x) + Fraction(1, 2), Fraction(y) + Fraction(1, 2))
+                          for x, y in (p, q)]
+    (ax, ay), (bx, by) = [(Fraction(x) + Fraction(1, 2), Fraction(y) + Fraction(1, 2))
+                          for x, y in (a, b)]
+    # a + t (b - a) on the line: (qx - px)(y - py) = (qy - py)(x - px).
+    ux, uy = bx - ax, by - ay
+    under = (qx - px) * uy - (qy - py) * ux
+    if under == 0:
+        return None
+    return ((qy - py) * (ax - px) - (qx - px) * (ay - py)) / under
+
+
+@pytest.mark.parametrize("p, q", [((1, 2), (27, 13)), ((3, 20), (9, 2)),
+                                  ((28, 4), (2, 9)), ((5, 5), (25, 15))])
+@pytest.mark.parametrize("y_down", [False, True])
+def test_the_label_at_m_says_which_side_the_line_passes(p, q, y_down):
+    """"line above M: NE" -- the side worked out exactly, in the
+    picture's own terms (with the origin top-left, larger y is lower), and
+    the branch named for that candidate is the one Bresenham takes."""
+    trace = record("line-bresenham", [p, q], grid=(32, 24))
+    ideal = [([(p[0] + 0.5, p[1] + 0.5), (q[0] + 0.5, q[1] + 0.5)], False)]
+    seen = set()
+    for i in range(len(trace)):
+        state = trace.state_at(i)
+        if len(state.candidates) != 2:
+            continue
+        a, b = state.candidates
+        (_x, _y, text), = step_guides(trace, state, ideal, y_down).labels
+        t = exact_side(p, q, a, b)
+        if t == Fraction(1, 2):
+            assert text == "line through M (a tie)"
+            seen.add("tie")
+            continue
+        chosen = b if t > Fraction(1, 2) else a
+        other = a if chosen == b else b
+        if chosen[1] != other[1]:
+            up = (chosen[1] > other[1]) != y_down
+            words = "above" if up else "below"
+        else:
+            words = "right of" if chosen[0] > other[0] else "left of"
+        branch = "NE" if chosen == b else "E"
+        assert text == f"line {words} M: {branch}", (i, text)
+        # Bresenham decides exactly: the branch it takes is that side's.
+        assert state.step.branch == branch and tuple(state.step.pixel) == tuple(chosen)
+        seen.add(words)
+    assert len(seen) >= 1
+
+
+def test_the_label_at_m_names_a_tie():
+    """(0, 0) -> (4, 1) passes exactly through the midpoint at x = 2."""
+    trace = record("line-bresenham", [(0, 0), (4, 1)], grid=(8, 4))
+    ideal = [([(0.5, 0.5), (4.5, 1.5)], False)]
+    texts = [step_guides(trace, trace.state_at(i), ideal).labels[0][2]
+             for i in range(len(trace)) if len(trace.state_at(i).candidates) == 2]
+    assert "line through M (a tie)" in texts
+    assert "line above M: NE" in texts and "line below M: E" in texts
+
+
+@pytest.mark.parametrize("name", ["circle-midpoint", "circle-bresenham"])
+@pytest.mark.parametrize("radius", [7, 10])
+def test_the_label_at_m_says_which_side_the_circle_passes(name, radius):
+    """F(M) = |M - C|^2 - R^2 < 0 puts M inside, so the circle passes above
+    M and E is its candidate; F(M) > 0, below and SE. The midpoint circle
+    decides exactly so, and Bresenham's (d = 3 - 2R) lands on the same
+    pixels for a whole radius, though its mirrors come before its
+    decisions."""
+    centre = (12, 12)
+    trace = record(name, [centre], {"radius": radius}, grid=(25, 25))
+    checked = 0
+    for i in range(len(trace)):
+        state = trace.state_at(i)
+        if len(state.candidates) != 2:
+            continue
+        (ax, ay), (bx, by) = state.candidates
+        mx, my = Fraction(ax + bx + 1, 2), Fraction(ay + by + 1, 2)
+        f = (mx - centre[0] - Fraction(1, 2)) ** 2 + (my - centre[1] - Fraction(1, 2)) ** 2 \
+            - radius ** 2
+        (_x, _y, text), = step_guides(trace, state, ()).labels
+        assert f != 0  # M is never on a whole-radius circle
+        expected = "circle above M: E" if f < 0 else "circle below M: SE"
+        assert text == expected, (i, text)
+        assert expected.endswith(": " + state.step.branch)
+        checked += 1
+    assert checked >= 4
 
 
 def test_supersampling_marks_the_step_s_own_sample():

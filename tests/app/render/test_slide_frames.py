@@ -95,6 +95,33 @@ def test_axis_ticks_stand_at_the_cell_boundaries(origin):
         assert tuple(image[row + 5, left - 1]) == outside, k
 
 
+@pytest.mark.parametrize("origin", ["bottom-left", "top-left"])
+def test_large_cells_are_numbered_at_their_centres(origin):
+    """At 40 px a cell, every cell's index stands inside the cell, clear of
+    the boundary ticks; the ticks stay at the boundaries."""
+    scene = Scene(algorithm="line-bresenham", points=((1, 2), (12, 7)), width=14, height=9,
+                  origin=origin)
+    renderer = ex.FrameRenderer(scene, ex.ExportSettings(scale=40, axes=True, caption=False,
+                                                         panel="none"))
+    image = renderer.rgb(0)
+    left, (gw, gh) = renderer.grid_left, renderer.grid_size
+    ink = (image == rgb(ex.LIGHT.text)).all(axis=2)
+    muted = rgb(ex.LIGHT.muted)
+    below = ink[gh + 2 * renderer.axes.tick:, left:left + gw].any(axis=0)  # per column
+    beside = ink[:gh, :left - 2 * renderer.axes.tick].any(axis=1)           # per row
+    for k in range(14):
+        assert tuple(image[gh, left + 40 * k]) == muted, k
+        assert below[40 * k + 8:40 * k + 32].any(), k        # a label in cell k
+        assert not below[max(0, 40 * k - 3):40 * k + 4].any(), k  # none on its boundary
+    for k in range(9):
+        # Cell k spans rows [40k, 40k + 40) from the top (top-left origin)
+        # or from the bottom.
+        top = 40 * k if origin == "top-left" else gh - 40 * (k + 1)
+        assert beside[top + 8:top + 32].any(), k
+        edge = 40 * k if origin == "top-left" else gh - 40 * k
+        assert not beside[max(0, edge - 3):edge + 4].any(), k
+
+
 def test_vertex_labels_are_an_option():
     scene = load(SCENES / "polygon-star-evenodd.json")
     plain = ex.FrameRenderer(scene, ex.ExportSettings(caption=False, panel="none"))
