@@ -15,11 +15,16 @@ from functools import lru_cache
 import numpy as np
 from PIL import Image, ImageDraw, ImageFont
 
+from algorithms.trace import FrameState
+
 from app.model.notation import shown
 from app.model.tables import TableIndex
 from app.render.frame import key_values, step_caption
 
 ELLIPSIS = "\u2026"
+VALUE_SEPARATOR = "   \u00b7   "
+VALUE_SAMPLES = 512   # steps looked at to size the caption
+MAX_VALUE_LINES = 6   # the caption's value lines at most
 _FONT_FILES = {"sans": "DejaVuSans.ttf", "sans_bold": "DejaVuSans-Bold.ttf",
                "mono": "DejaVuSansMono.ttf", "mono_bold": "DejaVuSansMono-Bold.ttf"}
 _FONT_FOLDERS = ("/usr/share/fonts/truetype/dejavu", "/usr/share/fonts/TTF",
@@ -92,12 +97,13 @@ class TextParts:
         self.mono, self.mono_bold = _Font("mono", mono), _Font("mono_bold", mono)
         self.line = round(18 * ui)
         self.pad = round(8 * ui)
-        # Step, pseudo-code line, and two lines for the step's values.
-        self.caption_height = 4 * self.line + 2 * round(5 * ui)
         self.panel_width = panel_width(text_size)
-
         trace = renderer.trace
         self.last = len(trace) - 1
+        # Step, pseudo-code line, and as many lines for the step's values as
+        # the steps need (two at least), so that no value is cut.
+        self.value_lines = self._value_lines(renderer)
+        self.caption_height = (2 + self.value_lines) * self.line + 2 * round(5 * ui)
         self.code = [shown(line.text) for line in trace.code]
         self.number_width = self.mono_bold.width("\u25b6 " + str(len(self.code))) + round(6 * ui)
         text_width = self.panel_width - 2 * self.pad - self.number_width
@@ -122,6 +128,25 @@ class TextParts:
         self._tables = TableIndex(renderer.trace) if settings.panel == "tables" else None
         self._code_cache: dict[int | None, np.ndarray] = {}
         self._code_rows: dict[int, Image.Image] = {}
+
+    def _value_lines(self, renderer) -> int:
+        """The lines the caption's values take at the most crowded of up to
+        VALUE_SAMPLES steps spread over the run (at least 2, at most
+        MAX_VALUE_LINES); the frame keeps one size for every step."""
+        trace, settings = renderer.trace, renderer.settings
+        if not settings.caption:
+            return 2
+        room = renderer.grid_size[0] + (self.panel_width if settings.panel != "none" else 0) \
+            - 2 * self.pad
+        count = len(trace)
+        steps = range(count) if count <= VALUE_SAMPLES else sorted(
+            {round(k * (count - 1) / (VALUE_SAMPLES - 1)) for k in range(VALUE_SAMPLES)})
+        needed = 2
+        for index in steps:
+            state = FrameState(index, trace.step(index), None, trace.variables_at(index), [])
+            needed = max(needed, len(_pack(self.caption_parts(state), VALUE_SEPARATOR, self.mono,
+                                           room, MAX_VALUE_LINES)))
+        return min(needed, MAX_VALUE_LINES)
 
     def allocate(self) -> None:
         r = self.r
@@ -172,7 +197,7 @@ class TextParts:
         # Lines 3 and 4: the values of this step, then what the algorithm
         # explains, each labelled; whole parts wrap to the next line.
         parts = self.caption_parts(state)
-        for k, line in enumerate(_pack(parts, "   \u00b7   ", self.mono, room, 2)):
+        for k, line in enumerate(_pack(parts, VALUE_SEPARATOR, self.mono, room, self.value_lines)):
             baseline = self._baseline(top + (2 + k) * self.line, self.mono)
             self._text(draw, x0, baseline, line, self.mono, theme.text, room)
         return self._indices(image)

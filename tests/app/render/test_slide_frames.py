@@ -132,3 +132,24 @@ def test_vertex_labels_are_an_option():
     left, top = labelled._grid_point(x, y)
     box = (slice(max(0, int(top) - 40), int(top)), slice(int(left), int(left) + 40))
     assert not np.array_equal(plain.rgb(0)[box], labelled.rgb(0)[box])
+
+
+@pytest.mark.parametrize("name", ["circle-radius-1", "triangle-behind-eye", "triangle-fan-32"])
+def test_the_caption_has_room_for_every_value_of_every_step(name):
+    from algorithms.trace import FrameState
+    from app.model.scene import load as load_scene
+    from app.render.export import ExportSettings as Settings, FrameRenderer as Renderer
+    from tests.support import ROOT as root
+    renderer = Renderer(load_scene(root / "resources" / "scenes" / f"{name}.json"), Settings())
+    text = renderer._text
+    room = renderer.size[0] - 2 * text.pad
+    separator = text.mono.width("   \u00b7   ")
+    trace = renderer.trace
+    for index in range(0, len(trace), max(1, len(trace) // 300)):
+        state = FrameState(index, trace.step(index), None, trace.variables_at(index), [])
+        widths = [text.mono.width(part) for part in text.caption_parts(state)]
+        if not widths:
+            continue
+        # Each value fits a line, and all of them fit the caption's lines.
+        assert max(widths) <= room, (index, max(widths), room)
+        assert sum(widths) + separator * (len(widths) - 1) <= text.value_lines * room, index
