@@ -50,6 +50,7 @@ from .code import Code
 from .interpolate import mix, per_vertex, unpack
 from .registry import AlgorithmSpec, Inputs, Option, register
 from .steps import PER_ROW, PLOT, VISIT, Note, Start, Table, Vars
+from .trace import checkpoint
 
 NAN = math.nan
 TESTS = ("less", "less-equal")
@@ -105,6 +106,7 @@ class Scene:
         i_lo, i_hi = max(i_lo, 0), min(i_hi, self.width - 1)
         j_lo, j_hi = max(j_lo, 0), min(j_hi, self.height - 1)
         for j in range(j_lo, j_hi + 1):
+            checkpoint()  # a row can be 4096 pixels of work no frame separates (the final images)
             for i in range(i_lo, i_hi + 1):
                 es = tri.at(i, j)
                 covered, _ = edges.test(es)
@@ -134,13 +136,22 @@ def zbuffer_image(points, options, grid, clear: float | None = None):
     scene = Scene(points, options, grid)
     clear = options["clear_depth"] if clear is None else clear
     test = options["depth_test"]
-    color = np.full((scene.height, scene.width), -1, np.int64)
-    depth = np.full((scene.height, scene.width), float(clear))
-    owner = np.full((scene.height, scene.width), -1, np.int64)
+    # Zeroed buffers (colour and triangle plus one) cost nothing until
+    # written; each whole-buffer pass below is a checkpoint apart, so a
+    # cancel is heard between them (one pass of 16M pixels: tens of ms).
+    color = np.zeros((scene.height, scene.width), np.int64)
+    depth = np.zeros((scene.height, scene.width))
+    owner = np.zeros((scene.height, scene.width), np.int64)
     for setup in scene.drawn():
         for i, j, z, c in scene.fragments(setup):
-            if passes(z, depth[j, i], test):
-                color[j, i], depth[j, i], owner[j, i] = c, z, setup.number
+            if passes(z, depth[j, i] if owner[j, i] else clear, test):
+                color[j, i], depth[j, i], owner[j, i] = c + 1, z, setup.number + 1
+    checkpoint()
+    depth[owner == 0] = clear
+    checkpoint()
+    color -= 1
+    checkpoint()
+    owner -= 1
     return color, depth, owner
 
 
@@ -236,7 +247,11 @@ def zbuffer(points, options, grid):
     if not scene.z_given:
         yield Note(line=at["clear"], text="No z given: every vertex lies at depth 0.5, so the "
                                           "first triangle drawn over a pixel keeps it.")
-    depth = np.full((scene.height, scene.width), clear)
+    # Zeroed buffers cost nothing until written (the system hands out zero
+    # pages lazily): filling 16M depths with ``clear`` before the first
+    # frame took 100-200 ms no cancel could interrupt. A pixel not yet
+    # written holds ``clear``.
+    depth = np.zeros((scene.height, scene.width))
     fragments = passed = overdraw = 0
     written = np.zeros((scene.height, scene.width), bool)
     pass_line, fail_line = at["plot_pass"], at["fail"]
@@ -246,7 +261,7 @@ def zbuffer(points, options, grid):
             continue
         for i, j, z, color in scene.fragments(setup):
             fragments += 1
-            stored = depth[j, i]
+            stored = depth[j, i] if written[j, i] else clear
             if passes(z, stored, test):
                 passed += 1
                 overdraw += bool(written[j, i])
@@ -327,18 +342,26 @@ def painter(points, options, grid):
                  for rank, s in enumerate(order))
     yield Table(line=at["sort"], name="drawing order",
                 columns=("rank", "triangle", f"{key} z", "z0", "z1", "z2"), rows=rows)
-    color = np.full((scene.height, scene.width), -1, np.int64)
-    owner = np.full((scene.height, scene.width), -1, np.int64)
+    # Colour and triangle are stored plus one in zeroed buffers, which cost
+    # nothing until written (filling them with -1 before the first frame
+    # took over 100 ms no cancel could interrupt); 0 means nothing drawn.
+    color = np.zeros((scene.height, scene.width), np.int64)
+    owner = np.zeros((scene.height, scene.width), np.int64)
     paint_line = at["plot_paint"]
     for setup in order:
         yield from _triangle_vars(scene, setup, at["triangle"])
         k = depth_key(setup)
         for i, j, z, c in scene.fragments(setup):
-            color[j, i], owner[j, i] = c, setup.number
+            color[j, i], owner[j, i] = c + 1, setup.number + 1
             yield (paint_line, i, j, z, k, float(c))
+    color -= 1
+    checkpoint()
+    owner -= 1
     reference, _, ref_owner = zbuffer_image(points, {**options, "depth_test": "less"}, grid,
                                             clear=math.inf)
+    checkpoint()
     differ = np.argwhere(color != reference)
+    checkpoint()
     rows = tuple((int(x), int(y), _owner_text(owner[y, x]), _color_text(color[y, x]),
                   _owner_text(ref_owner[y, x]), _color_text(reference[y, x]))
                  for y, x in differ[:MAX_TABLE_ROWS])
