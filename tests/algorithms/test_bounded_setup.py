@@ -42,3 +42,32 @@ def test_the_painters_final_comparison_hears_a_cancel():
     monitor.cancel()
     with watching(monitor), pytest.raises(Cancelled):
         visibility.zbuffer_image(TRIANGLE, {}, BIG)
+
+
+def _count_tested_samples(monkeypatch) -> list:
+    from algorithms.antialias.shapes import Shapes
+    tested = []
+    real = Shapes.owners
+
+    def counted(self, sx, sy):
+        tested.append(sx.size)
+        return real(self, sx, sy)
+
+    monkeypatch.setattr(Shapes, "owners", counted)
+    return tested
+
+
+def test_a_temporal_band_is_tested_in_pieces_that_each_hear_a_cancel(monkeypatch):
+    from algorithms.antialias.temporal import frame_bands
+    tested = _count_tested_samples(monkeypatch)
+    options = {"n": 8, "radius": 100.0}
+    top, rows = next(frame_bands([(128.0, 128.0)], options, (256, 256), 0))
+    band = rows.size * 64  # the band's pixels, 64 samples each
+    assert len(tested) > 1 and sum(tested) <= band and max(tested) < band
+    # a cancel is heard before the first piece is tested
+    tested.clear()
+    monitor = RecordMonitor()
+    monitor.cancel()
+    with watching(monitor), pytest.raises(Cancelled):
+        next(frame_bands([(128.0, 128.0)], options, (256, 256), 0))
+    assert tested == []
