@@ -2,6 +2,8 @@
 hears a cancel: big buffers are not filled up front, long passes check in."""
 import os
 
+import numpy as np
+
 import pytest
 
 from algorithms.registry import get
@@ -98,7 +100,6 @@ def test_the_aliased_blocks_make_the_centre_sampled_image(seed):
     # on the fill rule and is left out of the comparison
     import random
     from fractions import Fraction
-    import numpy as np
     from algorithms.antialias.filters import aliased_blocks
     rng = random.Random(seed)
     grid = (23, 37)
@@ -125,3 +126,36 @@ def test_the_aliased_blocks_make_the_centre_sampled_image(seed):
                     on_edge[y, x] = True
     assert expected.any()
     assert (made[~on_edge] == expected[~on_edge]).all()
+
+
+def test_line_area_computes_its_window_a_block_of_columns_at_a_time(monkeypatch):
+    from algorithms.antialias import lines
+    computed = []
+    real = lines.exact_coverage.segment_coverage
+
+    def counted(*args, columns=None, **kwargs):
+        computed.append(columns)
+        return real(*args, columns=columns, **kwargs)
+
+    monkeypatch.setattr(lines.exact_coverage, "segment_coverage", counted)
+    trace = get("line-area").record([(4000, 10), (5, 3000)], {}, grid=BIG, step_cap=50)
+    assert trace.truncated
+    # the window is about 4000 columns wide; before, all were computed at once
+    assert computed and sum(end - first for first, end in computed) <= 64
+
+
+def test_line_area_written_values_are_the_exact_coverage_of_the_whole_window():
+    # oracle: the exact (rational) coverage of the rectangle over its window
+    from algorithms.antialias.lines import area_image
+    for points in ([(1, 2), (30, 9)], [(30, 9), (1, 2)], [(3, 1), (9, 40)], [(9, 40), (3, 1)]):
+        options = {"width": 1.5}
+        trace = get("line-area").record(points, options, grid=(48, 48))
+        (x0, y0, _, _), exact = area_image(points, options, exact=True)
+        plotted = {}
+        for i in range(len(trace)):
+            step = trace.step(i)
+            if step.kind == "plot" and step.pixel is not None:
+                plotted[step.pixel] = step.values["intensity"]
+        expected = {(x0 + x, y0 + y): float(a) for (y, x), a in np.ndenumerate(exact) if a > 0}
+        assert plotted.keys() == expected.keys()
+        assert all(abs(plotted[k] - expected[k]) < 1e-9 for k in expected)
