@@ -159,3 +159,47 @@ def test_line_area_written_values_are_the_exact_coverage_of_the_whole_window():
         expected = {(x0 + x, y0 + y): float(a) for (y, x), a in np.ndenumerate(exact) if a > 0}
         assert plotted.keys() == expected.keys()
         assert all(abs(plotted[k] - expected[k]) < 1e-9 for k in expected)
+
+
+def _count_calls(monkeypatch, module, name) -> list:
+    made = [0]
+    real = getattr(module, name)
+
+    def counted(*args):
+        for item in real(*args):
+            made[0] += 1
+            yield item
+    monkeypatch.setattr(module, name, counted)
+    return made
+
+
+def test_a_seed_search_that_finds_nothing_stops_at_the_step_caps_work(monkeypatch):
+    from algorithms import fill
+    from algorithms.errors import InputError
+    rows = [0]
+    real_row = fill.outline_row
+
+    def counted_row(*args):
+        rows[0] += 1
+        return real_row(*args)
+    monkeypatch.setattr(fill, "outline_row", counted_row)
+    # 1,000 edges across the grid, 10 to a row: every pixel inside is on the outline
+    zigzag = [(0 if k % 2 else 99, k * 99 // 1000) for k in range(1000)]
+    with pytest.raises(InputError, match="seed=X,Y"):
+        get("flood-fill").record([zigzag], {}, grid=(100, 100), step_cap=1000)
+    # 1,000 steps allow 2,000 edge tests: 2 rows of 1,000 edges; before, all 100 rows
+    assert 1 <= rows[0] <= 2
+
+
+def test_outline_pixels_walked_again_count_against_the_step_cap(monkeypatch):
+    from algorithms import fill
+    from algorithms.errors import InputError
+    walked = _count_calls(monkeypatch, fill, "_segment_walk")
+    # segments back and forth over one row, each a pixel shorter: no two are
+    # the same segment, and all but the first walk pixels drawn before
+    points = [(k // 2 if k % 2 == 0 else 3999 - k // 2, 0) for k in range(200)] + [(50, 60)]
+    with pytest.raises(InputError, match="overlap"):
+        get("flood-fill").record([points], {"seed": (60, 30)}, grid=(100, 100),
+                                 step_cap=5000)
+    # 5,000 steps allow 10,000 pixels passed over; before, all ~800,000 were walked
+    assert walked[0] <= 5000 + 10_000 + 4000
