@@ -137,8 +137,9 @@ def zbuffer_image(points, options, grid, clear: float | None = None):
     clear = options["clear_depth"] if clear is None else clear
     test = options["depth_test"]
     # Zeroed buffers (colour and triangle plus one) cost nothing until
-    # written; each whole-buffer pass below is a checkpoint apart, so a
-    # cancel is heard between them (one pass of 16M pixels: tens of ms).
+    # written; the passes over the whole buffers go a block of rows at a
+    # time, so a cancel is heard between blocks (a whole pass over 16M
+    # pixels took up to 400 ms).
     color = np.zeros((scene.height, scene.width), np.int64)
     depth = np.zeros((scene.height, scene.width))
     owner = np.zeros((scene.height, scene.width), np.int64)
@@ -146,13 +147,19 @@ def zbuffer_image(points, options, grid, clear: float | None = None):
         for i, j, z, c in scene.fragments(setup):
             if passes(z, depth[j, i] if owner[j, i] else clear, test):
                 color[j, i], depth[j, i], owner[j, i] = c + 1, z, setup.number + 1
-    checkpoint()
-    depth[owner == 0] = clear
-    checkpoint()
-    color -= 1
-    checkpoint()
-    owner -= 1
+    for rows in row_blocks(scene.height):
+        depth[rows][owner[rows] == 0] = clear
+        color[rows] -= 1
+        owner[rows] -= 1
     return color, depth, owner
+
+
+def row_blocks(height: int, rows: int = 256):
+    """Slices of a few rows each, covering 0 .. height, with a checkpoint
+    before each: whole-buffer passes on a big grid are done block by block."""
+    for top in range(0, height, rows):
+        checkpoint()
+        yield slice(top, min(top + rows, height))
 
 
 def painter_order(scene: Scene, key: str) -> list:
@@ -354,14 +361,12 @@ def painter(points, options, grid):
         for i, j, z, c in scene.fragments(setup):
             color[j, i], owner[j, i] = c + 1, setup.number + 1
             yield (paint_line, i, j, z, k, float(c))
-    color -= 1
-    checkpoint()
-    owner -= 1
+    for rows in row_blocks(scene.height):
+        color[rows] -= 1
+        owner[rows] -= 1
     reference, _, ref_owner = zbuffer_image(points, {**options, "depth_test": "less"}, grid,
                                             clear=math.inf)
-    checkpoint()
-    differ = np.argwhere(color != reference)
-    checkpoint()
+    differ, wrong, drawn = _disagreement(color, owner, reference, ref_owner)
     rows = tuple((int(x), int(y), _owner_text(owner[y, x]), _color_text(color[y, x]),
                   _owner_text(ref_owner[y, x]), _color_text(reference[y, x]))
                  for y, x in differ[:MAX_TABLE_ROWS])
@@ -371,13 +376,25 @@ def painter(points, options, grid):
     if len(differ) > MAX_TABLE_ROWS:
         yield Note(line=at["compare"],
                    text=f"The table lists the first {MAX_TABLE_ROWS} of {len(differ)} pixels.")
-    wrong = int((owner != ref_owner).sum())
     yield Vars(line=at["compare"], values={"disagree": int(len(differ)), "wrong_triangle": wrong,
-                                           "drawn": int((color >= 0).sum())})
+                                           "drawn": drawn})
     if len(differ):
         yield Note(line=at["done"], text=f"{len(differ)} pixels differ from the z-buffer: no "
                                          "drawing order of whole triangles is right for this "
                                          "scene.")
+
+
+def _disagreement(color, owner, reference, ref_owner):
+    """(pixels (y, x) whose colours differ, in row order; how many have
+    another triangle; how many are drawn), a block of rows at a time."""
+    differ, wrong, drawn = [], 0, 0
+    for rows in row_blocks(color.shape[0]):
+        found = np.argwhere(color[rows] != reference[rows])
+        found[:, 0] += rows.start
+        differ.append(found)
+        wrong += int((owner[rows] != ref_owner[rows]).sum())
+        drawn += int((color[rows] >= 0).sum())
+    return (np.concatenate(differ) if differ else np.zeros((0, 2), np.int64)), wrong, drawn
 
 
 def _owner_text(number) -> str:
