@@ -154,7 +154,7 @@ def zbuffer_image(points, options, grid, clear: float | None = None):
     return color, depth, owner
 
 
-def row_blocks(height: int, rows: int = 256):
+def row_blocks(height: int, rows: int = 64):
     """Slices of a few rows each, covering 0 .. height, with a checkpoint
     before each: whole-buffer passes on a big grid are done block by block."""
     for top in range(0, height, rows):
