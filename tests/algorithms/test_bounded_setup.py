@@ -203,3 +203,21 @@ def test_outline_pixels_walked_again_count_against_the_step_cap(monkeypatch):
                                  step_cap=5000)
     # 5,000 steps allow 10,000 pixels passed over; before, all ~800,000 were walked
     assert walked[0] <= 5000 + 10_000 + 4000
+
+
+def test_a_temporal_frame_does_not_fill_its_image_before_its_first_pixel():
+    spec = get("aa-temporal")
+    frames = spec.generator([(2048.0, 12.0)], spec.resolve({"frames": 2}), BIG)
+    vars_seen = 0
+    for frame in frames:  # to the start of the second animation frame
+        if type(frame).__name__ == "Vars":
+            vars_seen += 1
+            if vars_seen == 2:
+                break
+    before = _resident_bytes()
+    for frame in frames:  # the wheel is in the top band: its first pixel comes at once
+        if type(frame) is tuple:
+            break
+    grown = _resident_bytes() - before
+    frames.close()
+    assert grown < 32 * 2 ** 20  # a filled 4096^2 image is 128 MiB
