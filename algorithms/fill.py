@@ -442,28 +442,21 @@ class _Drawn:
         for x, y in self.pixels:
             if region.inside(x, y):
                 index = region.index(x, y)
-                if cells[index] == BOUNDARY:
-                    skipped += 1
-                    if skipped > allowance:
-                        raise _redrawn(allowance)
-                    continue
+                new = cells[index] != BOUNDARY
                 cells[index] = BOUNDARY
-            elif (x, y) in off_grid:
+            else:
+                new = (x, y) not in off_grid
+                off_grid.add((x, y))
+            if new:
+                self.count += 1
+                yield x, y
+            else:
                 skipped += 1
                 if skipped > allowance:
-                    raise _redrawn(allowance)
-                continue
-            else:
-                off_grid.add((x, y))
-            self.count += 1
-            yield x, y
-
-
-def _redrawn(allowance: int) -> InputError:
-    return InputError(f"flood-fill: the outline's segments overlap so much that it walks over "
-                      f"more than {allowance:,} pixels it has already drawn (the work the "
-                      "step cap allows); "
-                      "remove the overlapping segments")
+                    raise InputError(f"flood-fill: the outline's segments overlap so much that "
+                                     f"it walks over more than {allowance:,} pixels it has "
+                                     "already drawn (the work the step cap allows); remove "
+                                     "the overlapping segments")
 
 
 def _outline_only(outline, options, shape, at):
