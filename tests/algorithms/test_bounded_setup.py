@@ -31,7 +31,7 @@ def _growth_until_first_pixel(name, points, options, grid) -> int:
     return grown
 
 
-@pytest.mark.parametrize("name", ["zbuffer", "painter"])
+@pytest.mark.parametrize("name", ["zbuffer", "painter", "blend-over"])
 def test_the_big_buffers_are_not_filled_before_the_first_frame(name):
     # Filling one 16M-pixel buffer touches 128 MiB; a zeroed one touches
     # only the pages a fragment writes.
