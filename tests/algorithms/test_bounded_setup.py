@@ -221,3 +221,14 @@ def test_a_temporal_frame_does_not_fill_its_image_before_its_first_pixel():
     grown = _resident_bytes() - before
     frames.close()
     assert grown < 32 * 2 ** 20  # a filled 4096^2 image is 128 MiB
+
+
+def test_line_subpixels_walks_its_cells_as_the_frames_go(monkeypatch):
+    import importlib
+    module = importlib.import_module("algorithms.subpixel_line")
+    walked = _count_calls(monkeypatch, module, "walk_cells")
+    trace = get("line-subpixels").record([(0, 0), (4095, 3000)], {"n": 8}, grid=BIG,
+                                         step_cap=20)
+    assert trace.truncated
+    # about 57,000 cells along the line; before, all were found before the first frame
+    assert walked[0] <= 20 * 2 * 8
