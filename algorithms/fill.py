@@ -28,7 +28,7 @@ from .circles import CENTRE, RADIUS, midpoint_circle_pixels
 from .code import Code, listing
 from .registry import AlgorithmSpec, InputError, Inputs, Option, register
 from .steps import PER_PIXEL, PLOT, VISIT, Note, Span, Start, Vars
-from .trace import checkpoint
+from .trace import checkpoint, work_allowance
 
 NAN = math.nan
 
@@ -202,8 +202,15 @@ def inside_pixel(contours, free, grid) -> tuple[int, int] | None:
     xs, ys = [p[0] for p in contours[0]], [p[1] for p in contours[0]]
     middle_x, middle_y = sum(xs) / len(xs), round(sum(ys) / len(ys))
     rows = range(max(min(ys), 0), min(max(ys) + 1, height))
-    for y in sorted(rows, key=lambda y: (abs(y - middle_y), y)):
+    # A row looks at every edge: its work counts against the step cap, so a
+    # search that finds nothing (an outline that covers every row) ends.
+    edges, allowance = sum(len(c) for c in contours), work_allowance()
+    for tried, y in enumerate(sorted(rows, key=lambda y: (abs(y - middle_y), y))):
         checkpoint()
+        if (tried + 1) * edges > allowance:
+            raise InputError(f"flood-fill: no free pixel found inside the outline in the "
+                             f"{tried:,} of {len(rows):,} rows the step cap lets the search "
+                             f"try ({allowance:,} edge tests); give a seed with seed=X,Y")
         crossings = sorted(c for contour in contours for c in _crossings(contour, y))
         # Pixel centres strictly between two crossings are inside.
         inside = [x for lo, hi in zip(crossings[::2], crossings[1::2])
@@ -429,18 +436,27 @@ class _Drawn:
 
     def __iter__(self):
         region, cells, off_grid = self.region, self.region.cells, set()
+        # Pixels walked again (segments that overlap) make no frame: they
+        # count against the step cap, so the cap bounds that work too.
+        allowance, skipped = work_allowance(), 0
         for x, y in self.pixels:
             if region.inside(x, y):
                 index = region.index(x, y)
-                if cells[index] == BOUNDARY:
-                    continue
+                new = cells[index] != BOUNDARY
                 cells[index] = BOUNDARY
-            elif (x, y) in off_grid:
-                continue
             else:
+                new = (x, y) not in off_grid
                 off_grid.add((x, y))
-            self.count += 1
-            yield x, y
+            if new:
+                self.count += 1
+                yield x, y
+            else:
+                skipped += 1
+                if skipped > allowance:
+                    raise InputError(f"flood-fill: the outline's segments overlap so much that "
+                                     f"it walks over more than {allowance:,} pixels it has "
+                                     "already drawn (the work the step cap allows); remove "
+                                     "the overlapping segments")
 
 
 def _outline_only(outline, options, shape, at):

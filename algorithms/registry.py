@@ -322,7 +322,7 @@ class AlgorithmSpec:
     def record(self, points, options: dict | None = None, grid=(32, 24),
                step_cap: int = DEFAULT_STEP_CAP, monitor=None) -> Trace:
         """Record a run; ``monitor`` (trace.RecordMonitor) hears progress and may cancel."""
-        with watching(monitor):  # the work before the first frame hears a cancel too
+        with watching(monitor, step_cap):  # the work before the first frame: cancel and cap
             options = self.resolve(options)
             points = self.inputs.check(points)
             self.inputs.check_range(points)

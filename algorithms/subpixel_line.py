@@ -11,6 +11,7 @@ test is exact (whole numbers in units of 1/(2n) px).
 """
 from __future__ import annotations
 
+import heapq
 import math
 from fractions import Fraction
 
@@ -42,21 +43,37 @@ def clip(p, q, box):
 def visited_cells(p, q, t0, t1) -> list[tuple[int, int]]:
     """The unit cells [i, i + 1) x [j, j + 1) holding a point of p + t (q - p),
     t0 <= t <= t1, in order along the segment (each once)."""
+    return list(walk_cells(p, q, t0, t1))
+
+
+def walk_cells(p, q, t0, t1):
+    """``visited_cells`` one cell at a time, made as they are asked for: a
+    long line on a big grid meets tens of thousands of grid lines."""
     d = (q[0] - p[0], q[1] - p[1])
-    ts = {t0, t1}
-    for axis in (0, 1):
-        if d[axis] == 0:
+    # The t where the segment meets a line x = k or y = k, in increasing t
+    # (each axis is, so a merge is), and the midpoints between them: the
+    # cells of those points are all the cells the segment passes through.
+    ts = heapq.merge([t0], _meetings(p, d, 0, t0, t1), _meetings(p, d, 1, t0, t1), [t1])
+    seen, last = set(), None
+    for t in ts:
+        if t == last:
             continue
-        a, b = sorted((p[axis] + t0 * d[axis], p[axis] + t1 * d[axis]))
-        for k in range(math.ceil(a), math.floor(b) + 1):
-            ts.add((k - p[axis]) / d[axis])  # where the segment meets the line x (or y) = k
-    ts = sorted(ts)
-    probes = ts + [(a + b) / 2 for a, b in zip(ts, ts[1:])]
-    cells = {}
-    for t in sorted(probes):
-        cell = (math.floor(p[0] + t * d[0]), math.floor(p[1] + t * d[1]))
-        cells.setdefault(cell, None)
-    return list(cells)
+        for probe in ((t,) if last is None else ((last + t) / 2, t)):
+            cell = (math.floor(p[0] + probe * d[0]), math.floor(p[1] + probe * d[1]))
+            if cell not in seen:
+                seen.add(cell)
+                yield cell
+        last = t
+
+
+def _meetings(p, d, axis: int, t0, t1):
+    """The t in t0 .. t1 where the segment meets the lines of ``axis``, increasing."""
+    if d[axis] == 0:
+        return
+    a, b = sorted((p[axis] + t0 * d[axis], p[axis] + t1 * d[axis]))
+    ks = range(math.ceil(a), math.floor(b) + 1)
+    for k in (ks if d[axis] > 0 else reversed(ks)):
+        yield (k - p[axis]) / d[axis]
 
 
 def subpixel_listing(points, options) -> Code:
@@ -80,18 +97,30 @@ def subpixel_line(points, options, grid):
     p, q = ((Fraction(2 * c + 1) * n / 2 for c in point) for point in points)
     p, q = tuple(p), tuple(q)
     span = clip(p, q, (0, 0, grid[0] * n, grid[1] * n))
-    counts = {}
-    if span is not None:
-        for i, j in visited_cells(p, q, *span):
-            if 0 <= i < grid[0] * n and 0 <= j < grid[1] * n:
-                pixel = (i // n, j // n)
-                counts[pixel] = counts.get(pixel, 0) + 1
-    plot = at["plot_pixel"]
-    for (x, y), k in counts.items():
+    # The cells are walked as the frames go: a pixel's cells come one after
+    # another (the segment meets its square in one piece), so a pixel's
+    # frame comes when the walk leaves it.
+    cells = walk_cells(p, q, *span) if span is not None else ()
+    plot, pixels, subpixels = at["plot_pixel"], 0, 0
+    for (x, y), k in _pixel_counts(cells, n, grid):
+        pixels, subpixels = pixels + 1, subpixels + k
         intensity = min(1.0, k / n)
         yield (plot, x, y, float(k), intensity, grey_ink(intensity))
-    yield Vars(line=at["done"], values={"pixels": len(counts),
-                                        "subpixels": sum(counts.values())})
+    yield Vars(line=at["done"], values={"pixels": pixels, "subpixels": subpixels})
+
+
+def _pixel_counts(cells, n: int, grid):
+    """(pixel, number of its cells) for runs of cells on the grid, in order."""
+    pixel, count = None, 0
+    for i, j in cells:
+        if 0 <= i < grid[0] * n and 0 <= j < grid[1] * n:
+            if (i // n, j // n) != pixel:
+                if pixel is not None:
+                    yield pixel, count
+                pixel, count = (i // n, j // n), 0
+            count += 1
+    if pixel is not None:
+        yield pixel, count
 
 
 register(AlgorithmSpec(

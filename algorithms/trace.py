@@ -96,15 +96,33 @@ _watched = threading.local()
 
 
 @contextmanager
-def watching(monitor: RecordMonitor | None):
+def watching(monitor: RecordMonitor | None, step_cap: int | None = None):
     """While a run's own code works for ``monitor`` (made, then recorded),
-    ``checkpoint()`` answers to it."""
-    before = getattr(_watched, "monitor", None)
+    ``checkpoint()`` answers to it, and ``work_allowance()`` is ``step_cap``
+    (when given)."""
+    before = getattr(_watched, "monitor", None), getattr(_watched, "cap", None)
     _watched.monitor = monitor
+    if step_cap is not None:
+        _watched.cap = step_cap
     try:
         yield
     finally:
-        _watched.monitor = before
+        _watched.monitor, _watched.cap = before
+
+
+# Units of plain work (an edge tested in a row, a pixel passed over) a step
+# is worth: a recorded flood-fill step (about 0.7 us) costs about as much as
+# two of them.
+WORK_PER_STEP = 2
+
+
+def work_allowance() -> int:
+    """The units of work the step cap of the run being made or recorded
+    allows (the default cap outside one). Long work a run does between two
+    frames (a search, pixels passed over as already drawn) counts against
+    it, so the cap bounds all of a run's work, not only the steps it keeps."""
+    cap = getattr(_watched, "cap", None)
+    return WORK_PER_STEP * (DEFAULT_STEP_CAP if cap is None else cap)
 
 
 def checkpoint() -> None:
@@ -194,7 +212,7 @@ class Trace:
         trace._max_chunk = CHUNK if monitor is None else min(CHUNK, monitor.every)
         # Watched, the first chunk is small and grows while frames come fast.
         trace._chunk = trace._max_chunk if monitor is None else min(FIRST_CHUNK, trace._max_chunk)
-        with watching(monitor):
+        with watching(monitor, step_cap):
             trace._record(iter(frames))
         trace._monitor = None
         return trace

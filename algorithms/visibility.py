@@ -50,6 +50,7 @@ from .code import Code
 from .interpolate import mix, per_vertex, unpack
 from .registry import AlgorithmSpec, Inputs, Option, register
 from .steps import PER_ROW, PLOT, VISIT, Note, Start, Table, Vars
+from .trace import checkpoint
 
 NAN = math.nan
 TESTS = ("less", "less-equal")
@@ -105,6 +106,7 @@ class Scene:
         i_lo, i_hi = max(i_lo, 0), min(i_hi, self.width - 1)
         j_lo, j_hi = max(j_lo, 0), min(j_hi, self.height - 1)
         for j in range(j_lo, j_hi + 1):
+            checkpoint()  # a row can be 4096 pixels of work no frame separates (the final images)
             for i in range(i_lo, i_hi + 1):
                 es = tri.at(i, j)
                 covered, _ = edges.test(es)
@@ -134,14 +136,30 @@ def zbuffer_image(points, options, grid, clear: float | None = None):
     scene = Scene(points, options, grid)
     clear = options["clear_depth"] if clear is None else clear
     test = options["depth_test"]
-    color = np.full((scene.height, scene.width), -1, np.int64)
-    depth = np.full((scene.height, scene.width), float(clear))
-    owner = np.full((scene.height, scene.width), -1, np.int64)
+    # Zeroed buffers (colour and triangle plus one) cost nothing until
+    # written; the passes over the whole buffers go a block of rows at a
+    # time, so a cancel is heard between blocks (a whole pass over 16M
+    # pixels took up to 400 ms).
+    color = np.zeros((scene.height, scene.width), np.int64)
+    depth = np.zeros((scene.height, scene.width))
+    owner = np.zeros((scene.height, scene.width), np.int64)
     for setup in scene.drawn():
         for i, j, z, c in scene.fragments(setup):
-            if passes(z, depth[j, i], test):
-                color[j, i], depth[j, i], owner[j, i] = c, z, setup.number
+            if passes(z, depth[j, i] if owner[j, i] else clear, test):
+                color[j, i], depth[j, i], owner[j, i] = c + 1, z, setup.number + 1
+    for rows in row_blocks(scene.height):
+        depth[rows][owner[rows] == 0] = clear
+        color[rows] -= 1
+        owner[rows] -= 1
     return color, depth, owner
+
+
+def row_blocks(height: int, rows: int = 64):
+    """Slices of a few rows each, covering 0 .. height, with a checkpoint
+    before each: whole-buffer passes on a big grid are done block by block."""
+    for top in range(0, height, rows):
+        checkpoint()
+        yield slice(top, min(top + rows, height))
 
 
 def painter_order(scene: Scene, key: str) -> list:
@@ -236,7 +254,11 @@ def zbuffer(points, options, grid):
     if not scene.z_given:
         yield Note(line=at["clear"], text="No z given: every vertex lies at depth 0.5, so the "
                                           "first triangle drawn over a pixel keeps it.")
-    depth = np.full((scene.height, scene.width), clear)
+    # Zeroed buffers cost nothing until written (the system hands out zero
+    # pages lazily): filling 16M depths with ``clear`` before the first
+    # frame took 100-200 ms no cancel could interrupt. A pixel not yet
+    # written holds ``clear``.
+    depth = np.zeros((scene.height, scene.width))
     fragments = passed = overdraw = 0
     written = np.zeros((scene.height, scene.width), bool)
     pass_line, fail_line = at["plot_pass"], at["fail"]
@@ -246,7 +268,7 @@ def zbuffer(points, options, grid):
             continue
         for i, j, z, color in scene.fragments(setup):
             fragments += 1
-            stored = depth[j, i]
+            stored = depth[j, i] if written[j, i] else clear
             if passes(z, stored, test):
                 passed += 1
                 overdraw += bool(written[j, i])
@@ -327,18 +349,24 @@ def painter(points, options, grid):
                  for rank, s in enumerate(order))
     yield Table(line=at["sort"], name="drawing order",
                 columns=("rank", "triangle", f"{key} z", "z0", "z1", "z2"), rows=rows)
-    color = np.full((scene.height, scene.width), -1, np.int64)
-    owner = np.full((scene.height, scene.width), -1, np.int64)
+    # Colour and triangle are stored plus one in zeroed buffers, which cost
+    # nothing until written (filling them with -1 before the first frame
+    # took over 100 ms no cancel could interrupt); 0 means nothing drawn.
+    color = np.zeros((scene.height, scene.width), np.int64)
+    owner = np.zeros((scene.height, scene.width), np.int64)
     paint_line = at["plot_paint"]
     for setup in order:
         yield from _triangle_vars(scene, setup, at["triangle"])
         k = depth_key(setup)
         for i, j, z, c in scene.fragments(setup):
-            color[j, i], owner[j, i] = c, setup.number
+            color[j, i], owner[j, i] = c + 1, setup.number + 1
             yield (paint_line, i, j, z, k, float(c))
+    for rows in row_blocks(scene.height):
+        color[rows] -= 1
+        owner[rows] -= 1
     reference, _, ref_owner = zbuffer_image(points, {**options, "depth_test": "less"}, grid,
                                             clear=math.inf)
-    differ = np.argwhere(color != reference)
+    differ, wrong, drawn = _disagreement(color, owner, reference, ref_owner)
     rows = tuple((int(x), int(y), _owner_text(owner[y, x]), _color_text(color[y, x]),
                   _owner_text(ref_owner[y, x]), _color_text(reference[y, x]))
                  for y, x in differ[:MAX_TABLE_ROWS])
@@ -348,13 +376,25 @@ def painter(points, options, grid):
     if len(differ) > MAX_TABLE_ROWS:
         yield Note(line=at["compare"],
                    text=f"The table lists the first {MAX_TABLE_ROWS} of {len(differ)} pixels.")
-    wrong = int((owner != ref_owner).sum())
     yield Vars(line=at["compare"], values={"disagree": int(len(differ)), "wrong_triangle": wrong,
-                                           "drawn": int((color >= 0).sum())})
+                                           "drawn": drawn})
     if len(differ):
         yield Note(line=at["done"], text=f"{len(differ)} pixels differ from the z-buffer: no "
                                          "drawing order of whole triangles is right for this "
                                          "scene.")
+
+
+def _disagreement(color, owner, reference, ref_owner):
+    """(pixels (y, x) whose colours differ, in row order; how many have
+    another triangle; how many are drawn), a block of rows at a time."""
+    differ, wrong, drawn = [], 0, 0
+    for rows in row_blocks(color.shape[0]):
+        found = np.argwhere(color[rows] != reference[rows])
+        found[:, 0] += rows.start
+        differ.append(found)
+        wrong += int((owner[rows] != ref_owner[rows]).sum())
+        drawn += int((color[rows] >= 0).sum())
+    return (np.concatenate(differ) if differ else np.zeros((0, 2), np.int64)), wrong, drawn
 
 
 def _owner_text(number) -> str:

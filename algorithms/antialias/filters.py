@@ -10,6 +10,8 @@ from algorithms.code import Code
 from algorithms.interpolate import unpack
 from algorithms.registry import InputError, Option
 from algorithms.steps import PLOT, Start, Table, Vars
+from algorithms.trace import checkpoint
+from algorithms.triangles.kernels import counts_from_spans, oriented, span_arrays
 
 from .shapes import INK, NAN, Shapes, ink_blend, ops_sum, shape_vars
 
@@ -41,6 +43,24 @@ def aliased_image(points, options, grid) -> np.ndarray:
     counts = triangles.fill(points, (int(grid[0]), int(grid[1])),
                             options.get("fill_rule", "top-left"))
     return (counts > 0).astype(np.int64)
+
+
+# Rows of the aliased image made at once: a few tens of milliseconds of
+# work even for tens of thousands of triangles, so a cancel is heard soon.
+ROWS_PER_BLOCK = 16
+
+
+def aliased_blocks(points, grid, rule: str):
+    """The aliased image (covered pixel centres, booleans) as (first row,
+    rows) blocks, bottom to top, each made only when asked for; the same
+    pixels as ``aliased_image``, since a triangle's spans are exact per row."""
+    width, height = int(grid[0]), int(grid[1])
+    tris, _ = oriented(points, {"subpixel_bits": 8, "cull": False})
+    for top in range(0, height, ROWS_PER_BLOCK):
+        checkpoint()
+        bottom = min(top + ROWS_PER_BLOCK, height)
+        _, y, start, end = span_arrays(tris, 1 << 8, rule, (0, top, width, bottom))
+        yield top, counts_from_spans(y - top, start, end, width, bottom - top) > 0
 
 
 def filter_sums(image: np.ndarray, kernel: np.ndarray) -> np.ndarray:
@@ -107,6 +127,7 @@ def _reached(image: np.ndarray, support):
     holds a set pixel of ``image``, left to right."""
     height, width = image.shape
     for y in range(height):
+        checkpoint()  # rows that reach nothing yield no frame
         row = np.zeros(width, bool)
         for v, u in support:
             if 0 <= y + v < height and abs(u) < width:
@@ -135,17 +156,19 @@ def post_filter(points, options, grid):
     yield Table(line=at["setup"], name="kernel",
                 columns=("v \\ u", *(str(u) for u in range(-r, r + 1))), rows=rows)
     yield from shape_vars(Shapes(points, {"shape": "triangles"}), at["setup"])
-    # Booleans, and looked at a row at a time as the frames go: on a 4096
-    # grid the whole-image passes held up the first frame for two seconds.
-    image = triangles.fill(points, (int(grid[0]), int(grid[1])),
-                           options.get("fill_rule", "top-left")) > 0
-    height, width = image.shape
+    # Booleans, made a block of rows at a time as the frames reach them: on
+    # a 4096 grid filling many triangles at once held up the first frame
+    # for seconds no cancel could interrupt.
+    width, height = int(grid[0]), int(grid[1])
+    image = np.zeros((height, width), bool)
     ink = unpack(INK)
     aliased = 0
-    for y in range(height):
-        for x in np.flatnonzero(image[y]).tolist():
-            aliased += 1
-            yield (at["plot_aliased"], x, y, 1.0, NAN, float(ink_blend(ink, 1.0)))
+    for top, block in aliased_blocks(points, grid, options.get("fill_rule", "top-left")):
+        image[top:top + len(block)] = block
+        for y in range(top, top + len(block)):
+            for x in np.flatnonzero(image[y]).tolist():
+                aliased += 1
+                yield (at["plot_aliased"], x, y, 1.0, NAN, float(ink_blend(ink, 1.0)))
     yield Vars(line=at["plot_aliased"], values={"aliased pixels": aliased})
     support = [(v, u) for v in range(-r, r + 1) for u in range(-r, r + 1) if kernel[v + r, u + r]]
     written = 0

@@ -134,8 +134,13 @@ def segment_rectangle(p, q, width: float, caps: str = "butt") -> list[tuple[floa
 
 
 # ===================================================== the public calls
-def polygon_coverage(polygon, grid, rule: str = "evenodd", exact: bool = False) -> np.ndarray:
-    """Coverage of every pixel of the grid by a polygon (one contour or a list of them)."""
+def polygon_coverage(polygon, grid, rule: str = "evenodd", exact: bool = False,
+                     columns=None) -> np.ndarray:
+    """Coverage of every pixel of the grid by a polygon (one contour or a list of them).
+
+    ``columns`` (first, end) of the window, counted from its left: only those
+    columns are computed, each exactly as the whole window computes it.
+    """
     if rule not in RULES:
         raise ValueError(f"rule must be one of {RULES}, not {rule!r}")
     contours = [c for c in _contours(polygon) if len(c) >= 3]
@@ -143,14 +148,18 @@ def polygon_coverage(polygon, grid, rule: str = "evenodd", exact: bool = False) 
     if exact:
         contours = [[(Fraction(x), Fraction(y)) for x, y in c] for c in contours]
         if rule == "signed":
-            return _clip_coverage(contours, window)
-        return _clip_coverage(trapezoids(contours, rule), window)
+            whole = _clip_coverage(contours, window)
+        else:
+            whole = _clip_coverage(trapezoids(contours, rule), window)
+        return whole if columns is None else whole[:, columns[0]:columns[1]]
     if rule == "signed" or not contours:
-        return _float_coverage(contours, window)
+        return _float_coverage(contours, window, columns=columns)
     if len(contours) == 1 and not _self_crossing(contours[0]):
         # One simple contour: the region is where w = +1 or -1 everywhere.
-        return _float_coverage([counter_clockwise(contours[0])], window, touched_by=contours)
-    return _float_coverage(trapezoids(contours, rule), window, touched_by=contours)
+        return _float_coverage([counter_clockwise(contours[0])], window, touched_by=contours,
+                               columns=columns)
+    return _float_coverage(trapezoids(contours, rule), window, touched_by=contours,
+                           columns=columns)
 
 
 def triangle_coverage(points, grid, union: bool = True, exact: bool = False) -> np.ndarray:
@@ -163,9 +172,10 @@ def triangle_coverage(points, grid, union: bool = True, exact: bool = False) -> 
 
 
 def segment_coverage(p, q, width: float, grid, caps: str = "butt",
-                     exact: bool = False) -> np.ndarray:
+                     exact: bool = False, columns=None) -> np.ndarray:
     """Coverage by the rectangle of segment P Q and the given width."""
-    return polygon_coverage([segment_rectangle(p, q, width, caps)], grid, "signed", exact)
+    return polygon_coverage([segment_rectangle(p, q, width, caps)], grid, "signed", exact,
+                            columns)
 
 
 def region_area(polygon, rule: str = "evenodd", exact: bool = False):
@@ -182,7 +192,7 @@ def region_area(polygon, rule: str = "evenodd", exact: bool = False):
 
 
 # ============================================== float: signed edge areas
-def _float_coverage(contours, window, touched_by=None) -> np.ndarray:
+def _float_coverage(contours, window, touched_by=None, columns=None) -> np.ndarray:
     """Integral of the winding number of the contours over every pixel of the window.
 
     ``touched_by``: the contours whose edges decide which pixels can be
@@ -191,13 +201,16 @@ def _float_coverage(contours, window, touched_by=None) -> np.ndarray:
     region); every other pixel is rounded to its whole number.
     """
     x0, y0, x1, y1 = window
-    width, height = x1 - x0, y1 - y0
-    if width == 0 or height == 0:
-        return np.zeros((height, width))
+    # The edges keep the whole window's origin whatever columns are asked
+    # for, so each column's sums are the same numbers in the same order.
+    first, width = (0, x1 - x0) if columns is None else columns
+    height = y1 - y0
+    if width <= first or height == 0:
+        return np.zeros((height, max(width - first, 0)))
     ax, ay, bx, by = _edge_arrays(contours, x0, y0)
-    values, touched = _edge_sums(ax, ay, bx, by, width, height)
+    values, touched = _edge_sums(ax, ay, bx, by, width, height, first)
     if touched_by is not None:
-        touched = _touched(*_edge_arrays(touched_by, x0, y0), width, height)
+        touched = _touched(*_edge_arrays(touched_by, x0, y0), width, height, first)
     untouched = ~touched
     values[untouched] = np.rint(values[untouched])
     return values
@@ -218,8 +231,8 @@ def _edge_arrays(contours, x0, y0):
     return a[:, 0] - x0, a[:, 1] - y0, b[:, 0] - x0, b[:, 1] - y0
 
 
-def _pieces(ax, ay, bx, by, width):
-    """Every non-vertical edge cut at the pixel columns of [0, width).
+def _pieces(ax, ay, bx, by, width, first=0):
+    """Every non-vertical edge cut at the pixel columns of [first, width).
 
     Returns (column, signed dx, y at the left end, y at the right end) per piece.
     """
@@ -227,12 +240,12 @@ def _pieces(ax, ay, bx, by, width):
     keep = dx != 0
     ax, ay, bx, by, dx = ax[keep], ay[keep], bx[keep], by[keep], dx[keep]
     lo_x, hi_x = np.minimum(ax, bx), np.maximum(ax, bx)
-    first = np.maximum(np.floor(lo_x), 0).astype(np.int64)
+    start = np.maximum(np.floor(lo_x), first).astype(np.int64)
     last = np.minimum(np.ceil(hi_x) - 1, width - 1).astype(np.int64)
-    counts = np.maximum(last - first + 1, 0)
+    counts = np.maximum(last - start + 1, 0)
     edge = np.repeat(np.arange(len(ax)), counts)
     starts = np.cumsum(counts) - counts
-    column = np.repeat(first, counts) + (np.arange(int(counts.sum())) - np.repeat(starts, counts))
+    column = np.repeat(start, counts) + (np.arange(int(counts.sum())) - np.repeat(starts, counts))
     left = np.maximum(lo_x[edge], column)
     right = np.minimum(hi_x[edge], column + 1)
     y_left = _y_at(ax[edge], ay[edge], bx[edge], by[edge], left)
@@ -259,9 +272,12 @@ def mean_clamp(s0, s1):
     return np.where(span > 0, mean, a)
 
 
-def _edge_sums(ax, ay, bx, by, width, height):
-    """(values, touched) of the window: the signed edge-area sums per pixel."""
-    column, dx, y_left, y_right = _pieces(ax, ay, bx, by, width)
+def _edge_sums(ax, ay, bx, by, end, height, left=0):
+    """(values, touched) of the window's columns left .. end: the signed
+    edge-area sums per pixel."""
+    column, dx, y_left, y_right = _pieces(ax, ay, bx, by, end, left)
+    column = column - left
+    width = end - left
     lo = np.minimum(y_left, y_right)
     hi = np.maximum(y_left, y_right)
     row_lo = np.floor(lo).astype(np.int64)
@@ -288,24 +304,26 @@ def _edge_sums(ax, ay, bx, by, width, height):
         np.float64).reshape(height, width)
     touched = np.zeros(height * width, bool)
     touched[flat] = True
-    touched = touched.reshape(height, width) | _vertical_touches(ax, ay, bx, by, width, height)
+    touched = touched.reshape(height, width) | _vertical_touches(ax, ay, bx, by, end, height,
+                                                                 left)
     return values, touched
 
 
-def _vertical_touches(ax, ay, bx, by, width, height):
-    """Pixels whose inside a vertical edge passes through (it adds no area there)."""
-    touched = np.zeros((height, width), bool)
+def _vertical_touches(ax, ay, bx, by, end, height, first=0):
+    """Pixels of columns first .. end whose inside a vertical edge passes
+    through (it adds no area there)."""
+    touched = np.zeros((height, end - first), bool)
     vertical = (ax == bx) & (np.floor(ax) != ax) & (ay != by)
     for x, ya, yb in zip(ax[vertical], ay[vertical], by[vertical]):
-        column = int(math.floor(x))
-        if 0 <= column < width:
+        column = int(math.floor(x)) - first
+        if 0 <= column < end - first:
             lo, hi = max(int(math.floor(min(ya, yb))), 0), min(int(math.ceil(max(ya, yb))), height)
             touched[lo:hi, column] = True
     return touched
 
 
-def _touched(ax, ay, bx, by, width, height):
-    return _edge_sums(ax, ay, bx, by, width, height)[1]
+def _touched(ax, ay, bx, by, end, height, first=0):
+    return _edge_sums(ax, ay, bx, by, end, height, first)[1]
 
 
 # ================================================== exact: clip and measure

@@ -121,17 +121,23 @@ def blend(points, options, grid):
     yield Table(line=at["order"], name="drawing order", columns=("rank", "triangle", "mean z"),
                 rows=tuple((rank + 1, s.number + 1, key) for rank, (s, key) in
                            enumerate(drawing)))
-    color = np.empty((scene.height, scene.width, 3))
-    color[:] = BACKGROUND
-    depth = np.full((scene.height, scene.width), math.inf)
+    # Zeroed buffers cost nothing until written (filling 16M pixels with the
+    # background and the far depth took over a second before the first
+    # fragment, which no cancel could interrupt); a pixel not yet painted
+    # holds the background, one whose depth is not yet written is far.
+    color = np.zeros((scene.height, scene.width, 3))
+    painted = np.zeros((scene.height, scene.width), bool)
+    depth = np.zeros((scene.height, scene.width))
+    deep = np.zeros((scene.height, scene.width), bool)
+    background = np.array(BACKGROUND, np.float64)
     counts = {"fragments": 0, "blended": 0, "hidden": 0}
     blended = {}  # (i, j): the fragments composited there, to check the order at the end
     for setup, key in drawing:
         yield Vars(line=at["triangle"], values={"triangle": setup.number + 1, "mean z": key})
         for i, j, z, alpha, src in fragments(scene, setup, alphas):
             counts["fragments"] += 1
-            stored = depth[j, i]
-            dst = color[j, i].copy()
+            stored = depth[j, i] if deep[j, i] else math.inf
+            dst = color[j, i].copy() if painted[j, i] else background.copy()
             zb = float(stored) if math.isfinite(stored) else math.nan
             if not z < stored:
                 counts["hidden"] += 1
@@ -141,9 +147,10 @@ def blend(points, options, grid):
             counts["blended"] += 1
             blended.setdefault((i, j), []).append((z, alpha, src))
             color[j, i] = [alpha * s + (1 - alpha) * d for s, d in zip(src, dst)]
+            painted[j, i] = True
             if options["depth_write"] == "all" or (options["depth_write"] == "opaque"
                                                    and alpha == 1):
-                depth[j, i] = z
+                depth[j, i], deep[j, i] = z, True
             yield (at["plot_over"], i, j, z, zb, alpha, float(pack(src)), float(pack(dst)),
                    float(pack(color[j, i])))
     wrong = misordered(blended, color)
