@@ -363,6 +363,7 @@ def format_value(value) -> str:
 
 
 _REGISTRY: dict[str, AlgorithmSpec] = {}
+_ORDER: dict[str, tuple] = {}  # name -> (family, module rank, registration) for listing
 _CHECKED_FAMILIES: set = set()  # sources already held to the pseudo-code naming convention
 
 
@@ -376,7 +377,19 @@ def register(spec: AlgorithmSpec, replace: bool = False) -> AlgorithmSpec:
         raise ValueError(f"unknown family {spec.family!r}")
     check_family(spec.generator, _CHECKED_FAMILIES)
     _REGISTRY[spec.name] = spec
+    _ORDER[spec.name] = (FAMILIES.index(spec.family), _module_rank(spec.generator.__module__),
+                         len(_ORDER))
     return spec
+
+
+def _module_rank(module: str) -> int:
+    """Where the module's family package stands in _FAMILY_MODULES: lists
+    show a family's algorithms in that order, whichever module was imported
+    first (a spec registered at run time comes last)."""
+    for rank, family_module in enumerate(_FAMILY_MODULES):
+        if module == family_module or module.startswith(family_module + "."):
+            return rank
+    return len(_FAMILY_MODULES)
 
 
 def unregister(name: str) -> None:
@@ -391,9 +404,10 @@ def _load() -> None:
 
 
 def all_specs() -> list[AlgorithmSpec]:
-    """Every spec, family by family in FAMILIES order (whatever the import order)."""
+    """Every spec, family by family in FAMILIES order, and within a family in
+    the order of _FAMILY_MODULES, then of registration (whatever the import order)."""
     _load()
-    return sorted(_REGISTRY.values(), key=lambda spec: FAMILIES.index(spec.family))
+    return sorted(_REGISTRY.values(), key=lambda spec: _ORDER[spec.name])
 
 
 def get(name: str) -> AlgorithmSpec:

@@ -43,7 +43,6 @@ from fractions import Fraction
 
 import numpy as np
 
-from algorithms import registry as registry_module
 from algorithms import triangles
 from algorithms.triangles import ops_sum
 from .code import Code
@@ -459,8 +458,6 @@ SCENES = {"painter-intersecting": intersecting_scene, "painter-cyclic": cyclic_s
           "painter-separate": separate_scene}
 
 
-# ========================================================= registering
-registry_module.all_specs()
 
 # `run --json`'s fragments: the z and colour of each fragment written.
 FRAGMENTS = (("triangle", "@triangle"), ("z", "z"), ("color", "rgb"))

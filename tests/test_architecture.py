@@ -58,3 +58,19 @@ def test_a_planted_forbidden_import_breaks_its_contract(copy, contract, plants):
     assert result.returncode == 1, result.stdout
     broken = [row for row in result.stdout.splitlines() if " BROKEN" in row]
     assert any(contract in row for row in broken), result.stdout
+
+
+@pytest.mark.parametrize("module", ["algorithms.visibility", "algorithms.painter_split",
+                                    "algorithms.pipeline", "algorithms.textures",
+                                    "algorithms.antialias", "algorithms.triangles"])
+def test_each_family_module_imports_on_its_own_and_lists_in_one_order(module):
+    # A fresh interpreter that imports this module first: no import cycle,
+    # and the algorithms listed in the same order as after any other first import.
+    code = (f"import {module}\nfrom algorithms import registry\n"
+            "print(' '.join(s.name for s in registry.all_specs()))")
+    first = subprocess.run([sys.executable, "-c", code], cwd=ROOT, capture_output=True, text=True,
+                           timeout=120)
+    plain = subprocess.run([sys.executable, "-c", code.replace(f"import {module}\n", "")],
+                           cwd=ROOT, capture_output=True, text=True, timeout=120)
+    assert first.returncode == 0, first.stderr[-500:]
+    assert first.stdout == plain.stdout

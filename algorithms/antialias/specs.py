@@ -1,7 +1,6 @@
 """The antialiasing family's entries in the registry."""
 from __future__ import annotations
 
-from algorithms import registry as registry_module
 from algorithms.registry import AlgorithmSpec, Inputs, register
 
 from .adaptive import ADAPTIVE_OPTIONS, adaptive, adaptive_code
@@ -11,9 +10,6 @@ from .shapes import POINTS, SEGMENT, explain_samples
 from .supersample import SUPERSAMPLE_OPTIONS, supersample, supersample_code
 from .temporal import TEMPORAL_OPTIONS, temporal, temporal_code
 
-# The families before this one register first, whichever module a caller
-# imported first: the order of algorithms then follows FAMILIES.
-registry_module.all_specs()
 
 AA_NOTES = (
     "Coverage is the fraction of the pixel square a shape covers (0..1); values are "

@@ -1,14 +1,11 @@
 """The pipeline family's entries in the registry."""
 from __future__ import annotations
 
-from algorithms import registry as registry_module
 from algorithms.registry import AlgorithmSpec, Option, register
 from algorithms.visibility import COLORS, FILL_RULE, TRIANGLES, Z
 
 from .blend import ALPHA, DEPTH_WRITE, ORDER, blend, blend_code
 
-# The families before this one register first (see triangles/specs.py).
-registry_module.all_specs()
 
 register(AlgorithmSpec(
     name="blend-over", title="Transparency: over and the z-buffer", family="pipeline",

@@ -1,7 +1,6 @@
 """The textures family's entries in the registry."""
 from __future__ import annotations
 
-from algorithms import registry as registry_module
 from algorithms.registry import AlgorithmSpec, Option, register
 from algorithms.triangles.edges import BASE_OPTIONS, TRIANGLES, explain
 from algorithms.triangles.specs import make_kernel
@@ -10,8 +9,6 @@ from . import texels
 from .sampling import FILTERS, WRAPS
 from .triangle import code_lines, generator
 
-# The families before this one register first (see triangles/specs.py).
-registry_module.all_specs()
 
 OPTIONS = BASE_OPTIONS + (
     Option("uv", "numbers", (0.0, 0.0, 1.0, 0.0, 0.0, 1.0), "texture coordinates u,v per "

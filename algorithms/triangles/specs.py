@@ -3,7 +3,6 @@ from __future__ import annotations
 
 import numpy as np
 
-from algorithms import registry as registry_module
 from algorithms.interpolate import COLORS as VERTEX_COLORS, PERSPECTIVE, S as S_OPTION, \
     W as W_OPTION, Z as Z_OPTION
 from algorithms.registry import AlgorithmSpec, Option, register
@@ -36,10 +35,6 @@ def make_kernel(name: str, generator, code, top_down=False, box=None):
     return kernel
 
 
-# The families before this one register first, whichever module a caller
-# imported first: the order of algorithms (as lists and pickers show it)
-# then follows FAMILIES.
-registry_module.all_specs()
 
 NOTES = (
     "A pixel is covered when its centre (x + 1/2, y + 1/2) is inside; ties on an edge "
