@@ -11,20 +11,28 @@ import pyqtgraph as pg
 from PySide6.QtWidgets import QLabel, QVBoxLayout, QWidget
 
 
+def quiet_plot(palette, parent) -> pg.PlotWidget:
+    """A plot that only shows: the view's background, no buttons, no menu,
+    square units (the side views' common ground)."""
+    plot = pg.PlotWidget(parent)
+    plot.setBackground(palette.outside)
+    item = plot.getPlotItem()
+    item.hideButtons()
+    item.setMenuEnabled(False)
+    plot.getViewBox().setAspectLocked(True)
+    return plot
+
+
 class DepthView(QWidget):
     """The depth buffer beside the colour buffer."""
 
     def __init__(self, palette, parent=None):
         super().__init__(parent)
-        self.plot = pg.PlotWidget(self)
-        self.plot.setBackground(palette.outside)
+        self.plot = quiet_plot(palette, self)
         item = self.plot.getPlotItem()
-        item.hideButtons()
-        item.setMenuEnabled(False)
         item.hideAxis("bottom")
         item.hideAxis("left")
         box = self.plot.getViewBox()
-        box.setAspectLocked(True)
         box.setMouseEnabled(False, False)
         box.setDefaultPadding(0.02)
         self.image = pg.ImageItem(axisOrder="row-major")

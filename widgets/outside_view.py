@@ -5,6 +5,8 @@ import numpy as np
 import pyqtgraph as pg
 from PySide6.QtWidgets import QLabel, QVBoxLayout, QWidget
 
+from widgets.depth_view import quiet_plot
+
 SCENE_PEN = (40, 40, 40)
 FRUSTUM_PEN = (25, 113, 194)
 
@@ -21,13 +23,8 @@ class OutsideView(QWidget):
 
     def __init__(self, palette, parent=None):
         super().__init__(parent)
-        self.plot = pg.PlotWidget(self)
-        self.plot.setBackground(palette.outside)
-        item = self.plot.getPlotItem()
-        item.hideButtons()
-        item.setMenuEnabled(False)
+        self.plot = quiet_plot(palette, self)
         box = self.plot.getViewBox()
-        box.setAspectLocked(True)
         box.invertY(True)  # z grows downwards: the camera looks up the picture towards -z
         self.scene_lines = pg.PlotDataItem(connect="pairs", pen=pg.mkPen(SCENE_PEN, width=1.5))
         self.frustum_lines = pg.PlotDataItem(connect="pairs", pen=pg.mkPen(FRUSTUM_PEN, width=1.5))
