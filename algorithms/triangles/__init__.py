@@ -91,7 +91,8 @@ from __future__ import annotations
 
 # The package's modules, by idea: edges (snapping, edge functions, fill
 # rule), run (what every traversal shares), traversals, attributes (plane
-# and perspective interpolation), kernels (spans without frames) and specs
+# and perspective interpolation), kernels (spans without frames), canvas
+# (the compiled fill straight into a picture) and specs
 # (the registry's entries). The names below are the family's public face.
 from .attributes import (PERSPECTIVE_COLUMNS, PLANE, PERSPECTIVE_CORRECT, PerspectiveColumns,
                          PlaneAttributes, clip_near, perspective)
@@ -103,6 +104,7 @@ from .edges import (BASE_OPTIONS, CULL, FILL_RULE, MAX_COORDINATE, MAX_KERNEL_PI
 from .kernels import (_fits_int64, _fits_int64_array, _float_box_pixels, _spans_python,
                       counts_from_spans, fill, kernel_pixels, oriented, pixels_from_spans,
                       snap_array, span_arrays, span_mask)
+from .canvas import fill_canvas
 from .run import BASE, Run, Traversal, drive, mesh_flaws, ops_sum
 from .traversals import (BACKTRACK, BARYCENTRIC, BBOX, HALFPLANE, INCREMENTAL, LINEWISE, PINEDA,
                          SCAN, linewise_rows, top_start)
