@@ -19,9 +19,10 @@ from __future__ import annotations
 # Imported in this order, so the algorithms are listed in this order.
 from .common import ONE, POLYGON, snap, snap_contours
 from .scanline import SCANLINE, scanline_mask, scanline_pixels
+from .many import scanline_fill_many
 from .convex import CONVEX, convexity_problem
 from .tessellate import TESSELLATE, simplicity_problem
 from . import textbook, trapezoids  # noqa: F401  (they register the variants)
 
 __all__ = ["ONE", "POLYGON", "snap", "snap_contours", "SCANLINE", "scanline_mask",
-           "scanline_pixels", "CONVEX", "convexity_problem", "TESSELLATE", "simplicity_problem"]
+           "scanline_pixels", "scanline_fill_many", "CONVEX", "convexity_problem", "TESSELLATE", "simplicity_problem"]
