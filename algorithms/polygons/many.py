@@ -177,7 +177,7 @@ def _fill_polygons(first_edge, first, stop, numerator, step, denominator, up, no
                     keys[b] = keys[b - 1]
                     b -= 1
                 keys[b] = key
-            winding, left = 0, 0
+            winding, left, line = 0, 0, canvas[row]
             for a in range(live):
                 before = winding
                 winding = (winding + 2 * (keys[a] & 1) - 1) if nonzero else 1 - winding
@@ -185,6 +185,9 @@ def _fill_polygons(first_edge, first, stop, numerator, step, denominator, up, no
                 if before == 0:
                     left = column
                 elif winding == 0:
-                    for i in range(left, column):
-                        canvas[row, i] = canvas[row, i] + value if add else value
+                    if add:
+                        for i in range(left, column):
+                            line[i] += value
+                    else:  # a slice becomes one memset
+                        line[left:column] = value
             row += 1

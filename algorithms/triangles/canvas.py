@@ -9,12 +9,15 @@ path and are written from its spans, so the result stays exact at any size.
 """
 from __future__ import annotations
 
+import functools
+import math
+
 import numpy as np
 
 from algorithms.compiled import compiled
 from algorithms.registry import InputError
 
-from .kernels import _fits_int64_array, _spans_python, oriented
+from .kernels import _spans_python, oriented, snap_array
 
 RULES = {"top-left": 0, "inclusive": 1, "strict": 2}
 
@@ -37,26 +40,42 @@ def fill_canvas(points, grid, canvas=None, value=None, rule: str = "top-left",
     if canvas.shape != (height, width):
         raise ValueError(f"the canvas is {canvas.shape}, the grid needs {(height, width)}")
     scale = 1 << subpixel_bits
-    tris, _ = oriented(points, {"subpixel_bits": subpixel_bits, "cull": cull})
-    if len(tris) == 0:
-        return canvas
-    fits = _fits_int64_array(tris, scale)
+    snapped = snap_array(points, scale)
+    if len(snapped) % 3:
+        raise InputError(f"triangles take 3 points each, got {len(snapped)}")
     add = value is None
     fill_value = canvas.dtype.type(1 if add else value)
-    _fill_rows(np.ascontiguousarray(tris[fits]), scale, RULES[rule], canvas, fill_value, add)
-    for n in np.flatnonzero(~fits):  # beyond int64: the span kernel's Python integers
-        _, y, x0, x1 = _spans_python(tris[n], n, scale, rule, (0, 0, width, height))
-        for row, start, end in zip(y.tolist(), x0.tolist(), x1.tolist()):
-            if add:
-                canvas[row, start:end] += fill_value
-            else:
-                canvas[row, start:end] = fill_value
+    beyond = np.zeros(len(snapped) // 3, np.bool_)
+    _fill_rows(snapped.reshape(-1, 3, 2), scale, RULES[rule], cull, _largest_int64_reach(scale),
+               canvas, fill_value, add, beyond)
+    if beyond.any():  # too large for int64: the span kernel's Python integers
+        far = np.asarray(points, np.float64).reshape(-1, 3, 2)[beyond]
+        tris, _ = oriented(far, {"subpixel_bits": subpixel_bits, "cull": cull})
+        for tri in tris:
+            _, y, x0, x1 = _spans_python(tri, 0, scale, rule, (0, 0, width, height))
+            for row, start, end in zip(y.tolist(), x0.tolist(), x1.tolist()):
+                canvas[row, start:end] = canvas[row, start:end] + fill_value if add else fill_value
     return canvas
 
 
+@functools.lru_cache(maxsize=None)
+def _largest_int64_reach(scale: int) -> int:
+    """The largest distance m (1/scale px) from a triangle's first pixel that keeps its
+    edge terms in int64: 12 m^2 + 32 scale m + 64 < 2^63, as kernels._fits_int64 asks."""
+    m = math.isqrt(2 ** 63 // 12)
+    while 12 * m * m + 32 * scale * m + 64 >= 2 ** 63:
+        m -= 1
+    return m
+
+
 @compiled
-def _fill_rows(tris, scale, rule, canvas, value, add):
-    """Every triangle's rows, clipped to the canvas, written as runs (see kernels._spans_numpy)."""
+def _fill_rows(tris, scale, rule, cull, reach, canvas, value, add, beyond):
+    """Every triangle's rows, clipped to the canvas, written as runs (see kernels._spans_numpy).
+
+    Degenerate triangles are dropped, clockwise ones turned (or culled); a
+    triangle reaching farther than ``reach`` from its first pixel is only
+    marked in ``beyond``.
+    """
     height, width = canvas.shape
     X = np.empty(3, np.int64)
     Y = np.empty(3, np.int64)
@@ -67,9 +86,19 @@ def _fill_rows(tris, scale, rule, canvas, value, add):
         # Coordinates relative to the first vertex's pixel keep the products small.
         ox = tris[t, 0, 0] // scale
         oy = tris[t, 0, 1] // scale
+        far = False
         for k in range(3):
             X[k] = tris[t, k, 0] - ox * scale
             Y[k] = tris[t, k, 1] - oy * scale
+            far |= abs(X[k]) > reach or abs(Y[k]) > reach
+        if far:
+            beyond[t] = True
+            continue
+        area = (X[1] - X[0]) * (Y[2] - Y[0]) - (X[2] - X[0]) * (Y[1] - Y[0])
+        if area == 0 or (cull and area < 0):
+            continue
+        if area < 0:  # clockwise: turn it counter-clockwise
+            X[1], X[2], Y[1], Y[2] = X[2], X[1], Y[2], Y[1]
         for k in range(3):  # edge k runs from P_(k+1) to P_(k+2)
             i, j = (k + 1) % 3, (k + 2) % 3
             A[k] = -2 * scale * (Y[j] - Y[i])
