@@ -31,8 +31,8 @@ def oracle_counts(points, grid, rule, cull=False):
         if area < 0:
             q, r = r, q
         edges = [(p, q), (q, r), (r, p)]
-        keep = [rule == "inclusive" or (rule == "top-left" and (b[1] < a[1] or (b[1] == a[1] and b[0] > a[0])))
-                for a, b in edges]
+        left_or_bottom = [b[1] < a[1] or (b[1] == a[1] and b[0] > a[0]) for a, b in edges]
+        keep = [rule == "inclusive" or (rule == "top-left" and tie) for tie in left_or_bottom]
         for j in range(height):
             cy = 2 * SUB * j + SUB
             for i in range(width):
