@@ -72,6 +72,9 @@ def _vertices_of(polygons):
     and where each polygon's vertices begin (n + 1 offsets)."""
     if isinstance(polygons, np.ndarray) and polygons.ndim == 3:
         n, k = polygons.shape[:2]
+        if k == 0:
+            polygons = [[] for _ in range(n)]
+            return _vertices_of(polygons)
         following = np.arange(1, n * k + 1, dtype=np.int64)
         following[k - 1::k] -= k
         return (_snapped(polygons.reshape(-1, 2)), following,
@@ -126,20 +129,22 @@ def _edge_setup(vertices, following, first_vertex, sample):
             m += 1
         first_edge[p + 1] = m
         start = first_edge[p]
+        # Shell sort (Knuth's gaps) in place: insertion sort for the usual few
+        # edges, and no O(k^2) for a polygon of thousands; numba compiles
+        # np.argsort far more slowly than this loop.
         columns = (first, stop, numerator, step, denominator)
-        if m - start > 32:
-            order = np.argsort(first[start:m]) + start
-            for column in columns:
-                column[start:m] = column[order]
-            up[start:m] = up[order]
-            continue
-        for a in range(start + 1, m):  # few edges: an insertion sort in place
-            b = a
-            while b > start and first[b - 1] > first[b]:
-                for column in columns:
-                    column[b - 1], column[b] = column[b], column[b - 1]
-                up[b - 1], up[b] = up[b], up[b - 1]
-                b -= 1
+        gap = 1
+        while gap < (m - start) // 3:
+            gap = 3 * gap + 1
+        while gap > 0:
+            for a in range(start + gap, m):
+                b = a
+                while b - gap >= start and first[b - gap] > first[b]:
+                    for column in columns:
+                        column[b - gap], column[b] = column[b], column[b - gap]
+                    up[b - gap], up[b] = up[b], up[b - gap]
+                    b -= gap
+            gap //= 3
     return first_edge, first[:m], stop[:m], numerator[:m], step[:m], denominator[:m], up[:m]
 
 
@@ -168,15 +173,17 @@ def _fill_polygons(first_edge, first, stop, numerator, step, denominator, up, no
                     active[kept] = active[a]
                     kept += 1
             live = kept
-            for a in range(live):  # crossings, sorted by insertion (live is small)
+            # Crossings sorted by insertion, the edges moving with their keys: the
+            # AET then stays in last row's order, nearly sorted, so this is ~O(live).
+            for a in range(live):
                 e = active[a]
                 n = numerator[e] + (row - first[e]) * step[e]
                 key = 2 * -((-n) // denominator[e]) + up[e]
                 b = a
                 while b > 0 and keys[b - 1] > key:
-                    keys[b] = keys[b - 1]
+                    keys[b], active[b] = keys[b - 1], active[b - 1]
                     b -= 1
-                keys[b] = key
+                keys[b], active[b] = key, e
             winding, left, line = 0, 0, canvas[row]
             for a in range(live):
                 before = winding

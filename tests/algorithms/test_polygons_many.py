@@ -128,6 +128,19 @@ def test_many_edges_in_one_polygon():
         check([[ring]], (32, 30), rule)
 
 
+@pytest.mark.parametrize("rule", ["evenodd", "nonzero"])
+def test_a_star_of_thousands_of_spikes_gives_the_per_polygon_kernels_pixels(rule):
+    # Hundreds of edges on each row: the active edges keep their order from row to row.
+    n = 4000
+    angles = np.arange(n) * (2 * np.pi / n)
+    radius = np.where(np.arange(n) % 2, 47.0, 19.0)
+    star = [[(x, y) for x, y in zip(np.round(48 + radius * np.cos(angles), 3).tolist(),
+                                     np.round(48 + radius * np.sin(angles), 3).tolist())]]
+    options = {"fill_rule": rule}
+    assert np.array_equal(scanline_fill_many([star], (96, 96), options=options),
+                          per_polygon([star], (96, 96), options))
+
+
 def test_float_arithmetic_takes_the_per_polygon_kernel():
     polygons = [[[(0.3, 0.1), (9.7, 2.9), (4.4, 8.6)]], [[(1, 1), (7, 1.5), (7, 7), (1, 6)]]]
     for arithmetic in ("float64", "float32"):
@@ -143,6 +156,13 @@ def test_coordinates_at_the_limit_stay_exact_and_beyond_it_are_refused():
     check([far], (9, 9), "nonzero", whole_box=False)
     with pytest.raises(InputError):
         scanline_fill_many([[[(0, 0), (m + 1, 0), (0, 1)]]], (4, 4))
+
+
+def test_no_polygons_and_nan_coordinates():
+    for nothing in ([], np.zeros((0, 5, 2)), np.zeros((3, 0, 2)), [[], [[]]]):
+        assert not scanline_fill_many(nothing, (4, 4)).any()
+    with pytest.raises(InputError):
+        scanline_fill_many([[[(0, 0), (float("nan"), 0), (0, 1)]]], (4, 4))
 
 
 def test_bad_rule_and_canvas_are_refused():
