@@ -12,6 +12,7 @@ from PySide6.QtWidgets import (QAbstractItemView, QFrame, QHeaderView, QLabel, Q
 
 from .dirty import cache_drawing
 from .series_points import plot_points
+from .steady import SteadyBox
 
 CURRENT_LINE = QColor("#ffe8b3")
 CURRENT_TEXT = QColor("#1d2733")
@@ -249,7 +250,8 @@ class VariablesPanel(QWidget):
         layout = QVBoxLayout(self)
         layout.setContentsMargins(6, 6, 6, 6)
         layout.setSpacing(6)
-        layout.addWidget(self.caption)
+        self._caption_box = SteadyBox(self.caption, self)
+        layout.addWidget(self._caption_box)
         layout.addWidget(self.chips)
         layout.addWidget(self.table, 1)
         layout.addWidget(self.plot_title)
@@ -322,7 +324,7 @@ class VariablesPanel(QWidget):
 
     # ----------------------------------------------------------- table
     def set_caption(self, text: str) -> None:
-        self.caption.setText(text)
+        self._caption_box.set_text(text)
 
     def set_chips(self, chips) -> None:
         """A one-line summary over the table: chips (text, tone, tooltip),
@@ -501,9 +503,19 @@ class VariablesPanel(QWidget):
         self.marker.setValue(index)
         if self._series is not None and 0 <= index < len(self._series) \
                 and math.isfinite(self._series[index]):
-            self.point.setData([index], [float(self._series[index])])
+            # The dot stays one point at (0, 0), moved: cheaper than new data.
+            if self.point.data.size != 1:
+                self.point.setData([0.0], [0.0])
+            self.point.setPos(float(index), float(self._series[index]))
+            self.point.show()
         else:
-            self.point.setData([], [])
+            self.point.hide()
+
+    def marker_point(self) -> tuple[float, float] | None:
+        """Where the step's dot stands on the plot (step, value), or None."""
+        if not self.point.isVisible() or self.point.data.size != 1:
+            return None
+        return (self.point.pos().x(), self.point.pos().y())
 
     @property
     def series(self):

@@ -53,9 +53,9 @@ def test_variables_plot_shows_and_hides(qtbot):
     assert panel.plot.isVisible() and panel.zero.isVisible()
     panel.set_marker(2)
     assert panel.marker.value() == 2
-    assert panel.point.data["y"].tolist() == [-3.0]
+    assert panel.marker_point() == (2.0, -3.0)
     panel.set_marker(0)  # no value at the Start frame
-    assert len(panel.point.data) == 0
+    assert panel.marker_point() is None
     panel.set_series(np.array([np.nan, np.nan]), "x")
     assert not panel.plot.isVisible()
     panel.set_series(None)
