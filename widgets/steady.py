@@ -10,7 +10,7 @@ room only when the label's height at the box's width changes.
 from __future__ import annotations
 
 from PySide6.QtCore import QEvent, QSize
-from PySide6.QtWidgets import QLabel, QSizePolicy, QWidget
+from PySide6.QtWidgets import QLabel, QWidget
 
 
 class SteadyBox(QWidget):
