@@ -65,7 +65,8 @@ class GuidesItem(pg.GraphicsObject):
         for k, label in enumerate(self._labels):
             if k < len(labels):
                 x, y, text = labels[k]
-                label.setText(text)
+                if label.toPlainText() != text:  # a new text lays itself out again
+                    label.setText(text)
                 label.setPos(QPointF(x + 0.1, y))
                 label.show()
             else:
