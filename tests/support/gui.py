@@ -64,7 +64,6 @@ def image_array(image):
     return rows[:, :image.width() * 4].reshape(image.height(), image.width(), 4).copy()
 
 
-
 def off_cell_edges(grid):
     """A mask over ``grid``'s viewport: False within a screen pixel of a
     cell's edge, True elsewhere.
