@@ -76,6 +76,13 @@ class SteadyBox(QWidget):
             return True
         return super().event(event)
 
+    def changeEvent(self, event) -> None:  # noqa: N802
+        super().changeEvent(event)
+        if event.type() == QEvent.Type.StyleChange:
+            # A new style sheet may pad the label otherwise: ask again.
+            self._asked = None
+            self._ask_if_needed()
+
     def resizeEvent(self, event) -> None:  # noqa: N802
         super().resizeEvent(event)
         self.label.setGeometry(self.rect())

@@ -56,3 +56,16 @@ def test_the_step_counter_lays_nothing_out(qtbot):
     assert asks.count == 0
     assert bar.counter.text() == "step 20,450 / 20,450"
     assert bar.counter.width() >= bar.counter.sizeHint().width()  # the whole text shows
+
+
+def test_a_new_style_sheet_gives_the_caption_the_room_it_asks(qtbot):
+    panel = VariablesPanel()
+    qtbot.addWidget(panel)
+    panel.resize(320, 420)
+    panel.show()
+    qtbot.waitExposed(panel)
+    panel.set_caption("<b>Step 1</b> of 90 · plots (1, 2)")
+    qtbot.wait(20)
+    before = panel.caption.height()
+    panel.setStyleSheet("QLabel#stepCaption { padding: 20px 0 20px 0; }")
+    qtbot.waitUntil(lambda: panel.caption.height() >= before + 40, timeout=2000)
