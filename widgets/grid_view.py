@@ -170,6 +170,8 @@ class PixelGridView(pg.PlotWidget):
         for item in (self.image, self.grid_lines, self.outlines, self.primitive,
                      self.preview, self.handles, self.rim, self.marker, self.samples):
             self._box.addItem(item)
+        for empty in (self.rim, self.marker, self.samples):
+            empty.setVisible(False)  # shown when they have something to show
         self._labels: list[pg.TextItem] = []
         self._marker_label = self._make_label(palette.seed)
 
@@ -393,6 +395,7 @@ class PixelGridView(pg.PlotWidget):
         hollow, sample ``current`` larger and in the current step's colour."""
         xs, ys = np.asarray(xs, float).ravel(), np.asarray(ys, float).ravel()
         hits = np.asarray(hits, bool).ravel()
+        self.samples.setVisible(bool(len(xs)))
         if not len(xs):
             if self._sample_data is not None:
                 self.samples.setData([], [])
@@ -691,9 +694,12 @@ class PixelGridView(pg.PlotWidget):
     def _refresh_rim(self) -> None:
         at = self._rim_position()
         self.rim.setData(pos=[] if at is None else [(at.x(), at.y())])
+        # An empty item still costs every repaint a Python bounding box.
+        self.rim.setVisible(at is not None)
 
     def _refresh_marker(self) -> None:
         point = self._marker_point
+        self.marker.setVisible(point is not None)
         if point is None:
             self.marker.setData(pos=[])
             self._marker_label.hide()
