@@ -397,10 +397,22 @@ def unregister(name: str) -> None:
     _REGISTRY.pop(name, None)
 
 
+_loaded = False  # every family module imported (asked on every step: keep it cheap)
+_loading = 0     # _load calls under way (a family module may ask while importing)
+
+
 def _load() -> None:
+    global _loaded, _loading
+    if _loaded:
+        return
     import importlib
-    for module in _FAMILY_MODULES:
-        importlib.import_module(module)
+    _loading += 1
+    try:
+        for module in _FAMILY_MODULES:
+            importlib.import_module(module)
+    finally:
+        _loading -= 1
+    _loaded = _loading == 0
 
 
 def all_specs() -> list[AlgorithmSpec]:

@@ -354,7 +354,7 @@ def window(results, quick: bool) -> None:
         bare_ms = [float(v) for v in out[0::2]]
         ratios = [w / b for w, b in zip(window_ms, bare_ms)]
         median = statistics.median(window_ms)
-        print(f"{'window step ' + str(side) + '^2':<44} ours {median:9.2f} ms  "
+        print(f"{'window step ' + str(side) + '^2 (seek + event loop)':<44} ours {median:9.2f} ms  "
               f"{'bare ImageItem':<14} {statistics.median(bare_ms):9.2f} ms  ratio min "
               f"{min(ratios):7.2f}x median {statistics.median(ratios):7.2f}x max "
               f"{max(ratios):7.2f}x  ({len(ratios)} pairs)")

@@ -9,6 +9,8 @@ import pyqtgraph as pg
 from PySide6.QtCore import QLineF, QRectF, Qt
 from PySide6.QtGui import QColor, QFontMetricsF, QPen
 
+from .dirty import cache_drawing, cells_box, update_boxes
+
 # Grid lines appear once a cell is this many screen pixels wide, and reach
 # full strength at FULL_CELL_PX.
 MIN_CELL_PX = 5.0
@@ -202,6 +204,8 @@ class CellOutlines(pg.GraphicsObject):
                 pen.setStyle(Qt.PenStyle.DashLine)
                 pen.setDashPattern([2.0, 1.5])
             self._pens[name] = pen
+        # How far a cosmetic pen reaches past a cell's edge, in screen pixels.
+        self._reach_px = max(pen.widthF() for pen in self._pens.values()) + 2.0
         self.update()
 
     def set_size(self, width: int, height: int) -> None:
@@ -215,7 +219,7 @@ class CellOutlines(pg.GraphicsObject):
         if old.shape == cells.shape and np.array_equal(old, cells):
             return
         self._layers[name] = cells
-        self.update()
+        update_boxes(self, (cells_box(old), cells_box(cells)), self._reach_px)
 
     def layer(self, name: str) -> np.ndarray:
         return self._layers[name]
@@ -225,8 +229,8 @@ class CellOutlines(pg.GraphicsObject):
         spans = np.asarray(spans if spans is not None else (), dtype=np.int64).reshape(-1, 3)
         if spans.shape == self._spans.shape and np.array_equal(spans, self._spans):
             return
-        self._spans = spans
-        self.update()
+        old, self._spans = self._spans, spans
+        update_boxes(self, (_spans_box(old), _spans_box(spans)), self._reach_px)
 
     @property
     def spans(self) -> np.ndarray:
@@ -264,6 +268,14 @@ class CellOutlines(pg.GraphicsObject):
             painter.setPen(self._pens["span"])
             painter.drawRects([QRectF(float(a), float(y), float(b - a), 1.0)
                                for a, b, y in self._spans if b > a])
+
+
+def _spans_box(spans):
+    """The box around runs (x_start, x_end, y); None for none."""
+    if not len(spans):
+        return None
+    return (float(spans[:, 0].min()), float(spans[:, 2].min()),
+            float(spans[:, 1].max()), float(spans[:, 2].max()) + 1.0)
 
 
 class Handles(pg.ScatterPlotItem):
@@ -310,6 +322,7 @@ def primitive_curves(palette) -> tuple[pg.PlotCurveItem, pg.PlotCurveItem]:
     preview = pg.PlotCurveItem(pen=pg.mkPen(palette.primitive, width=1.5,
                                             style=Qt.PenStyle.DashLine), antialias=True)
     preview.setZValue(3)
+    cache_drawing(primitive)
     return primitive, preview
 
 
@@ -325,4 +338,5 @@ def handle_items(palette) -> tuple[Handles, Handles, Handles]:
     marker = Handles(pxMode=True, size=MARKER_SIZE, symbol="star",
                      brush=pg.mkBrush(palette.seed), pen=pg.mkPen(palette.handle, width=1.5))
     marker.setZValue(6)
+    cache_drawing(handles, rim, marker)
     return handles, rim, marker

@@ -34,7 +34,7 @@ import numpy as np
 import pyqtgraph as pg
 from PySide6.QtCore import QPointF, QRectF, Qt, Signal
 from PySide6.QtGui import QColor, QCursor
-from PySide6.QtWidgets import QMenu
+from PySide6.QtWidgets import QGraphicsView, QMenu
 
 from app.model.drawing import (CIRCLE, CONTOURS, FIXED, GROUPS, Close, Move, Place, Remove,
                                Sketch, Tool, all_placed, can_close, closes_at, pending)
@@ -129,6 +129,11 @@ class PixelGridView(pg.PlotWidget):
         # the person pans or zooms.
         self._auto_fit = True
         self._box.sigRangeChangedManually.connect(self._manual_range)
+        # A step repaints a few small areas: one rectangle around them, so
+        # that Qt scales the image by the same rule as in a whole repaint
+        # (under a clip of several rectangles it samples differently, and
+        # a cell's edge would move by a screen pixel).
+        self.setViewportUpdateMode(QGraphicsView.ViewportUpdateMode.BoundingRectViewportUpdate)
 
         self.scene().sigMouseMoved.connect(self._mouse_moved)
         self.viewport().setMouseTracking(True)
@@ -165,11 +170,14 @@ class PixelGridView(pg.PlotWidget):
         for item in (self.image, self.grid_lines, self.outlines, self.primitive,
                      self.preview, self.handles, self.rim, self.marker, self.samples):
             self._box.addItem(item)
+        for empty in (self.rim, self.marker, self.samples):
+            empty.setVisible(False)  # shown when they have something to show
         self._labels: list[pg.TextItem] = []
         self._marker_label = self._make_label(palette.seed)
 
     def _init_state(self) -> None:
         self._size = (0, 0)
+        self._shown = None  # the array the image item shows
         self._rules = Tool()
         self._sketch = Sketch()  # the points on show, as last given
         self._integer = True
@@ -357,8 +365,19 @@ class PixelGridView(pg.PlotWidget):
                            self._names)
 
     # ---------------------------------------------------------- frames
-    def set_image(self, rgba: np.ndarray) -> None:
-        """Show an (H, W, 4) uint8 image, row 0 at y = 0."""
+    def set_image(self, rgba: np.ndarray, changed=None) -> None:
+        """Show an (H, W, 4) uint8 image, row 0 at y = 0. ``changed`` =
+        (x0, y0, x1, y1), exclusive, says that ``rgba`` is the array on show,
+        altered in place in those cells only: only they are repainted (a
+        4096 x 4096 picture is not handed to Qt again for one cell)."""
+        if changed is not None and rgba is self._shown:
+            x0, y0, x1, y1 = changed
+            if x1 > x0 and y1 > y0:
+                self.image.update(QRectF(x0, y0, x1 - x0, y1 - y0))
+            return
+        # The item draws a QImage over this very array (no copy), so a
+        # later change in place needs only the repaint above.
+        self._shown = rgba
         self.image.setImage(rgba, autoLevels=False)
         height, width = rgba.shape[:2]
         if (width, height) != self._size:
@@ -376,6 +395,7 @@ class PixelGridView(pg.PlotWidget):
         hollow, sample ``current`` larger and in the current step's colour."""
         xs, ys = np.asarray(xs, float).ravel(), np.asarray(ys, float).ravel()
         hits = np.asarray(hits, bool).ravel()
+        self.samples.setVisible(bool(len(xs)))
         if not len(xs):
             if self._sample_data is not None:
                 self.samples.setData([], [])
@@ -674,9 +694,12 @@ class PixelGridView(pg.PlotWidget):
     def _refresh_rim(self) -> None:
         at = self._rim_position()
         self.rim.setData(pos=[] if at is None else [(at.x(), at.y())])
+        # An empty item still costs every repaint a Python bounding box.
+        self.rim.setVisible(at is not None)
 
     def _refresh_marker(self) -> None:
         point = self._marker_point
+        self.marker.setVisible(point is not None)
         if point is None:
             self.marker.setData(pos=[])
             self._marker_label.hide()

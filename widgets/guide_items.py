@@ -8,9 +8,13 @@ import pyqtgraph as pg
 from PySide6.QtCore import QPointF, QRectF, Qt
 from PySide6.QtGui import QBrush, QColor, QFont, QPen
 
+from .dirty import points_box, update_boxes
+
 # Screen pixels: line widths, and the radius of a dot.
 LINE_PX = {"scan": 1.5, "pair": 5.0, "drop": 2.0}
 DOT_PX = {"crossing": 5.0, "midpoint": 5.0}
+# How far a line or dot reaches past its geometry, in screen pixels.
+REACH_PX = max(max(LINE_PX.values()), max(DOT_PX.values())) + 2.0
 
 
 class GuidesItem(pg.GraphicsObject):
@@ -42,9 +46,9 @@ class GuidesItem(pg.GraphicsObject):
     def set_guides(self, guides) -> None:
         if guides == self.guides:
             return
-        self.guides = guides
+        old, self.guides = self.guides, guides
         self._place_labels()
-        self.update()
+        update_boxes(self, (_box(old), _box(guides)), REACH_PX)
 
     def _place_labels(self) -> None:
         view = self.getViewBox()
@@ -61,7 +65,8 @@ class GuidesItem(pg.GraphicsObject):
         for k, label in enumerate(self._labels):
             if k < len(labels):
                 x, y, text = labels[k]
-                label.setText(text)
+                if label.toPlainText() != text:  # a new text lays itself out again
+                    label.setText(text)
                 label.setPos(QPointF(x + 0.1, y))
                 label.show()
             else:
@@ -113,3 +118,14 @@ class GuidesItem(pg.GraphicsObject):
                 continue  # samples: the grid draws its own sample dots
             radius = DOT_PX[role] * unit
             painter.drawEllipse(QPointF(x, y), radius, radius)
+
+
+def _box(guides):
+    """The box around a step's guide lines and dots (grid units); None for none."""
+    if not guides:
+        return None
+    xs = [v for x0, _y0, x1, _y1, _role in guides.lines for v in (x0, x1)]
+    ys = [v for _x0, y0, _x1, y1, _role in guides.lines for v in (y0, y1)]
+    xs += [x for x, _y, _role in guides.dots]
+    ys += [y for _x, y, _role in guides.dots]
+    return points_box(xs, ys)

@@ -8,9 +8,11 @@ import pyqtgraph as pg
 from PySide6.QtCore import Qt, QTimer, Signal
 from PySide6.QtGui import QBrush, QColor, QFont, QFontDatabase, QFontMetrics
 from PySide6.QtWidgets import (QAbstractItemView, QFrame, QHeaderView, QLabel, QScrollArea,
-                               QTableWidget, QTableWidgetItem, QVBoxLayout, QWidget)
+                               QStyle, QTableWidget, QTableWidgetItem, QVBoxLayout, QWidget)
 
+from .dirty import cache_drawing
 from .series_points import plot_points
+from .steady import SteadyBox
 
 CURRENT_LINE = QColor("#ffe8b3")
 CURRENT_TEXT = QColor("#1d2733")
@@ -18,6 +20,9 @@ CURRENT_EDGE = QColor("#f08c00")
 CHANGED_VALUE = QColor("#b35900")
 LINE_NUMBER = QColor("#8a94a1")
 NOTES_MAX_HEIGHT = 120
+# Where a variables cell keeps the look it was last given (colour, font,
+# swatch), so that an unchanged look is not set (and repainted) again.
+LOOK_ROLE = Qt.ItemDataRole.UserRole + 1
 # Values whose sign or range matters: text colours by tone.
 TONE_COLORS = {"positive": QColor("#1f7a3d"), "negative": QColor("#c92a2a"),
                "zero": QColor("#b35900")}
@@ -85,7 +90,10 @@ class CodePanel(QWidget):
         self.lines.setHorizontalScrollBarPolicy(Qt.ScrollBarPolicy.ScrollBarAlwaysOff)
         self.lines.setVerticalScrollMode(QAbstractItemView.ScrollMode.ScrollPerPixel)
         header = self.lines.horizontalHeader()
-        header.setSectionResizeMode(0, QHeaderView.ResizeMode.ResizeToContents)
+        # The numbers' column is as wide as the widest marked number, set
+        # once per code (``_fit_numbers``): sized to its contents, it would
+        # measure every row and rewrap them all on every step.
+        header.setSectionResizeMode(0, QHeaderView.ResizeMode.Fixed)
         header.setSectionResizeMode(1, QHeaderView.ResizeMode.Stretch)
         header.sectionResized.connect(lambda *_: self._fit_rows())
         # Rows change height as the panel narrows or widens (a dock opens
@@ -128,7 +136,7 @@ class CodePanel(QWidget):
                 code.setToolTip(text)
                 self.lines.setItem(row, 0, number)
                 self.lines.setItem(row, 1, code)
-            self.lines.resizeColumnToContents(0)
+            self._fit_numbers()
             self.lines.resizeRowsToContents()
         self.notes.setText("\n".join(notes))
         self.notes_area.setVisible(bool(notes))
@@ -164,6 +172,18 @@ class CodePanel(QWidget):
         line = self._current
         if line is not None and 0 <= line < self.lines.rowCount():
             self._paint(line, True)
+        self._fit_numbers()
+
+    def _fit_numbers(self) -> None:
+        """The numbers' column as wide as the last line's number marked
+        (in bold, after the marker), in the table's type."""
+        bold = QFont(self.lines.font())
+        bold.setBold(True)
+        last = str(max(1, len(self._texts)))
+        text = max(QFontMetrics(bold).horizontalAdvance("\u25b6 " + last),
+                   QFontMetrics(self.lines.font()).horizontalAdvance("  " + last))
+        margin = self.lines.style().pixelMetric(QStyle.PixelMetric.PM_FocusFrameHMargin) + 1
+        self.lines.setColumnWidth(0, text + 2 * margin + 4)
 
     def reveal(self) -> None:
         """Scroll the marked line (all of it, if it fits) into view."""
@@ -230,12 +250,14 @@ class VariablesPanel(QWidget):
         layout = QVBoxLayout(self)
         layout.setContentsMargins(6, 6, 6, 6)
         layout.setSpacing(6)
-        layout.addWidget(self.caption)
+        self._caption_box = SteadyBox(self.caption, self)
+        layout.addWidget(self._caption_box)
         layout.addWidget(self.chips)
         layout.addWidget(self.table, 1)
         layout.addWidget(self.plot_title)
         layout.addWidget(self.plot)
         self._rows: list[tuple[str, str]] = []
+        self._fitted_width = -1  # the value column's width when the rows were fitted
         self._chips: list[tuple[str, str, str]] = []
         self._series: np.ndarray | None = None
         self.set_series(None)
@@ -295,11 +317,14 @@ class VariablesPanel(QWidget):
             plot.addItem(part)
         self.marker.setZValue(10)
         self.point.setZValue(11)
+        # The run's values stay put while the step marker moves over them.
+        for part in (self.curve, self.undecided_dots, *self.branch_dots):
+            cache_drawing(part.curve, part.scatter)
         return plot
 
     # ----------------------------------------------------------- table
     def set_caption(self, text: str) -> None:
-        self.caption.setText(text)
+        self._caption_box.set_text(text)
 
     def set_chips(self, chips) -> None:
         """A one-line summary over the table: chips (text, tone, tooltip),
@@ -332,19 +357,20 @@ class VariablesPanel(QWidget):
                 for name, text in rows]
         tones = tones or {}
         before = dict(self._rows)
-        self.table.setUpdatesEnabled(False)
         if self.table.rowCount() != len(rows):
             self.table.setRowCount(len(rows))
+        # Only the cells whose text or look changed are set: each set
+        # repaints its cell, and a step changes one or two values.
+        fitted = []
         for row, (name, text) in enumerate(rows):
             self._set_cell(row, 0, name, None)
             changed = name in before and before[name] != text
             color = TONE_COLORS.get(tones.get(name)) or (CHANGED_VALUE if changed else None)
-            self._set_cell(row, 1, text, color, self._value_font, bold=changed)
-            item = self.table.item(row, 1)
             swatch = text if name in color_names and QColor.isValidColorName(text) else None
-            item.setData(Qt.ItemDataRole.DecorationRole, QColor(swatch) if swatch else None)
-        self._fit_long_rows(rows)
-        self.table.setUpdatesEnabled(True)
+            if self._set_cell(row, 1, text, color, self._value_font, bold=changed,
+                              swatch=swatch):
+                fitted.append(row)
+        self._fit_long_rows(rows, fitted)
         self._rows = rows
         # Values whose sign matters stay in sight, wherever they are listed.
         toned = [row for row, (name, _text) in enumerate(rows) if name in tones]
@@ -364,13 +390,18 @@ class VariablesPanel(QWidget):
         height = max(QFontMetrics(self._value_font).height(), self.fontMetrics().height())
         self.table.verticalHeader().setDefaultSectionSize(height + 6)
 
-    def _fit_long_rows(self, rows) -> None:
+    def _fit_long_rows(self, rows, fitted) -> None:
         """A value too long for its cell (a fill's queue, say) wraps onto a
-        second line instead of losing its end; the others keep one line."""
+        second line instead of losing its end; the others keep one line.
+        ``fitted``: the rows whose value changed; all of them when the
+        column's width did."""
         width = self.table.columnWidth(1) - 10
+        if width != self._fitted_width:
+            self._fitted_width, fitted = width, range(len(rows))
         metrics = QFontMetrics(self._value_font)
         default = self.table.verticalHeader().defaultSectionSize()
-        for row, (_name, text) in enumerate(rows):
+        for row in fitted:
+            text = rows[row][1]
             if width > 0 and metrics.horizontalAdvance(text) > width:
                 self.table.resizeRowToContents(row)
             elif self.table.rowHeight(row) != default:
@@ -384,20 +415,30 @@ class VariablesPanel(QWidget):
                 return brush.color() if brush.style() != Qt.BrushStyle.NoBrush else None
         raise KeyError(name)
 
-    def _set_cell(self, row, column, text, color, font=None, bold=False):
+    def _set_cell(self, row, column, text, color, font=None, bold=False, swatch=None) -> bool:
+        """Set what differs from the cell's text, colour, font and swatch;
+        True when anything did."""
         item = self.table.item(row, column)
         if item is None:
             item = QTableWidgetItem()
             self.table.setItem(row, column, item)
+        look = repr((color.rgba() if color is not None else None,
+                     None if font is None else (font.key(), bold), swatch))
+        changed = item.data(LOOK_ROLE) != look
+        if changed:
+            if font is not None:
+                font = QFont(font)
+                font.setBold(bold)
+                item.setFont(font)
+            item.setForeground(QBrush(color) if color is not None else QBrush())
+            item.setData(Qt.ItemDataRole.DecorationRole, QColor(swatch) if swatch else None)
+            item.setData(LOOK_ROLE, look)
         if item.toolTip() != text:
             # Pairs such as (4, 10) stay whole when a long value wraps.
             item.setText(text.replace(", ", ",\u00a0"))
             item.setToolTip(text)
-        if font is not None:
-            font = QFont(font)
-            font.setBold(bold)
-            item.setFont(font)
-        item.setForeground(QBrush(color) if color is not None else QBrush())
+            changed = True
+        return changed
 
     # ------------------------------------------------------------ plot
     def set_series(self, values: np.ndarray | None, name: str = "",
@@ -462,9 +503,19 @@ class VariablesPanel(QWidget):
         self.marker.setValue(index)
         if self._series is not None and 0 <= index < len(self._series) \
                 and math.isfinite(self._series[index]):
-            self.point.setData([index], [float(self._series[index])])
+            # The dot stays one point at (0, 0), moved: cheaper than new data.
+            if self.point.data.size != 1:
+                self.point.setData([0.0], [0.0])
+            self.point.setPos(float(index), float(self._series[index]))
+            self.point.show()
         else:
-            self.point.setData([], [])
+            self.point.hide()
+
+    def marker_point(self) -> tuple[float, float] | None:
+        """Where the step's dot stands on the plot (step, value), or None."""
+        if not self.point.isVisible() or self.point.data.size != 1:
+            return None
+        return (self.point.pos().x(), self.point.pos().y())
 
     @property
     def series(self):

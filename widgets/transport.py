@@ -10,6 +10,7 @@ from PySide6.QtWidgets import (QHBoxLayout, QLabel, QSizePolicy, QSlider, QSpinB
                                QToolButton, QVBoxLayout, QWidget)
 
 from .media_icons import media_icon
+from .steady import SteadyBox
 
 SPEED_MIN = 1
 SPEED_MAX = 2000
@@ -121,7 +122,7 @@ class TransportBar(QWidget):
                   self.last_button):
             row.addWidget(b)
         row.addSpacing(12)
-        row.addWidget(self.counter)
+        row.addWidget(SteadyBox(self.counter, self))
         row.addStretch(1)
         row.addWidget(speed_label)
         row.addSpacing(6)

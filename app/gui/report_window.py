@@ -18,9 +18,6 @@ from PySide6.QtWidgets import (QCheckBox, QComboBox, QDialog, QFileDialog, QForm
                                QHBoxLayout, QLabel, QMessageBox, QProgressBar, QPushButton,
                                QRadioButton, QVBoxLayout)
 
-from app.analysis import measure
-
-from app.analysis import report
 from app.gui.entries import WindowEntry
 
 PARAMETER = "(swept parameter)"
@@ -43,6 +40,7 @@ class MeasureWorker(QObject):
         self.cancelled = False
 
     def run(self) -> None:
+        from app.analysis import measure  # loaded with the first report, not the window
         config = measure.settings(self.quick)
         try:
             rows, seconds = measure.run(config, self._progress)
@@ -253,6 +251,7 @@ class ReportDialog(QDialog):
         folder = QFileDialog.getExistingDirectory(self, "Save the report into")
         if not folder:
             return
+        from app.analysis import report
         try:
             written = report.write_files(folder, self.config, self.rows, self.seconds)
         except report.ReportError as error:

@@ -16,9 +16,6 @@ from PySide6.QtWidgets import QFileDialog, QInputDialog
 from algorithms import registry
 from algorithms.errors import InputError
 
-from app.gui.worksheet_pdf import write_pdf
-from app.model import checking, worksheet
-from app.model.student_algorithm import first_divergence, student_spec
 
 
 FILTERS = {"pdf": "PDF (*.pdf)", "md": "Markdown with PNG grids (*.md)",
@@ -27,6 +24,7 @@ FILTERS = {"pdf": "PDF (*.pdf)", "md": "Markdown with PNG grids (*.md)",
 
 def reference_names() -> list[str]:
     """The algorithms a student's file can be checked against."""
+    from app.model import checking  # with the first student file, not the window
     names = []
     for spec in registry.all_specs():
         try:
@@ -79,6 +77,7 @@ class StudentActions(QObject):
                                                "Compare your algorithm with:", names, start, False)
             if not ok:
                 return None
+        from app.model.student_algorithm import student_spec
         try:
             spec = student_spec(path, against)
         except InputError as error:
@@ -102,6 +101,9 @@ class StudentActions(QObject):
             if not path:
                 return []
             folder, fmt = path, next(k for k, v in FILTERS.items() if v == chosen)
+        # Worksheets (and Pillow, which draws their grid) load on first use.
+        from app.gui.worksheet_pdf import write_pdf
+        from app.model import worksheet
         try:
             sheet = worksheet.build(window.player.scene)
             files = worksheet.write(sheet, folder, fmt or "pdf", write_pdf)
@@ -120,6 +122,7 @@ class StudentActions(QObject):
             window.statusBar().showMessage("First divergence: open your algorithm first "
                                            "(File > Open algorithm…).", 5000)
             return None
+        from app.model.student_algorithm import first_divergence
         step, text = first_divergence(player.trace, against, player.scene.points, player.options,
                                       player.grid)
         if step is not None:

@@ -467,8 +467,9 @@ class MainWindow(WindowLayout, WindowMenus, DepthAndAccuracy, TextureDisplay, QM
             self.grid.set_image(error_image(accuracy.estimate - accuracy.exact, accuracy.max,
                                             signed=True))
         else:
-            self.grid.set_image(self._step_images.image(player.trace, state, self.palette_,
-                                                        coverage=self.coverage.isChecked()))
+            image = self._step_images.image(player.trace, state, self.palette_,
+                                            coverage=self.coverage.isChecked())
+            self.grid.set_image(image, self._step_images.changed)
         self._show_depth(state)
         self._show_texture(state)
         self._show_samples(state)

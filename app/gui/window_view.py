@@ -132,7 +132,6 @@ class WindowView(QObject):
         if redraw:
             w.show_frame()
         w.code.restyle()
-        w.code.lines.resizeColumnToContents(0)
         w.code.lines.resizeRowsToContents()
         w.code.reveal()
 

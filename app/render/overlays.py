@@ -22,7 +22,6 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
-from PIL import Image, ImageDraw
 
 from algorithms.steps import Vars
 
@@ -192,6 +191,7 @@ def basis_strokes(triangle) -> list[Stroke]:
 def draw_strokes(rgb: np.ndarray, strokes, scale: int) -> np.ndarray:
     """The strokes drawn over an (H * scale, W * scale, 3) uint8 image whose
     row 0 is y = 0 (as compose makes it): a new array."""
+    from PIL import Image, ImageDraw  # for exported frames: the window does not load it
     image = Image.fromarray(np.ascontiguousarray(rgb), "RGB")
     draw = ImageDraw.Draw(image)
     width = max(1, scale // 8)

@@ -266,3 +266,24 @@ def test_the_pointer_reports_its_real_coordinates(view, qtbot):
     qtbot.waitUntil(lambda: bool(seen) and seen[-1] is not None, timeout=1000)
     x, y = seen[-1]
     assert abs(x - 7.25) < 0.1 and abs(y - 4.75) < 0.1
+
+
+def test_a_picture_changed_in_place_repaints_only_its_cells(view, qtbot):
+    from tests.support.gui import off_cell_edges, on_screen, repainted
+    picture = np.full((24, 32, 4), 255, np.uint8)
+    view.set_image(picture)
+    qtbot.wait(20)
+    handed = []
+    original = view.image.setImage
+    view.image.setImage = lambda *args, **kwargs: (handed.append(1), original(*args, **kwargs))
+    picture[5:7, 10:13] = (200, 30, 30, 255)
+    view.set_image(picture, changed=(10, 5, 13, 7))
+    qtbot.wait(20)
+    shown, whole = on_screen(view), repainted(view)
+    red = (whole[..., 2] == 200) & (whole[..., 1] == 30)
+    assert red.sum() >= 6 * MIN_CELL_PX ** 2  # six cells, each several pixels wide
+    inside = off_cell_edges(view)
+    assert np.array_equal(shown[inside], whole[inside])  # the screen shows them too
+    assert not handed  # without handing the picture over again
+    view.set_image(picture.copy())  # another array is handed over
+    assert handed

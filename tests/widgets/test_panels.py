@@ -53,9 +53,9 @@ def test_variables_plot_shows_and_hides(qtbot):
     assert panel.plot.isVisible() and panel.zero.isVisible()
     panel.set_marker(2)
     assert panel.marker.value() == 2
-    assert panel.point.data["y"].tolist() == [-3.0]
+    assert panel.marker_point() == (2.0, -3.0)
     panel.set_marker(0)  # no value at the Start frame
-    assert len(panel.point.data) == 0
+    assert panel.marker_point() is None
     panel.set_series(np.array([np.nan, np.nan]), "x")
     assert not panel.plot.isVisible()
     panel.set_series(None)
@@ -141,19 +141,46 @@ def test_the_marked_line_wraps_whole_never_cut(qtbot):
     p.set_code(["start", text, "done"])
     table = p.lines
     narrow = QFontMetrics(table.font()).horizontalAdvance(text)
-    # A column just wide enough for the line unmarked ...
+    numbers = table.columnWidth(0)
+    # A column narrower than the line: it wraps, marked or not ...
     for _ in range(5):
-        p.resize(p.width() + narrow + 10 - table.columnWidth(1), 400)
+        p.resize(p.width() + narrow * 2 // 3 - table.columnWidth(1), 400)
         qtbot.wait(10)
-    one_line = table.rowHeight(1)
-    # ... loses room to the marker "▶" and the bold type when marked.
+    p.set_current(0)
+    qtbot.wait(20)
+    one_line = table.rowHeight(0)
+    # ... and marked, in bold, it keeps all of its text in view.
     p.set_current(1)
     qtbot.wait(20)
     item = table.item(1, 1)
     metrics = QFontMetrics(item.font())
     needed = metrics.boundingRect(0, 0, table.columnWidth(1) - 8, 10_000,
                                   int(Qt.TextFlag.TextWordWrap), text).height()
-    assert needed > one_line - 4  # it no longer fits one line
+    assert item.font().bold() and needed > one_line  # two lines or more
     assert table.rowHeight(1) >= needed  # so the row grows: the end is kept
+    # The numbers' column holds the marked number and keeps its width
+    # from step to step (no re-measuring of every row).
+    number_font = table.item(1, 0).font()
+    assert QFontMetrics(number_font).horizontalAdvance(table.item(1, 0).text()) < numbers
+    assert table.columnWidth(0) == numbers
     assert item.font().family() == table.font().family()  # the code's own type
     assert table.textElideMode() == Qt.TextElideMode.ElideNone
+
+
+def test_variables_panel_sets_only_the_cells_that_changed(qtbot):
+    panel = VariablesPanel()
+    qtbot.addWidget(panel)
+    first = [("x", "4"), ("y", "2"), ("d", "-3")]
+    panel.set_rows(first)
+    panel.set_rows(first)
+    touched = []
+    panel.table.itemChanged.connect(lambda item: touched.append((item.row(), item.column())))
+    panel.set_rows(first)
+    assert touched == []  # the same rows: no cell is set again (none repaints)
+    panel.set_rows([("x", "5"), ("y", "2"), ("d", "-3")])
+    assert set(touched) == {(0, 1)} and panel.table.item(0, 1).font().bold()
+    touched.clear()
+    panel.set_rows([("x", "5"), ("y", "2"), ("d", "-3")])
+    assert set(touched) == {(0, 1)}  # x no longer changed: back to plain type
+    assert not panel.table.item(0, 1).font().bold()
+    assert panel.rows() == [("x", "5"), ("y", "2"), ("d", "-3")]

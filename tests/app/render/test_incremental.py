@@ -36,3 +36,25 @@ def test_another_run_or_a_long_jump_recomposes(monkeypatch):
     for trace, index in [(a, 3), (b, 3), (b, 4), (b, 20), (a, 20)]:
         shown = images.image(trace, trace.state_at(index, compact=True), PALETTE)
         assert np.array_equal(shown, compose(trace.state_at(index).raster, None, PALETTE))
+
+
+
+def test_changed_bounds_the_recoloured_cells_and_no_more():
+    trace = get("flood-fill").record(
+        [[(3, 2), (27, 3), (20, 11), (28, 20), (12, 15), (4, 21)]], {"order": "span"}, (32, 24))
+    images = StepImages()
+    before = images.image(trace, trace.state_at(0, compact=True), PALETTE).copy()
+    assert images.changed is None  # composed afresh
+    images.image(trace, trace.state_at(0, compact=True), PALETTE)
+    assert images.changed == (0, 0, 0, 0)  # the same step: nothing
+    previous = 0
+    for index in [1, 2, 9, 8, 30, len(trace) - 1, 3]:
+        after = images.image(trace, trace.state_at(index, compact=True), PALETTE).copy()
+        x0, y0, x1, y1 = images.changed
+        rows, columns = np.nonzero((after != before).any(axis=2))
+        assert ((columns >= x0) & (columns < x1) & (rows >= y0) & (rows < y1)).all(), index
+        # No wider than the cells the steps in between wrote.
+        lo, hi = sorted((previous, index))
+        written = trace.written(lo + 1, hi + 1).pixels
+        assert (x0, y0) == tuple(written.min(axis=0)) and (x1, y1) == tuple(written.max(axis=0) + 1)
+        before, previous = after, index
