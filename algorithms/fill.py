@@ -26,6 +26,7 @@ from fractions import Fraction
 
 from .circles import CENTRE, RADIUS, midpoint_circle_pixels
 from .code import Code, listing
+from .fill_kernel import circle_fill_state, flood_fill_state
 from .registry import AlgorithmSpec, InputError, Inputs, Option, register
 from .steps import PER_PIXEL, PLOT, VISIT, Note, Span, Start, Vars
 from .trace import checkpoint, work_allowance
@@ -665,6 +666,7 @@ register(AlgorithmSpec(
     options=(SEED, CONNECTIVITY, ORDER, MODE, OUTLINE_STEPS, COLORS),
     code=listing(fill_listing),
     generator=flood_fill,
+    kernel=flood_fill_state,
     explain=fill_explain,
     uses_grid=True,
     notes=("A pixel is free when it lies inside the grid and is neither boundary nor "
@@ -692,6 +694,7 @@ register(AlgorithmSpec(
     options=(RADIUS, SEED, CONNECTIVITY, ORDER, MODE, OUTLINE_STEPS, COLORS),
     code=listing(circle_fill_listing),
     generator=circle_fill,
+    kernel=circle_fill_state,
     explain=fill_explain,
     uses_grid=True,
     notes=("The outline is the midpoint circle of radius R around C. Its pixels step "
