@@ -25,6 +25,8 @@ from algorithms import registry, triangles  # noqa: E402
 from algorithms.batch import bresenham_lines, midpoint_circles  # noqa: E402
 from algorithms.batch_canvas import draw_midpoint_circles  # noqa: E402
 from algorithms.antialias.lines import wu  # noqa: E402
+from algorithms.antialias.wu_kernel import draw_wu_lines  # noqa: E402
+from algorithms.antialias.wu_kernel import wu_lines as batched_wu_lines  # noqa: E402
 from algorithms.circles import midpoint_circle_pixels  # noqa: E402
 from algorithms.lines.bresenham import bresenham_pixels  # noqa: E402
 from algorithms.polygons.scanline import scanline_pixels  # noqa: E402
@@ -157,20 +159,33 @@ def _line_figures(results, rng, repeats, count):
                  "skimage.line")
     wu_lines = lines[:max(200, count // 10)]
     wu_options = {"endpoints": "full"}
-    ratio = results.pair(f"{len(wu_lines)} Wu lines (generator)",
-                         lambda: [collections.deque(wu(p, wu_options), 0) for p in wu_lines],
-                         lambda: [cv2.line(canvas, p, q, 255, 1, cv2.LINE_AA)
-                                  for p, q in wu_lines], repeats, "cv2.line AA")
-    _kernel_target(results, "Wu lines", ratio, "no kernel yet: the generator")
+    cv2_wu = lambda: [cv2.line(canvas, p, q, 255, 1, cv2.LINE_AA)  # noqa: E731
+                      for p, q in wu_lines]
+    results.pair(f"{len(wu_lines)} Wu lines (generator)",
+                 lambda: [collections.deque(wu(p, wu_options), 0) for p in wu_lines], cv2_wu,
+                 repeats, "cv2.line AA")
+    wu_starts, wu_ends = ends[:len(wu_lines), 0], ends[:len(wu_lines), 1]
+
+    def wu_batched():
+        pixels, intensity, _ = batched_wu_lines(wu_starts, wu_ends)
+        canvas[pixels[:, 1], pixels[:, 0]] = intensity * 255
+
+    results.pair(f"{len(wu_lines)} Wu lines (batched kernel)", wu_batched, cv2_wu, repeats,
+                 "cv2.line AA")
+    # Intensities into the canvas as grey levels, as the peers leave it.
+    wu_drawn = lambda: draw_wu_lines(canvas, wu_starts, wu_ends)  # noqa: E731
+    wu_drawn()  # the first call compiles (or loads the compiled loop)
+    ratio = results.pair(f"{len(wu_lines)} Wu lines (into canvas, compiled)", wu_drawn, cv2_wu,
+                         repeats, "cv2.line AA")
+    _kernel_target(results, "Wu lines", ratio, "batched, compiled, into the canvas")
 
     def skimage_wu():
         for (x0, y0), (x1, y1) in wu_lines:
             rr, cc, val = line_aa(y0, x0, y1, x1)
             canvas[rr, cc] = val * 255
 
-    results.pair(f"{len(wu_lines)} Wu lines (generator)",
-                 lambda: [collections.deque(wu(p, wu_options), 0) for p in wu_lines],
-                 skimage_wu, repeats, "skimage.aa")
+    results.pair(f"{len(wu_lines)} Wu lines (into canvas, compiled)", wu_drawn, skimage_wu,
+                 repeats, "skimage.aa")
 
 
 def _circle_figures(results, rng, repeats):
