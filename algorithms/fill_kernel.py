@@ -16,8 +16,7 @@ from __future__ import annotations
 import numpy as np
 
 from .compiled import compiled
-
-FREE, BOUNDARY, FILLED = 0, 1, 2  # as fill.py's region states
+from .fill_seed import BOUNDARY, FILLED, FREE, circle_outline, circle_seed, inside_pixel, seed_pixel
 
 
 class _Grid:
@@ -32,8 +31,6 @@ class _Grid:
 
 def flood_fill_state(points, options, grid) -> np.ndarray:
     """The ``flood-fill`` generator's final raster as states (see the module)."""
-    from . import fill  # deferred: fill.py imports this module to register the kernel
-
     width, height = int(grid[0]), int(grid[1])
     four = options["outline"] == "4"
     cells = np.zeros((height, width), np.uint8)
@@ -45,18 +42,16 @@ def flood_fill_state(points, options, grid) -> np.ndarray:
     def on_outline(x, y):
         return cells[y, x] == BOUNDARY
 
-    seed = fill._seed("flood-fill", options, lambda: fill.inside_pixel(points, free, grid),
+    seed = seed_pixel("flood-fill", options, lambda: inside_pixel(points, free, grid),
                       _Grid(width, height), on_outline)
     return _filled(cells, seed, options)
 
 
 def circle_fill_state(points, options, grid) -> np.ndarray:
     """The ``flood-fill-circle`` generator's final raster as states."""
-    from . import fill
-
     (centre,) = points
     width, height = int(grid[0]), int(grid[1])
-    ring = np.asarray(fill.circle_outline(centre, options["radius"], options["outline"] == "4"),
+    ring = np.asarray(circle_outline(centre, options["radius"], options["outline"] == "4"),
                       np.int64).reshape(-1, 2)
     on = (ring[:, 0] >= 0) & (ring[:, 0] < width) & (ring[:, 1] >= 0) & (ring[:, 1] < height)
     cells = np.zeros((height, width), np.uint8)
@@ -68,8 +63,8 @@ def circle_fill_state(points, options, grid) -> np.ndarray:
 
     if options["seed"] == "auto" and not (area.inside(*centre) and not on_outline(*centre)):
         return cells  # no free pixel inside: the generator draws the outline only
-    seed = fill._seed("flood-fill-circle", options,
-                      lambda: fill._circle_seed(centre, area, on_outline), area, on_outline)
+    seed = seed_pixel("flood-fill-circle", options,
+                      lambda: circle_seed(centre, area, on_outline), area, on_outline)
     return _filled(cells, seed, options)
 
 
