@@ -208,9 +208,9 @@ def _circle_figures(results, rng, repeats):
         canvas[pixels[:, 1], pixels[:, 0]] = 1
 
     results.pair("1000 circles r = 10 (batched kernel)", batched, peer, repeats, "cv2.circle")
-    batched = lambda: draw_midpoint_circles(canvas, centres, 10)  # noqa: E731
-    ratio = results.pair("1000 circles r = 10 (batched, into canvas)", batched, peer, repeats,
-                         "cv2.circle")
+    into_canvas = lambda: draw_midpoint_circles(canvas, centres, 10)  # noqa: E731
+    ratio = results.pair("1000 circles r = 10 (batched, into canvas)", into_canvas, peer,
+                         repeats, "cv2.circle")
     _kernel_target(results, "circles r = 10", ratio, "batched, into the canvas")
 
     def skimage_circles():
@@ -218,7 +218,7 @@ def _circle_figures(results, rng, repeats):
             rr, cc = circle_perimeter(y, x, 10)
             canvas[rr, cc] = 1
 
-    results.pair("1000 circles r = 10 (batched, into canvas)", batched, skimage_circles,
+    results.pair("1000 circles r = 10 (batched, into canvas)", into_canvas, skimage_circles,
                  repeats, "skimage")
 
 
