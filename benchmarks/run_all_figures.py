@@ -23,7 +23,10 @@ sys.path.insert(0, str(ROOT))
 
 from algorithms import registry, triangles  # noqa: E402
 from algorithms.batch import bresenham_lines, midpoint_circles  # noqa: E402
+from algorithms.batch_canvas import draw_midpoint_circles  # noqa: E402
 from algorithms.antialias.lines import wu  # noqa: E402
+from algorithms.antialias.wu_kernel import draw_wu_lines  # noqa: E402
+from algorithms.antialias.wu_kernel import wu_lines as batched_wu_lines  # noqa: E402
 from algorithms.circles import midpoint_circle_pixels  # noqa: E402
 from algorithms.lines.bresenham import bresenham_pixels  # noqa: E402
 from algorithms.polygons import scanline_fill_many, scanline_pixels  # noqa: E402
@@ -168,20 +171,33 @@ def _line_figures(results, rng, repeats, count):
                  "skimage.line")
     wu_lines = lines[:max(200, count // 10)]
     wu_options = {"endpoints": "full"}
-    ratio = results.pair(f"{len(wu_lines)} Wu lines (generator)",
-                         lambda: [collections.deque(wu(p, wu_options), 0) for p in wu_lines],
-                         lambda: [cv2.line(canvas, p, q, 255, 1, cv2.LINE_AA)
-                                  for p, q in wu_lines], repeats, "cv2.line AA")
-    _kernel_target(results, "Wu lines", ratio, "no kernel yet: the generator")
+    cv2_wu = lambda: [cv2.line(canvas, p, q, 255, 1, cv2.LINE_AA)  # noqa: E731
+                      for p, q in wu_lines]
+    results.pair(f"{len(wu_lines)} Wu lines (generator)",
+                 lambda: [collections.deque(wu(p, wu_options), 0) for p in wu_lines], cv2_wu,
+                 repeats, "cv2.line AA")
+    wu_starts, wu_ends = ends[:len(wu_lines), 0], ends[:len(wu_lines), 1]
+
+    def wu_batched():
+        pixels, intensity, _ = batched_wu_lines(wu_starts, wu_ends)
+        canvas[pixels[:, 1], pixels[:, 0]] = intensity * 255
+
+    results.pair(f"{len(wu_lines)} Wu lines (batched kernel)", wu_batched, cv2_wu, repeats,
+                 "cv2.line AA")
+    # Intensities into the canvas as grey levels, as the peers leave it.
+    wu_drawn = lambda: draw_wu_lines(canvas, wu_starts, wu_ends)  # noqa: E731
+    wu_drawn()  # the first call compiles (or loads the compiled loop)
+    ratio = results.pair(f"{len(wu_lines)} Wu lines (into canvas, compiled)", wu_drawn, cv2_wu,
+                         repeats, "cv2.line AA")
+    _kernel_target(results, "Wu lines", ratio, "batched, compiled, into the canvas")
 
     def skimage_wu():
         for (x0, y0), (x1, y1) in wu_lines:
             rr, cc, val = line_aa(y0, x0, y1, x1)
             canvas[rr, cc] = val * 255
 
-    results.pair(f"{len(wu_lines)} Wu lines (generator)",
-                 lambda: [collections.deque(wu(p, wu_options), 0) for p in wu_lines],
-                 skimage_wu, repeats, "skimage.aa")
+    results.pair(f"{len(wu_lines)} Wu lines (into canvas, compiled)", wu_drawn, skimage_wu,
+                 repeats, "skimage.aa")
 
 
 def _circle_figures(results, rng, repeats):
@@ -203,22 +219,44 @@ def _circle_figures(results, rng, repeats):
         pixels, _ = midpoint_circles(centres, 10)
         canvas[pixels[:, 1], pixels[:, 0]] = 1
 
-    ratio = results.pair("1000 circles r = 10 (batched kernel)", batched, peer, repeats,
-                         "cv2.circle")
-    _kernel_target(results, "circles r = 10", ratio, "batched")
+    results.pair("1000 circles r = 10 (batched kernel)", batched, peer, repeats, "cv2.circle")
+    into_canvas = lambda: draw_midpoint_circles(canvas, centres, 10)  # noqa: E731
+    ratio = results.pair("1000 circles r = 10 (batched, into canvas)", into_canvas, peer,
+                         repeats, "cv2.circle")
+    _kernel_target(results, "circles r = 10", ratio, "batched, into the canvas")
 
     def skimage_circles():
         for x, y in centres:
             rr, cc = circle_perimeter(y, x, 10)
             canvas[rr, cc] = 1
 
-    results.pair("1000 circles r = 10 (batched kernel)", batched, skimage_circles, repeats,
-                 "skimage")
+    results.pair("1000 circles r = 10 (batched, into canvas)", into_canvas, skimage_circles,
+                 repeats, "skimage")
 
 
 def _flood_figure(results, side, repeats):
-    cv2 = _cv2()
     spec = registry.get("flood-fill")
+    contour, peer = _flood_scene(side)
+    results.pair(f"flood fill {side}^2, span order (recording)",
+                 lambda: spec.record([contour], {"order": "span"}, (side, side),
+                                     step_cap=50_000_000), peer, repeats, "cv2.floodFill")
+    # The kernel draws the outline itself and gives the filled raster; the
+    # seed is given, as cv2 is given it. It takes a millisecond, so --quick
+    # times it on the target's 1024^2 too. Its first call compiles (or
+    # loads the compiled code), so it runs once before the timing.
+    contour, peer = _flood_scene(SIZE)
+    options = spec.resolve({"seed": (SIZE // 2, SIZE // 2)})
+    kernel = lambda: spec.kernel([contour], options, (SIZE, SIZE))  # noqa: E731
+    kernel()
+    ratio = results.pair(f"flood fill {SIZE}^2 (kernel: outline + fill)", kernel, peer,
+                         max(repeats, 9), "cv2.floodFill")
+    _kernel_target(results, "flood fill", ratio, f"{SIZE}^2, span fill kernel")
+
+
+def _flood_scene(side):
+    """A square outline one pixel in from the grid's edges, and cv2's fill of
+    its inside (4-connected) from the centre, the outline drawn in already."""
+    cv2 = _cv2()
     contour = [(1, 1), (side - 2, 1), (side - 2, side - 2), (1, side - 2)]
     image = np.zeros((side, side), np.uint8)
     image[1, 1:side - 1] = image[side - 2, 1:side - 1] = 255
@@ -227,12 +265,7 @@ def _flood_figure(results, side, repeats):
     def peer():
         mask = np.zeros((side + 2, side + 2), np.uint8)
         cv2.floodFill(image.copy(), mask, (side // 2, side // 2), 128, flags=4)
-
-    ratio = results.pair(f"flood fill {side}^2, span order (recording)",
-                         lambda: spec.record([contour], {"order": "span"}, (side, side),
-                                             step_cap=50_000_000), peer, repeats,
-                         "cv2.floodFill")
-    _kernel_target(results, "flood fill", ratio, f"{side}^2, no kernel yet: recording")
+    return contour, peer
 
 
 # ---------------------------------------------------------------- recording

@@ -9,6 +9,7 @@ from .lines import AREA_OPTIONS, WU_OPTIONS, area_code, line_area, wu, wu_code
 from .shapes import POINTS, SEGMENT, explain_samples
 from .supersample import SUPERSAMPLE_OPTIONS, supersample, supersample_code
 from .temporal import TEMPORAL_OPTIONS, temporal, temporal_code
+from .wu_kernel import wu_pixels
 
 
 AA_NOTES = (
@@ -20,14 +21,15 @@ AA_NOTES = (
 
 
 def _register(name, title, summary, inputs, options, code, generator, notes=(), explain=None,
-              uses_grid=True):
+              uses_grid=True, kernel=None):
     """Register one method; ``code(points, options)`` returns its ``Code``."""
     def listing(points, options):
         return tuple(code(points, options).lines)
 
     register(AlgorithmSpec(name=name, title=title, family="antialias", summary=summary,
                            inputs=inputs, options=options, code=listing, generator=generator,
-                           notes=AA_NOTES + tuple(notes), explain=explain, uses_grid=uses_grid))
+                           notes=AA_NOTES + tuple(notes), explain=explain, uses_grid=uses_grid,
+                           kernel=kernel))
 
 
 _register("aa-supersample", "Supersampling", "n x n samples per pixel (grid, jittered, random "
@@ -53,6 +55,7 @@ _register("aa-filter", "Post-filtering (convolution)", "render aliased, then blu
                  "stairs but cannot recover detail the centres missed.",))
 _register("line-wu", "Xiaolin Wu's line", "two pixels per column along the minor axis, "
           "intensities 1 - f and f", SEGMENT, WU_OPTIONS, wu_code, wu, uses_grid=False,
+          kernel=wu_pixels,
           notes=("Whole-pixel endpoints as in the line family: the segment joins the two "
                  "end pixels' centres; e counts the fraction in units of 1/dx, exactly.",))
 _register("line-area", "Area-sampled line", "intensity = the area of the pixel square that "
