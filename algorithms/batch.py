@@ -14,10 +14,10 @@ import numpy as np
 from .circles import midpoint_circle_pixels
 
 
-def bresenham_lines(starts, ends, symmetric: bool = False):
-    """Bresenham's pixels of the segments starts[k] -> ends[k] (integer
-    (m, 2) arrays): ((n, 2) pixels, (n,) segment index), as
-    ``lines.bresenham_pixels`` gives them one segment at a time."""
+def octants(starts, ends):
+    """Each segment starts[k] -> ends[k] mapped into the first octant:
+    (starts as (m, 2) int64, steep, x step, y step, dx, dy), where dx is the
+    extent along the major axis and dy across it, both >= 0."""
     p = np.asarray(starts, np.int64).reshape(-1, 2)
     q = np.asarray(ends, np.int64).reshape(-1, 2)
     ddx, ddy = q[:, 0] - p[:, 0], q[:, 1] - p[:, 1]
@@ -25,6 +25,14 @@ def bresenham_lines(starts, ends, symmetric: bool = False):
     sx, sy = np.where(ddx >= 0, 1, -1), np.where(ddy >= 0, 1, -1)
     dx = np.where(steep, np.abs(ddy), np.abs(ddx))
     dy = np.where(steep, np.abs(ddx), np.abs(ddy))
+    return p, steep, sx, sy, dx, dy
+
+
+def bresenham_lines(starts, ends, symmetric: bool = False):
+    """Bresenham's pixels of the segments starts[k] -> ends[k] (integer
+    (m, 2) arrays): ((n, 2) pixels, (n,) segment index), as
+    ``lines.bresenham_pixels`` gives them one segment at a time."""
+    p, steep, sx, sy, dx, dy = octants(starts, ends)
     # Octant's unit steps: along the major axis and across it.
     major_x, major_y = np.where(steep, 0, sx), np.where(steep, sy, 0)
     minor_x, minor_y = np.where(steep, sx, 0), np.where(steep, 0, sy)

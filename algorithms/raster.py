@@ -105,3 +105,14 @@ def check_grid(width: int, height: int) -> None:
     if not (1 <= width <= MAX_GRID and 1 <= height <= MAX_GRID):
         raise ValueError(
             f"grid {width}x{height} is outside 1x1 .. {MAX_GRID}x{MAX_GRID}")
+
+
+def canvas_for(grid, canvas):
+    """The picture a batched fill writes into: ``canvas`` as given, checked
+    against the grid, or int32 zeros (coverage counts) when it is None."""
+    width, height = grid
+    if canvas is None:
+        return np.zeros((height, width), np.int32)
+    if canvas.shape != (height, width):
+        raise ValueError(f"the canvas is {canvas.shape}, the grid needs {(height, width)}")
+    return canvas

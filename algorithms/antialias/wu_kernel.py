@@ -14,6 +14,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from ..batch import octants
 from ..compiled import compiled
 
 
@@ -29,13 +30,7 @@ def wu_lines(starts, ends, endpoints: str = "full"):
     """Wu's lines starts[k] -> ends[k] (integer (m, 2) arrays): ((n, 2) pixels,
     (n,) intensities, (n,) segment index), segment after segment, each as
     ``wu_pixels`` gives it. ``endpoints`` "gap" halves the two end columns."""
-    p = np.asarray(starts, np.int64).reshape(-1, 2)
-    q = np.asarray(ends, np.int64).reshape(-1, 2)
-    ddx, ddy = q[:, 0] - p[:, 0], q[:, 1] - p[:, 1]
-    steep = np.abs(ddy) > np.abs(ddx)
-    sx, sy = np.where(ddx >= 0, 1, -1), np.where(ddy >= 0, 1, -1)
-    dx = np.where(steep, np.abs(ddy), np.abs(ddx))
-    dy = np.where(steep, np.abs(ddx), np.abs(ddy))
+    p, steep, sx, sy, dx, dy = octants(starts, ends)
     major = np.stack([np.where(steep, 0, sx), np.where(steep, sy, 0)], axis=1)
     minor = np.stack([np.where(steep, sx, 0), np.where(steep, 0, sy)], axis=1)
     segment = np.repeat(np.arange(len(p)), dx + 1)

@@ -14,6 +14,7 @@ from __future__ import annotations
 import numpy as np
 
 from algorithms.compiled import compiled
+from algorithms.raster import canvas_for
 from algorithms.registry import InputError
 
 from .common import HALF_PIXEL, MAX_COORDINATE, ONE
@@ -37,11 +38,7 @@ def scanline_fill_many(polygons, grid, canvas=None, value=None, options=None) ->
     rule = options.get("fill_rule", "evenodd")
     if rule not in RULES:
         raise InputError(f"unknown fill rule {rule!r}; choose evenodd or nonzero")
-    width, height = grid
-    if canvas is None:
-        canvas = np.zeros((height, width), np.int32)
-    if canvas.shape != (height, width):
-        raise ValueError(f"the canvas is {canvas.shape}, the grid needs {(height, width)}")
+    canvas = canvas_for(grid, canvas)
     add = value is None
     fill_value = canvas.dtype.type(1 if add else value)
     if options.get("arithmetic", "exact") != "exact":

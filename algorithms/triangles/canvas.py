@@ -15,6 +15,7 @@ import math
 import numpy as np
 
 from algorithms.compiled import compiled
+from algorithms.raster import canvas_for
 from algorithms.registry import InputError
 
 from .kernels import _spans_python, oriented, snap_array
@@ -34,11 +35,7 @@ def fill_canvas(points, grid, canvas=None, value=None, rule: str = "top-left",
     """
     if rule not in RULES:
         raise InputError(f"unknown fill rule {rule!r}; choose one of {', '.join(RULES)}")
-    width, height = grid
-    if canvas is None:
-        canvas = np.zeros((height, width), np.int32)
-    if canvas.shape != (height, width):
-        raise ValueError(f"the canvas is {canvas.shape}, the grid needs {(height, width)}")
+    canvas = canvas_for(grid, canvas)
     scale = 1 << subpixel_bits
     snapped = snap_array(points, scale)
     if len(snapped) % 3:
@@ -52,7 +49,7 @@ def fill_canvas(points, grid, canvas=None, value=None, rule: str = "top-left",
         far = np.asarray(points, np.float64).reshape(-1, 3, 2)[beyond]
         tris, _ = oriented(far, {"subpixel_bits": subpixel_bits, "cull": cull})
         for tri in tris:
-            _, y, x0, x1 = _spans_python(tri, 0, scale, rule, (0, 0, width, height))
+            _, y, x0, x1 = _spans_python(tri, 0, scale, rule, (0, 0, *grid))
             for row, start, end in zip(y.tolist(), x0.tolist(), x1.tolist()):
                 canvas[row, start:end] = canvas[row, start:end] + fill_value if add else fill_value
     return canvas

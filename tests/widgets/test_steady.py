@@ -20,7 +20,8 @@ class LayoutAsks(QObject):
         return False
 
 
-def test_a_caption_of_the_same_height_lays_nothing_out_a_taller_one_does(qtbot):
+def _shown_panel(qtbot) -> VariablesPanel:
+    """A variables panel on screen with a one-line caption, settled."""
     panel = VariablesPanel()
     qtbot.addWidget(panel)
     panel.resize(320, 420)
@@ -28,6 +29,11 @@ def test_a_caption_of_the_same_height_lays_nothing_out_a_taller_one_does(qtbot):
     qtbot.waitExposed(panel)
     panel.set_caption("<b>Step 1</b> of 90 · plots (1, 2)")
     qtbot.wait(20)
+    return panel
+
+
+def test_a_caption_of_the_same_height_lays_nothing_out_a_taller_one_does(qtbot):
+    panel = _shown_panel(qtbot)
     asks = LayoutAsks(panel)
     for k in range(2, 12):
         panel.set_caption(f"<b>Step {k}</b> of 90 · plots ({k}, 2) · branch <b>E</b>")
@@ -59,13 +65,7 @@ def test_the_step_counter_lays_nothing_out(qtbot):
 
 
 def test_a_new_style_sheet_gives_the_caption_the_room_it_asks(qtbot):
-    panel = VariablesPanel()
-    qtbot.addWidget(panel)
-    panel.resize(320, 420)
-    panel.show()
-    qtbot.waitExposed(panel)
-    panel.set_caption("<b>Step 1</b> of 90 · plots (1, 2)")
-    qtbot.wait(20)
+    panel = _shown_panel(qtbot)
     before = panel.caption.height()
     panel.setStyleSheet("QLabel#stepCaption { padding: 20px 0 20px 0; }")
     qtbot.waitUntil(lambda: panel.caption.height() >= before + 40, timeout=2000)
