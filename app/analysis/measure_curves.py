@@ -9,7 +9,8 @@ from algorithms.exact import circles as exact_circles
 from algorithms import registry
 from algorithms.steps import OP_NAMES
 
-from .counting import Rows, add_costs, median_seconds, op_counts, pixel_keys, written_count
+from .counting import (Rows, add_costs, median_seconds, op_counts, pixel_keys, timed,
+                       written_count)
 
 
 # =============================================================== lines
@@ -135,7 +136,6 @@ def measure_lines(settings, rows: Rows, rng, tick=lambda: None) -> None:
             totals = {"differing": 0, "gaps": 0, "duplicates": 0, "asymmetric": 0,
                       "pixels": 0, "columns": 0, "missed": 0, "extra": 0}
             worst = 0.0
-            kernel_seconds = 0.0
             for p, q in fits:
                 pixels = _line_pixels(spec, options, p, q)
                 errors = line_errors(p, q, pixels)
@@ -144,8 +144,8 @@ def measure_lines(settings, rows: Rows, rng, tick=lambda: None) -> None:
                     totals[key] += errors[key]
                 worst = max(worst, errors["max_deviation"])
                 totals["asymmetric"] += asymmetry(pixels, _line_pixels(spec, options, q, p))
-                kernel_seconds += median_seconds(lambda: _line_pixels(spec, options, p, q),
-                                                 settings.repeats)
+            kernel_seconds = median_seconds(
+                lambda: [_line_pixels(spec, options, p, q) for p, q in fits], settings.repeats)
             count = len(fits)
             add = lambda metric, value, unit="": rows.add(  # noqa: E731
                 "lines", "length sweep", name, variant, "length", length, metric, value, unit)
@@ -175,14 +175,15 @@ def _line_costs(settings, rows, specs, segments, length) -> None:
             continue
         counts = dict.fromkeys(OP_NAMES, 0)
         written = 0
-        seconds = 0.0
-        for p, q in fits[:settings.traced_segments]:
-            trace = spec.record((p, q), options)
+        traced = fits[:settings.traced_segments]
+        record = lambda: [spec.record((p, q), options) for p, q in traced]  # noqa: E731
+        traces, once = timed(record)
+        for trace in traces:
             for op, count in op_counts(trace).items():
                 counts[op] += count
             written += written_count(trace)
-            seconds += median_seconds(lambda: spec.record((p, q), options),
-                                      settings.generator_repeats)
+        del traces
+        seconds = median_seconds(record, settings.generator_repeats, once=once)
         add_costs(rows, "lines", "length sweep", name, variant, "length", length, counts,
                    written, seconds)
 
@@ -297,10 +298,10 @@ def measure_circles(settings, rows: Rows, rng, tick=lambda: None) -> None:
                     errors[metric], unit)
         for r in settings.circle_cost_radii:
             options = spec.resolve(circle_options(name, r))
-            trace = spec.record(((0, 0),), options)
+            trace, once = timed(lambda: spec.record(((0, 0),), options))
             written = written_count(trace)
             seconds = median_seconds(lambda: spec.record(((0, 0),), options),
-                                     settings.generator_repeats)
+                                     settings.generator_repeats, once=once)
             add_costs(rows, "circles", "radius sweep", name, variant, "radius", r,
                        op_counts(trace), written, seconds)
             if spec.kernel is not None:
