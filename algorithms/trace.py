@@ -38,6 +38,7 @@ from .raster import Raster
 from .steps import NO_PIXEL, PLOT, RICH_RECORDS, CodeLine, Span, Start, Step, Vars
 
 DEFAULT_STEP_CAP = 5_000_000
+NO_PIXELS = (NO_PIXEL, NO_PIXEL)  # x and y of a rich record without a pixel
 # The most steps any recording keeps, in the window and on the command line:
 # at about 22 bytes a step (README, "Performance") a trace stays near 1.1 GB.
 MAX_STEP_CAP = 50_000_000
@@ -242,10 +243,7 @@ class Trace:
             if kind is tuple:
                 self._record_lean(group)
             else:
-                for record in group:
-                    self._record_rich(record)
-                    if self._monitor is not None and self._monitor.cancelled:
-                        self._report()
+                self._record_rich(kind, group)
         self._flush()
         if self._count >= self.step_cap and next(frames, None) is not None:
             self.truncated = True
@@ -301,15 +299,30 @@ class Trace:
         if self._monitor.cancelled:
             self._report()  # raises Cancelled; progress keeps its interval
 
-    def _record_rich(self, record) -> None:
+    def _record_rich(self, kind: type, group) -> None:
+        """A run of rich records of one type; the checks and look-ups that
+        do not change within the run are made once for all of it."""
+        by_type = self._steps_by_type.get(kind)
+        if by_type is None or kind is Start:  # the type's first record: check it once
+            if not issubclass(kind, RICH_RECORDS) or issubclass(kind, Start):
+                raise TraceError(f"step {self._count}: {next(group)!r} is not a frame "
+                                 "steps.py allows here")
+            by_type = self._steps_by_type[kind] = []
+        pending, add, steps = self._pending, self._store.add, self._rich_steps
+        limit = min(self._chunk, PENDING_ROWS)
         index = self._count
-        if not isinstance(record, RICH_RECORDS) or isinstance(record, Start):
-            raise TraceError(f"step {index}: {record!r} is not a frame steps.py allows here")
-        pixel = getattr(record, "pixel", None) or (NO_PIXEL, NO_PIXEL)
-        self._pending.append((record.line, pixel[0], pixel[1]) + self._nans)
-        self._store_rich(index, record)
-        if len(self._pending) >= min(self._chunk, PENDING_ROWS):
-            self._flush()
+        for record in group:
+            x, y = record.pixel or NO_PIXELS
+            pending.append((record.line, x, y, *self._nans))
+            add(record)
+            steps.append(index)
+            by_type.append(index)
+            index += 1
+            if len(pending) >= limit:
+                self._flush()
+                pending = self._pending
+        if self._monitor is not None and self._monitor.cancelled:
+            self._report()
 
     def _flush(self) -> None:
         """The waiting frames to numpy and into the columns; report progress."""
