@@ -57,40 +57,55 @@ def line_errors(p, q, pixels) -> dict:
     pixels = np.asarray(pixels, np.int64).reshape(-1, 2)
     (x0, y0), (x1, y1) = p, q
     dx, dy = x1 - x0, y1 - y0
+    distinct, hit, columns = _nearest_hits(p, q, pixels)
+    xs, ys = pixels[:, 0] - x0, pixels[:, 1] - y0
+    if not len(pixels):
+        worst = 0.0
+    elif dx == 0 and dy == 0:
+        worst = float(np.hypot(xs, ys).max())
+    else:
+        # Dividing by the (positive) length keeps the order, so the largest
+        # |cross product| gives the largest distance, divided once.
+        worst = float(np.abs(dx * ys - dy * xs).max()) / math.sqrt(dx * dx + dy * dy)
+    # A repeated plot is a step of (0, 0), which is no gap either.
+    gaps = int(np.count_nonzero((np.abs(np.diff(pixels[:, 0])) > 1)
+                                | (np.abs(np.diff(pixels[:, 1])) > 1)))
+    return {"differing": (distinct - hit) + (columns - hit), "columns": columns,
+            "missed": columns - hit, "extra": distinct - hit, "max_deviation": worst,
+            "gaps": gaps, "duplicates": int(len(pixels) - distinct),
+            "pixels": int(len(pixels))}
+
+
+def differing_pixels(p, q, pixels) -> int:
+    """``line_errors(p, q, pixels)["differing"]`` alone."""
+    distinct, hit, columns = _nearest_hits(p, q, np.asarray(pixels, np.int64).reshape(-1, 2))
+    return (distinct - hit) + (columns - hit)
+
+
+def _nearest_hits(p, q, pixels) -> tuple[int, int, int]:
+    """(distinct pixels, columns holding a nearest pixel, columns) of a
+    line's (n, 2) int64 pixels against the exact nearest-pixel line of PQ."""
+    (x0, y0), (x1, y1) = p, q
+    dx, dy = x1 - x0, y1 - y0
     # Sort-based deduplication of the keys (np.unique's return_index sorts
     # the indices too, several times slower); the position along and across
     # the line depends only on the pixel, so distinct pixels are enough.
-    distinct = distinct_pixels(pixels)
+    keys = _distinct_keys(pixels)
+    xs, ys = (keys >> 32) - ((1 << 30) + x0), (keys & 0xFFFFFFFF) - ((1 << 30) + y0)
     if abs(dx) >= abs(dy):
-        along, v_d, n, m = distinct[:, 0] - x0, distinct[:, 1] - y0, dx, dy
+        along, v_d, n, m = xs, ys, dx, dy
     else:
-        along, v_d, n, m = distinct[:, 1] - y0, distinct[:, 0] - x0, dy, dx
-    sign = 1 if n >= 0 else -1
-    u_d, big_n = along * sign, abs(n)
+        along, v_d, n, m = ys, xs, dy, dx
+    u_d, big_n = along if n >= 0 else -along, abs(n)
     if big_n == 0:
         ok = (u_d == 0) & (v_d == 0)
     else:
-        product = m * u_d
-        low = product // big_n
-        remainder = product - low * big_n
+        low, remainder = np.divmod(m * u_d, big_n)
         nearest = low + (2 * remainder >= big_n)
         tie = 2 * remainder == big_n
         ok = (u_d >= 0) & (u_d <= big_n) & ((v_d == nearest) | (tie & (v_d == low)))
     hit = int(np.count_nonzero(np.bincount(u_d[ok], minlength=1)))  # 0 <= u_d <= N where ok
-    differing = (len(distinct) - hit) + (big_n + 1 - hit)
-    cross = dx * (pixels[:, 1] - y0) - dy * (pixels[:, 0] - x0)
-    if dx == 0 and dy == 0:
-        deviation = np.hypot(pixels[:, 0] - x0, pixels[:, 1] - y0)
-    else:
-        deviation = np.abs(cross) / math.sqrt(dx * dx + dy * dy)
-    step = np.diff(pixels, axis=0)
-    moved = step[np.any(step != 0, axis=1)]
-    gaps = int(np.count_nonzero(np.abs(moved).max(axis=1) > 1)) if len(moved) else 0
-    return {"differing": int(differing), "columns": big_n + 1, "missed": big_n + 1 - hit,
-            "extra": len(distinct) - hit,
-            "max_deviation": float(deviation.max()) if len(deviation) else 0.0,
-            "gaps": gaps, "duplicates": int(len(pixels) - len(distinct)),
-            "pixels": int(len(pixels))}
+    return len(keys), hit, big_n + 1
 
 
 def _distinct_keys(pixels) -> np.ndarray:
@@ -203,9 +218,9 @@ def _dda_threshold(settings, rows, rng) -> None:
             differing = 0
             for _ in range(settings.dda_segments):
                 p, q = random_segment(rng, int(length))
-                errors = line_errors(p, q, spec.kernel((p, q), options))
-                wrong += errors["differing"] > 0
-                differing += errors["differing"]
+                count = differing_pixels(p, q, spec.kernel((p, q), options))
+                wrong += count > 0
+                differing += count
             if wrong and first is None:
                 first = int(length)
             add = lambda metric, v, unit="": rows.add(  # noqa: E731
