@@ -237,13 +237,14 @@ class Trace:
         self._pending = [(start.line, NO_PIXEL, NO_PIXEL) + self._nans]
         self._store_rich(0, start)
         capped = islice(frames, self.step_cap - 1)
-        # groupby(type) sets the rare rich records aside without a
-        # Python-level test per frame.
-        for kind, group in groupby(capped, type):
-            if kind is tuple:
+        # groupby sets the rich records aside without a Python-level test
+        # per frame; its key (a C-level isinstance) puts consecutive rich
+        # records of any types in one run.
+        for lean, group in groupby(capped, tuple.__instancecheck__):
+            if lean:
                 self._record_lean(group)
             else:
-                self._record_rich(kind, group)
+                self._record_rich(group)
         self._flush()
         if self._count >= self.step_cap and next(frames, None) is not None:
             self.truncated = True
@@ -299,24 +300,25 @@ class Trace:
         if self._monitor.cancelled:
             self._report()  # raises Cancelled; progress keeps its interval
 
-    def _record_rich(self, kind: type, group) -> None:
-        """A run of rich records of one type; the checks and look-ups that
-        do not change within the run are made once for all of it."""
-        by_type = self._steps_by_type.get(kind)
-        if by_type is None or kind is Start:  # the type's first record: check it once
-            if not issubclass(kind, RICH_RECORDS) or issubclass(kind, Start):
-                raise TraceError(f"step {self._count}: {next(group)!r} is not a frame "
-                                 "steps.py allows here")
-            by_type = self._steps_by_type[kind] = []
+    def _record_rich(self, group) -> None:
+        """A run of rich records; a record type is checked at its first record."""
+        by_type = self._steps_by_type
         pending, add, steps = self._pending, self._store.add, self._rich_steps
         limit = min(self._chunk, PENDING_ROWS)
         index = self._count
         for record in group:
+            kind = type(record)
+            of_kind = by_type.get(kind)
+            if of_kind is None or kind is Start:
+                if not issubclass(kind, RICH_RECORDS) or issubclass(kind, Start):
+                    raise TraceError(f"step {index}: {record!r} is not a frame "
+                                     "steps.py allows here")
+                of_kind = by_type[kind] = []
             x, y = record.pixel or NO_PIXELS
             pending.append((record.line, x, y, *self._nans))
             add(record)
             steps.append(index)
-            by_type.append(index)
+            of_kind.append(index)
             index += 1
             if len(pending) >= limit:
                 self._flush()
