@@ -298,6 +298,7 @@ class Trace:
         that way, and go straight to numpy."""
         if len(self._nans) < 2:
             return np.fromiter(islice(group, size), self._dtype)
+        size = min(size, PENDING_ROWS)  # the parts and their join: under 1 MB at a time
         parts, filled = [], 0
         while filled < size:
             part = list(islice(group, min(LEAN_ROWS, size - filled)))
