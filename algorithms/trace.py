@@ -326,6 +326,7 @@ class Trace:
         by_type = self._steps_by_type
         pending, add, steps = self._pending, self._store.add, self._rich_steps
         limit = min(self._chunk, PENDING_ROWS)
+        monitor = self._monitor
         index = self._count
         for record in group:
             kind = type(record)
@@ -344,8 +345,8 @@ class Trace:
             if len(pending) >= limit:
                 self._flush()
                 pending = self._pending
-        if self._monitor is not None and self._monitor.cancelled:
-            self._report()
+            if monitor is not None and monitor.cancelled:
+                self._report()  # raises Cancelled: heard after any record
 
     def _flush(self) -> None:
         """The waiting frames to numpy and into the columns; report progress."""
