@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import collections
 import gc
+import math
 import os
 import random
 import statistics
@@ -292,12 +293,18 @@ def recording(results, quick: bool) -> None:
         spec = registry.get(name)
         points, options = make(side)
         grid = (side, side)
-        ours = lambda: spec.record(points, options, grid, step_cap=50_000_000)  # noqa: E731
-        bare = lambda: collections.deque(spec.frames(points, options, grid), 0)  # noqa: E731
-        ratio = results.pair(f"record {label} / bare generator", ours, bare, repeats,
+        record = lambda: spec.record(points, options, grid, step_cap=50_000_000)  # noqa: E731
+        run = lambda: collections.deque(spec.frames(points, options, grid), 0)  # noqa: E731
+        # A run of a few milliseconds is repeated within each sample (both
+        # sides alike), so that one preemption does not decide a pair.
+        times = min(1000, max(1, math.ceil(0.03 / _timed(run))))
+        ours = lambda: [record() for _ in range(times)]  # noqa: E731
+        bare = lambda: [run() for _ in range(times)]  # noqa: E731
+        each = f" ({times} runs a sample)" if times > 1 else ""
+        ratio = results.pair(f"record {label} / bare generator{each}", ours, bare, repeats,
                              "generator")
         results.target(f"recording {label} / bare generator", ratio, 2.0, "x")
-        kept, peak, steps = _memory(ours)
+        kept, peak, steps = _memory(record)
         print(f"{'  kept per step':<44} {kept / steps:9.1f} B  peak/kept {peak / kept:5.2f}"
               f"  ({steps:,} steps)")
         results.target(f"bytes kept per step, {label}", kept / steps, 64, "B")

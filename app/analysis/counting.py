@@ -115,15 +115,22 @@ def pixel_keys(pixels: np.ndarray) -> np.ndarray:
 
 
 # ============================================================= timing
-def median_seconds(call: Callable[[], object], repeats: int = 5, least: float = 0.002) -> float:
+def median_seconds(call: Callable[[], object], repeats: int = 5, least: float = 0.002,
+                   once: float | None = None) -> float:
     """Median time of one call, over ``repeats`` samples.
 
     A sample repeats the call until it has run ``least`` seconds (for
-    calls far shorter than the clock's resolution) and divides.
+    calls far shorter than the clock's resolution) and divides. ``once``
+    is the time of a call already made (the run whose counts were taken,
+    say), which then stands for the warm-up call that sizes the samples.
+    The measures time one call over all the inputs of a sweep (a pass
+    over its segments or shapes) rather than each input alone, so that
+    short inputs do not each pay ``least`` seconds per sample.
     """
-    start = time.perf_counter()
-    call()
-    once = time.perf_counter() - start
+    if once is None:
+        start = time.perf_counter()
+        call()
+        once = time.perf_counter() - start
     inner = max(1, min(1000, int(least / max(once, 1e-9))))
     samples = []
     for _ in range(max(1, repeats)):
@@ -132,6 +139,13 @@ def median_seconds(call: Callable[[], object], repeats: int = 5, least: float = 
             call()
         samples.append((time.perf_counter() - start) / inner)
     return float(np.median(samples))
+
+
+def timed(call: Callable[[], object]) -> tuple[object, float]:
+    """What ``call()`` returns, and the seconds it took."""
+    start = time.perf_counter()
+    result = call()
+    return result, time.perf_counter() - start
 
 
 def pareto_front(points: Iterable[tuple[float, float, object]]) -> list:

@@ -30,9 +30,12 @@ Cost per pixel divides by the pixels the run wrote (duplicates included);
 float_add, mul, div, sqrt, round, compare); pixels_tested and samples are
 kept apart.
 
-Timings are the median of repeats (``time.perf_counter``) of one call of
+Timings are the median of repeats (``time.perf_counter``) of one pass of
 the fast kernel, where the algorithm has one, and of recording the
-generator into a Trace (``AlgorithmSpec.record``).
+generator into a Trace (``AlgorithmSpec.record``), over all the inputs of
+a sweep point (its segments, shapes or triangles) at once; divided by the
+pixels of that pass, as the counts are. The pass whose traces give the
+counts is the warm-up that sizes the timed samples.
 """
 from __future__ import annotations
 

@@ -11,7 +11,8 @@ from algorithms import registry
 from algorithms.errors import InputError
 from algorithms.steps import OP_NAMES
 
-from .counting import Rows, add_costs, median_seconds, op_counts, pixel_keys, written_count
+from .counting import (Rows, add_costs, median_seconds, op_counts, pixel_keys, timed,
+                       written_count)
 
 
 # ================================================== exact coverage (oracle)
@@ -161,12 +162,14 @@ def measure_precision(settings, rows: Rows, rng, tick=lambda: None) -> None:
                 add = lambda metric, v, unit="": rows.add(  # noqa: E731
                     family, "precision", spec.name, variant, "magnitude", magnitude,
                     metric, v, unit)
+                run = lambda: [_run_shape(spec, family, shape, options, bits,  # noqa: E731
+                                          window) for shape in shapes]
                 try:
-                    masks = [_mask_of(_run_shape(spec, family, shape, options, bits, window),
-                                      window) for shape in shapes]
+                    covers, once = timed(run)
                 except InputError:
                     add("rejected", 1)
                     continue
+                masks = [_mask_of(cover, window) for cover in covers]
                 versus_truth = sum(int(np.count_nonzero((m > 0) != t))
                                    for m, t in zip(masks, exact_truth))
                 versus_snapped = sum(int(np.count_nonzero((m > 0) != t))
@@ -180,9 +183,7 @@ def measure_precision(settings, rows: Rows, rng, tick=lambda: None) -> None:
                 add("overlaps", flaws["overlaps"], "px")
                 add("cracks", flaws["cracks"], "px")
                 add("covered pixels", truth_pixels, "px")
-                seconds = median_seconds(
-                    lambda: [_run_shape(spec, family, shape, options, bits, window)
-                             for shape in shapes], settings.repeats)
+                seconds = median_seconds(run, settings.repeats, once=once)
                 add("kernel time", 1e9 * seconds / max(1, truth_pixels), "ns/px")
                 if magnitude == settings.magnitudes[0]:
                     _precision_costs(settings, rows, family, spec, variant, options, bits,
@@ -195,20 +196,20 @@ def _precision_costs(settings, rows, family, spec, variant, options, bits, shape
     """Operation counts and generator time of the mesh, one shape at a time."""
     counts = dict.fromkeys(OP_NAMES, 0)
     written = 0
-    seconds = 0.0
     size = (window[2] + 1, window[3] + 1)
-    for shape in shapes:
-        if family == "triangles":
-            points, resolved = list(shape), spec.resolve(options)
-        else:
-            points = ([(float(snapped(x, bits)), float(snapped(y, bits))) for x, y in shape],)
-            resolved = spec.resolve(options)
-        trace = spec.record(points, resolved, size)
+    resolved = spec.resolve(options)
+    if family == "triangles":
+        inputs = [list(shape) for shape in shapes]
+    else:
+        inputs = [([(float(snapped(x, bits)), float(snapped(y, bits))) for x, y in shape],)
+                  for shape in shapes]
+    record = lambda: [spec.record(points, resolved, size) for points in inputs]  # noqa: E731
+    traces, once = timed(record)
+    for trace in traces:
         for op, count in op_counts(trace).items():
             counts[op] += count
         written += written_count(trace)
-        seconds += median_seconds(lambda: spec.record(points, resolved, size),
-                                  settings.generator_repeats)
+    seconds = median_seconds(record, settings.generator_repeats, once=once)
     add_costs(rows, family, "precision", spec.name, variant, "magnitude", magnitude, counts,
                written, seconds)
 
@@ -257,21 +258,23 @@ def measure_traversal(settings, rows: Rows, rng, tick=lambda: None) -> None:
             tested = filled = 0
             counts = dict.fromkeys(OP_NAMES, 0)
             written = 0
-            seconds = kernel_seconds = 0.0
-            for triangle in cases:
-                points = [p for p in triangle]
-                trace = spec.record(points, options, grid)
+            inputs = [list(triangle) for triangle in cases]
+            record = lambda: [spec.record(points, options, grid)  # noqa: E731
+                              for points in inputs]
+            traces, once = timed(record)
+            for trace in traces:
                 final = trace.final_variables()
                 tested += int(final["tested"])
                 filled += int(final["filled"])
                 for op, count in op_counts(trace).items():
                     counts[op] += count
                 written += written_count(trace)
-                seconds += median_seconds(lambda: spec.record(points, options, grid),
-                                          settings.generator_repeats)
-                if spec.kernel is not None:
-                    kernel_seconds += median_seconds(lambda: spec.kernel(points, options, grid),
-                                                     settings.repeats)
+            del traces
+            seconds = median_seconds(record, settings.generator_repeats, once=once)
+            if spec.kernel is not None:
+                kernel_seconds = median_seconds(
+                    lambda: [spec.kernel(points, options, grid) for points in inputs],
+                    settings.repeats)
             add = lambda metric, v, unit="": rows.add(  # noqa: E731
                 "triangles", "traversal", name, name.removeprefix("triangle-"), "shape", shape,
                 metric, v, unit)
@@ -310,25 +313,23 @@ def _polygon_traversal(settings, rows, rng) -> None:
         for shape, cases in shapes.items():
             counts = dict.fromkeys(OP_NAMES, 0)
             written = 0
-            seconds = kernel_seconds = 0.0
-            done = 0
+            inputs = []
             for polygon in cases:
-                points = (polygon,)
                 try:
-                    trace = spec.record(points, options, (size, size))
+                    trace = spec.record((polygon,), options, (size, size))
                 except InputError:
                     continue  # a star is not convex: polygon-convex refuses it
-                done += 1
+                inputs.append((polygon,))
                 for op, count in op_counts(trace).items():
                     counts[op] += count
                 written += written_count(trace)
-                seconds += median_seconds(lambda: spec.record(points, options, (size, size)),
-                                          settings.generator_repeats)
-                if spec.kernel is not None:
-                    kernel_seconds += median_seconds(lambda: spec.kernel(points, options),
-                                                     settings.repeats)
-            if not done:
+            if not inputs:
                 continue
+            seconds = median_seconds(lambda: [spec.record(points, options, (size, size))
+                                              for points in inputs], settings.generator_repeats)
+            if spec.kernel is not None:
+                kernel_seconds = median_seconds(
+                    lambda: [spec.kernel(points, options) for points in inputs], settings.repeats)
             variant = name.removeprefix("polygon-")
             add_costs(rows, "polygons", "traversal", name, variant, "shape", shape, counts,
                        written, seconds)
@@ -350,11 +351,11 @@ def measure_fill(settings, rows: Rows, rng, tick=lambda: None) -> None:
         for connectivity in ("4", "8"):
             options = spec.resolve({"order": order, "connectivity": connectivity,
                                     "outline": "4" if connectivity == "8" else "8"})
-            trace = spec.record((outline,), options, (size, size))
+            trace, once = timed(lambda: spec.record((outline,), options, (size, size)))
             final = trace.final_variables()
             filled = int(final["filled"])
             seconds = median_seconds(lambda: spec.record((outline,), options, (size, size)),
-                                     settings.generator_repeats)
+                                     settings.generator_repeats, once=once)
             variant = f"{order}, {connectivity}-connected"
             add = lambda metric, v, unit="": rows.add(  # noqa: E731
                 "fill", "disc", "flood-fill", variant, "radius", r, metric, v, unit)

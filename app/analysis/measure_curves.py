@@ -9,7 +9,8 @@ from algorithms.exact import circles as exact_circles
 from algorithms import registry
 from algorithms.steps import OP_NAMES
 
-from .counting import Rows, add_costs, median_seconds, op_counts, pixel_keys, written_count
+from .counting import (Rows, add_costs, median_seconds, op_counts, pixel_keys, timed,
+                       written_count)
 
 
 # =============================================================== lines
@@ -56,46 +57,63 @@ def line_errors(p, q, pixels) -> dict:
     pixels = np.asarray(pixels, np.int64).reshape(-1, 2)
     (x0, y0), (x1, y1) = p, q
     dx, dy = x1 - x0, y1 - y0
+    distinct, hit, columns = _nearest_hits(p, q, pixels)
+    xs, ys = pixels[:, 0] - x0, pixels[:, 1] - y0
+    if not len(pixels):
+        worst = 0.0
+    elif dx == 0 and dy == 0:
+        worst = float(np.hypot(xs, ys).max())
+    else:
+        # Dividing by the (positive) length keeps the order, so the largest
+        # |cross product| gives the largest distance, divided once.
+        worst = float(np.abs(dx * ys - dy * xs).max()) / math.sqrt(dx * dx + dy * dy)
+    # A repeated plot is a step of (0, 0), which is no gap either.
+    gaps = int(np.count_nonzero((np.abs(np.diff(pixels[:, 0])) > 1)
+                                | (np.abs(np.diff(pixels[:, 1])) > 1)))
+    return {"differing": (distinct - hit) + (columns - hit), "columns": columns,
+            "missed": columns - hit, "extra": distinct - hit, "max_deviation": worst,
+            "gaps": gaps, "duplicates": int(len(pixels) - distinct),
+            "pixels": int(len(pixels))}
+
+
+def differing_pixels(p, q, pixels) -> int:
+    """``line_errors(p, q, pixels)["differing"]`` alone."""
+    distinct, hit, columns = _nearest_hits(p, q, np.asarray(pixels, np.int64).reshape(-1, 2))
+    return (distinct - hit) + (columns - hit)
+
+
+def _nearest_hits(p, q, pixels) -> tuple[int, int, int]:
+    """(distinct pixels, columns holding a nearest pixel, columns) of a
+    line's (n, 2) int64 pixels against the exact nearest-pixel line of PQ."""
+    (x0, y0), (x1, y1) = p, q
+    dx, dy = x1 - x0, y1 - y0
     # Sort-based deduplication of the keys (np.unique's return_index sorts
     # the indices too, several times slower); the position along and across
     # the line depends only on the pixel, so distinct pixels are enough.
-    distinct = distinct_pixels(pixels)
+    keys = _distinct_keys(pixels)
+    xs, ys = (keys >> 32) - ((1 << 30) + x0), (keys & 0xFFFFFFFF) - ((1 << 30) + y0)
     if abs(dx) >= abs(dy):
-        along, v_d, n, m = distinct[:, 0] - x0, distinct[:, 1] - y0, dx, dy
+        along, v_d, n, m = xs, ys, dx, dy
     else:
-        along, v_d, n, m = distinct[:, 1] - y0, distinct[:, 0] - x0, dy, dx
-    sign = 1 if n >= 0 else -1
-    u_d, big_n = along * sign, abs(n)
+        along, v_d, n, m = ys, xs, dy, dx
+    u_d, big_n = along if n >= 0 else -along, abs(n)
     if big_n == 0:
         ok = (u_d == 0) & (v_d == 0)
     else:
-        product = m * u_d
-        low = product // big_n
-        remainder = product - low * big_n
+        low, remainder = np.divmod(m * u_d, big_n)
         nearest = low + (2 * remainder >= big_n)
         tie = 2 * remainder == big_n
         ok = (u_d >= 0) & (u_d <= big_n) & ((v_d == nearest) | (tie & (v_d == low)))
     hit = int(np.count_nonzero(np.bincount(u_d[ok], minlength=1)))  # 0 <= u_d <= N where ok
-    differing = (len(distinct) - hit) + (big_n + 1 - hit)
-    cross = dx * (pixels[:, 1] - y0) - dy * (pixels[:, 0] - x0)
-    if dx == 0 and dy == 0:
-        deviation = np.hypot(pixels[:, 0] - x0, pixels[:, 1] - y0)
-    else:
-        deviation = np.abs(cross) / math.sqrt(dx * dx + dy * dy)
-    step = np.diff(pixels, axis=0)
-    moved = step[np.any(step != 0, axis=1)]
-    gaps = int(np.count_nonzero(np.abs(moved).max(axis=1) > 1)) if len(moved) else 0
-    return {"differing": int(differing), "columns": big_n + 1, "missed": big_n + 1 - hit,
-            "extra": len(distinct) - hit,
-            "max_deviation": float(deviation.max()) if len(deviation) else 0.0,
-            "gaps": gaps, "duplicates": int(len(pixels) - len(distinct)),
-            "pixels": int(len(pixels))}
+    return len(keys), hit, big_n + 1
 
 
 def _distinct_keys(pixels) -> np.ndarray:
     """The sorted distinct keys of some pixels (np.unique's hash table is
-    many times slower on these keys than one sort)."""
-    keys = np.sort(pixel_keys(pixels))
+    many times slower on these keys than one sort). The stable sort is a
+    merge of runs: a curve's pixels come in long ascending or descending
+    runs of keys, which it sorts in about linear time."""
+    keys = np.sort(pixel_keys(pixels), kind="stable")
     return keys[np.concatenate([[True], keys[1:] != keys[:-1]])] if len(keys) else keys
 
 
@@ -110,7 +128,7 @@ def asymmetry(forward, backward) -> int:
     # Sort-based: each side's distinct keys, then both sorted together; a
     # key of both sides shows up twice, next to itself.
     both = np.concatenate([_distinct_keys(forward), _distinct_keys(backward)])
-    both.sort()
+    both.sort(kind="stable")  # two sorted runs: merged in linear time
     return int(len(both) - 2 * np.count_nonzero(both[1:] == both[:-1]))
 
 
@@ -135,7 +153,6 @@ def measure_lines(settings, rows: Rows, rng, tick=lambda: None) -> None:
             totals = {"differing": 0, "gaps": 0, "duplicates": 0, "asymmetric": 0,
                       "pixels": 0, "columns": 0, "missed": 0, "extra": 0}
             worst = 0.0
-            kernel_seconds = 0.0
             for p, q in fits:
                 pixels = _line_pixels(spec, options, p, q)
                 errors = line_errors(p, q, pixels)
@@ -144,8 +161,8 @@ def measure_lines(settings, rows: Rows, rng, tick=lambda: None) -> None:
                     totals[key] += errors[key]
                 worst = max(worst, errors["max_deviation"])
                 totals["asymmetric"] += asymmetry(pixels, _line_pixels(spec, options, q, p))
-                kernel_seconds += median_seconds(lambda: _line_pixels(spec, options, p, q),
-                                                 settings.repeats)
+            kernel_seconds = median_seconds(
+                lambda: [_line_pixels(spec, options, p, q) for p, q in fits], settings.repeats)
             count = len(fits)
             add = lambda metric, value, unit="": rows.add(  # noqa: E731
                 "lines", "length sweep", name, variant, "length", length, metric, value, unit)
@@ -175,14 +192,15 @@ def _line_costs(settings, rows, specs, segments, length) -> None:
             continue
         counts = dict.fromkeys(OP_NAMES, 0)
         written = 0
-        seconds = 0.0
-        for p, q in fits[:settings.traced_segments]:
-            trace = spec.record((p, q), options)
+        traced = fits[:settings.traced_segments]
+        record = lambda: [spec.record((p, q), options) for p, q in traced]  # noqa: E731
+        traces, once = timed(record)
+        for trace in traces:
             for op, count in op_counts(trace).items():
                 counts[op] += count
             written += written_count(trace)
-            seconds += median_seconds(lambda: spec.record((p, q), options),
-                                      settings.generator_repeats)
+        del traces
+        seconds = median_seconds(record, settings.generator_repeats, once=once)
         add_costs(rows, "lines", "length sweep", name, variant, "length", length, counts,
                    written, seconds)
 
@@ -200,9 +218,9 @@ def _dda_threshold(settings, rows, rng) -> None:
             differing = 0
             for _ in range(settings.dda_segments):
                 p, q = random_segment(rng, int(length))
-                errors = line_errors(p, q, spec.kernel((p, q), options))
-                wrong += errors["differing"] > 0
-                differing += errors["differing"]
+                count = differing_pixels(p, q, spec.kernel((p, q), options))
+                wrong += count > 0
+                differing += count
             if wrong and first is None:
                 first = int(length)
             add = lambda metric, v, unit="": rows.add(  # noqa: E731
@@ -297,10 +315,10 @@ def measure_circles(settings, rows: Rows, rng, tick=lambda: None) -> None:
                     errors[metric], unit)
         for r in settings.circle_cost_radii:
             options = spec.resolve(circle_options(name, r))
-            trace = spec.record(((0, 0),), options)
+            trace, once = timed(lambda: spec.record(((0, 0),), options))
             written = written_count(trace)
             seconds = median_seconds(lambda: spec.record(((0, 0),), options),
-                                     settings.generator_repeats)
+                                     settings.generator_repeats, once=once)
             add_costs(rows, "circles", "radius sweep", name, variant, "radius", r,
                        op_counts(trace), written, seconds)
             if spec.kernel is not None:

@@ -8,7 +8,7 @@ import numpy as np
 from algorithms import registry
 from algorithms.errors import InputError
 
-from .counting import Rows, add_costs, median_seconds, op_counts, written_count
+from .counting import Rows, add_costs, median_seconds, op_counts, timed, written_count
 from .measure_areas import snapped
 
 
@@ -49,9 +49,9 @@ def measure_interpolation(settings, rows: Rows, rng, tick=lambda: None) -> None:
     for spec, variant, options in ((affine, "affine", {"s": s}),
                                    (perspective, "perspective-correct", {"s": s, "w": (1.0, 4.0, 2.5)})):
         resolved = spec.resolve(options)
-        trace = spec.record(list(triangle), resolved, (size, size))
+        trace, once = timed(lambda: spec.record(list(triangle), resolved, (size, size)))
         seconds = median_seconds(lambda: spec.record(list(triangle), resolved, (size, size)),
-                                 settings.generator_repeats)
+                                 settings.generator_repeats, once=once)
         add_costs(rows, "interpolation", "cost", spec.name, variant, "triangle", "one",
                    op_counts(trace), written_count(trace), seconds)
     _depth_precision(settings, rows)
@@ -140,10 +140,10 @@ def measure_antialias(settings, rows: Rows, rng, tick=lambda: None) -> None:
         for filter_name in antialias.FILTERS:
             for n in settings.aa_samples:
                 options = {"pattern": pattern, "filter": filter_name, "n": n}
-                coverage, _ = antialias.supersample_image(points, options, grid, colors=False)
-                seconds = median_seconds(
-                    lambda: antialias.supersample_image(points, options, grid, colors=False),
-                    settings.repeats)
+                image = lambda: antialias.supersample_image(  # noqa: E731
+                    points, options, grid, colors=False)
+                (coverage, _), once = timed(image)
+                seconds = median_seconds(image, settings.repeats, once=once)
                 error = coverage - reference
                 add = lambda metric, v, unit="": rows.add(  # noqa: E731
                     "antialiasing", "supersampling", "aa-supersample",
@@ -158,12 +158,12 @@ def measure_antialias(settings, rows: Rows, rng, tick=lambda: None) -> None:
     if hasattr(antialias, "adaptive_image"):
         for depth in settings.aa_depths:
             options = {"max_depth": depth}
+            image = lambda: antialias.adaptive_image(points, options, grid)  # noqa: E731
             try:
-                coverage, spent = antialias.adaptive_image(points, options, grid)
+                (coverage, spent), once = timed(image)
             except InputError:
                 continue
-            seconds = median_seconds(lambda: antialias.adaptive_image(points, options, grid),
-                                     settings.generator_repeats)
+            seconds = median_seconds(image, settings.generator_repeats, once=once)
             error = coverage - reference
             add = lambda metric, v, unit="": rows.add(  # noqa: E731
                 "antialiasing", "adaptive", "aa-adaptive", "adaptive", "max depth", depth,

@@ -2,7 +2,8 @@
 import numpy as np
 import pytest
 
-from algorithms.trace import Cancelled, RecordMonitor
+from algorithms.steps import CALC, CodeLine, Note, Start, Vars
+from algorithms.trace import Cancelled, RecordMonitor, Trace
 from tests.support import record
 
 STEPS = 100_000
@@ -46,3 +47,24 @@ def test_a_monitor_cancelled_before_the_start_records_nothing_long():
     with pytest.raises(Cancelled, match=r"cancelled (between two steps|after (\d{1,3}|1,\d{3}) "
                                         r"steps)"):
         record(*LINE, grid=GRID, monitor=monitor)
+
+
+def test_a_cancel_is_heard_within_a_run_of_rich_records():
+    # Rich records only (as the scan-line fill yields): the cancel, made
+    # here by the run itself as another thread would, stops the recording
+    # after the record during which it came, long before a report is due.
+    monitor = RecordMonitor(every=1_000_000)
+    yielded = []
+
+    def frames():
+        yield Start(line=0, values=())
+        for k in range(100_000):
+            if k == 50:
+                monitor.cancel()
+            yielded.append(k)
+            yield Vars(line=1, values={"k": k}) if k % 2 else Note(line=1, text=str(k))
+
+    code = (CodeLine("start"), CodeLine("set", CALC))
+    with pytest.raises(Cancelled):
+        Trace.record(frames(), code, 8, 8, monitor=monitor)
+    assert len(yielded) <= 52

@@ -1,12 +1,14 @@
 """Lean storage of a trace: grown columns, pickled batches of rich records, the peak."""
 import math
+import pickle
 import tracemalloc
+from dataclasses import fields
 
 import numpy as np
 import pytest
 
 from algorithms import trace_store
-from algorithms.steps import CALC, PLOT, CodeLine, Note, Start, Vars
+from algorithms.steps import CALC, NO_PIXEL, PLOT, CodeLine, Note, Span, Start, Table, Vars
 from algorithms.trace import Trace
 from algorithms.trace_store import Columns, Records
 
@@ -88,3 +90,37 @@ def test_recording_peak_stays_well_under_twice_what_is_kept():
     assert kept >= trace.nbytes()
     # Growth by a quarter and one chunk on top; joining chunks at the end took 2.4x.
     assert (peak - base) < 1.6 * kept
+
+
+RICH = [Start(line=0, values=("v", "w"), constants={"a": 1}, pixel_value="v", replaces=True),
+        Vars(line=2, values={"k": 3, "q": 0.5}, pixel=(4, 5)),
+        Table(line=2, name="AET", columns=("x", "dx"), rows=((1, 0.5), (2, -1.0)), pixel=(1, 2)),
+        Note(line=2, text="a note", pixel=(7, 8), brief=True),
+        Span(line=1, y=3, x_start=2, x_end=9, value=12.0)]
+
+
+@pytest.mark.parametrize("record", RICH, ids=lambda r: type(r).__name__)
+def test_rich_records_pickle_to_equal_records(record):
+    # The state handed to pickle is the fields' values in declaration order,
+    # which the dataclass's own __setstate__ reads back.
+    assert record.__getstate__() == tuple(getattr(record, f.name) for f in fields(record))
+    again = pickle.loads(pickle.dumps(record, pickle.HIGHEST_PROTOCOL))
+    assert type(again) is type(record) and again == record
+
+
+def test_runs_of_mixed_rich_records_come_back_in_step_order(monkeypatch):
+    monkeypatch.setattr(trace_store, "BATCH", 4)  # many sealed (pickled) batches
+    stream = [RICH[0]] + [RICH[1 + k % 4] if k % 3 else (1, k, 0, 1.0, 2.0) for k in range(1, 60)]
+    trace = Trace.record(iter(stream), CODE, 64, 8)
+    assert len(trace) == len(stream)
+    for k, frame in enumerate(stream):
+        if isinstance(frame, tuple):
+            assert trace.record_at(k) is None and int(trace.x[k]) == k
+        else:
+            assert trace.record_at(k) == frame
+            pixel = frame.pixel if k else None
+            assert (int(trace.x[k]), int(trace.y[k])) == (pixel or (NO_PIXEL, NO_PIXEL))
+    kinds = {type(r) for r in RICH[1:]}
+    for kind in kinds:
+        expected = [k for k, f in enumerate(stream) if type(f) is kind]
+        assert trace.steps_of(kind).tolist() == expected

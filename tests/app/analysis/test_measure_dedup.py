@@ -4,7 +4,7 @@ from fractions import Fraction
 import numpy as np
 import pytest
 
-from app.analysis.measure_curves import distinct_pixels, line_errors
+from app.analysis.measure_curves import differing_pixels, distinct_pixels, line_errors
 
 
 def oracle(p, q, pixels):
@@ -59,3 +59,26 @@ def test_asymmetry_counts_pixels_of_one_direction_only():
         expected = len(set(map(tuple, a.tolist())) ^ set(map(tuple, b.tolist())))
         assert asymmetry(a, b) == expected
     assert asymmetry(np.zeros((0, 2), np.int64), a) == len(set(map(tuple, a.tolist())))
+
+
+@pytest.mark.parametrize("seed", range(4))
+def test_gaps_deviation_and_differing_against_plain_loops(seed):
+    rng = np.random.default_rng(100 + seed)
+    p = tuple(rng.integers(-20, 20, 2).tolist())
+    q = p if seed == 0 else tuple((np.array(p) + rng.integers(-40, 41, 2)).tolist())
+    pixels = np.array(p) + rng.integers(-3, 4, (50, 2)).cumsum(axis=0) // 2
+    pixels = np.concatenate([pixels, pixels[-1:], pixels[:3]]).astype(np.int64)
+    got = line_errors(p, q, pixels)
+    plots = [tuple(v) for v in pixels.tolist()]
+    gaps = sum(1 for a, b in zip(plots, plots[1:])
+               if a != b and max(abs(b[0] - a[0]), abs(b[1] - a[1])) > 1)
+    (x0, y0), (x1, y1) = p, q
+    dx, dy = x1 - x0, y1 - y0
+    if dx == dy == 0:
+        worst = max(((x - x0) ** 2 + (y - y0) ** 2) ** 0.5 for x, y in plots)
+    else:  # squared distances compared exactly, one square root at the end
+        worst = max(Fraction((dx * (y - y0) - dy * (x - x0)) ** 2, dx * dx + dy * dy)
+                    for x, y in plots) ** 0.5
+    assert got["gaps"] == gaps
+    assert got["max_deviation"] == pytest.approx(float(worst), rel=1e-12)
+    assert differing_pixels(p, q, pixels) == got["differing"] == got["missed"] + got["extra"]
