@@ -5,6 +5,8 @@ import sys
 import tempfile
 from pathlib import Path
 
+import pytest
+
 # Qt tests never need a display.
 os.environ.setdefault("QT_QPA_PLATFORM", "offscreen")
 # Edits wait for their recording however long it takes, so a test sees the
@@ -27,3 +29,14 @@ from PySide6.QtCore import QSettings  # noqa: E402 (after the environment is set
 for _format in (QSettings.Format.NativeFormat, QSettings.Format.IniFormat):
     for _scope in (QSettings.Scope.UserScope, QSettings.Scope.SystemScope):
         QSettings.setPath(_format, _scope, _SETTINGS_DIR)
+
+
+@pytest.fixture(autouse=True)
+def _collect_garbage_after_each_test():
+    """Once a window has turned automatic collection over to its main-thread
+    timer (app/gui/main_thread_gc.py), tests that run no event loop would
+    never collect: collect after each test as the timer would."""
+    yield
+    collector = sys.modules.get("app.gui.main_thread_gc")
+    if collector is not None:
+        collector.collect_now()

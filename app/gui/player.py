@@ -16,6 +16,7 @@ from PySide6.QtCore import QElapsedTimer, QObject, Qt, QTimer, Signal
 from algorithms.registry import InputError
 from algorithms.trace import DEFAULT_STEP_CAP
 
+from app.gui.main_thread_gc import collect_in_main_thread
 from app.model.session import Session
 
 MIN_SPEED = 1.0
@@ -59,6 +60,7 @@ class Player(QObject):
 
     def __init__(self, parent=None, step_cap: int = DEFAULT_STEP_CAP):
         super().__init__(parent)
+        collect_in_main_thread()  # the recording thread must never destroy Qt objects
         self._posted.connect(self._take_news)
         self.session = session = Session(step_cap, post=self._posted.emit)
         session.trace_changed.connect(self._trace_changed)
