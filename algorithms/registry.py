@@ -375,7 +375,11 @@ def register(spec: AlgorithmSpec, replace: bool = False) -> AlgorithmSpec:
         raise ValueError(f"algorithm {spec.name!r} registered twice")
     if spec.family not in FAMILIES:
         raise ValueError(f"unknown family {spec.family!r}")
-    check_family(spec.generator, _CHECKED_FAMILIES)
+    if _module_rank(spec.generator.__module__) == len(_FAMILY_MODULES):
+        # A spec from elsewhere (a student's file) is checked as it comes; the
+        # shipped families are held to it by tests, which keeps their source
+        # unread at start-up.
+        check_family(spec.generator, _CHECKED_FAMILIES)
     _REGISTRY[spec.name] = spec
     _ORDER[spec.name] = (FAMILIES.index(spec.family), _module_rank(spec.generator.__module__),
                          len(_ORDER))
