@@ -369,7 +369,7 @@ _CHECKED_FAMILIES: set = set()  # sources already held to the pseudo-code naming
 
 def register(spec: AlgorithmSpec, replace: bool = False) -> AlgorithmSpec:
     """Add a spec, once its family's source names every line it yields (see
-    code.check_family). ``replace``: a spec loaded at run time (a student's
+    code.check_family; the shipped families are checked by a test). ``replace``: a spec loaded at run time (a student's
     file opened again) takes the place of the one of its name."""
     if spec.name in _REGISTRY and not replace:
         raise ValueError(f"algorithm {spec.name!r} registered twice")
