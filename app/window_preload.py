@@ -12,13 +12,16 @@ import importlib
 
 from algorithms import registry
 
-# The Qt-free modules the first window imports (their own imports follow).
+# The Qt-free modules the first window imports, at import or while it is
+# built (their own imports follow).
 # The export writers, the report and the worksheets stay deferred.
 WINDOW_MODULES = (
     "app.model.session", "app.model.examples", "app.model.compare", "app.model.tools",
-    "app.model.insight", "app.model.notes", "app.model.tables",
+    "app.model.insight", "app.model.notes", "app.model.tables", "app.model.breakpoints",
+    "app.model.derivation", "app.model.exercise", "app.model.inspector", "app.model.steptable",
     "app.render.frame", "app.render.incremental", "app.render.compose",
     "app.render.outside_view", "app.render.reasoning", "app.render.texture_frame",
+    "app.render.overlays", "logging.handlers",
 )
 
 
