@@ -6,9 +6,10 @@ loop): inserting a line then never shifts the lines the generator names.
 A line that writes pixels is named ``plot...`` and only such lines are of
 kind PLOT, so the name a generator yields says whether the frame plots.
 
-``check_family`` holds a family's source to that convention when its
-algorithms are registered: it reads the source text, so it costs a file
-read and a few regular expressions, not a parse.
+``check_family`` holds a family's source to that convention: the registry
+calls it when a spec from outside the shipped families is registered, and
+a test calls it for every shipped family (so start-up reads no source). It
+reads the source text: a file read and a few regular expressions, not a parse.
 """
 from __future__ import annotations
 

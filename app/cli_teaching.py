@@ -9,11 +9,15 @@ from __future__ import annotations
 import json
 import sys
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from algorithms import registry
 from algorithms.registry import InputError, parse_number
-from app.model import budget, check_report, checking, student, worksheet
+from app.model import budget, worksheet
 from app.model.files import write_atomically
+
+if TYPE_CHECKING:
+    from app.model import student
 
 
 def add_check_command(commands) -> None:
@@ -43,6 +47,7 @@ def add_check_command(commands) -> None:
 
 
 def _limits(args) -> student.Limits:
+    from app.model import student
     seconds = parse_number(args.time_limit, "--time-limit")
     if not 0.1 <= seconds <= 60:
         raise InputError(f"--time-limit must be 0.1 .. 60 seconds, got {args.time_limit!r}")
@@ -53,6 +58,8 @@ def _limits(args) -> student.Limits:
 
 
 def command_check(args) -> int:
+    # Loaded here: the window and the other commands import this module too.
+    from app.model import check_report, checking, student
     path = student.check_file(args.file)
     spec = registry.get(args.against)
     checking.kind_of(spec)

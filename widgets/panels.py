@@ -7,8 +7,8 @@ import numpy as np
 import pyqtgraph as pg
 from PySide6.QtCore import Qt, QTimer, Signal
 from PySide6.QtGui import QBrush, QColor, QFont, QFontDatabase, QFontMetrics
-from PySide6.QtWidgets import (QAbstractItemView, QFrame, QHeaderView, QLabel, QScrollArea,
-                               QStyle, QTableWidget, QTableWidgetItem, QVBoxLayout, QWidget)
+from PySide6.QtWidgets import (QAbstractItemView, QFrame, QGraphicsEllipseItem,
+                               QGraphicsItem, QHeaderView, QLabel, QScrollArea, QStyle, QTableWidget, QTableWidgetItem, QVBoxLayout, QWidget)
 
 from .dirty import cache_drawing
 from .series_points import plot_points
@@ -226,6 +226,18 @@ class CodePanel(QWidget):
         self.lines.resizeRowToContents(row)
 
 
+def _step_dot() -> QGraphicsEllipseItem:
+    """The step's dot on the plot: 9 pixels across whatever the zoom. A
+    plain Qt item, moved each step; a one-point ScatterPlotItem measured its
+    bounds in Python a dozen times a step."""
+    dot = QGraphicsEllipseItem(-4.5, -4.5, 9, 9)
+    dot.setFlag(QGraphicsItem.GraphicsItemFlag.ItemIgnoresTransformations)
+    dot.setBrush(pg.mkBrush("#f08c00"))
+    dot.setPen(pg.mkPen("#ffffff", width=1.5))
+    dot.hide()
+    return dot
+
+
 class VariablesPanel(QWidget):
     """A table of the current step's named values and a plot of one value
     over the whole run, with a marker at the current step."""
@@ -303,8 +315,7 @@ class VariablesPanel(QWidget):
                                      symbol="o", symbolSize=4, symbolBrush="#2563a8",
                                      symbolPen=None)
         self.marker = pg.InfiniteLine(0, angle=90, pen=pg.mkPen("#f08c00", width=2))
-        self.point = pg.ScatterPlotItem(size=9, brush=pg.mkBrush("#f08c00"),
-                                        pen=pg.mkPen("#ffffff", width=1.5))
+        self.point = _step_dot()
         # A decision variable's dots, one item per branch taken, one for
         # the steps that decide nothing.
         self.branch_dots = tuple(
@@ -313,8 +324,9 @@ class VariablesPanel(QWidget):
         self.undecided_dots = pg.PlotDataItem(pen=None, symbol="o", symbolSize=3,
                                               symbolBrush=UNDECIDED_COLOR, symbolPen=None)
         for part in (self.zero, self.curve, self.undecided_dots, *self.branch_dots,
-                     self.marker, self.point):
+                     self.marker):
             plot.addItem(part)
+        plot.addItem(self.point, ignoreBounds=True)  # it stands on the curve
         self.marker.setZValue(10)
         self.point.setZValue(11)
         # The run's values stay put while the step marker moves over them.
@@ -458,7 +470,7 @@ class VariablesPanel(QWidget):
             self.curve.setData([], [])
             for dots in (*self.branch_dots, self.undecided_dots):
                 dots.setData([], [])
-            self.point.setData([], [])
+            self.point.hide()
             return
         self._series = values
         coloured = decision and branches is not None
@@ -503,9 +515,6 @@ class VariablesPanel(QWidget):
         self.marker.setValue(index)
         if self._series is not None and 0 <= index < len(self._series) \
                 and math.isfinite(self._series[index]):
-            # The dot stays one point at (0, 0), moved: cheaper than new data.
-            if self.point.data.size != 1:
-                self.point.setData([0.0], [0.0])
             self.point.setPos(float(index), float(self._series[index]))
             self.point.show()
         else:
@@ -513,7 +522,7 @@ class VariablesPanel(QWidget):
 
     def marker_point(self) -> tuple[float, float] | None:
         """Where the step's dot stands on the plot (step, value), or None."""
-        if not self.point.isVisible() or self.point.data.size != 1:
+        if not self.point.isVisible():
             return None
         return (self.point.pos().x(), self.point.pos().y())
 

@@ -22,6 +22,7 @@ from __future__ import annotations
 import html
 import re
 from fractions import Fraction
+from functools import lru_cache
 
 DIGITS = 5  # significant figures of a shown float
 
@@ -104,6 +105,7 @@ def rich(text: str) -> str:
     return "".join(parts)
 
 
+@lru_cache(maxsize=4096)  # the window asks again for every row at every step
 def shown(text: str) -> str:
     """``tidy`` then ``subscripts``: what an exported frame writes."""
     return subscripts(tidy(text))

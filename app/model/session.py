@@ -73,6 +73,9 @@ from app.model.tools import drawing_tool
 # background (seconds); RASTERLAB_RECORD_WAIT overrides it ("inf": always
 # wait, as the tests do).
 SYNC_WAIT = 0.02
+# Stepping on by at most this many steps replays them onto the raster on show;
+# a longer jump (or a step back) replays from the nearest keyframe instead.
+ONWARD_STEPS = 1024
 CANCELLED_MESSAGE = "Recording cancelled: the previous scene and run are kept."
 _NO_CELLS = np.zeros((0, 2), dtype=np.int64)
 
@@ -124,6 +127,8 @@ class Session:
         self._job_at_end = None
         self._shown = None  # (scene, previous) the trace on show belongs to, while a job runs
         self._state: FrameState | None = None
+        # The run and state the last step on show was replayed for (see _state_onward).
+        self._replayed: tuple = (None, None)
         self._final: Raster | None = None
         self._edit_depth = 0  # nested edits count as the outer one
         # (tool, points, breaks) a gesture left with a contour open (``sketch``).
@@ -424,8 +429,22 @@ class Session:
         if self.trace is None:
             return None
         if self._state is None or self._state.index != self.index:
-            self._state = self.trace.state_at(self.index, compact=True)
+            self._state = self._state_onward() or self.trace.state_at(self.index, compact=True)
+            self._replayed = (self.trace, self._state)
         return self._state
+
+    def _state_onward(self) -> FrameState | None:
+        """The state a few steps on from the last one replayed, made by
+        replaying just the steps in between onto its raster (a step forward
+        on a 4096 x 4096 grid then costs no fresh 16-million-cell raster).
+        That raster is the session's own, so the earlier state is spent."""
+        trace, state = self._replayed
+        i = self.index
+        if trace is not self.trace or state is None or not 0 < i - state.index <= ONWARD_STEPS:
+            return None
+        trace.replay(state.index + 1, i + 1, state.raster)
+        return FrameState(i, trace.step(i), state.raster, trace.variables_at(i),
+                          trace.candidates_at(i))
 
     def final_raster(self) -> Raster | None:
         if self.trace is None:

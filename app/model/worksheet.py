@@ -14,8 +14,6 @@ import io
 from dataclasses import dataclass
 from pathlib import Path
 
-from PIL import Image, ImageDraw
-
 from algorithms.errors import InputError
 from algorithms.steps import Span
 
@@ -135,6 +133,7 @@ def latex(sheet: Worksheet, answers: bool) -> str:
 
 def grid_png(sheet: Worksheet, answers: bool, cell: int = 24) -> bytes:
     """The grid (y up) with the ideal shape; the key shades what the run plots."""
+    from PIL import Image, ImageDraw  # loaded here: the command line imports this module
     width, height = sheet.grid
     image = Image.new("RGB", (width * cell + 1, height * cell + 1), "white")
     draw = ImageDraw.Draw(image)

@@ -90,3 +90,11 @@ def test_a_package_may_name_lines_one_of_its_modules_adds():
     code.check_sources({"build.py": builder, "frames.py": user})
     with pytest.raises(ValueError, match="frames.py:2: no pseudo-code line is named 'plot_runs'"):
         code.check_sources({"build.py": builder, "frames.py": user.replace("plot_run", "plot_runs")})
+
+
+def test_every_shipped_family_keeps_the_naming_convention():
+    """Shipped families are not read at registration (start-up): held here."""
+    specs = registry.all_specs()
+    assert len({spec.generator.__module__ for spec in specs}) > 10
+    for spec in specs:
+        code.check_family(spec.generator, set())

@@ -65,6 +65,26 @@ def test_depth_toggle_and_runs_without_depth(window):
     assert not w.depth_action.isEnabled()
 
 
+def test_the_depth_plot_is_made_when_the_dock_first_shows_and_then_shows_the_buffer(window):
+    """The depth dock is hidden at start and its plot not yet made; shown,
+    it holds the picture of the step's depth buffer, cell for cell."""
+    w = window
+    assert not w.depth_dock.isVisibleTo(w) and w.depth_view.plot is None
+    w.set_algorithm("zbuffer")
+    assert w.depth_view.plot is not None and w.depth_view.plot.isVisibleTo(w)
+    trace = w.player.trace
+    w.player.seek(len(trace) - 1)
+    depth = trace.raster_at(len(trace) - 1).depth
+    shown = w.depth_view.image.image
+    assert shown.shape[:2] == depth.shape
+    written = ~np.isnan(depth)
+    # Nearer cells are darker: order of greys follows order of depths.
+    near, far = np.unravel_index(np.nanargmin(depth), depth.shape), \
+        np.unravel_index(np.nanargmax(depth), depth.shape)
+    assert written.any() and shown[near][0] <= shown[far][0]
+    assert w.depth_view.plot.getViewBox().yInverted() == bool(w.grid.y_down)
+
+
 # ------------------------------------------------------------ samples
 def test_supersample_draws_the_pixels_samples_so_far(window):
     w = window

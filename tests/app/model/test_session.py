@@ -213,3 +213,54 @@ def test_a_run_over_the_memory_budget_is_refused_and_changes_nothing(session):
     session.memory_limit = 2 * 1024 ** 3
     session.set_points([P, (15, 7)])
     assert session.points == [P, (15, 7)]
+
+
+def _bresenham(p, q):
+    """The textbook integer Bresenham line for a gentle slope, as the oracle."""
+    (x0, y0), (x1, y1) = p, q
+    dx, dy = x1 - x0, y1 - y0
+    d, y, out = 2 * dy - dx, y0, set()
+    for x in range(x0, x1 + 1):
+        out.add((x, y))
+        if d > 0:
+            y, d = y + 1, d - 2 * dx
+        d += 2 * dy
+    return out
+
+
+@pytest.mark.parametrize("algorithm, points", [
+    ("line-bresenham", [P, Q]),
+    ("polygon-scanline", [(1, 1), (13, 2), (7, 7)]),
+])
+def test_stepping_on_replays_onto_the_raster_on_show_and_matches_a_fresh_replay(
+        algorithm, points):
+    """Steps forward reuse the raster on show; whatever the path (forward by
+    one, a jump, back), every state equals the one replayed from a keyframe."""
+    session = Session()
+    session.sync_wait = None
+    session.set_scene(algorithm, points, {}, (16, 8))
+    trace, last = session.trace, session.last
+    session.seek(0)
+    raster = session.state().raster
+    path = [1, 2, 3, last // 2, last // 2 - 1, last // 2 + 4, last]
+    for index in path:
+        session.seek(index)
+        state, fresh = session.state(), trace.state_at(index, compact=True)
+        assert state.index == index and state.step == fresh.step
+        assert (state.raster.counts == fresh.raster.counts).all()
+        if fresh.raster.colors is not None:
+            assert (state.raster.colors == fresh.raster.colors).all()
+        assert state.variables == fresh.variables
+    assert session.state().raster is not raster or last < 4  # a step back starts afresh
+    if algorithm == "line-bresenham":
+        written = {(x, y) for y, x in zip(*state.raster.counts.nonzero())}
+        assert written == _bresenham(P, Q)
+
+
+def test_a_step_forward_writes_into_the_raster_already_on_show(session):
+    session.seek(2)
+    raster = session.state().raster
+    session.seek(3)
+    assert session.state().raster is raster
+    session.seek(1)
+    assert session.state().raster is not raster
