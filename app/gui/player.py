@@ -60,7 +60,7 @@ class Player(QObject):
 
     def __init__(self, parent=None, step_cap: int = DEFAULT_STEP_CAP):
         super().__init__(parent)
-        collect_in_main_thread()  # the recording thread must never destroy Qt objects
+        collect_in_main_thread(self)  # the recording thread must never destroy Qt objects
         self._posted.connect(self._take_news)
         self.session = session = Session(step_cap, post=self._posted.emit)
         session.trace_changed.connect(self._trace_changed)

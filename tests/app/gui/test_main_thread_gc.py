@@ -34,3 +34,26 @@ def test_cycles_are_collected_in_the_main_thread_while_a_recording_runs(qtbot):
     qtbot.waitUntil(lambda: len(seen) == 2000, timeout=10_000)
     assert set(seen) == {threading.main_thread()}
     player.stop_recording()
+
+
+class FakePlayer:
+    recording = True
+
+
+def test_the_whole_heap_waits_until_no_recording_runs(monkeypatch, qtbot):
+    from app.gui import main_thread_gc
+
+    Player()  # the collector exists
+    collected = []
+    monkeypatch.setattr(gc, "collect", collected.append)
+    monkeypatch.setattr(gc, "get_count", lambda: (701, 11, 11))
+    busy = FakePlayer()
+    main_thread_gc._players.add(busy)
+    main_thread_gc.collect_now()
+    assert collected == [0, 1]
+    busy.recording = False
+    main_thread_gc.collect_now()
+    assert collected == [0, 1, 0, 1, 2]
+    monkeypatch.setattr(gc, "get_count", lambda: (700, 11, 11))  # gen 0 under its threshold
+    main_thread_gc.collect_now()
+    assert collected == [0, 1, 0, 1, 2]
