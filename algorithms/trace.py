@@ -22,9 +22,7 @@ through the queries below rather than by walking them:
 from __future__ import annotations
 
 import math
-import threading
 import time
-from contextlib import contextmanager
 from dataclasses import dataclass
 from itertools import groupby, islice
 from typing import Iterable, NamedTuple, Sequence
@@ -32,17 +30,17 @@ from typing import Iterable, NamedTuple, Sequence
 import numpy as np
 
 from .errors import InputError
+from .monitor import (CHUNK, DEFAULT_STEP_CAP, Cancelled, RecordMonitor,  # noqa: F401 (the trace's API)
+                      checkpoint, watching, work_allowance)
 from .keyframes import Keyframes, color_dtype, smallest_unsigned
 from .trace_store import Columns, Records
 from .raster import Raster
 from .steps import NO_PIXEL, PLOT, RICH_RECORDS, CodeLine, Span, Start, Step, Vars
 
-DEFAULT_STEP_CAP = 5_000_000
 NO_PIXELS = (NO_PIXEL, NO_PIXEL)  # x and y of a rich record without a pixel
 # The most steps any recording keeps, in the window and on the command line:
 # at about 22 bytes a step (README, "Performance") a trace stays near 1.1 GB.
 MAX_STEP_CAP = 50_000_000
-CHUNK = 1 << 16
 KEYFRAME_BUDGET = 64 * 2 ** 20  # bytes the dense keyframes of one trace may take
 KEYFRAME_BYTES_PER_STEP = 16  # or this per recorded step, when that is more
 MIN_KEYFRAME_GAP = 1024
@@ -60,80 +58,6 @@ MAX_KEYFRAME_GAP = 1 << 16
 
 class TraceError(ValueError):
     """A generator broke the frame protocol of steps.py."""
-
-
-class Cancelled(Exception):
-    """A recording was stopped through its monitor before the run ended."""
-
-
-class RecordMonitor:
-    """Progress and cancellation of one recording, safe to share between threads.
-
-    ``Trace.record`` calls ``report(steps)`` about every ``every`` steps (at
-    the end of a bulk chunk, so the check costs nothing per frame);
-    ``report`` raises ``Cancelled`` once ``cancel()`` has been called, from
-    any thread, and otherwise passes the count to ``progress``.
-    """
-
-    def __init__(self, progress=None, every: int = CHUNK):
-        self.progress = progress
-        self.every = max(1, int(every))
-        self._cancelled = threading.Event()
-
-    def cancel(self) -> None:
-        self._cancelled.set()
-
-    @property
-    def cancelled(self) -> bool:
-        return self._cancelled.is_set()
-
-    def report(self, steps: int) -> None:
-        if self._cancelled.is_set():
-            raise Cancelled(f"recording cancelled after {steps:,} steps")
-        if self.progress is not None:
-            self.progress(steps)
-
-
-_watched = threading.local()
-
-
-@contextmanager
-def watching(monitor: RecordMonitor | None, step_cap: int | None = None):
-    """While a run's own code works for ``monitor`` (made, then recorded),
-    ``checkpoint()`` answers to it, and ``work_allowance()`` is ``step_cap``
-    (when given)."""
-    before = getattr(_watched, "monitor", None), getattr(_watched, "cap", None)
-    _watched.monitor = monitor
-    if step_cap is not None:
-        _watched.cap = step_cap
-    try:
-        yield
-    finally:
-        _watched.monitor, _watched.cap = before
-
-
-# Units of plain work (an edge tested in a row, a pixel passed over) a step
-# is worth: a recorded flood-fill step (about 0.7 us) costs about as much as
-# two of them.
-WORK_PER_STEP = 2
-
-
-def work_allowance() -> int:
-    """The units of work the step cap of the run being made or recorded
-    allows (the default cap outside one). Long work a run does between two
-    frames (a search, pixels passed over as already drawn) counts against
-    it, so the cap bounds all of a run's work, not only the steps it keeps."""
-    cap = getattr(_watched, "cap", None)
-    return WORK_PER_STEP * (DEFAULT_STEP_CAP if cap is None else cap)
-
-
-def checkpoint() -> None:
-    """Long work of a run between two frames (before its first, say) calls
-    this now and then: it raises Cancelled once the recording it serves is
-    cancelled, so a cancel need not wait for the next frame."""
-    monitor = getattr(_watched, "monitor", None)
-    if monitor is not None and monitor.cancelled:
-        raise Cancelled("recording cancelled between two steps")
 
 
 @dataclass
