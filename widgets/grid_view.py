@@ -41,6 +41,7 @@ from app.model.drawing import (CIRCLE, CONTOURS, FIXED, GROUPS, Close, Move, Pla
 from app.model.drawing import labels as point_names
 from app.model.inputs import clamp
 
+from .grid_box import GridViewBox
 from .grid_items import (CellOutlines, GridLinesItem, PixelAxis, handle_items, number_text,
                          path_xy, primitive_curves, translucent)
 
@@ -56,42 +57,6 @@ NEW_CONTOUR = Qt.KeyboardModifier.ShiftModifier
 EQUAL_RADII = Qt.KeyboardModifier.ShiftModifier
 INSPECT = Qt.KeyboardModifier.AltModifier  # Alt+click asks to inspect a pixel
 DRAW, MARKER = "draw", "marker"  # the tools
-
-
-class _GridViewBox(pg.ViewBox):
-    """A ViewBox that hands clicks and drags to the drawing tools, and pans
-    or zooms otherwise."""
-
-    def __init__(self, owner):
-        super().__init__(lockAspect=True, enableMenu=False)
-        self._owner = owner
-        self._dragging = None
-
-    def mouseClickEvent(self, ev):  # noqa: N802
-        if ev.button() == Qt.MouseButton.LeftButton:
-            ev.accept()
-            self._owner._clicked(ev.scenePos(), ev.modifiers(), ev.double())
-        elif ev.button() == Qt.MouseButton.RightButton:
-            ev.accept()
-            self._owner._context_menu(ev.scenePos(), ev.screenPos())
-        else:
-            super().mouseClickEvent(ev)
-
-    def mouseDragEvent(self, ev, axis=None):  # noqa: N802
-        if ev.button() == Qt.MouseButton.LeftButton:
-            if ev.isStart():
-                self._dragging = self._owner._drag_target(ev.buttonDownScenePos(), ev.modifiers())
-                if self._dragging is not None:
-                    self._owner.editStarted.emit()
-            if self._dragging is not None:
-                ev.accept()
-                self._owner._dragged(self._dragging, ev.scenePos(), ev.modifiers(),
-                                     ev.isFinish())
-                if ev.isFinish():
-                    self._dragging = None
-                return
-        # Anything else pans (left or middle button) or zooms (right button).
-        super().mouseDragEvent(ev, axis)
 
 
 class PixelGridView(pg.PlotWidget):
@@ -118,7 +83,7 @@ class PixelGridView(pg.PlotWidget):
     inspectRequested = Signal(object)
 
     def __init__(self, palette, outline_styles, parent=None):
-        self._box = _GridViewBox(self)
+        self._box = GridViewBox(self)
         super().__init__(parent, viewBox=self._box,
                          axisItems={"bottom": PixelAxis("bottom"), "left": PixelAxis("left")})
         self.palette = palette

@@ -48,7 +48,6 @@ import math
 import os
 import queue
 from contextlib import contextmanager
-from dataclasses import dataclass
 
 import numpy as np
 
@@ -64,6 +63,8 @@ from app.model.listeners import Listeners
 from app.model.examples import default_scene
 from app.model.inputs import (clamp, clean_breaks, complete, contour_sizes, flatten,
                               open_ended, runnable_input)
+from app.model.outcome import (CANCELLED_MESSAGE, Outcome, example_note, failure,  # noqa: F401
+                               kept_note)
 from app.model.recording import Job
 from app.model.scene import Scene, SceneError
 from app.model.geometry import differences
@@ -76,24 +77,7 @@ SYNC_WAIT = 0.02
 # Stepping on by at most this many steps replays them onto the raster on show;
 # a longer jump (or a step back) replays from the nearest keyframe instead.
 ONWARD_STEPS = 1024
-CANCELLED_MESSAGE = "Recording cancelled: the previous scene and run are kept."
 _NO_CELLS = np.zeros((0, 2), dtype=np.int64)
-
-
-@dataclass
-class _Outcome:
-    """A finished recording: the scene it was made of (an example shape
-    when the algorithm refused the points), the algorithm compared against,
-    its trace and replay cache."""
-
-    scene: Scene
-    previous: tuple | None
-    trace: Trace | None
-    final: Raster | None
-    comparison: tuple | None = None
-    compare_enabled: bool = False
-    refusal: str | None = None  # None: not an algorithm switch
-    last_state: FrameState | None = None
 
 
 class Session:
@@ -195,7 +179,7 @@ class Session:
         self._change(scene, previous, work=lambda monitor: self._switch(
             scene, previous, carried, monitor), always=True)
 
-    def _switch(self, scene: Scene, previous, carried: dict, monitor) -> _Outcome:
+    def _switch(self, scene: Scene, previous, carried: dict, monitor) -> Outcome:
         """Record an algorithm switch (in the worker); an algorithm that
         refuses the points shows its own example shape and says why. When
         not even that fits the grid (a fill's on a grid one row high), the
@@ -214,10 +198,10 @@ class Session:
         for options in (example.options, spec.resolve(defaults)):
             try:
                 return self.outcome(example.replace(options=options), previous, monitor,
-                                    refusal=reason and _example_note(spec, reason))
+                                    refusal=reason and example_note(spec, reason))
             except InputError as error:
                 reason = reason or str(error)
-        return _Outcome(scene, previous, None, None, refusal=_kept_note(spec, scene.grid, reason))
+        return Outcome(scene, previous, None, None, refusal=kept_note(spec, scene.grid, reason))
 
     def set_option(self, name: str, value) -> None:
         """Set one option; raises InputError (and keeps the last good value)
@@ -474,7 +458,7 @@ class Session:
                              "Edit > Preferences or use a smaller input.")
         return trace
 
-    def outcome(self, scene: Scene, previous, monitor=None, refusal=None) -> _Outcome:
+    def outcome(self, scene: Scene, previous, monitor=None, refusal=None) -> Outcome:
         """Record ``scene`` and what goes with it (runs in the worker)."""
         trace = self.record(scene.spec, scene.runnable(), scene.options, scene.grid, monitor)
         # Replay caches and the comparison are made here too, so that
@@ -487,7 +471,7 @@ class Session:
                           trace.candidates_at(end))
         enabled = self.compare_enabled
         found = self._comparison(scene, previous, final, monitor) if enabled else None
-        return _Outcome(scene, previous, trace, final, found, enabled, refusal, last)
+        return Outcome(scene, previous, trace, final, found, enabled, refusal, last)
 
     def _change(self, scene: Scene, previous, at_end=None, work=None, always=False) -> None:
         """Make ``scene`` the scene, recorded by ``work(monitor)`` (default:
@@ -501,7 +485,7 @@ class Session:
         if work is None and not always and not scene.complete:
             self._drop_job()
             self._put_scene(scene, previous)
-            self._take(_Outcome(scene, previous, None, None), at_end)
+            self._take(Outcome(scene, previous, None, None), at_end)
             return
         job = Job(work or (lambda monitor: self.outcome(scene, previous, monitor)),
                   lambda job, steps: self._post(lambda: self._job_progressed(job, steps)),
@@ -528,7 +512,7 @@ class Session:
         if changed:
             self.scene_changed.emit()
 
-    def _take(self, outcome: _Outcome, at_end) -> None:
+    def _take(self, outcome: Outcome, at_end) -> None:
         if outcome.refusal is not None:
             self.refusal = outcome.refusal
         self._install(outcome.trace, self._at_end() if at_end is None else at_end, outcome)
@@ -559,7 +543,7 @@ class Session:
             return  # replaced or cancelled meanwhile
         self._job = None
         if job.error is not None or job.cancelled:
-            self._put_back_shown(CANCELLED_MESSAGE if job.error is None else _failure(job.error))
+            self._put_back_shown(CANCELLED_MESSAGE if job.error is None else failure(job.error))
             return
         self._shown = None
         outcome = job.result
@@ -625,7 +609,7 @@ class Session:
             self._shown = None
             self.recording_finished.emit("")
 
-    def _install(self, trace: Trace | None, at_end: bool, outcome: _Outcome) -> None:
+    def _install(self, trace: Trace | None, at_end: bool, outcome: Outcome) -> None:
         old_len, old_index = len(self), self.index
         self.trace = trace
         self._final = outcome.final
@@ -672,23 +656,6 @@ class Session:
         except InputError:
             return None  # the other algorithm does not take this input
         return differences(other.raster_at(len(other) - 1), final), True
-
-
-def _example_note(spec, reason: str) -> str:
-    return (f"{spec.title} refused the points drawn before ({reason}); "
-            "showing an example shape instead.")
-
-
-def _kept_note(spec, grid, reason: str) -> str:
-    return (f"{spec.title}: neither the points drawn nor its example shape can run on the "
-            f"{grid[0]}x{grid[1]} grid ({reason}); the points are kept: add or move points, "
-            "enlarge the grid or change the options.")
-
-
-def _failure(error: BaseException) -> str:
-    """A failed recording's message: never empty (empty means installed)."""
-    return str(error) if isinstance(error, InputError) and str(error) else \
-        f"The run failed ({type(error).__name__}: {error}); the previous scene is kept."
 
 
 def _made(make, *args, **fields) -> Scene:
