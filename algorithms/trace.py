@@ -24,7 +24,7 @@ from __future__ import annotations
 import math
 import time
 from dataclasses import dataclass
-from itertools import groupby, islice
+from itertools import chain, groupby, islice
 from typing import Iterable, NamedTuple, Sequence
 
 import numpy as np
@@ -33,7 +33,7 @@ from .errors import InputError
 from .monitor import (CHUNK, DEFAULT_STEP_CAP, Cancelled, RecordMonitor,  # noqa: F401 (the trace's API)
                       checkpoint, watching, work_allowance)
 from .keyframes import Keyframes, color_dtype, smallest_unsigned
-from .trace_store import Columns, Records
+from .trace_store import Columns, Packer, Records
 from .raster import Raster
 from .steps import NO_PIXEL, PLOT, RICH_RECORDS, CodeLine, Span, Start, Step, Vars
 
@@ -161,7 +161,8 @@ class Trace:
         # chunk at a time: one conversion per chunk, never one per record.
         self._pending = [(start.line, NO_PIXEL, NO_PIXEL) + self._nans]
         self._store_rich(0, start)
-        capped = islice(frames, self.step_cap - 1)
+        left = self._record_packed(frames)
+        capped = islice(left, self.step_cap - self._count)
         # groupby sets the rich records aside without a Python-level test
         # per frame; its key (a C-level isinstance) puts consecutive rich
         # records of any types in one run.
@@ -181,6 +182,45 @@ class Trace:
     def _count(self) -> int:
         """Frames recorded so far, converted or waiting."""
         return self._columns.count + len(self._pending)
+
+    def _record_packed(self, frames):
+        """Record the leading run of plain frames (see Packer) the fast way
+        and give back the frames left, from the first list of frames that
+        does not pack on. The general path takes that list again, so it
+        decides exactly as before, errors included. A run that begins with
+        a rich record goes to the general path at once, which hears a
+        cancel after every rich record."""
+        head = next(frames, None) if self._count < self.step_cap else None
+        if not isinstance(head, tuple):
+            return frames if head is None else chain((head,), frames)
+        packer, carry = Packer(len(self._nans)), [head]
+        self._flush()
+        while True:
+            first = self._columns.count
+            began = time.perf_counter()
+            size = min(self._chunk, max(1, self._next_report - self._count),
+                       self.step_cap - self._count)
+            try:
+                rows, left = packer.chunk(frames, size, carry)
+            except InputError:
+                raise  # the generator refused its input: not a protocol fault
+            except (ValueError, TypeError, OverflowError) as error:
+                raise self._frame_error(first, error) from None
+            carry = []
+            if len(rows):
+                self._check_rows(rows, first)
+                self._columns.append(rows)
+            if left is not None:
+                if not packer.widen():
+                    return chain(left, frames)
+                carry = left  # once: the values are not all integers
+                continue
+            if len(rows) < size or self._count >= self.step_cap:
+                return frames
+            if self._monitor is not None:
+                self._pace(time.perf_counter() - began)
+            if self._count >= self._next_report:
+                self._report()
 
     def _record_lean(self, group) -> None:
         # A short run of tuples between rich records waits in the list; a
@@ -274,6 +314,8 @@ class Trace:
 
     def _flush(self) -> None:
         """The waiting frames to numpy and into the columns; report progress."""
+        if not self._pending:
+            return
         first = self._columns.count
         try:
             rows = np.fromiter(self._pending, self._dtype, len(self._pending))
