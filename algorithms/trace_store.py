@@ -82,21 +82,29 @@ class Packer:
         packed PART at a time (a list that small stays in the processor's
         cache) into one buffer reused for every chunk, whose pages are
         touched once, not once a chunk."""
-        if len(self._buffer) < size * self.dtype.itemsize:
-            self._buffer = memoryview(np.empty(size * self.dtype.itemsize, np.uint8))
-        buffer, filled = self._buffer, 0
+        filled = 0
         for done in range(0, size, PART):
             want = min(PART, size - done)
-            part = carry + list(islice(frames, max(0, want - len(carry))))
+            part = list(islice(frames, max(0, want - len(carry))))
+            part = carry + part if carry else part
             carry = []
             piece = self.pack(part)
             if piece is None:
-                return np.frombuffer(buffer[:filled], self.dtype), part
-            buffer[filled:filled + len(piece)] = piece
+                return np.frombuffer(self._buffer[:filled], self.dtype), part
+            self._room(filled + len(piece))
+            self._buffer[filled:filled + len(piece)] = piece
             filled += len(piece)
             if len(part) < want:
                 break
-        return np.frombuffer(buffer[:filled], self.dtype), None
+        return np.frombuffer(self._buffer[:filled], self.dtype), None
+
+    def _room(self, size: int) -> None:
+        """A buffer of at least ``size`` bytes, grown by doubling (a short
+        run never asks for a whole chunk's worth), its bytes kept."""
+        if len(self._buffer) < size:
+            grown = memoryview(np.empty(max(size, 2 * len(self._buffer)), np.uint8))
+            grown[:len(self._buffer)] = self._buffer
+            self._buffer = grown
 
     def pack(self, frames: list) -> bytes | None:
         """The frames as rows of ``dtype``, or None if one does not pack."""

@@ -49,11 +49,15 @@ class Results:
             else:
                 mine.append(_timed(ours))
                 theirs.append(_timed(peer))
+        return self.compare(name, mine, theirs, peer_name)
+
+    def compare(self, name: str, mine, theirs, peer_name: str) -> float:
+        """Print paired times (seconds) as ratios; return the median ratio."""
         ratios = [a / b for a, b in zip(mine, theirs)]
         median = statistics.median(ratios)
         print(f"{name:<44} ours {_ms(statistics.median(mine))}  {peer_name:<14} "
               f"{_ms(statistics.median(theirs))}  ratio min {min(ratios):7.2f}x "
-              f"median {median:7.2f}x max {max(ratios):7.2f}x  ({repeats} pairs)")
+              f"median {median:7.2f}x max {max(ratios):7.2f}x  ({len(ratios)} pairs)")
         return median
 
     def spread(self, name: str, values, unit: str) -> float:

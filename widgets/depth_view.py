@@ -14,7 +14,7 @@ from PySide6.QtWidgets import QLabel, QVBoxLayout, QWidget
 def quiet_plot(palette, parent) -> pg.PlotWidget:
     """A plot that only shows: the view's background, no buttons, no menu,
     square units (the side views' common ground)."""
-    plot = pg.PlotWidget(parent)
+    plot = pg.PlotWidget(parent, enableMenu=False)  # no view menu is built
     plot.setBackground(palette.outside)
     item = plot.getPlotItem()
     item.hideButtons()

@@ -293,7 +293,7 @@ class VariablesPanel(QWidget):
 
     def _make_plot(self):
         """The plot of the decision variable over the run, with the step's marker."""
-        plot = pg.PlotWidget(self)
+        plot = pg.PlotWidget(self, enableMenu=False)  # no view menu is built
         plot.setObjectName("series")
         plot.setBackground("#ffffff")
         plot.setMinimumHeight(120)

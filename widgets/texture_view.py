@@ -14,7 +14,7 @@ FOOTPRINT = (230, 30, 30)
 
 
 def _plot(parent, background) -> tuple:
-    plot = pg.PlotWidget(parent)
+    plot = pg.PlotWidget(parent, enableMenu=False)  # no view menu is built
     plot.setBackground(background)
     item = plot.getPlotItem()
     item.hideButtons()
