@@ -41,14 +41,7 @@ class Results:
 
     def pair(self, name: str, ours, peer, repeats: int, peer_name: str) -> float:
         """Time ``ours`` and ``peer`` in interleaved pairs; print and return the median ratio."""
-        mine, theirs = [], []
-        for k in range(repeats):
-            if k % 2:
-                theirs.append(_timed(peer))
-                mine.append(_timed(ours))
-            else:
-                mine.append(_timed(ours))
-                theirs.append(_timed(peer))
+        mine, theirs = figures.interleaved(lambda: _timed(ours), lambda: _timed(peer), repeats)
         return self.compare(name, mine, theirs, peer_name)
 
     def compare(self, name: str, mine, theirs, peer_name: str) -> float:

@@ -269,6 +269,21 @@ def _flood_scene(side):
     return contour, peer
 
 
+def interleaved(ours, peer, repeats: int):
+    """The results of ``ours()`` and ``peer()`` called in pairs, each side
+    first in every other pair, so that a slow spell of the machine falls on
+    both."""
+    mine, theirs = [], []
+    for k in range(repeats):
+        if k % 2:
+            theirs.append(peer())
+            mine.append(ours())
+        else:
+            mine.append(ours())
+            theirs.append(peer())
+    return mine, theirs
+
+
 # ---------------------------------------------------------------- recording
 RECORDED = (
     ("Bresenham", "line-bresenham", lambda s: ([(0, 0), (s - 1, s // 3)], {}), 4096),
@@ -474,14 +489,8 @@ def startup(results, quick: bool) -> None:
 
         run(STARTUP_OURS)  # warm up: compile and cache both sides once
         run(STARTUP_PEER)
-        ours, peer = [], []
-        for k in range(3 if quick else 11):  # interleaved, each side first in turn
-            if k % 2:
-                peer.append(run(STARTUP_PEER))
-                ours.append(run(STARTUP_OURS))
-            else:
-                ours.append(run(STARTUP_OURS))
-                peer.append(run(STARTUP_PEER))
+        ours, peer = interleaved(lambda: run(STARTUP_OURS), lambda: run(STARTUP_PEER),
+                                 3 if quick else 11)
         ratio = results.compare("start-up to first window shown (rasterlab)",
                                 [o[0] for o in ours], [p[0] for p in peer], "PySide6+pg")
         results.compare("  to the process's end (window closed)", [o[1] for o in ours],
