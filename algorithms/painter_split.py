@@ -208,6 +208,6 @@ register(AlgorithmSpec(
            "cut along the planes they cross, their pieces do. splits counts the cuts and "
            "pieces what is drawn: the price of a right order.",
            "disagree counts the pixels unlike the z-buffer's: 0 but for pixel centres within "
-           "a rounding of the line where two triangles meet (the pieces' corners snap to 1/256 "
-           "px)."),
+           "a rounding of the line where two triangles meet, or of an edge a cut ends on (the "
+           "pieces' corners snap to 1/256 px)."),
 ))

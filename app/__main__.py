@@ -1,6 +1,6 @@
 """`python -m app` is the `rasterlab` command."""
 import sys
 
-from app.cli import main
+from app.launcher import main
 
 sys.exit(main())

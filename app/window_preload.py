@@ -8,6 +8,7 @@ of which needs Qt, so the command line loads them first (measured: about
 """
 from __future__ import annotations
 
+import gc
 import importlib
 
 from algorithms import registry
@@ -26,7 +27,10 @@ WINDOW_MODULES = (
 
 
 def load_before_qt() -> None:
-    """Import the families (and register them) and the window's Qt-free modules."""
+    """Import the families (and register them) and the window's Qt-free
+    modules, with automatic collection off: app/launcher.py turns it off
+    before the first import, and a window started another way gets it here."""
+    gc.disable()
     registry.all_specs()
     for name in WINDOW_MODULES:
         importlib.import_module(name)

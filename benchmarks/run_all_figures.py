@@ -445,10 +445,13 @@ def watch(app):
     app.installEventFilter(app.shown)
 """
 
-# Ours loads as the `rasterlab` command does: its module, then the Qt-free
-# modules main() loads before it imports the window; the watcher needs a
+# Ours loads as the `rasterlab` command without a command does: collection
+# off (app/launcher.py), the command line's module, then the Qt-free modules
+# main() loads before it imports the window; the watcher needs a
 # QApplication, made here before launch() would.
 STARTUP_OURS = """
+from app.launcher import before_window
+before_window()  # as `rasterlab` without a command does, before its first import
 from app import cli
 from app.window_preload import load_before_qt
 load_before_qt()

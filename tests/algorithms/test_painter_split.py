@@ -15,11 +15,18 @@ from tests.support import record
 GRID = (24, 18)
 
 
+# The pieces' corners snap to 1/256 px, so an edge a cut ends on moves by
+# up to 1/512 px at that end: a centre closer than this to an edge of its
+# triangle may fall on either side.
+SNAP = Fraction(1, 256)
+
+
 def nearest(points, z, pixel, gap=Fraction(1, 50)):
     """The triangle whose plane is nearest at the pixel's centre, among those
-    containing it; None when it holds the centre only on an edge (the fill rule
-    decides there), or when another triangle holding it is within ``gap`` in
-    depth (near the line where two triangles meet, or in one plane)."""
+    containing it; None when it holds the centre only on an edge or within
+    SNAP of one (the fill rule and the snapped cuts decide there), or when
+    another triangle holding it is within ``gap`` in depth (near the line
+    where two triangles meet, or in one plane)."""
     px, py = pixel[0] + Fraction(1, 2), pixel[1] + Fraction(1, 2)
     found = []
     for t in range(len(points) // 3):
@@ -33,11 +40,23 @@ def nearest(points, z, pixel, gap=Fraction(1, 50)):
         gamma = 1 - alpha - beta
         if min(alpha, beta, gamma) >= 0:
             za, zb, zc = (Fraction(v) for v in z[3 * t:3 * t + 3])
-            found.append((alpha * za + beta * zb + gamma * zc, t, min(alpha, beta, gamma) > 0))
+            clear = min(alpha, beta, gamma) > 0 and not near_an_edge(
+                ((ax, ay), (bx, by), (cx, cy)), (px, py))
+            found.append((alpha * za + beta * zb + gamma * zc, t, clear))
     found.sort()
     if not found or (len(found) > 1 and found[1][0] - found[0][0] < gap) or not found[0][2]:
         return None
     return found[0][1]
+
+
+def near_an_edge(corners, point) -> bool:
+    """Whether ``point`` is within SNAP of the line through an edge (exact)."""
+    for k in range(3):
+        (ax, ay), (bx, by) = corners[k], corners[(k + 1) % 3]
+        cross = (bx - ax) * (point[1] - ay) - (by - ay) * (point[0] - ax)
+        if cross * cross < SNAP * SNAP * ((bx - ax) ** 2 + (by - ay) ** 2):
+            return True
+    return False
 
 
 def check(points, z, grid, trace):
