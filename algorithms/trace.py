@@ -193,34 +193,10 @@ class Trace:
         head = next(frames, None) if self._count < self.step_cap else None
         if not isinstance(head, tuple):
             return frames if head is None else chain((head,), frames)
-        packer, carry = Packer(len(self._nans)), [head]
+        packer = Packer(len(self._nans), head)
         self._flush()
-        while True:
-            first = self._columns.count
-            began = time.perf_counter()
-            size = min(self._chunk, max(1, self._next_report - self._count),
-                       self.step_cap - self._count)
-            try:
-                rows, left = packer.chunk(frames, size, carry)
-            except InputError:
-                raise  # the generator refused its input: not a protocol fault
-            except (ValueError, TypeError, OverflowError) as error:
-                raise self._frame_error(first, error) from None
-            carry = []
-            if len(rows):
-                self._check_rows(rows, first)
-                self._columns.append(rows)
-            if left is not None:
-                if not packer.widen():
-                    return chain(left, frames)
-                carry = left  # once: the values are not all integers
-                continue
-            if len(rows) < size or self._count >= self.step_cap:
-                return frames
-            if self._monitor is not None:
-                self._pace(time.perf_counter() - began)
-            if self._count >= self._next_report:
-                self._report()
+        self._convert_chunks(lambda size: packer.chunk(frames, size), self.step_cap)
+        return chain(packer.left, frames)
 
     def _record_lean(self, group) -> None:
         # A short run of tuples between rich records waits in the list; a
@@ -233,21 +209,32 @@ class Trace:
                 self._flush()
             return
         self._flush()
-        while True:
+
+        def convert(size):
+            rows = self._lean_chunk(group, size)
+            return rows, len(rows) > 0
+        self._convert_chunks(convert, math.inf)
+
+    def _convert_chunks(self, convert, limit) -> None:
+        """Into the columns, chunk after chunk: ``convert(size)`` gives up to
+        ``size`` frames as rows and whether more may follow. A chunk never
+        passes the next report, so progress keeps its interval, nor ``limit``
+        frames recorded in all."""
+        while self._count < limit:
             first = self._columns.count
             began = time.perf_counter()
+            size = min(self._chunk, max(1, self._next_report - self._count), limit - self._count)
             try:
-                # never past the next report: progress keeps its interval
-                size = min(self._chunk, max(1, self._next_report - self._count))
-                rows = self._lean_chunk(group, size)
+                rows, more = convert(size)
             except InputError:
                 raise  # the generator refused its input: not a protocol fault
             except (ValueError, TypeError, OverflowError) as error:
                 raise self._frame_error(first, error) from None
-            if not len(rows):
+            if len(rows):
+                self._check_rows(rows, first)
+                self._columns.append(rows)
+            if not more:
                 return
-            self._check_rows(rows, first)
-            self._columns.append(rows)
             if self._monitor is not None:
                 self._pace(time.perf_counter() - began)
             if self._count >= self._next_report:

@@ -71,32 +71,40 @@ class Packer:
     turn them into the same doubles numpy would), then as doubles.
     """
 
-    def __init__(self, k: int):
+    def __init__(self, k: int, head):
         self._formats = list(_pack_formats(k))
         self.dtype = self._formats[0][1]
         self._buffer = memoryview(b"")
+        self._carry = [head]  # frames read but not yet packed
+        self.left: list = []  # the frames that would not pack in any format
 
-    def chunk(self, frames, size: int, carry: list):
-        """Up to ``size`` frames, ``carry`` first, as rows; and the list of
-        frames that would not pack, or None. The frames are listed and
-        packed PART at a time (a list that small stays in the processor's
-        cache) into one buffer reused for every chunk, whose pages are
-        touched once, not once a chunk."""
+    def chunk(self, frames, size: int):
+        """Up to ``size`` frames as rows, and whether more may follow. The
+        frames are listed and packed PART at a time (a list that small stays
+        in the processor's cache) into one buffer reused for every chunk,
+        whose pages are touched once, not once a chunk. A list that does not
+        pack is carried to the next chunk in the next format (once: the
+        values are not all integers), or, with no format left, kept in
+        ``left`` and the packing ends."""
         filled = 0
         for done in range(0, size, PART):
             want = min(PART, size - done)
-            part = list(islice(frames, max(0, want - len(carry))))
-            part = carry + part if carry else part
-            carry = []
+            part = self._carry + list(islice(frames, max(0, want - len(self._carry))))
+            self._carry = []
             piece = self.pack(part)
             if piece is None:
-                return np.frombuffer(self._buffer[:filled], self.dtype), part
+                rows = np.frombuffer(self._buffer[:filled], self.dtype)
+                if self._widen():
+                    self._carry = part
+                else:
+                    self.left = part
+                return rows, not self.left
             self._room(filled + len(piece))
             self._buffer[filled:filled + len(piece)] = piece
             filled += len(piece)
             if len(part) < want:
-                break
-        return np.frombuffer(self._buffer[:filled], self.dtype), None
+                return np.frombuffer(self._buffer[:filled], self.dtype), False
+        return np.frombuffer(self._buffer[:filled], self.dtype), True
 
     def _room(self, size: int) -> None:
         """A buffer of at least ``size`` bytes, grown by doubling (a short
@@ -113,7 +121,7 @@ class Packer:
         except (struct.error, TypeError, ValueError, OverflowError):
             return None
 
-    def widen(self) -> bool:
+    def _widen(self) -> bool:
         """Go on with the next format; False when none is left."""
         self._formats.pop(0)
         if self._formats:
