@@ -548,7 +548,11 @@ class Trace:
 
     def state_at(self, i: int, compact: bool = False) -> FrameState:
         i = self._index(i)
-        raster = self.raster_at(i, compact)
+        return self.state_on(i, self.raster_at(i, compact))
+
+    def state_on(self, i: int, raster: Raster) -> FrameState:
+        """Step i's state shown on ``raster``, which the caller made (and
+        which should be the raster after step i)."""
         return FrameState(i, self.step(i), raster, self.variables_at(i), self.candidates_at(i))
 
     def raster_at(self, i: int, compact: bool = False) -> Raster:

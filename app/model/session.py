@@ -427,8 +427,7 @@ class Session:
         if trace is not self.trace or state is None or not 0 < i - state.index <= ONWARD_STEPS:
             return None
         trace.replay(state.index + 1, i + 1, state.raster)
-        return FrameState(i, trace.step(i), state.raster, trace.variables_at(i),
-                          trace.candidates_at(i))
+        return trace.state_on(i, state.raster)
 
     def final_raster(self) -> Raster | None:
         if self.trace is None:
@@ -467,8 +466,7 @@ class Session:
         final = trace.raster_at(end)
         # The last step's state shares the final raster (nothing writes to
         # either): one framebuffer, not two, on a 4096 x 4096 grid.
-        last = FrameState(end, trace.step(end), final, trace.variables_at(end),
-                          trace.candidates_at(end))
+        last = trace.state_on(end, final)
         enabled = self.compare_enabled
         found = self._comparison(scene, previous, final, monitor) if enabled else None
         return Outcome(scene, previous, trace, final, found, enabled, refusal, last)

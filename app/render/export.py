@@ -23,7 +23,6 @@ import numpy as np
 from PIL import Image
 
 from algorithms import registry
-from algorithms.trace import FrameState
 
 from app.model.geometry import run_paths
 from app.render.derivation import draw_distances
@@ -217,15 +216,13 @@ class _States:
 
     def at(self, index: int):
         trace = self.trace
-        step = trace.step(index)
         if self.incremental and self.index is not None and index == self.index + 1:
             trace.replay(index, index + 1, self.raster)
             written = [tuple(cell) for cell in trace.written(index, index + 1).pixels.tolist()]
         else:
             self.raster, written = trace.raster_at(index), None
         self.index = index
-        state = FrameState(index, step, self.raster, trace.variables_at(index),
-                           trace.candidates_at(index))
+        state = trace.state_on(index, self.raster)
         return state, written
 
 
