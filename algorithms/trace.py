@@ -21,6 +21,7 @@ through the queries below rather than by walking them:
 """
 from __future__ import annotations
 
+import functools
 import math
 import time
 from dataclasses import dataclass
@@ -33,7 +34,7 @@ from .errors import InputError
 from .monitor import (CHUNK, DEFAULT_STEP_CAP, Cancelled, RecordMonitor,  # noqa: F401 (the trace's API)
                       checkpoint, watching, work_allowance)
 from .keyframes import Keyframes, color_dtype, smallest_unsigned
-from .trace_store import Columns, Packer, Records
+from .trace_store import Columns, Packer, Records, frame_dtype
 from .raster import Raster
 from .steps import NO_PIXEL, PLOT, RICH_RECORDS, CodeLine, Span, Start, Step, Vars
 
@@ -121,8 +122,11 @@ class Trace:
         self._monitor: RecordMonitor | None = None
         self._next_report = math.inf
         self._chunk = self._max_chunk = CHUNK
-        kinds = np.array([line.kind == PLOT for line in self.code], dtype=bool)
-        self._line_plots = kinds
+
+    @functools.cached_property
+    def _plot_lines(self) -> np.ndarray:
+        """Whether each pseudo-code line plots (made when first asked for)."""
+        return np.array([line.kind == PLOT for line in self.code], dtype=bool)
 
     # ----------------------------------------------------------- recording
     @classmethod
@@ -153,8 +157,7 @@ class Trace:
         if not isinstance(start, Start):
             raise TraceError("the first frame of a run must be a Start record")
         self.start = start
-        self._dtype = np.dtype([("line", "u2"), ("x", "i4"), ("y", "i4")]
-                               + [(f"v{k}", "f8") for k in range(len(start.values))])
+        self._dtype = frame_dtype(len(start.values))
         self._columns = Columns(self._dtype.names[3:], min(self._chunk, PENDING_ROWS))
         self._nans = (math.nan,) * len(start.values)
         # Every frame, lean or rich, goes to this list first and to numpy a
@@ -195,7 +198,10 @@ class Trace:
             return frames if head is None else chain((head,), frames)
         packer = Packer(len(self._nans), head)
         self._flush()
-        self._convert_chunks(lambda size: packer.chunk(frames, size), self.step_cap)
+        try:
+            self._convert_chunks(lambda size: packer.chunk(frames, size), self.step_cap)
+        finally:
+            packer.close()
         return chain(packer.left, frames)
 
     def _record_lean(self, group) -> None:
@@ -443,7 +449,7 @@ class Trace:
         return self.written().values
 
     def _single_writes(self, lo: int, hi: int) -> np.ndarray:
-        mask = self._line_plots[self.line[lo:hi]] & (self.x[lo:hi] != NO_PIXEL)
+        mask = self._plot_lines[self.line[lo:hi]] & (self.x[lo:hi] != NO_PIXEL)
         # Rich records never write a single pixel (a Span writes its run).
         mask[self.steps_of(lo=lo, hi=hi) - lo] = False
         return mask
@@ -454,7 +460,7 @@ class Trace:
         if Span not in self._steps_by_type:  # most runs have none: skip the work
             return np.zeros(0, np.int64), np.zeros((0, 2), np.int64), np.zeros(0)
         spans = self.spans(lo, hi)
-        spans = spans[self._line_plots[spans["line"]]]
+        spans = spans[self._plot_lines[spans["line"]]]
         lengths = np.maximum(spans["x_end"] - spans["x_start"], 0)
         steps = np.repeat(spans["step"], lengths)
         # x = the span's x_start plus the write's place within its span.

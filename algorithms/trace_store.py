@@ -3,8 +3,8 @@
 ``Columns``  the frame columns (line, x, y, values), filled a chunk at a
              time and grown in place, so that recording never holds the
              frames twice (the chunks and the finished columns).
-``Packer``   plain frames to bytes in the columns' layout, the fast way
-             to record long runs of tuples.
+``Packer``   plain frames to bytes numpy reads in place, the fast way to
+             record long runs of tuples.
 ``Records``  the rich records (Vars, Table, Note, Span), pickled in batches:
              a pickled batch takes a fraction of the memory of the Python
              objects (a Table of Fractions, say), and a batch is unpickled
@@ -13,6 +13,7 @@
 from __future__ import annotations
 
 import functools
+import marshal
 import pickle
 import struct
 import threading
@@ -25,6 +26,14 @@ GROWTH = 1.25  # the columns grow by a quarter when a chunk does not fit
 BATCH = 512  # rich records pickled together
 PART = 1024  # plain frames listed and packed together
 CACHED_BATCHES = 8  # unpickled batches kept for the next look-up
+LINE_MAX = 65535  # the line column's type holds no more
+SPARE_BUFFERS = 2  # packing buffers kept for the next recordings
+SPARE_BYTES = 1 << 20  # and only small ones: a long run pays for its buffer many times over
+
+# Packing buffers of finished recordings, for the next ones to reuse:
+# fresh pages cost more than the packing itself on short runs (the C
+# library gives freed memory back to the system and faults it in again).
+_spare_buffers: list = []
 
 
 class Columns:
@@ -65,16 +74,18 @@ class Columns:
 class Packer:
     """Plain frames, tuples of integers line, x, y and k numbers, to bytes.
 
-    struct packs a list of tuples into rows about twice as fast as numpy
-    converts them one tuple at a time. Values pack as 64-bit integers while
-    every value met is an integer (that format packs faster; the columns
-    turn them into the same doubles numpy would), then as doubles.
+    Three formats, each tried while the frames fit it: marshal while every
+    value is an int within 32 bits (the fastest: one C call a list, read in
+    place by a dtype with offsets), struct with 64-bit integers while every
+    value is an integer, then struct with doubles. struct packs a list of
+    tuples into rows about twice as fast as numpy converts them one tuple
+    at a time; the columns turn integers into the same doubles numpy would.
     """
 
     def __init__(self, k: int, head):
         self._formats = list(_pack_formats(k))
         self.dtype = self._formats[0][1]
-        self._buffer = memoryview(b"")
+        self._buffer = _spare_buffers.pop() if _spare_buffers else memoryview(b"")
         self._carry = [head]  # frames read but not yet packed
         self.left: list = []  # the frames that would not pack in any format
 
@@ -83,14 +94,15 @@ class Packer:
         frames are listed and packed PART at a time (a list that small stays
         in the processor's cache) into one buffer reused for every chunk,
         whose pages are touched once, not once a chunk. A list that does not
-        pack is carried to the next chunk in the next format (once: the
-        values are not all integers), or, with no format left, kept in
-        ``left`` and the packing ends."""
+        pack is carried to the next chunk in the next format (at most twice:
+        the formats only widen), or, with no format left, kept in ``left``
+        and the packing ends."""
         filled = 0
         for done in range(0, size, PART):
             want = min(PART, size - done)
-            part = self._carry + list(islice(frames, max(0, want - len(self._carry))))
-            self._carry = []
+            part = list(islice(frames, max(0, want - len(self._carry))))
+            if self._carry:
+                part[:0], self._carry = self._carry, []
             piece = self.pack(part)
             if piece is None:
                 rows = np.frombuffer(self._buffer[:filled], self.dtype)
@@ -114,12 +126,16 @@ class Packer:
             grown[:len(self._buffer)] = self._buffer
             self._buffer = grown
 
-    def pack(self, frames: list) -> bytes | None:
-        """The frames as rows of ``dtype``, or None if one does not pack."""
-        try:
-            return b"".join(starmap(self._formats[0][0], frames))
-        except (struct.error, TypeError, ValueError, OverflowError):
-            return None
+    def close(self) -> None:
+        """Hand the buffer on to the next recording; the rows taken from it
+        must have been copied out."""
+        if len(_spare_buffers) < SPARE_BUFFERS and 0 < len(self._buffer) <= SPARE_BYTES:
+            _spare_buffers.append(self._buffer)
+        self._buffer = memoryview(b"")
+
+    def pack(self, frames: list):
+        """The frames as rows of ``dtype`` (bytes), or None if one does not pack."""
+        return self._formats[0][0](frames)
 
     def _widen(self) -> bool:
         """Go on with the next format; False when none is left."""
@@ -130,14 +146,62 @@ class Packer:
 
 
 @functools.lru_cache(maxsize=16)
+def frame_dtype(k: int, value: str = "f8") -> np.dtype:
+    """Rows of frames with k values: line, x, y, v0 ... (made once, not per run)."""
+    return np.dtype([("line", "u2"), ("x", "i4"), ("y", "i4")]
+                    + [(f"v{n}", value) for n in range(k)])
+
+
+@functools.lru_cache(maxsize=16)
 def _pack_formats(k: int) -> tuple:
-    """(pack, dtype) of frames with k values: integers first, then doubles."""
-    names = [("line", "u2"), ("x", "i4"), ("y", "i4")]
-    return tuple((struct.Struct("=Hii" + code * k).pack,
-                  np.dtype(names + [(f"v{n}", kind) for n in range(k)]))
-                 for code, kind in (("q", "i8"), ("d", "f8")))
+    """(pack, dtype) of frames with k values: small integers, integers, doubles."""
+    return (_marshal_format(k),) + tuple(
+        (_struct_pack(struct.Struct("=Hii" + code * k).pack), frame_dtype(k, kind))
+        for code, kind in (("q", "i8"), ("d", "f8")))
 
 
+def _struct_pack(pack):
+    def rows(frames: list) -> bytes | None:
+        try:
+            return b"".join(starmap(pack, frames))
+        except (struct.error, TypeError, ValueError, OverflowError):
+            return None
+    return rows
+
+
+def _marshal_format(k: int) -> tuple:
+    """(pack, dtype) of frames whose k + 3 items are all ints of 32 bits.
+
+    marshal (version 2, which writes no back-references) writes a list of
+    such tuples as fixed 5-byte cells: a tuple's head "(" and its length,
+    then "i" and 4 little-endian bytes per int. A list packs when the tag
+    of every cell and every tuple's length are these, which proves the
+    layout (each cell checked is 5 bytes, so the next one is where it is
+    looked for); anything else (a bool, a float, a bigger int, a numpy
+    scalar, a subclass, a nested tuple) is left to the struct formats.
+    """
+    cells = k + 4
+    stride = 5 * cells
+    fields = ["count", "line", "x", "y"] + [f"v{n}" for n in range(k)]
+    # line as unsigned, so one maximum also catches a negative line
+    dtype = np.dtype({"names": fields, "formats": ["<i4", "<u4"] + ["<i4"] * (k + 2),
+                      "offsets": [1] + [6 + 5 * n for n in range(k + 3)], "itemsize": stride})
+    tags = (b"(" + b"i" * (cells - 1)) * PART  # the tags of a list's cells
+
+    def rows(frames: list):
+        n = len(frames)
+        try:
+            data = marshal.dumps(frames, 2)
+        except ValueError:
+            return None
+        expected = tags[:n * cells] if n <= PART else tags[:cells] * n
+        if len(data) != 5 + n * stride or data[5::5] != expected:
+            return None
+        heads = np.frombuffer(data, dtype, n, 5)
+        if n and ((heads["count"] != k + 3).any() or heads["line"].max() > LINE_MAX):
+            return None
+        return memoryview(data)[5:]
+    return rows, dtype
 class Records:
     """Rich records by step, pickled BATCH at a time in step order."""
 

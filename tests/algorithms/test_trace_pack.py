@@ -1,7 +1,9 @@
-"""Plain frames recorded the fast way (struct-packed lists) give the columns
+"""Plain frames recorded the fast way (lists packed by marshal or struct) give the columns
 a frame-by-frame reading gives, wherever the run turns to floats, huge
 integers, NumPy numbers or rich records, and wherever the step cap falls."""
 import math
+import time
+from collections import namedtuple
 
 import numpy as np
 import pytest
@@ -21,7 +23,11 @@ VALUES = {
     "bigger": lambda k: 2 ** 70 + k,  # beyond 64 bits
     "numpy": lambda k: np.int32(k),
     "bool": lambda k: k % 2 == 0,
+    # either side of the 32-bit ints marshal writes in fixed cells
+    "edge32": lambda k: (2 ** 31 - 1, -2 ** 31, 2 ** 31, -2 ** 31 - 1)[k % 4],
+    "named": lambda k: k,  # the frame is a tuple subclass
 }
+Frame = namedtuple("Frame", "line x y value")
 
 
 def build(segments):
@@ -35,7 +41,8 @@ def build(segments):
                 expected.append((2, NO_PIXEL, NO_PIXEL, math.nan))
             else:
                 value, y = VALUES[kind](k), len(frames) % 89
-                frames.append((1, k % 97, y, value))
+                frame = (1, k % 97, y, value)
+                frames.append(Frame(*frame) if kind == "named" else frame)
                 expected.append((1, k % 97, y, float(value)))
     return frames, expected
 
@@ -88,7 +95,7 @@ def test_rich_records_keep_their_steps_after_a_packed_run():
 
 
 @pytest.mark.parametrize("bad", [(1, 0, 0), (1, 0, 0, 1, 2), (1, "x", 0, 1), (-1, 0, 0, 1),
-                                 (1, 2 ** 40, 0, 1)])
+                                 (1, 2 ** 40, 0, 1), (70_000, 0, 0, 1), (1, 0, 0, (1,))])
 def test_a_bad_frame_after_a_packed_run_is_reported(bad):
     frames, _ = build([("int", 3000)])
     with pytest.raises(TraceError, match=r"is not \(line, x, y, value\)"):
@@ -99,3 +106,40 @@ def test_a_line_beyond_the_code_after_a_packed_run_is_named():
     frames, _ = build([("int", 3000)])
     with pytest.raises(TraceError, match="step 3001: pseudo-code line 9 does not exist"):
         Trace.record(iter(frames + [(9, 0, 0, 1)]), CODE, 128, 128)
+
+
+def test_a_nested_tuple_that_fills_the_cells_of_two_frames_is_refused():
+    # marshal writes this pair in the cells of two plain frames: the tags
+    # match, only the tuples' lengths tell them apart
+    frames, _ = build([("int", 3000)])
+    with pytest.raises(TraceError, match=r"is not \(line, x, y, value\)"):
+        Trace.record(iter(frames + [(1, 0, 0, 1, (1, 2, 3)), 7] + frames[1:5]), CODE, 128, 128)
+
+
+def test_recordings_in_threads_do_not_share_a_packing_buffer(monkeypatch):
+    # Finished recordings hand their buffer on; two at once must each get their own.
+    from concurrent.futures import ThreadPoolExecutor
+
+    from algorithms import trace_store
+    monkeypatch.setattr(trace_store, "_spare_buffers", [])  # buffers the size of these runs
+    def shifted(n):
+        """Frames of run n, each run's pixels apart from the others'."""
+        frames, expected = build([("int", 1500 + 300 * n), ("edge32", 40)])
+        moved = [(line, x, y + 100 * n, *rest) for line, x, y, *rest in expected[1:]]
+        return frames[:1] + [(line, x, y, int(v)) for line, x, y, v in moved], expected[:1] + moved
+
+    runs = [shifted(n) for n in range(4)]
+
+    def yielding(frames):
+        for k, frame in enumerate(frames):
+            if k % 50 == 0:
+                time.sleep(0)  # let another thread pack into its buffer meanwhile
+            yield frame
+
+    def record(n):
+        frames, expected = runs[n % 4]
+        return columns_of(Trace.record(yielding(frames), CODE, 128, 128)), expected
+
+    with ThreadPoolExecutor(4) as pool:
+        for got, expected in pool.map(record, range(64)):
+            same(got, expected)
