@@ -26,7 +26,6 @@ GROWTH = 1.25  # the columns grow by a quarter when a chunk does not fit
 BATCH = 512  # rich records pickled together
 PART = 1024  # plain frames listed and packed together
 CACHED_BATCHES = 8  # unpickled batches kept for the next look-up
-LINE_MAX = 65535  # the line column's type holds no more
 SPARE_BUFFERS = 2  # packing buffers kept for the next recordings
 SPARE_BYTES = 1 << 20  # and only small ones: a long run pays for its buffer many times over
 
@@ -174,19 +173,23 @@ def _marshal_format(k: int) -> tuple:
 
     marshal (version 2, which writes no back-references) writes a list of
     such tuples as fixed 5-byte cells: a tuple's head "(" and its length,
-    then "i" and 4 little-endian bytes per int. A list packs when the tag
-    of every cell and every tuple's length are these, which proves the
-    layout (each cell checked is 5 bytes, so the next one is where it is
-    looked for); anything else (a bool, a float, a bigger int, a numpy
-    scalar, a subclass, a nested tuple) is left to the struct formats.
+    then "i" and 4 little-endian bytes per int. A list of n frames packs
+    when its length is n cells of each frame, every cell's tag is the one
+    such a frame has there, and the low byte of every tuple's length is
+    k + 3. That proves the layout: an object of another size puts its own
+    tag where a cell's tag is checked, and a longer tuple (or one nested in
+    it) would leave too few cells for the other frames. Anything else (a
+    bool, a float, a bigger int, a numpy scalar, a subclass) is left to the
+    struct formats, as is a line the line column cannot hold.
     """
     cells = k + 4
     stride = 5 * cells
-    fields = ["count", "line", "x", "y"] + [f"v{n}" for n in range(k)]
-    # line as unsigned, so one maximum also catches a negative line
-    dtype = np.dtype({"names": fields, "formats": ["<i4", "<u4"] + ["<i4"] * (k + 2),
-                      "offsets": [1] + [6 + 5 * n for n in range(k + 3)], "itemsize": stride})
+    fields = ["line", "x", "y"] + [f"v{n}" for n in range(k)]
+    dtype = np.dtype({"names": fields, "formats": ["<i4"] * (k + 3),
+                      "offsets": [6 + 5 * n for n in range(k + 3)], "itemsize": stride})
     tags = (b"(" + b"i" * (cells - 1)) * PART  # the tags of a list's cells
+    lengths = bytes([k + 3]) * PART
+    zeros = bytes(PART)
 
     def rows(frames: list):
         n = len(frames)
@@ -194,14 +197,17 @@ def _marshal_format(k: int) -> tuple:
             data = marshal.dumps(frames, 2)
         except ValueError:
             return None
-        expected = tags[:n * cells] if n <= PART else tags[:cells] * n
-        if len(data) != 5 + n * stride or data[5::5] != expected:
+        if n > PART or len(data) != 5 + n * stride:
             return None
-        heads = np.frombuffer(data, dtype, n, 5)
-        if n and ((heads["count"] != k + 3).any() or heads["line"].max() > LINE_MAX):
+        # cells from byte 5 on; a frame's length at byte 1 of its cells, the
+        # two high bytes of its line (0 for lines 0 to 65535) at bytes 8 and 9
+        if (data[5::5] != tags[:n * cells] or data[6::stride] != lengths[:n]
+                or data[13::stride] != zeros[:n] or data[14::stride] != zeros[:n]):
             return None
         return memoryview(data)[5:]
     return rows, dtype
+
+
 class Records:
     """Rich records by step, pickled BATCH at a time in step order."""
 

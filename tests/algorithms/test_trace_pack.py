@@ -95,7 +95,8 @@ def test_rich_records_keep_their_steps_after_a_packed_run():
 
 
 @pytest.mark.parametrize("bad", [(1, 0, 0), (1, 0, 0, 1, 2), (1, "x", 0, 1), (-1, 0, 0, 1),
-                                 (1, 2 ** 40, 0, 1), (70_000, 0, 0, 1), (1, 0, 0, (1,))])
+                                 (1, 2 ** 40, 0, 1), (70_000, 0, 0, 1), (1, 0, 0, (1,)),
+                                 (1 << 24, 0, 0, 1)])
 def test_a_bad_frame_after_a_packed_run_is_reported(bad):
     frames, _ = build([("int", 3000)])
     with pytest.raises(TraceError, match=r"is not \(line, x, y, value\)"):
@@ -143,3 +144,47 @@ def test_recordings_in_threads_do_not_share_a_packing_buffer(monkeypatch):
     with ThreadPoolExecutor(4) as pool:
         for got, expected in pool.map(record, range(64)):
             same(got, expected)
+
+
+# Items of frames that marshal writes in cells of other sizes, or in 5-byte
+# cells that are not ints, or ints a frame's columns cannot take as they are.
+ITEMS = st.one_of(st.integers(-2 ** 31, 2 ** 31 - 1), st.integers(-2 ** 40, 2 ** 40),
+                  st.sampled_from([True, False, None, 0.5, (), (1,), (1, 2, 3), "i"]),
+                  st.integers(0, 3).map(lambda n: tuple(range(n))))
+SMALL = st.integers(-9, 9)
+LINES = st.one_of(st.integers(0, 70_000), st.integers(-2 ** 31, 2 ** 31 - 1),
+                  st.sampled_from([-1, 65_535, 65_536, 1 << 24, (1 << 24) + 5]))
+PLAIN = st.tuples(st.integers(0, 9), SMALL, SMALL, st.integers(-2 ** 31, 2 ** 31 - 1))
+# Runs of frames: a plain one, a near one, or a frame with a tuple nested
+# after its values and a bare int, which marshal writes in two frames' cells.
+RUNS = st.one_of(
+    PLAIN.map(lambda frame: [frame]),
+    st.tuples(LINES, ITEMS, ITEMS, ITEMS).map(lambda frame: [frame]),
+    st.tuples(LINES, SMALL, SMALL, SMALL).map(lambda frame: [frame]),
+    st.lists(ITEMS, min_size=0, max_size=6).map(lambda items: [tuple(items)]),
+    ITEMS.map(lambda item: [item]),
+    st.tuples(SMALL, SMALL, SMALL, SMALL, st.tuples(SMALL, SMALL, SMALL), SMALL).map(
+        lambda t: [t[:5], t[5]]))
+
+
+def plain(frame, k):
+    """Whether the frame is k + 3 ints of 32 bits with a line the column holds."""
+    return (type(frame) is tuple and len(frame) == k + 3
+            and all(type(v) is int and -2 ** 31 <= v < 2 ** 31 for v in frame)
+            and 0 <= frame[0] <= 65535)
+
+
+@settings(max_examples=300, deadline=None)
+@given(st.lists(RUNS, max_size=8))
+def test_the_marshal_layout_packs_exactly_the_plain_frames(runs):
+    frames = [frame for run in runs for frame in run]
+    from algorithms.trace_store import _pack_formats
+    pack, dtype = _pack_formats(1)[0]
+    packed = pack(frames)
+    if not all(plain(frame, 1) for frame in frames):
+        assert packed is None
+        return
+    rows = np.frombuffer(packed, dtype)
+    got = list(zip(rows["line"].tolist(), rows["x"].tolist(), rows["y"].tolist(),
+                   rows["v0"].tolist()))
+    assert got == frames
