@@ -37,6 +37,7 @@ SERIES_DOTS = 300  # more steps than this: no dot per step on the plot over the 
 # steps that decide nothing.
 BRANCH_COLORS = ("#2563a8", "#2f9e44")
 UNDECIDED_COLOR = "#9aa5b1"
+DOT_COLORS = (UNDECIDED_COLOR, *BRANCH_COLORS)  # by kind: decides nothing, E, NE
 
 
 def monospace_font(scale: float = 1.0) -> QFont:
@@ -292,46 +293,45 @@ class VariablesPanel(QWidget):
         return table
 
     def _make_plot(self):
-        """The plot of the decision variable over the run, with the step's marker."""
-        plot = pg.PlotWidget(self, enableMenu=False)  # no view menu is built
+        """The plot of the decision variable over the run, with the step's
+        marker: a view box and two axes. A PlotItem would also build its
+        options form, a title and two more axes: some 8 ms more of the
+        window's start-up."""
+        plot = pg.GraphicsLayoutWidget(self)
         plot.setObjectName("series")
         plot.setBackground("#ffffff")
         plot.setMinimumHeight(120)
         plot.setMaximumHeight(190)
-        item = plot.getPlotItem()
-        item.hideButtons()
-        item.setMenuEnabled(False)
+        plot.ci.setContentsMargins(1, 1, 1, 1)  # a PlotItem's margins
+        plot.ci.setSpacing(0)
+        self.plot_view = view = pg.ViewBox(enableMenu=False)  # no view menu is built
+        view.setMouseEnabled(x=True, y=False)
+        self.plot_axes = {name: pg.AxisItem(name, pen="#8a94a1", textPen="#3d4754", linkView=view)
+                          for name in ("left", "bottom")}
+        plot.addItem(self.plot_axes["left"], 0, 0)
+        plot.addItem(view, 0, 1)
+        plot.addItem(self.plot_axes["bottom"], 1, 1)
         # No background grid: pyqtgraph redraws it whole whenever the
         # step marker moves, which costs more than the rest of the panel.
-        item.setDownsampling(auto=True, mode="peak")
-        item.setClipToView(True)
-        for name in ("bottom", "left"):
-            axis = item.getAxis(name)
-            axis.setPen(pg.mkPen("#8a94a1"))
-            axis.setTextPen(pg.mkPen("#3d4754"))
-        item.getViewBox().setMouseEnabled(x=True, y=False)
         self.zero = pg.InfiniteLine(0, angle=0, pen=pg.mkPen("#9aa5b1", style=Qt.PenStyle.DashLine))
         self.curve = pg.PlotDataItem(pen=pg.mkPen("#2563a8", width=1.5), connect="finite",
                                      symbol="o", symbolSize=4, symbolBrush="#2563a8",
-                                     symbolPen=None)
+                                     symbolPen=None, autoDownsample=True,
+                                     downsampleMethod="peak", clipToView=True)
         self.marker = pg.InfiniteLine(0, angle=90, pen=pg.mkPen("#f08c00", width=2))
         self.point = _step_dot()
-        # A decision variable's dots, one item per branch taken, one for
-        # the steps that decide nothing.
-        self.branch_dots = tuple(
-            pg.PlotDataItem(pen=None, symbol="o", symbolSize=4, symbolBrush=color,
-                            symbolPen=None) for color in BRANCH_COLORS)
-        self.undecided_dots = pg.PlotDataItem(pen=None, symbol="o", symbolSize=3,
-                                              symbolBrush=UNDECIDED_COLOR, symbolPen=None)
-        for part in (self.zero, self.curve, self.undecided_dots, *self.branch_dots,
-                     self.marker):
-            plot.addItem(part)
-        plot.addItem(self.point, ignoreBounds=True)  # it stands on the curve
+        # A decision variable's dots, coloured by the branch taken: one
+        # item with a brush per dot, since pyqtgraph measures each item's
+        # bounds on every step.
+        self.dots = pg.ScatterPlotItem(pen=None, symbol="o")
+        self._dot_brushes = [pg.mkBrush(color) for color in DOT_COLORS]
+        for part in (self.zero, self.curve, self.dots, self.marker):
+            view.addItem(part)
+        view.addItem(self.point, ignoreBounds=True)  # it stands on the curve
         self.marker.setZValue(10)
         self.point.setZValue(11)
         # The run's values stay put while the step marker moves over them.
-        for part in (self.curve, self.undecided_dots, *self.branch_dots):
-            cache_drawing(part.curve, part.scatter)
+        cache_drawing(self.curve.curve, self.curve.scatter, self.dots)
         return plot
 
     # ----------------------------------------------------------- table
@@ -468,8 +468,7 @@ class VariablesPanel(QWidget):
         if not finite:
             self._series = None
             self.curve.setData([], [])
-            for dots in (*self.branch_dots, self.undecided_dots):
-                dots.setData([], [])
+            self._set_dots()
             self.point.hide()
             return
         self._series = values
@@ -489,7 +488,7 @@ class VariablesPanel(QWidget):
         if decision:
             low, high = min(low, 0.0), max(high, 0.0)
         pad = max(0.5, (high - low) * 0.08)
-        self.plot.getPlotItem().getViewBox().setRange(
+        self.plot_view.setRange(
             xRange=(0, max(1, len(values) - 1)), yRange=(low - pad, high + pad), padding=0.02)
 
     def _draw_series(self, steps, known, taken) -> None:
@@ -501,15 +500,23 @@ class VariablesPanel(QWidget):
         if taken is not None:
             self.curve.setPen(pg.mkPen(UNDECIDED_COLOR, width=1))
             self.curve.setData(steps if few else [], known if few else [], symbol=None)
-            for dots, part in zip((*self.branch_dots, self.undecided_dots),
-                                  (taken == 0, taken == 1, (taken != 0) & (taken != 1))):
-                dots.setData(steps[part], known[part], symbolSize=4 if few else 3)
+            # 0: decides nothing, 1 and 2: the branches. Drawn in that
+            # order, so that where dots overlap a branch's lie on top.
+            kind = np.where((taken == 0) | (taken == 1), taken + 1, 0)
+            order = np.argsort(kind, kind="stable")
+            self._set_dots(steps[order], known[order], kind[order], 4 if few else 3)
             return
-        for dots in (*self.branch_dots, self.undecided_dots):
-            dots.setData([], [])
+        self._set_dots()
         self.curve.setPen(pg.mkPen("#2563a8", width=1.5))
         self.curve.setData(steps, known, symbol="o" if few else None, symbolSize=4,
                            symbolBrush="#2563a8", symbolPen=None)
+
+    def _set_dots(self, steps=(), values=(), kinds=(), size=3) -> None:
+        """The decision variable's dots, each brushed by its kind (see
+        ``DOT_COLORS``); hidden when there are none."""
+        brushes = [self._dot_brushes[k] for k in np.asarray(kinds, dtype=np.int64).tolist()]
+        self.dots.setData(steps, values, brush=brushes, size=size)
+        self.dots.setVisible(len(brushes) > 0)
 
     def set_marker(self, index: int) -> None:
         self.marker.setValue(index)

@@ -334,8 +334,7 @@ def _theme_panels(window, dark: bool) -> None:
     if plot is None:
         return
     plot.setBackground("#1b2027" if dark else "#ffffff")
-    for name in ("bottom", "left"):
-        axis = plot.getPlotItem().getAxis(name)
+    for axis in window.variables.plot_axes.values():
         axis.setTextPen(pg.mkPen("#c9d1d9" if dark else "#3d4754"))
 
 

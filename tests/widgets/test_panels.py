@@ -101,8 +101,14 @@ def test_transport_speed(qtbot):
     assert bar.speed == 2000
 
 
+def _dots(panel):
+    """(step, value, colour name) of each of the decision variable's dots, in drawing order."""
+    return [(spot.pos().x(), spot.pos().y(), spot.brush().color().name())
+            for spot in panel.dots.points()]
+
+
 def test_a_long_decision_run_is_dots_coloured_by_branch(qtbot):
-    from widgets.panels import BRANCH_COLORS, SERIES_DOTS
+    from widgets.panels import BRANCH_COLORS, SERIES_DOTS, UNDECIDED_COLOR
     p = VariablesPanel()
     qtbot.addWidget(p)
     rng = np.random.default_rng(7)
@@ -112,23 +118,46 @@ def test_a_long_decision_run_is_dots_coloured_by_branch(qtbot):
     p.set_series(long, "d", decision=True, branches=(taken, ("E", "NE")))
     # No line: thousands of zigzags would fill the plot solid.
     assert p.curve.xData is None or len(p.curve.xData) == 0
-    low, high = p.branch_dots
-    assert [pg.mkBrush(d.opts["symbolBrush"]).color().name() for d in (low, high)] == \
-        list(BRANCH_COLORS)
     assert "E" in p.plot_title.text() and "NE" in p.plot_title.text()
-    # The oracle: each dot's colour is its step's branch.
-    for dots, code in ((low, 0), (high, 1), (p.undecided_dots, -1)):
-        steps = dots.xData.astype(int)
-        assert (taken[steps] == code).all()
-        assert np.array_equal(long[steps], dots.yData)
-    assert len(low.xData) + len(high.xData) > SERIES_DOTS
+    # The oracle: each dot stands on its step's value in its step's branch's colour.
+    colour = {0: BRANCH_COLORS[0], 1: BRANCH_COLORS[1], -1: UNDECIDED_COLOR}
+    dots = _dots(p)
+    assert len(dots) > SERIES_DOTS and p.dots.isVisible()
+    for x, y, name in dots:
+        assert x == int(x) and y == long[int(x)] and name == colour[int(taken[int(x)])]
+    assert {name for _x, _y, name in dots} == set(colour.values())
+    # Where dots overlap, a branch's lie over those that decide nothing,
+    # the second branch's over the first's (as drawn in that order).
+    layer = {UNDECIDED_COLOR: 0, BRANCH_COLORS[0]: 1, BRANCH_COLORS[1]: 2}
+    layers = [layer[name] for _x, _y, name in dots]
+    assert layers == sorted(layers)
     # A short run keeps its line under the dots.
     p.set_series(long[:40], "d", decision=True, branches=(taken[:40], ("E", "NE")))
     assert len(p.curve.xData) == 40
-    assert len(low.xData) == int((taken[:40] == 0).sum())
-    # A value that does not decide keeps its line however long the run.
+    short = _dots(p)
+    assert sorted(x for x, _y, _n in short) == list(range(40))
+    assert sum(name == BRANCH_COLORS[0] for _x, _y, name in short) == int((taken[:40] == 0).sum())
+    # A value that does not decide keeps its line however long the run, and no dots.
     p.set_series(np.cumsum(long), "x", decision=False)
-    assert len(p.curve.xData) > SERIES_DOTS and (low.xData is None or not len(low.xData))
+    assert len(p.curve.xData) > SERIES_DOTS and not _dots(p) and not p.dots.isVisible()
+
+
+def test_the_run_plot_is_a_bare_view_with_two_axes(qtbot):
+    """No PlotItem (its options form and title cost start-up time), no
+    menus, no buttons; the mouse pans along the steps only."""
+    p = VariablesPanel()
+    qtbot.addWidget(p)
+    items = p.plot.scene().items()
+    assert not [item for item in items if isinstance(item, (pg.PlotItem, pg.ButtonItem))]
+    assert {id(a) for a in items if isinstance(a, pg.AxisItem)} == \
+        {id(a) for a in p.plot_axes.values()}
+    assert sorted(p.plot_axes) == ["bottom", "left"]
+    for axis in p.plot_axes.values():
+        assert axis.linkedView() is p.plot_view
+        assert (axis.pen().color().name(), axis.textPen().color().name()) == ("#8a94a1", "#3d4754")
+    assert p.plot_view.menu is None and not p.plot_view.menuEnabled()
+    assert p.plot_view.mouseEnabled() == [True, False]
+    assert p.curve.opts["autoDownsample"] and p.curve.opts["clipToView"]
 
 
 def test_the_marked_line_wraps_whole_never_cut(qtbot):

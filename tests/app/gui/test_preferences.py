@@ -371,6 +371,9 @@ def test_apply_takes_effect_at_once_in_the_open_window(qtbot, settings_file):
     assert chip == preferences.DARK_PALETTE.coverage[0]
     current = window.legend.chips[0][0].pixmap().toImage().pixelColor(2, 7).name()
     assert current == preferences.DARK_PALETTE.current
+    # The run plot's numbers are light on its dark ground.
+    assert [axis.textPen().color().name() for axis in window.variables.plot_axes.values()] \
+        == ["#c9d1d9"] * 2
     dialog.reject()
     # The View menu's toggle is the same preference.
     window.preferences.grid_lines_action.setChecked(False)
