@@ -24,6 +24,7 @@ import numpy as np
 
 GROWTH = 1.25  # the columns grow by a quarter when a chunk does not fit
 BATCH = 512  # rich records pickled together
+SMALL_BATCH = 8  # a last batch shorter than this is kept as objects
 PART = 1024  # plain frames listed and packed together
 CACHED_BATCHES = 8  # unpickled batches kept for the next look-up
 SPARE_BUFFERS = 2  # packing buffers kept for the next recordings
@@ -224,8 +225,11 @@ class Records:
             self._seal()
 
     def finish(self, steps: np.ndarray) -> None:
-        if self._pending:
+        if len(self._pending) >= SMALL_BATCH:
             self._seal()
+        elif self._pending:  # a few records (a line's Start): pickling saves nothing
+            self._batches.append(self._pending)
+            self._pending = []
         self.steps = steps
 
     def get(self, step: int):
