@@ -210,7 +210,8 @@ def _marshal_format(k: int) -> tuple:
 
 
 class Records:
-    """Rich records by step, pickled BATCH at a time in step order."""
+    """Rich records by step, pickled BATCH at a time in step order (a last
+    batch of fewer than SMALL_BATCH records stays as the objects)."""
 
     def __init__(self):
         self._pending: list = []
