@@ -34,7 +34,7 @@ import numpy as np
 import pyqtgraph as pg
 from PySide6.QtCore import QPointF, QRectF, Qt, Signal
 from PySide6.QtGui import QColor, QCursor
-from PySide6.QtWidgets import QGraphicsView, QMenu
+from PySide6.QtWidgets import QGraphicsGridLayout, QGraphicsItem, QGraphicsView, QMenu, QSizePolicy
 
 from app.model.drawing import (CIRCLE, CONTOURS, FIXED, GROUPS, Close, Move, Place, Remove,
                                Sketch, Tool, all_placed, can_close, closes_at, pending)
@@ -59,7 +59,7 @@ INSPECT = Qt.KeyboardModifier.AltModifier  # Alt+click asks to inspect a pixel
 DRAW, MARKER = "draw", "marker"  # the tools
 
 
-class PixelGridView(pg.PlotWidget):
+class PixelGridView(pg.GraphicsView):
     """The grid of pixels, with everything drawn over it, and the drawing
     tools (see ``app.model.drawing``)."""
 
@@ -83,9 +83,12 @@ class PixelGridView(pg.PlotWidget):
     inspectRequested = Signal(object)
 
     def __init__(self, palette, outline_styles, parent=None):
+        super().__init__(parent)
+        self.setSizePolicy(QSizePolicy.Policy.Expanding, QSizePolicy.Policy.Expanding)
         self._box = GridViewBox(self)
-        super().__init__(parent, viewBox=self._box,
-                         axisItems={"bottom": PixelAxis("bottom"), "left": PixelAxis("left")})
+        #: The grid's coordinates, "bottom" and "left".
+        self.axes = {"bottom": PixelAxis("bottom"), "left": PixelAxis("left")}
+        self.setCentralItem(self._frame())
         self.palette = palette
         self._style_plot(palette)
         self._add_items(palette, outline_styles)
@@ -105,13 +108,48 @@ class PixelGridView(pg.PlotWidget):
         self.setCursor(QCursor(Qt.CursorShape.CrossCursor))
         self.set_grid(32, 24)
 
+    def _frame(self):
+        """The view box with an axis to its left and one below, laid out as
+        a PlotItem lays out its own (without its title, top and right axes,
+        buttons and options form, some 6 ms of the window's start-up)."""
+        frame = pg.GraphicsWidget()
+        frame.setSizePolicy(QSizePolicy.Policy.Expanding, QSizePolicy.Policy.Expanding)
+        layout = QGraphicsGridLayout()
+        layout.setContentsMargins(1, 1, 1, 1)
+        layout.setSpacing(0)
+        frame.setLayout(layout)
+        layout.addItem(self._box, 0, 1)
+        for name, row, column in (("bottom", 1, 1), ("left", 0, 0)):
+            axis = self.axes[name]
+            axis.linkToView(self._box)
+            layout.addItem(axis, row, column)
+            axis.setZValue(0.5)  # over the view box's edge, as in a PlotItem
+            axis.setFlag(QGraphicsItem.GraphicsItemFlag.ItemNegativeZStacksBehindParent)
+        for k in range(2):
+            layout.setRowPreferredHeight(k, 0)
+            layout.setRowMinimumHeight(k, 0)
+            layout.setColumnPreferredWidth(k, 0)
+            layout.setColumnMinimumWidth(k, 0)
+        layout.setRowStretchFactor(0, 100)
+        layout.setRowStretchFactor(1, 1)
+        layout.setColumnStretchFactor(0, 1)
+        layout.setColumnStretchFactor(1, 100)
+        return frame
+
+    def close(self):
+        # As PlotWidget.close: the axes and the view box leave the scene
+        # before the scene is cleared, which would otherwise crash PySide.
+        if not self.closed:
+            for axis in self.axes.values():
+                axis.unlinkFromView()
+                axis.close()
+            self.scene().removeItem(self._box)
+            self.setParent(None)
+        return super().close()
+
     def _style_plot(self, palette) -> None:
         self.setBackground(palette.outside)
-        plot = self.getPlotItem()
-        plot.hideButtons()
-        plot.setMenuEnabled(False)
-        for name in ("bottom", "left"):
-            axis = plot.getAxis(name)
+        for axis in self.axes.values():
             axis.setPen(pg.mkPen("#6b7785"))
             axis.setTextPen(pg.mkPen("#3d4754"))
         self._box.setBackgroundColor(palette.outside)
@@ -173,9 +211,8 @@ class PixelGridView(pg.PlotWidget):
         if (width, height) == self._size:
             return
         self._size = (width, height)
-        plot = self.getPlotItem()
-        plot.getAxis("bottom").set_cells(width, max(width, height))
-        plot.getAxis("left").set_cells(height, max(width, height))
+        self.axes["bottom"].set_cells(width, max(width, height))
+        self.axes["left"].set_cells(height, max(width, height))
         self.grid_lines.set_size(width, height)
         self.outlines.set_size(width, height)
         margin = max(width, height) * 0.5 + 2
@@ -290,8 +327,7 @@ class PixelGridView(pg.PlotWidget):
         self.setBackground(palette.outside)
         self._box.setBackgroundColor(palette.outside)
         dark = QColor(palette.outside).lightness() < 128
-        for name in ("bottom", "left"):
-            axis = self.getPlotItem().getAxis(name)
+        for axis in self.axes.values():
             axis.setPen(pg.mkPen("#8a94a1" if dark else "#6b7785"))
             axis.setTextPen(pg.mkPen("#c9d1d9" if dark else "#3d4754"))
         self.grid_lines.set_color(palette.grid)

@@ -122,7 +122,7 @@ class WindowView(QObject):
                 widget.setFont(font)
         w.variables.set_type_scale(self.zoom * (PRESENTING if self.presenting else 1.0))
         for name in ("bottom", "left"):  # the grid's coordinates, read from the back row too
-            axis = w.grid.getPlotItem().getAxis(name)
+            axis = w.grid.axes[name]
             tick = QFont(self._fonts[id(w)])
             if tick.pointSizeF() > 0:
                 tick.setPointSizeF(tick.pointSizeF() * self.zoom * (1.4 if self.presenting else 1))

@@ -182,7 +182,7 @@ def drawn_ticks(view, name):
     """(label, viewport position) of every tick label the axis draws, and
     the viewport positions of its tick marks."""
     from PySide6.QtGui import QImage, QPainter
-    axis = view.getPlotItem().getAxis(name)
+    axis = view.axes[name]
     image = QImage(10, 10, QImage.Format.Format_ARGB32)
     painter = QPainter(image)
     try:
@@ -207,7 +207,7 @@ def check_axes(view, qtbot, y_down, cells_labelled):
     near = max(1, min(3, round(cell / 3)))
     checked = 0
     for name, index in (("bottom", 0), ("left", 1)):
-        axis = view.getPlotItem().getAxis(name)
+        axis = view.axes[name]
         labels, marks = drawn_ticks(view, name)
         assert axis.index_labels == cells_labelled, name
         # Screen y grows downwards: with y up, larger y is higher on screen.
@@ -287,3 +287,70 @@ def test_a_picture_changed_in_place_repaints_only_its_cells(view, qtbot):
     assert not handed  # without handing the picture over again
     view.set_image(picture.copy())  # another array is handed over
     assert handed
+
+
+def _plot_widget_as_before(view):
+    """The oracle: a PlotWidget built as the grid view was before it left
+    out the PlotItem, with the same axes, pens, colours, cells, size and range."""
+    import pyqtgraph as pg
+    from widgets.grid_items import PixelAxis
+    plot = pg.PlotWidget(viewBox=pg.ViewBox(lockAspect=True, enableMenu=False),
+                         axisItems={"bottom": PixelAxis("bottom"), "left": PixelAxis("left")})
+    plot.setBackground(PALETTE.outside)
+    item = plot.getPlotItem()
+    item.hideButtons()
+    item.setMenuEnabled(False)
+    width, height = view.grid_size
+    for name, count in (("bottom", width), ("left", height)):
+        axis = item.getAxis(name)
+        axis.setPen(pg.mkPen("#6b7785"))
+        axis.setTextPen(pg.mkPen("#3d4754"))
+        axis.set_cells(count, max(width, height))
+    item.getViewBox().setBackgroundColor(PALETTE.outside)
+    plot.resize(view.size())
+    return plot
+
+
+def test_the_grid_is_a_bare_view_box_with_two_pixel_axes(view, qtbot):
+    """No PlotItem (its options form, title, two more axes and buttons
+    cost start-up time), yet the same frame: the view box and its two
+    axes where a PlotItem puts them, drawn the same."""
+    import pyqtgraph as pg
+    from PySide6.QtCore import QRect
+    from widgets.grid_items import PixelAxis
+    items = view.scene().items()
+    assert not [i for i in items if isinstance(i, (pg.PlotItem, pg.ButtonItem, pg.LabelItem))]
+    assert {id(a) for a in items if isinstance(a, pg.AxisItem)} == \
+        {id(a) for a in view.axes.values()}
+    for name, axis in view.axes.items():
+        assert isinstance(axis, PixelAxis) and axis.orientation == name
+        assert axis.linkedView() is view.view_box
+        assert (axis.pen().color().name(), axis.textPen().color().name()) == ("#6b7785", "#3d4754")
+    assert view.view_box.menu is None
+
+    plot = _plot_widget_as_before(view)
+    qtbot.addWidget(plot)
+    plot.show()
+    qtbot.waitExposed(plot)
+    box = plot.getViewBox()
+    (x0, x1), (y0, y1) = view.view_box.viewRange()
+    box.setRange(xRange=(x0, x1), yRange=(y0, y1), padding=0)
+    qtbot.waitUntil(lambda: box.sceneBoundingRect() == view.view_box.sceneBoundingRect()
+                    and box.viewRange() == view.view_box.viewRange(), timeout=2000)
+    for name, axis in view.axes.items():
+        assert axis.sceneBoundingRect() == plot.getPlotItem().getAxis(name).sceneBoundingRect()
+    # The axes' strips, clear of the view box (whose contents differ), are
+    # the same pictures.
+    inner = view.view_box.sceneBoundingRect()
+    left = int(inner.left())
+    bottom = int(inner.bottom()) + 1
+    strips = (QRect(0, 0, left, view.height()),
+              QRect(0, bottom, view.width(), view.height() - bottom))
+    for strip in strips:
+        assert strip.width() > 10 and strip.height() > 10
+        ours, theirs = view.grab(strip).toImage(), plot.grab(strip).toImage()
+        assert ours == theirs
+        # Something is drawn there: the axis line, ticks and labels.
+        colours = {ours.pixelColor(x, y).name() for x in range(ours.width())
+                   for y in range(0, ours.height(), 2)}
+        assert len(colours) > 3
