@@ -11,14 +11,14 @@ asked of PySide6's own function.
 """
 from __future__ import annotations
 
+import importlib
 import sys
-
-import PySide6  # noqa: F401 (loads the hook's module, shibokensupport.feature)
 
 
 def quicken() -> bool:
     """Replace the hook's source search; False if there is none to replace
     (another PySide6 version) or it is replaced already."""
+    importlib.import_module("PySide6")  # loads the hook's module, shibokensupport.feature
     feature = sys.modules.get("shibokensupport.feature")
     original = getattr(feature, "_mod_uses_pyside", None)
     if not callable(original) or hasattr(original, "original"):
