@@ -22,7 +22,7 @@ WINDOW_MODULES = (
     "app.model.derivation", "app.model.exercise", "app.model.inspector", "app.model.steptable",
     "app.render.frame", "app.render.incremental", "app.render.compose",
     "app.render.outside_view", "app.render.reasoning", "app.render.texture_frame",
-    "app.render.overlays", "logging.handlers",
+    "app.render.overlays", "logging",
 )
 
 

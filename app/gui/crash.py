@@ -15,7 +15,6 @@ or with no application at all, prints one line on stderr instead.
 from __future__ import annotations
 
 import logging
-import logging.handlers
 import sys
 import threading
 import traceback
@@ -54,7 +53,9 @@ class CrashHandler(QObject):
         super().__init__()
         self.window = window
         self.log_file = log_path(folder)
-        self.logger = _file_logger(self.log_file)
+        # Made at the first error, so start-up does not load logging.handlers.
+        self._logger: logging.Logger | None | bool = None  # False: it cannot be made
+        self._logger_lock = threading.Lock()
         self.count = 0  # exceptions handled since install
         self._pending: list[str] = []
         self._showing = False
@@ -106,12 +107,22 @@ class CrashHandler(QObject):
         except RuntimeError:  # the handler's Qt side is already gone
             _stderr(f"RasterLab: unexpected error: {line}")
 
+    @property
+    def logger(self) -> logging.Logger | None:
+        """The error log's logger (made when first asked for), or None when
+        its folder cannot be made."""
+        with self._logger_lock:  # errors of two threads at once make one
+            if self._logger is None:
+                self._logger = _file_logger(self.log_file) or False
+        return self._logger or None
+
     def _log(self, exc_type, value, tb) -> bool:
-        if self.logger is None:
+        logger = self.logger
+        if logger is None:
             return False
         text = "".join(traceback.format_exception(exc_type, value, tb))
         try:
-            self.logger.error("Uncaught exception\n%s", text.rstrip())
+            logger.error("Uncaught exception\n%s", text.rstrip())
             return True
         except Exception:  # noqa: BLE001 - a full disk must not hide the error
             return False
@@ -164,6 +175,7 @@ class CrashHandler(QObject):
 def _file_logger(path: Path) -> logging.Logger | None:
     """A logger writing to ``path`` only (never to the console), or None
     when the folder cannot be created."""
+    import logging.handlers  # only once there is an error to log
     try:
         ensure(path.parent)
         handler = logging.handlers.RotatingFileHandler(

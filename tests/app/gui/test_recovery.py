@@ -338,6 +338,20 @@ def test_without_a_window_one_line_on_stderr(tmp_path, capsys):
     assert "KeyError: 'lost'" in (tmp_path / "rasterlab.log").read_text()
 
 
+def test_a_log_folder_that_cannot_be_made_is_said_once_at_the_first_error(tmp_path, capsys):
+    (tmp_path / "file").write_text("")
+    handler = CrashHandler(None, tmp_path / "file" / "logs")  # under a file: no folder
+    assert capsys.readouterr().err == ""  # nothing is made, nor said, before an error
+    for _ in range(2):
+        try:
+            raise KeyError("lost")
+        except KeyError as error:
+            handler.handle(type(error), error, error.__traceback__)
+    lines = capsys.readouterr().err.splitlines()
+    assert len(lines) == 3 and "cannot keep an error log" in lines[0]
+    assert all("unexpected error: KeyError: 'lost'" in line for line in lines[1:])
+
+
 def test_help_menu_opens_the_log_folder(window, handler, monkeypatch, data):
     opened = []
     monkeypatch.setattr("app.gui.crash.QDesktopServices.openUrl",

@@ -1,6 +1,6 @@
 """The first window loads only what it shows: the export writers, Pillow,
-the report's measurements, worksheets and compiled kernels load when first
-used, so that start-up does not pay for them."""
+the report's measurements, worksheets, compiled kernels and the error log's
+file handler load when first used, so that start-up does not pay for them."""
 import subprocess
 import sys
 from pathlib import Path
@@ -20,7 +20,7 @@ print("LOADED", sorted(m for m in sys.modules if m in DEFERRED or m.split(".")[0
 
 DEFERRED = ("PIL", "numba", "av", "fpdf", "app.analysis", "app.render.export",
             "app.render.writers", "app.render.video", "app.render.html", "app.model.worksheet",
-            "app.model.checking", "app.gui.worksheet_pdf")
+            "app.model.checking", "app.gui.worksheet_pdf", "logging.handlers")
 
 
 def test_the_first_window_loads_none_of_the_deferred_modules(tmp_path):
