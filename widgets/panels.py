@@ -120,6 +120,10 @@ class CodePanel(QWidget):
         layout.addWidget(self.notes_area)
         self._texts: tuple[str, ...] = ()
         self._current: int | None = None
+        # A line's height, marked or not, at the columns' widths and the
+        # type size it was fitted at: stepping between the same lines sets
+        # it again instead of laying the text out each step.
+        self._heights: dict[tuple, int] = {}
 
     def set_code(self, texts, notes=()) -> None:
         """The lines (strings) and the notes shown under them."""
@@ -127,6 +131,7 @@ class CodePanel(QWidget):
         if texts != self._texts:
             self._texts = texts
             self._current = None
+            self._heights.clear()
             self.lines.setRowCount(len(texts))
             for row, text in enumerate(texts):
                 number = QTableWidgetItem(f"  {row + 1}")
@@ -224,7 +229,14 @@ class CodePanel(QWidget):
         number.setText(("\u25b6 " if current else "  ") + str(row + 1))
         number.setForeground(QBrush(CURRENT_EDGE if current else LINE_NUMBER))
         # Bold text is wider: the row wraps again rather than lose its end.
-        self.lines.resizeRowToContents(row)
+        key = (row, current, self.lines.columnWidth(0), self.lines.columnWidth(1),
+               self.lines.font().pointSizeF())
+        height = self._heights.get(key)
+        if height is None:
+            self.lines.resizeRowToContents(row)
+            self._heights[key] = self.lines.rowHeight(row)
+        else:
+            self.lines.setRowHeight(row, height)
 
 
 def _step_dot() -> QGraphicsEllipseItem:

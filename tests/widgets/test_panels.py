@@ -196,6 +196,33 @@ def test_the_marked_line_wraps_whole_never_cut(qtbot):
     assert table.textElideMode() == Qt.TextElideMode.ElideNone
 
 
+def test_stepping_between_lines_keeps_each_row_as_tall_as_its_text(qtbot):
+    # Heights are kept per line, marked or not, and set again while stepping.
+    from PySide6.QtGui import QFontMetrics
+    p = CodePanel()
+    qtbot.addWidget(p)
+    p.show()
+    texts = ["start", "if d <= 0:  d += incrE;  x += 1;  plot(x, y)",
+             "else:  d += incrNE;  x += 1;  y += 1;  plot(x, y)", "done"]
+    p.set_code(texts)
+    table = p.lines
+
+    def needed(row):
+        """The text's wrapped height in its item's font, measured here."""
+        item = table.item(row, 1)
+        return QFontMetrics(item.font()).boundingRect(
+            0, 0, table.columnWidth(1) - 8, 10_000, int(Qt.TextFlag.TextWordWrap),
+            item.text()).height()
+
+    for width in (260, 600, 260):  # wrapped, then one line each, then wrapped again
+        p.resize(width, 400)
+        qtbot.wait(20)
+        for line in (1, 2, 1, 2, 0, 1):
+            p.set_current(line)
+            for row in range(len(texts)):
+                assert needed(row) <= table.rowHeight(row) <= needed(row) + 12, (width, line, row)
+
+
 def test_variables_panel_sets_only_the_cells_that_changed(qtbot):
     panel = VariablesPanel()
     qtbot.addWidget(panel)
