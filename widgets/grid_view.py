@@ -34,7 +34,7 @@ import numpy as np
 import pyqtgraph as pg
 from PySide6.QtCore import QPointF, QRectF, Qt, Signal
 from PySide6.QtGui import QColor, QCursor
-from PySide6.QtWidgets import QGraphicsGridLayout, QGraphicsItem, QGraphicsView, QMenu, QSizePolicy
+from PySide6.QtWidgets import QGraphicsView, QMenu, QSizePolicy
 
 from app.model.drawing import (CIRCLE, CONTOURS, FIXED, GROUPS, Close, Move, Place, Remove,
                                Sketch, Tool, all_placed, can_close, closes_at, pending)
@@ -42,8 +42,8 @@ from app.model.drawing import labels as point_names
 from app.model.inputs import clamp
 
 from .grid_box import GridViewBox
-from .grid_items import (CellOutlines, GridLinesItem, PixelAxis, handle_items, number_text,
-                         path_xy, primitive_curves, translucent)
+from .grid_items import (CellOutlines, GridLinesItem, PixelAxis, axes_frame, handle_items,
+                         number_text, path_xy, point_label, primitive_curves, translucent)
 
 
 HANDLE_HIT = 12   # screen pixels from a handle's centre that grab it
@@ -88,7 +88,7 @@ class PixelGridView(pg.GraphicsView):
         self._box = GridViewBox(self)
         #: The grid's coordinates, "bottom" and "left".
         self.axes = {"bottom": PixelAxis("bottom"), "left": PixelAxis("left")}
-        self.setCentralItem(self._frame())
+        self.setCentralItem(axes_frame(self._box, self.axes))
         self.palette = palette
         self._style_plot(palette)
         self._add_items(palette, outline_styles)
@@ -107,34 +107,6 @@ class PixelGridView(pg.GraphicsView):
         self.viewport().setMouseTracking(True)
         self.setCursor(QCursor(Qt.CursorShape.CrossCursor))
         self.set_grid(32, 24)
-
-    def _frame(self):
-        """The view box with an axis to its left and one below, laid out as
-        a PlotItem lays out its own (without its title, top and right axes,
-        buttons and options form, some 6 ms of the window's start-up)."""
-        frame = pg.GraphicsWidget()
-        frame.setSizePolicy(QSizePolicy.Policy.Expanding, QSizePolicy.Policy.Expanding)
-        layout = QGraphicsGridLayout()
-        layout.setContentsMargins(1, 1, 1, 1)
-        layout.setSpacing(0)
-        frame.setLayout(layout)
-        layout.addItem(self._box, 0, 1)
-        for name, row, column in (("bottom", 1, 1), ("left", 0, 0)):
-            axis = self.axes[name]
-            axis.linkToView(self._box)
-            layout.addItem(axis, row, column)
-            axis.setZValue(0.5)  # over the view box's edge, as in a PlotItem
-            axis.setFlag(QGraphicsItem.GraphicsItemFlag.ItemNegativeZStacksBehindParent)
-        for k in range(2):
-            layout.setRowPreferredHeight(k, 0)
-            layout.setRowMinimumHeight(k, 0)
-            layout.setColumnPreferredWidth(k, 0)
-            layout.setColumnMinimumWidth(k, 0)
-        layout.setRowStretchFactor(0, 100)
-        layout.setRowStretchFactor(1, 1)
-        layout.setColumnStretchFactor(0, 1)
-        layout.setColumnStretchFactor(1, 100)
-        return frame
 
     def close(self):
         # As PlotWidget.close: the axes and the view box leave the scene
@@ -620,14 +592,7 @@ class PixelGridView(pg.GraphicsView):
 
     # --------------------------------------------------------- drawing
     def _make_label(self, color) -> pg.TextItem:
-        label = pg.TextItem(color=color, anchor=(0, 1), fill=pg.mkBrush(255, 255, 255, 215),
-                            border=pg.mkPen(200, 206, 214))
-        font = label.textItem.font()
-        font.setBold(True)
-        font.setPointSizeF(font.pointSizeF() * 1.1)
-        label.setFont(font)
-        label.setZValue(5)
-        label.hide()
+        label = point_label(color)
         self._box.addItem(label)
         return label
 
