@@ -194,11 +194,13 @@ def _marshal_format(k: int) -> tuple:
 
     def rows(frames: list):
         n = len(frames)
+        if n > PART:  # longer than the checks' patterns
+            return None
         try:
             data = marshal.dumps(frames, 2)
         except ValueError:
             return None
-        if n > PART or len(data) != 5 + n * stride:
+        if len(data) != 5 + n * stride:
             return None
         # cells from byte 5 on; a frame's length at byte 1 of its cells, the
         # two high bytes of its line (0 for lines 0 to 65535) at bytes 8 and 9
