@@ -8,7 +8,6 @@ import numpy as np
 import pyqtgraph as pg
 from PySide6.QtCore import QLineF, QRectF, Qt
 from PySide6.QtGui import QColor, QFontMetricsF, QPen
-from PySide6.QtWidgets import QGraphicsGridLayout, QGraphicsItem, QSizePolicy
 
 from .dirty import cache_drawing, cells_box, update_boxes
 
@@ -341,36 +340,6 @@ def handle_items(palette) -> tuple[Handles, Handles, Handles]:
     marker.setZValue(6)
     cache_drawing(handles, rim, marker)
     return handles, rim, marker
-
-
-def axes_frame(box, axes) -> pg.GraphicsWidget:
-    """The view box with an axis to its left and one below (``axes``:
-    "left", "bottom"), laid out as a PlotItem lays out its own (without its
-    title, top and right axes, buttons and options form, some 6 ms of the
-    window's start-up)."""
-    frame = pg.GraphicsWidget()
-    frame.setSizePolicy(QSizePolicy.Policy.Expanding, QSizePolicy.Policy.Expanding)
-    layout = QGraphicsGridLayout()
-    layout.setContentsMargins(1, 1, 1, 1)
-    layout.setSpacing(0)
-    frame.setLayout(layout)
-    layout.addItem(box, 0, 1)
-    for name, row, column in (("bottom", 1, 1), ("left", 0, 0)):
-        axis = axes[name]
-        axis.linkToView(box)
-        layout.addItem(axis, row, column)
-        axis.setZValue(0.5)  # over the view box's edge, as in a PlotItem
-        axis.setFlag(QGraphicsItem.GraphicsItemFlag.ItemNegativeZStacksBehindParent)
-    for k in range(2):
-        layout.setRowPreferredHeight(k, 0)
-        layout.setRowMinimumHeight(k, 0)
-        layout.setColumnPreferredWidth(k, 0)
-        layout.setColumnMinimumWidth(k, 0)
-    layout.setRowStretchFactor(0, 100)
-    layout.setRowStretchFactor(1, 1)
-    layout.setColumnStretchFactor(0, 1)
-    layout.setColumnStretchFactor(1, 100)
-    return frame
 
 
 def point_label(color) -> pg.TextItem:

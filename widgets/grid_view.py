@@ -42,8 +42,9 @@ from app.model.drawing import labels as point_names
 from app.model.inputs import clamp
 
 from .grid_box import GridViewBox
-from .grid_items import (CellOutlines, GridLinesItem, PixelAxis, axes_frame, handle_items,
-                         number_text, path_xy, point_label, primitive_curves, translucent)
+from .axes_frame import axes_frame
+from .grid_items import (CellOutlines, GridLinesItem, PixelAxis, handle_items, number_text,
+                         path_xy, point_label, primitive_curves, translucent)
 
 
 HANDLE_HIT = 12   # screen pixels from a handle's centre that grab it

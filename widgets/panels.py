@@ -10,6 +10,7 @@ from PySide6.QtGui import QBrush, QColor, QFont, QFontDatabase, QFontMetrics
 from PySide6.QtWidgets import (QAbstractItemView, QFrame, QGraphicsEllipseItem,
                                QGraphicsItem, QHeaderView, QLabel, QScrollArea, QStyle, QTableWidget, QTableWidgetItem, QVBoxLayout, QWidget)
 
+from .axes_frame import axes_frame
 from .dirty import cache_drawing
 from .series_points import plot_points
 from .steady import SteadyBox
@@ -309,20 +310,16 @@ class VariablesPanel(QWidget):
         marker: a view box and two axes. A PlotItem would also build its
         options form, a title and two more axes: some 8 ms more of the
         window's start-up."""
-        plot = pg.GraphicsLayoutWidget(self)
+        plot = pg.GraphicsView(self)
         plot.setObjectName("series")
         plot.setBackground("#ffffff")
         plot.setMinimumHeight(120)
         plot.setMaximumHeight(190)
-        plot.ci.setContentsMargins(1, 1, 1, 1)  # a PlotItem's margins
-        plot.ci.setSpacing(0)
         self.plot_view = view = pg.ViewBox(enableMenu=False)  # no view menu is built
         view.setMouseEnabled(x=True, y=False)
-        self.plot_axes = {name: pg.AxisItem(name, pen="#8a94a1", textPen="#3d4754", linkView=view)
+        self.plot_axes = {name: pg.AxisItem(name, pen="#8a94a1", textPen="#3d4754")
                           for name in ("left", "bottom")}
-        plot.addItem(self.plot_axes["left"], 0, 0)
-        plot.addItem(view, 0, 1)
-        plot.addItem(self.plot_axes["bottom"], 1, 1)
+        plot.setCentralItem(axes_frame(view, self.plot_axes))
         # No background grid: pyqtgraph redraws it whole whenever the
         # step marker moves, which costs more than the rest of the panel.
         self.zero = pg.InfiniteLine(0, angle=0, pen=pg.mkPen("#9aa5b1", style=Qt.PenStyle.DashLine))
