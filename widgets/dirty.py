@@ -1,4 +1,4 @@
-"""Repaint only the part of a grid item that changed.
+"""Repaint only the part of a grid item, or of the window, that changed.
 
 An item over the grid (outlines, guides) covers the whole grid, so a plain
 ``update()`` repaints the whole view, image included: at 4096 x 4096 that
@@ -55,3 +55,12 @@ def cache_drawing(*items) -> None:
     item afresh when it changes or the view zooms."""
     for item in items:
         item.setCacheMode(QGraphicsItem.CacheMode.DeviceCoordinateCache)
+
+
+def fill_own_background(*widgets) -> None:
+    """Each widget fills its own background before it paints, so it is
+    opaque to Qt: repainting it (every step, for a caption, a counter or a
+    table's cells) no longer repaints the window, the dock and the panel
+    behind it first."""
+    for widget in widgets:
+        widget.setAutoFillBackground(True)

@@ -10,8 +10,8 @@ from PySide6.QtGui import QBrush, QColor, QFont, QFontDatabase, QFontMetrics
 from PySide6.QtWidgets import (QAbstractItemView, QFrame, QGraphicsEllipseItem,
                                QGraphicsItem, QHeaderView, QLabel, QScrollArea, QStyle, QTableWidget, QTableWidgetItem, QVBoxLayout, QWidget)
 
-from .axes_frame import axes_frame
-from .dirty import cache_drawing
+from .axes_frame import Axis, axes_frame
+from .dirty import cache_drawing, fill_own_background
 from .series_points import plot_points
 from .steady import SteadyBox
 
@@ -23,7 +23,6 @@ LINE_NUMBER = QColor("#8a94a1")
 NOTES_MAX_HEIGHT = 120
 # Where a variables cell keeps the look it was last given (colour, font,
 # swatch), so that an unchanged look is not set (and repainted) again.
-LOOK_ROLE = Qt.ItemDataRole.UserRole + 1
 # Values whose sign or range matters: text colours by tone.
 TONE_COLORS = {"positive": QColor("#1f7a3d"), "negative": QColor("#c92a2a"),
                "zero": QColor("#b35900")}
@@ -89,6 +88,7 @@ class CodePanel(QWidget):
         self.lines.setEditTriggers(QAbstractItemView.EditTrigger.NoEditTriggers)
         self.lines.setSelectionMode(QAbstractItemView.SelectionMode.NoSelection)
         self.lines.setFocusPolicy(Qt.FocusPolicy.NoFocus)
+        fill_own_background(self.lines.viewport())  # its marked line moves every step
         self.lines.setHorizontalScrollBarPolicy(Qt.ScrollBarPolicy.ScrollBarAlwaysOff)
         self.lines.setVerticalScrollMode(QAbstractItemView.ScrollMode.ScrollPerPixel)
         header = self.lines.horizontalHeader()
@@ -261,6 +261,8 @@ class VariablesPanel(QWidget):
         self.caption = QLabel(self)
         self.caption.setObjectName("stepCaption")
         self.caption.setWordWrap(True)
+        self.caption.setContentsMargins(0, 2, 0, 4)
+        fill_own_background(self.caption)  # changes every step
         self.chips = QLabel(self)
         self.chips.setObjectName("chips")
         self.chips.setWordWrap(True)
@@ -268,6 +270,9 @@ class VariablesPanel(QWidget):
         self.chips.hide()
         self.table = self._make_table()
         self._value_font = monospace_font()
+        # (row, column) -> (text, look) as last set: a step's unchanged
+        # cells (most of them) cost no call into Qt.
+        self._cells: dict[tuple[int, int], tuple] = {}
 
         self.plot = self._make_plot()
         self.plot_title = QLabel(self)
@@ -292,6 +297,7 @@ class VariablesPanel(QWidget):
         """The name/value table of the step's variables."""
         table = QTableWidget(0, 2, self)
         table.setObjectName("variables")
+        fill_own_background(table.viewport())  # values change every step
         table.setHorizontalHeaderLabels(["Name", "Value"])
         table.verticalHeader().setVisible(False)
         table.horizontalHeader().setSectionResizeMode(0, QHeaderView.ResizeMode.ResizeToContents)
@@ -317,7 +323,7 @@ class VariablesPanel(QWidget):
         plot.setMaximumHeight(190)
         self.plot_view = view = pg.ViewBox(enableMenu=False)  # no view menu is built
         view.setMouseEnabled(x=True, y=False)
-        self.plot_axes = {name: pg.AxisItem(name, pen="#8a94a1", textPen="#3d4754")
+        self.plot_axes = {name: Axis(name, pen="#8a94a1", textPen="#3d4754")
                           for name in ("left", "bottom")}
         plot.setCentralItem(axes_frame(view, self.plot_axes))
         # No background grid: pyqtgraph redraws it whole whenever the
@@ -380,6 +386,8 @@ class VariablesPanel(QWidget):
         before = dict(self._rows)
         if self.table.rowCount() != len(rows):
             self.table.setRowCount(len(rows))
+            self._cells = {cell: kept for cell, kept in self._cells.items()
+                           if cell[0] < len(rows)}
         # Only the cells whose text or look changed are set: each set
         # repaints its cell, and a step changes one or two values.
         fitted = []
@@ -408,6 +416,7 @@ class VariablesPanel(QWidget):
         """Values (and rows) ``factor`` times their usual size: the window's
         zoom, or presentation mode's large type; the next ``set_rows`` shows them."""
         self._value_font = monospace_font(factor)
+        self._cells = {}  # every value is set again in the new type
         height = max(QFontMetrics(self._value_font).height(), self.fontMetrics().height())
         self.table.verticalHeader().setDefaultSectionSize(height + 6)
 
@@ -439,27 +448,27 @@ class VariablesPanel(QWidget):
     def _set_cell(self, row, column, text, color, font=None, bold=False, swatch=None) -> bool:
         """Set what differs from the cell's text, colour, font and swatch;
         True when anything did."""
+        look = (color.rgba() if color is not None else None, font is not None and bold, swatch)
+        kept = self._cells.get((row, column))
+        if kept == (text, look):
+            return False
+        self._cells[row, column] = (text, look)
         item = self.table.item(row, column)
         if item is None:
             item = QTableWidgetItem()
             self.table.setItem(row, column, item)
-        look = repr((color.rgba() if color is not None else None,
-                     None if font is None else (font.key(), bold), swatch))
-        changed = item.data(LOOK_ROLE) != look
-        if changed:
+        if kept is None or kept[1] != look:
             if font is not None:
                 font = QFont(font)
                 font.setBold(bold)
                 item.setFont(font)
             item.setForeground(QBrush(color) if color is not None else QBrush())
             item.setData(Qt.ItemDataRole.DecorationRole, QColor(swatch) if swatch else None)
-            item.setData(LOOK_ROLE, look)
-        if item.toolTip() != text:
+        if kept is None or kept[0] != text:
             # Pairs such as (4, 10) stay whole when a long value wraps.
             item.setText(text.replace(", ", ",\u00a0"))
             item.setToolTip(text)
-            changed = True
-        return changed
+        return True
 
     # ------------------------------------------------------------ plot
     def set_series(self, values: np.ndarray | None, name: str = "",

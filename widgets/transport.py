@@ -9,6 +9,7 @@ from PySide6.QtGui import QFontMetrics
 from PySide6.QtWidgets import (QHBoxLayout, QLabel, QSizePolicy, QSlider, QSpinBox,
                                QToolButton, QVBoxLayout, QWidget)
 
+from .dirty import fill_own_background
 from .media_icons import media_icon
 from .steady import SteadyBox
 
@@ -90,6 +91,7 @@ class TransportBar(QWidget):
         self.counter.setObjectName("stepCounter")
         self.counter.setAlignment(Qt.AlignmentFlag.AlignLeft | Qt.AlignmentFlag.AlignVCenter)
         self.counter.setToolTip("The step on show and the last step of the run")
+        fill_own_background(self.timeline, self.counter)  # both change every step
 
     def _make_speed(self) -> QLabel:
         """The speed slider and the steps-per-second box beside it."""

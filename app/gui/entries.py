@@ -5,6 +5,8 @@ from __future__ import annotations
 
 from PySide6.QtGui import QAction
 
+from app.gui.look import apply_look
+
 
 class WindowEntry:
     """``action`` opens ``make(main)``, the first time made, then shown
@@ -22,6 +24,7 @@ class WindowEntry:
         fresh = self.window is None
         if fresh:
             self.window = self._make(self.main)
+            apply_look(self.window, self.main.dark)
         self.window.show()
         self.window.raise_()
         self.window.activateWindow()

@@ -10,6 +10,7 @@ from PySide6.QtCore import QObject, QSettings, Qt, QThread, Signal
 
 from widgets.export_dialog import ExportDialog
 
+from app.gui.look import apply_look
 from app.model.scene import one_line
 from app.render import export as exporting
 from app.render import formats
@@ -66,6 +67,7 @@ class ExportController(QObject):
         self.dialog = ExportDialog(window, exporting.MAX_FPS, exporting.MAX_SCALE,
                                    exporting.MAX_HOLD)
         self.dialog.setWindowModality(Qt.WindowModality.WindowModal)
+        apply_look(self.dialog, window.dark)
         self.dialog.set_steps(window.player.index, len(trace) - 1)
         self.dialog.set_bookmarks(scene.bookmarks)
         self.dialog.set_values({"scale": exporting.auto_scale(trace.width, trace.height),

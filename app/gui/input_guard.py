@@ -46,8 +46,14 @@ class InputGuard(QObject):
 
     def scan(self) -> None:
         """Guard the window's controls not guarded yet."""
-        for widget in self.window.findChildren(QWidget):
-            self._guard(widget)
+        self._guard_inside(self.window)
+
+    def _guard_inside(self, widget: QWidget) -> None:
+        """Found by kind in Qt, so that the window's other ~380 widgets are
+        not wrapped for Python (a wrapper costs a property and its event)."""
+        for kind in (*VALUE_CONTROLS, QLineEdit):
+            for control in widget.findChildren(kind):
+                self._guard(control)
 
     def _guard(self, widget) -> None:
         if isinstance(widget, (*VALUE_CONTROLS, QLineEdit)) and id(widget) not in self._guarded:
@@ -65,8 +71,7 @@ class InputGuard(QObject):
             child = event.child()
             if isinstance(child, QWidget):
                 self._guard(child)
-                for inner in child.findChildren(QWidget):
-                    self._guard(inner)
+                self._guard_inside(child)
         elif kind == QEvent.Type.Wheel:
             control = value_control(obj)
             if control is not None and not control.hasFocus():

@@ -32,6 +32,7 @@ from app.model.budget import DEFAULT_MEMORY_LIMIT
 from widgets.transport import SPEED_MAX, SPEED_MIN
 
 from app.gui.appdata import open_settings
+from app.gui.look import apply_look
 from app.render.compose import DARK_PALETTE, PALETTE
 
 THEMES = ("light", "dark")
@@ -48,20 +49,6 @@ COLOR_NAMES = {
     "candidate": "Candidates",
     "grid": "Grid lines",
 }
-
-# Over the window's light style sheet: the panels' own light backgrounds.
-DARK_STYLE = """
-QLabel#section { color: #9aa7b5; }
-QLabel#summary, QLabel#seriesTitle { color: #9aa7b5; }
-QLabel#stepCaption { color: #e6edf3; }
-QLabel#codeNotes { color: #c9d1d9; background: #232a33; border: 1px solid #38414d; }
-QTableWidget#codeLines { background: #1b2027; border: 1px solid #38414d; }
-QTreeWidget#algorithmPicker, QTableWidget#variables { border: 1px solid #38414d; }
-QWidget#transport { background: #232a33; border-top: 1px solid #38414d; }
-QLabel#legend { color: #c9d1d9; }
-QStatusBar QLabel#cursor { color: #c9d1d9; border-left: 1px solid #38414d; }
-"""
-
 
 # ------------------------------------------------------------ parsing values
 def _as_bool(value) -> bool:
@@ -263,11 +250,10 @@ class PreferencesController(QObject):
         old = self.prefs.values() if not first else {}
         theme = values["theme"]
         apply_theme(theme)
-        # The window's own sheet is the light look; the dark one goes over it.
-        sheet = window.styleSheet().replace(DARK_STYLE, "")
-        sheet += DARK_STYLE if theme == "dark" else ""
-        if sheet != window.styleSheet():  # restyling every widget takes long: only on a change
-            window.setStyleSheet(sheet)
+        dark = theme == "dark"
+        if dark != window.dark and not first:  # restyling takes long: only on a change
+            apply_look(window, dark)
+        window.dark = dark
         palette = dataclasses.replace(BASE_PALETTES[theme], **values["colors"][theme])
         window.set_palette(palette)
         _theme_panels(window, theme == "dark")

@@ -21,7 +21,7 @@ from algorithms.steps import Note, Table
 from widgets.grid_view import DRAW, MARKER
 
 from app.gui.appdata import APP_NAME
-from app.gui.look import ERROR_STYLE, STYLE, app_icon, coverage_rows, legend_rows, recolor
+from app.gui.look import ERROR_STYLE, app_icon, apply_look, coverage_rows, legend_rows, recolor
 from app.gui.player import Player
 from app.gui.shortcuts import GESTURES, ShortcutsDialog
 from app.gui.window_depth import DepthAndAccuracy
@@ -67,7 +67,7 @@ class MainWindow(WindowLayout, WindowMenus, DepthAndAccuracy, TextureDisplay, QM
         super().__init__(parent)
         self.setWindowTitle(APP_NAME)
         self.setWindowIcon(app_icon())
-        self.setStyleSheet(STYLE)
+        self.dark = False  # the dark theme on show (set by the preferences)
         self.palette_ = PALETTE
         self.player = Player(self)
         self.history = self.player.session.history  # undo and redo of scene edits
@@ -110,6 +110,7 @@ class MainWindow(WindowLayout, WindowMenus, DepthAndAccuracy, TextureDisplay, QM
         if self._tables:
             self._make_room_for_tables()
         self._build_parts()
+        apply_look(self, self.dark)
 
     def _build_parts(self) -> None:
         """The parts written in modules of their own, each given this window."""
