@@ -401,8 +401,10 @@ def _env():
 def window(results, quick: bool) -> None:
     """Whole-window steps at 2048^2 and 4096^2, in a child process (Qt offscreen)."""
     for side in (2048, 4096):
+        # Steps are a few ms and this machine's speed drifts between runs:
+        # 200 pairs give a median that moves less between full runs.
         args = [sys.executable, str(ROOT / "benchmarks" / "run_all_window.py"), str(side),
-                str(12 if quick else 40)]
+                str(40 if quick else 200)]
         out = subprocess.run(args, cwd=ROOT, env=_env(), check=True, capture_output=True,
                              text=True).stdout.split()
         window_ms = [float(v) for v in out[1::2]]
@@ -493,7 +495,7 @@ def startup(results, quick: bool) -> None:
         run(STARTUP_OURS)  # warm up: compile and cache both sides once
         run(STARTUP_PEER)
         ours, peer = interleaved(lambda: run(STARTUP_OURS), lambda: run(STARTUP_PEER),
-                                 3 if quick else 11)
+                                 3 if quick else 21)
         ratio = results.compare("start-up to first window shown (rasterlab)",
                                 [o[0] for o in ours], [p[0] for p in peer], "PySide6+pg")
         results.compare("  to the process's end (window closed)", [o[1] for o in ours],

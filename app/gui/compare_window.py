@@ -22,7 +22,6 @@ from app.render import frame as frame_view
 from app.model.compare import (FRAME, LINKS, MAX_PANES, MIN_PANES, PRESETS, Pane,
                                window_primitives)
 from app.model.scene import Scene
-from app.gui.entries import WindowEntry
 from app.render.compose import OUTLINE_STYLE, PALETTE, compose, diff_image
 
 WINDOW_KEY = "window"  # the comparison of the main window's algorithm and the one before
@@ -57,7 +56,7 @@ class CompareWindow(QMainWindow):
         self._clock = QElapsedTimer()
         self._owed = 0.0
         if main is not None:
-            main.player.traceChanged.connect(self._main_changed)
+            main.player.traceChanged.connect(self.main_changed)
         self._fit_to_screen(1400, 720)
         self.apply_preset(WINDOW_KEY if main is not None else PRESETS[0].key)
 
@@ -202,7 +201,7 @@ class CompareWindow(QMainWindow):
         primitives = self._window_primitives()
         return primitives is not None and compare.preset(self.preset_key).uses_window(primitives)
 
-    def _main_changed(self) -> None:
+    def main_changed(self) -> None:
         # The panes follow the main window's points while they use them.
         if not self.isVisible() or not self._follows_main():
             return
@@ -487,18 +486,3 @@ def _options_help(algorithm: str) -> str:
 def _empty(width: int, height: int):
     from algorithms.raster import Raster
     return Raster(width, height)
-
-
-# ----------------------------------------------------------------- hook
-def compare_entry(window) -> WindowEntry:
-    """View > Compare… (Ctrl+K) of the main window, and the compare window it opens."""
-    menu = window.menus["view"]
-    menu.addSeparator()
-    action = QAction("&Compare\u2026", window)
-    action.setShortcut(QKeySequence("Ctrl+K"))
-    action.setToolTip("Compare algorithms side by side on the same primitives, stepped "
-                      "together, with a diff of two of them (Ctrl+K)")
-    menu.addAction(action)
-    window.addAction(action)
-    # Brought back, it catches up with what the main window did meanwhile.
-    return WindowEntry(window, action, CompareWindow, refresh=CompareWindow._main_changed)

@@ -14,7 +14,7 @@ from html import escape
 from pathlib import Path
 
 from PySide6.QtCore import QSize, Qt, QTimer
-from PySide6.QtGui import QAction, QImage, QPixmap
+from PySide6.QtGui import QImage, QPixmap
 from PySide6.QtWidgets import (QDialog, QDialogButtonBox, QHBoxLayout, QLabel, QListWidget,
                                QListWidgetItem, QMessageBox, QVBoxLayout, QWidget)
 
@@ -23,7 +23,6 @@ from algorithms.registry import InputError
 from app.render import compose as render
 from app.model import scene as scenes
 from app.model.scene import SceneError, one_line
-from app.gui.entries import WindowEntry
 
 FOLDER = scenes.SHIPPED
 # Scenes that are examples, not hard cases.
@@ -180,15 +179,3 @@ def _open_directly(window, path: Path) -> bool:
         QMessageBox.warning(window, "Hard cases", f"Cannot open {path.name}:\n{one_line(str(error))}")
         return False
     return True
-
-
-def gallery_entry(window) -> WindowEntry:
-    """Help > Hard cases… of the main window, and the gallery it opens."""
-    menu = window.menus["help"]
-    action = QAction("&Hard cases…", window)
-    action.setToolTip("Shipped scenes that make the algorithms stumble, each with what to "
-                      "look for")
-    action.setStatusTip(action.toolTip())
-    first = menu.actions()[0] if menu.actions() else None
-    menu.insertAction(first, action)
-    return WindowEntry(window, action, GalleryDialog)

@@ -13,12 +13,10 @@ from collections import defaultdict
 
 import pyqtgraph as pg
 from PySide6.QtCore import QObject, QThread, Signal
-from PySide6.QtGui import QAction, QKeySequence
 from PySide6.QtWidgets import (QCheckBox, QComboBox, QDialog, QFileDialog, QFormLayout,
                                QHBoxLayout, QLabel, QMessageBox, QProgressBar, QPushButton,
                                QRadioButton, QVBoxLayout)
 
-from app.gui.entries import WindowEntry
 
 PARAMETER = "(swept parameter)"
 
@@ -258,13 +256,3 @@ class ReportDialog(QDialog):
             QMessageBox.warning(self, "Report not saved", str(error))
             return
         self.status.setText(f"Saved {', '.join(written['files'])} in {written['folder']}.")
-
-
-def report_entry(window) -> WindowEntry:
-    """Run > Report… of the main window, and the report dialog it opens."""
-    menu = window.menus["run"]
-    menu.addSeparator()
-    action = QAction("&Report: speed against error…", window)
-    action.setShortcut(QKeySequence("Ctrl+R"))
-    menu.addAction(action)
-    return WindowEntry(window, action, ReportDialog)

@@ -84,3 +84,15 @@ def window(make_window):
     window = make_window()
     yield window
     window.player.stop_recording()
+
+
+@pytest.fixture
+def theme(window):
+    """``theme("dark")`` and ``theme("light")``: the window's preferences
+    applied with that theme; light again at the end."""
+    def use(name):
+        values = window.preferences.prefs.values()
+        values["theme"] = name
+        window.preferences.apply(values)
+    yield use
+    use("light")  # the application's look is shared by the tests after this one

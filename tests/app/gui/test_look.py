@@ -29,16 +29,6 @@ GROUND = {
 }
 
 
-@pytest.fixture
-def theme(window):
-    def use(name):
-        values = window.preferences.prefs.values()
-        values["theme"] = name
-        window.preferences.apply(values)
-    yield use
-    use("light")  # the application's look is shared by the tests after this one
-
-
 def named(root, name) -> list:
     found = root.findChildren(QWidget, name)
     assert found, f"no widget named {name!r}"

@@ -43,3 +43,16 @@ def test_measure_cancel_and_plot(qtbot, tmp_path, monkeypatch):
                         lambda *args: str(tmp_path))
     dialog.save()
     assert (tmp_path / "report.md").exists() and (tmp_path / "measurements.csv").exists()
+
+
+def test_run_report_opens_one_dialog_and_brings_it_back(window, qtbot):
+    """Run > Report… loads the dialog's module on first use (not with the
+    window) and opens the same dialog again after."""
+    entry = window.add_report_entry()
+    entry.action.trigger()
+    dialog = entry.window
+    assert isinstance(dialog, ReportDialog) and dialog.isVisible()
+    dialog.close()
+    entry.action.trigger()
+    assert entry.window is dialog and dialog.isVisible()
+    dialog.close()

@@ -50,15 +50,11 @@ def test_a_step_repaints_what_it_changes_and_nothing_behind(window, qtbot):
     assert behind == []
 
 
-@pytest.mark.parametrize("theme", ["dark", "light"])
-def test_nothing_behind_after_a_change_of_theme(window, qtbot, theme):
-    values = window.preferences.prefs.values()
-    values["theme"] = theme
-    window.preferences.apply(values)
+@pytest.mark.parametrize("name", ["dark", "light"])
+def test_nothing_behind_after_a_change_of_theme(window, qtbot, theme, name):
+    theme(name)
     window.player.pause()
     window.player.seek(3)
     qtbot.wait(500)  # the docks' animated relayout after the new look ends
     painted = painted_by_step(window, qtbot, 4)
     assert not [w for w in painted if isinstance(w, (QMainWindow, QDockWidget))]
-    values["theme"] = "light"
-    window.preferences.apply(values)

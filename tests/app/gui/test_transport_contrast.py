@@ -37,16 +37,6 @@ def icon_contrast(button) -> float:
     return contrast(background, ink)
 
 
-@pytest.fixture
-def theme(window):
-    def use(name):
-        values = window.preferences.prefs.values()
-        values["theme"] = name
-        window.preferences.apply(values)
-    yield use
-    use("light")  # the application's look is shared by the tests after this one
-
-
 @pytest.mark.parametrize("name", ["light", "dark"])
 def test_transport_icons_contrast_with_the_bar(window, qtbot, theme, name):
     theme(name)
