@@ -11,8 +11,8 @@ from PySide6.QtWidgets import QGraphicsGridLayout, QGraphicsItem, QSizePolicy
 class Axis(pg.AxisItem):
     """A pyqtgraph axis that sets its label's text only when the text
     changes and the label is shown with a text: pyqtgraph sets it on every
-    change of range, pen or scale (50 times, 8 ms, while the window is
-    built, for labels that are all hidden and empty)."""
+    change of range, pen or scale (50 times while the window is built,
+    and on every pan and zoom, for labels that are all hidden and empty)."""
 
     def _updateLabel(self):  # noqa: N802 (pyqtgraph's name)
         shown = self.label.isVisibleTo(self) and (self.labelText or self.labelUnits)

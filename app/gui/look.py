@@ -36,7 +36,8 @@ ERROR_STYLE = "color: #c92a2a;"
 
 def look_sheet(name: str, dark: bool) -> str:
     """The style sheet of the widget named ``name``: its rules by its name
-    only, so that they do not pass to its children (a table's headers)."""
+    only, so that they do not pass to its children (the transport bar's
+    buttons)."""
     light, over = LOOK[name]
     sheet = f"#{name} {{ {light} }}"
     return sheet + f" #{name} {{ {over} }}" if dark and over else sheet

@@ -256,7 +256,7 @@ class PreferencesController(QObject):
         window.dark = dark
         palette = dataclasses.replace(BASE_PALETTES[theme], **values["colors"][theme])
         window.set_palette(palette)
-        _theme_panels(window, theme == "dark")
+        _theme_panels(window, dark)
         self.grid_lines_action.blockSignals(True)
         self.grid_lines_action.setChecked(values["grid_lines"])
         self.grid_lines_action.blockSignals(False)
