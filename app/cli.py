@@ -11,10 +11,10 @@ import os
 import re
 import sys
 
-from algorithms import registry
-from algorithms.raster import MAX_GRID
-from algorithms.registry import InputError, parse_number
-from algorithms.trace import DEFAULT_STEP_CAP, MAX_STEP_CAP, TraceError
+from algorithms.core import registry
+from algorithms.core.raster import MAX_GRID
+from algorithms.core.registry import InputError, parse_number
+from algorithms.core.trace import DEFAULT_STEP_CAP, MAX_STEP_CAP, TraceError
 from app import cli_teaching
 from app.model import budget
 from app.model.fragments import fragment_objects, fragment_table

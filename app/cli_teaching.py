@@ -11,13 +11,14 @@ import sys
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-from algorithms import registry
-from algorithms.registry import InputError, parse_number
-from app.model import budget, worksheet
+from algorithms.core import registry
+from algorithms.core.registry import InputError, parse_number
+from app.model import budget
+from app.teaching import worksheet
 from app.model.files import write_atomically
 
 if TYPE_CHECKING:
-    from app.model import student
+    from app.teaching import student
 
 
 def add_check_command(commands) -> None:
@@ -47,7 +48,7 @@ def add_check_command(commands) -> None:
 
 
 def _limits(args) -> student.Limits:
-    from app.model import student
+    from app.teaching import student
     seconds = parse_number(args.time_limit, "--time-limit")
     if not 0.1 <= seconds <= 60:
         raise InputError(f"--time-limit must be 0.1 .. 60 seconds, got {args.time_limit!r}")
@@ -59,7 +60,7 @@ def _limits(args) -> student.Limits:
 
 def command_check(args) -> int:
     # Loaded here: the window and the other commands import this module too.
-    from app.model import check_report, checking, student
+    from app.teaching import check_report, checking, student
     path = student.check_file(args.file)
     spec = registry.get(args.against)
     checking.kind_of(spec)

@@ -11,7 +11,7 @@ from __future__ import annotations
 import gc
 import importlib
 
-from algorithms import registry
+from algorithms.core import registry
 
 # The Qt-free modules the first window imports, at import or while it is
 # built (their own imports follow).
@@ -19,7 +19,7 @@ from algorithms import registry
 WINDOW_MODULES = (
     "app.model.session", "app.model.examples", "app.model.compare", "app.model.tools",
     "app.model.insight", "app.model.notes", "app.model.tables", "app.model.breakpoints",
-    "app.model.derivation", "app.model.exercise", "app.model.inspector", "app.model.steptable",
+    "app.model.derivation", "app.teaching.exercise", "app.model.inspector", "app.model.steptable",
     "app.render.frame", "app.render.incremental", "app.render.compose",
     "app.render.outside_view", "app.render.reasoning", "app.render.texture_frame",
     "app.render.overlays", "logging",

@@ -16,7 +16,7 @@ from pathlib import Path
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 
 from algorithms.lines import bresenham, bresenham_code  # noqa: E402
-from algorithms.trace import Trace  # noqa: E402
+from algorithms.core.trace import Trace  # noqa: E402
 from app.model import breakpoints as bp  # noqa: E402
 
 

@@ -21,8 +21,8 @@ from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 
-from algorithms import registry  # noqa: E402
-from algorithms.trace import DEFAULT_STEP_CAP  # noqa: E402
+from algorithms.core import registry  # noqa: E402
+from algorithms.core.trace import DEFAULT_STEP_CAP  # noqa: E402
 from app.model.budget import BudgetError, check_budget  # noqa: E402
 from app.model.examples import default_scene  # noqa: E402
 from app.model.inputs import runnable_input  # noqa: E402

@@ -24,8 +24,8 @@ sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 
 import numpy as np  # noqa: E402
 
-from algorithms import registry  # noqa: E402
-from algorithms.trace import RecordMonitor  # noqa: E402
+from algorithms.core import registry  # noqa: E402
+from algorithms.core.trace import RecordMonitor  # noqa: E402
 
 SQUARE = [(0, 0), (1025, 0), (1025, 1025), (0, 1025)]
 

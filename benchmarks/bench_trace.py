@@ -19,7 +19,7 @@ from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 
-from algorithms import registry  # noqa: E402
+from algorithms.core import registry  # noqa: E402
 from algorithms.lines import Octant  # noqa: E402
 
 

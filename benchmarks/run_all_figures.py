@@ -22,13 +22,14 @@ import numpy as np
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 
-from algorithms import registry, triangles  # noqa: E402
-from algorithms.batch import bresenham_lines, midpoint_circles  # noqa: E402
-from algorithms.batch_canvas import draw_midpoint_circles  # noqa: E402
+from algorithms import triangles  # noqa: E402
+from algorithms.core import registry  # noqa: E402
+from algorithms.lines.batch import bresenham_lines  # noqa: E402
+from algorithms.circles.batch import draw_midpoint_circles  # noqa: E402
 from algorithms.antialias.lines import wu  # noqa: E402
 from algorithms.antialias.wu_kernel import draw_wu_lines  # noqa: E402
 from algorithms.antialias.wu_kernel import wu_lines as batched_wu_lines  # noqa: E402
-from algorithms.circles import midpoint_circle_pixels  # noqa: E402
+from algorithms.circles.midpoint import midpoint_circle_pixels  # noqa: E402
 from algorithms.lines.bresenham import bresenham_pixels  # noqa: E402
 from algorithms.polygons import scanline_fill_many, scanline_pixels  # noqa: E402
 

@@ -27,8 +27,8 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 
-from algorithms import registry  # noqa: E402
-from algorithms.errors import InputError  # noqa: E402
+from algorithms.core import registry  # noqa: E402
+from algorithms.core.errors import InputError  # noqa: E402
 
 
 def _catalogue():

@@ -15,7 +15,7 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 
-from algorithms import visibility  # noqa: E402
+from algorithms.visibility import zbuffer_painter as visibility  # noqa: E402
 from app.model.scene import Scene, save  # noqa: E402
 
 

@@ -120,7 +120,7 @@ def samples_scene(app, size, _step):
 
 
 def _visibility(app, algorithm, size):
-    from algorithms.visibility import intersecting_scene
+    from algorithms.visibility.zbuffer_painter import intersecting_scene
     scene = intersecting_scene()
     options = {k: v for k, v in scene["options"].items() if k != "sort"}
     return _window(app, algorithm, scene["points"], options, grid=scene["grid"], size=size)

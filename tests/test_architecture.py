@@ -60,13 +60,15 @@ def test_a_planted_forbidden_import_breaks_its_contract(copy, contract, plants):
     assert any(contract in row for row in broken), result.stdout
 
 
-@pytest.mark.parametrize("module", ["algorithms.visibility", "algorithms.painter_split",
-                                    "algorithms.pipeline", "algorithms.textures",
-                                    "algorithms.antialias", "algorithms.triangles"])
+@pytest.mark.parametrize("module", ["algorithms.visibility.zbuffer_painter",
+                                    "algorithms.visibility.painter_split", "algorithms.pipeline",
+                                    "algorithms.textures", "algorithms.antialias",
+                                    "algorithms.triangles", "algorithms.circles.curves",
+                                    "algorithms.fill.kernel"])
 def test_each_family_module_imports_on_its_own_and_lists_in_one_order(module):
     # A fresh interpreter that imports this module first: no import cycle,
     # and the algorithms listed in the same order as after any other first import.
-    code = (f"import {module}\nfrom algorithms import registry\n"
+    code = (f"import {module}\nfrom algorithms.core import registry\n"
             "print(' '.join(s.name for s in registry.all_specs()))")
     first = subprocess.run([sys.executable, "-c", code], cwd=ROOT, capture_output=True, text=True,
                            timeout=120)

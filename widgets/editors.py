@@ -12,7 +12,7 @@ from PySide6.QtWidgets import (QAbstractItemView, QCheckBox, QColorDialog, QComb
                                QStyledItemDelegate, QToolButton, QTreeWidget, QTreeWidgetItem,
                                QWidget)
 
-from algorithms.registry import InputError
+from algorithms.core.registry import InputError
 
 NAME_ROLE = Qt.ItemDataRole.UserRole
 SUMMARY_ROLE = Qt.ItemDataRole.UserRole + 1

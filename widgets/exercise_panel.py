@@ -1,7 +1,7 @@
 """The exercise panel: shows a question, takes the answer, shows the grade.
 
 Display only: it emits what the person did (an answer, a hint, undo, the
-settings, save) and shows what it is given. The grading is app/model/exercise.py's.
+settings, save) and shows what it is given. The grading is app/teaching/exercise.py's.
 """
 from __future__ import annotations
 

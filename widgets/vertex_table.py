@@ -18,9 +18,9 @@ from PySide6.QtWidgets import (QAbstractItemDelegate, QAbstractItemView, QColorD
                                QHBoxLayout, QHeaderView, QLabel, QStyledItemDelegate, QTableView,
                                QToolButton, QVBoxLayout, QWidget)
 
-from algorithms import registry
-from algorithms.registry import format_value
-from algorithms.errors import InputError
+from algorithms.core import registry
+from algorithms.core.registry import format_value
+from algorithms.core.errors import InputError
 
 from .editors import DEFAULT_COLORS, default_color
 

@@ -90,3 +90,4 @@ from .supersample import (FILTERS, PATTERNS, SUPERSAMPLE_OPTIONS, lattice, norma
 from .temporal import (TEMPORAL_OPTIONS, animation_frame_steps, apparent_speed, temporal,
                        temporal_code, temporal_frames, iter_temporal_frames, time_samples)
 from . import specs  # noqa: F401  (importing it registers the family)
+from . import subpixel_line  # noqa: F401  (line supersampling as printed, listed last)

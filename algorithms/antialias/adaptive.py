@@ -5,10 +5,10 @@ from fractions import Fraction
 
 import numpy as np
 
-from algorithms.code import Code
-from algorithms.interpolate import unpack
-from algorithms.registry import Option
-from algorithms.steps import CALC, PLOT, VISIT, Start, Vars
+from algorithms.core.code import Code
+from algorithms.triangles.interpolate import unpack
+from algorithms.core.registry import Option
+from algorithms.core.steps import CALC, PLOT, VISIT, Start, Vars
 
 from .shapes import (INK, LOOP, NAN, POSITION, SHAPE_OPTIONS, UNIT, Shapes, code_shapes,
                      ink_blend, ops_sum, shape_vars, test_ops)

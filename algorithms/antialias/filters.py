@@ -6,11 +6,11 @@ import math
 import numpy as np
 
 from algorithms import triangles
-from algorithms.code import Code
-from algorithms.interpolate import unpack
-from algorithms.registry import InputError, Option
-from algorithms.steps import PLOT, Start, Table, Vars
-from algorithms.trace import checkpoint
+from algorithms.core.code import Code
+from algorithms.triangles.interpolate import unpack
+from algorithms.core.registry import InputError, Option
+from algorithms.core.steps import PLOT, Start, Table, Vars
+from algorithms.core.trace import checkpoint
 from algorithms.triangles.kernels import counts_from_spans, oriented, span_arrays
 
 from .shapes import INK, NAN, Shapes, ink_blend, ops_sum, shape_vars

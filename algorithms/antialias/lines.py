@@ -5,12 +5,12 @@ import math
 
 import numpy as np
 
-from algorithms.code import Code
+from algorithms.core.code import Code
 from algorithms.exact import coverage as exact_coverage
 from algorithms.lines import Octant
-from algorithms.registry import Option
-from algorithms.steps import NO_PIXEL, PLOT, VISIT, Note, Start, Vars
-from algorithms.trace import checkpoint
+from algorithms.core.registry import Option
+from algorithms.core.steps import NO_PIXEL, PLOT, VISIT, Note, Start, Vars
+from algorithms.core.trace import checkpoint
 
 from .shapes import CAPS, LOOP, NAN, ink_blend, ops_sum
 

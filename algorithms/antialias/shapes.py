@@ -14,10 +14,10 @@ from fractions import Fraction
 import numpy as np
 
 from algorithms.exact import coverage as exact_coverage
-from algorithms.interpolate import unpack
-from algorithms.registry import InputError, Inputs, Option
-from algorithms.steps import PLOT, VISIT, Note, Vars
-from algorithms.trace import checkpoint
+from algorithms.triangles.interpolate import unpack
+from algorithms.core.registry import InputError, Inputs, Option
+from algorithms.core.steps import PLOT, VISIT, Note, Vars
+from algorithms.core.trace import checkpoint
 from algorithms.triangles import ops_sum
 
 NAN = math.nan

@@ -1,7 +1,7 @@
 """The antialiasing family's entries in the registry."""
 from __future__ import annotations
 
-from algorithms.registry import AlgorithmSpec, Inputs, register
+from algorithms.core.registry import AlgorithmSpec, Inputs, register
 
 from .adaptive import ADAPTIVE_OPTIONS, adaptive, adaptive_code
 from .filters import FILTER_OPTIONS, filter_code, post_filter

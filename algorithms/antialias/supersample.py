@@ -5,9 +5,9 @@ from fractions import Fraction
 
 import numpy as np
 
-from algorithms.code import Code
-from algorithms.registry import InputError, Option
-from algorithms.steps import PLOT, VISIT, Note, Start, Table, Vars
+from algorithms.core.code import Code
+from algorithms.core.registry import InputError, Option
+from algorithms.core.steps import PLOT, VISIT, Note, Start, Table, Vars
 
 from .shapes import (BACKGROUND, LOOP, NAN, SHAPE_OPTIONS, SNAP, UNIT, WHITE, Shapes, blend,
                      code_shapes, ops_sum, sample_ops, shape_vars, test_ops)

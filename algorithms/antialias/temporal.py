@@ -9,11 +9,11 @@ import math
 
 import numpy as np
 
-from algorithms.code import Code
-from algorithms.interpolate import unpack
-from algorithms.registry import InputError, Option
-from algorithms.steps import PLOT, Start, Vars
-from algorithms.trace import checkpoint
+from algorithms.core.code import Code
+from algorithms.triangles.interpolate import unpack
+from algorithms.core.registry import InputError, Option
+from algorithms.core.steps import PLOT, Start, Vars
+from algorithms.core.trace import checkpoint
 
 from .shapes import INK, POSITION, UNIT, Shapes, ink_blend, ops_sum, test_ops
 from .supersample import lattice, sample_strata

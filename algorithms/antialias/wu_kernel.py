@@ -14,8 +14,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..batch import octants
-from ..compiled import compiled
+from algorithms.lines.batch import octants
+from algorithms.core.compiled import compiled
 
 
 def wu_pixels(points, options) -> tuple[np.ndarray, np.ndarray]:

@@ -5,9 +5,9 @@ from itertools import chain
 
 import numpy as np
 
-from ..code import Code, listing
-from ..registry import AlgorithmSpec, Option, register
-from ..steps import NO_PIXEL, PLOT, Start
+from algorithms.core.code import Code, listing
+from algorithms.core.registry import AlgorithmSpec, Option, register
+from algorithms.core.steps import NO_PIXEL, PLOT, Start
 from .common import COLORS, SEGMENT, Octant, color_ramp, colored, round_half_up, with_color
 
 

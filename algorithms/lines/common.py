@@ -4,8 +4,8 @@ from __future__ import annotations
 
 import math
 
-from ..registry import InputError, Inputs, Option
-from ..steps import NO_PIXEL
+from algorithms.core.registry import InputError, Inputs, Option
+from algorithms.core.steps import NO_PIXEL
 
 NAN = math.nan
 

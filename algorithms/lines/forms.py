@@ -5,9 +5,9 @@ import math
 
 import numpy as np
 
-from ..code import Code, listing
-from ..registry import AlgorithmSpec, InputError, Option, register
-from ..steps import NO_PIXEL, PLOT, VISIT, Start, Vars
+from algorithms.core.code import Code, listing
+from algorithms.core.registry import AlgorithmSpec, InputError, Option, register
+from algorithms.core.steps import NO_PIXEL, PLOT, VISIT, Start, Vars
 from .common import (COLORS, NAN, SEGMENT, color_ramp, fraction_of, major_axis, pixel_at,
                      round_half_up, sign, with_color)
 

@@ -14,9 +14,9 @@ from itertools import chain
 
 import numpy as np
 
-from ..code import Code, listing
-from ..registry import AlgorithmSpec, Option, register
-from ..steps import NO_PIXEL, PLOT, VISIT, Start, Vars
+from algorithms.core.code import Code, listing
+from algorithms.core.registry import AlgorithmSpec, Option, register
+from algorithms.core.steps import NO_PIXEL, PLOT, VISIT, Start, Vars
 from .bresenham import bresenham_pixels
 from .common import COLORS, NAN, SEGMENT, Octant, color_ramp, colored, round_half_up, with_color
 

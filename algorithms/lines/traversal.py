@@ -10,9 +10,9 @@ from __future__ import annotations
 import math
 from fractions import Fraction
 
-from ..code import Code, listing
-from ..registry import MAX_INTEGER_COORDINATE, AlgorithmSpec, InputError, Inputs, register
-from ..steps import NO_PIXEL, PLOT, VISIT, Start
+from algorithms.core.code import Code, listing
+from algorithms.core.registry import MAX_INTEGER_COORDINATE, AlgorithmSpec, InputError, Inputs, register
+from algorithms.core.steps import NO_PIXEL, PLOT, VISIT, Start
 
 REAL_SEGMENT = Inputs(2, integer=False, names=("P", "Q"))
 NOTHING = (math.nan, math.nan)

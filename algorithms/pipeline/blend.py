@@ -28,11 +28,11 @@ from fractions import Fraction
 import numpy as np
 
 from algorithms import triangles
-from algorithms.code import Code
-from algorithms.interpolate import pack, per_vertex
-from algorithms.registry import InputError, Option
-from algorithms.steps import PER_ROW, PLOT, VISIT, Start, Table, Vars
-from algorithms.visibility import Scene
+from algorithms.core.code import Code
+from algorithms.triangles.interpolate import pack, per_vertex
+from algorithms.core.registry import InputError, Option
+from algorithms.core.steps import PER_ROW, PLOT, VISIT, Start, Table, Vars
+from algorithms.visibility.zbuffer_painter import Scene
 
 ORDERS = ("input", "back-to-front", "front-to-back")
 WRITES = ("opaque", "all", "none")

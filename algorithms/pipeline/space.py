@@ -23,7 +23,7 @@ from __future__ import annotations
 
 import math
 
-from algorithms.errors import InputError
+from algorithms.core.errors import InputError
 
 PLANES = ("near", "far", "left", "right", "bottom", "top")
 

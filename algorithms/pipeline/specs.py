@@ -1,8 +1,8 @@
 """The pipeline family's entries in the registry."""
 from __future__ import annotations
 
-from algorithms.registry import AlgorithmSpec, Option, register
-from algorithms.visibility import COLORS, FILL_RULE, TRIANGLES, Z
+from algorithms.core.registry import AlgorithmSpec, Option, register
+from algorithms.visibility.zbuffer_painter import COLORS, FILL_RULE, TRIANGLES, Z
 
 from .blend import ALPHA, DEPTH_WRITE, ORDER, blend, blend_code
 

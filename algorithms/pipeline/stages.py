@@ -22,10 +22,10 @@ import math
 import numpy as np
 
 from algorithms import triangles
-from algorithms.code import Code
-from algorithms.errors import InputError
-from algorithms.interpolate import pack, per_vertex, unpack
-from algorithms.steps import PLOT, VISIT, Note, Start, Table, Vars
+from algorithms.core.code import Code
+from algorithms.core.errors import InputError
+from algorithms.triangles.interpolate import pack, per_vertex, unpack
+from algorithms.core.steps import PLOT, VISIT, Note, Start, Table, Vars
 from algorithms.textures import texels
 from algorithms.textures.sampling import Mapping, Sampler
 

@@ -7,7 +7,7 @@ from fractions import Fraction
 
 import numpy as np
 
-from ..registry import InputError, Inputs
+from algorithms.core.registry import InputError, Inputs
 
 NAN = math.nan
 SUBPIXEL_BITS = 8

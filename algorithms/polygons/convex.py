@@ -5,9 +5,9 @@ from fractions import Fraction
 
 import numpy as np
 
-from ..code import Code, listing
-from ..registry import AlgorithmSpec, InputError, register
-from ..steps import NO_PIXEL, PER_PIXEL, PER_ROW, PLOT, Note, Span, Start, Table, Vars
+from algorithms.core.code import Code, listing
+from algorithms.core.registry import AlgorithmSpec, InputError, register
+from algorithms.core.steps import NO_PIXEL, PER_PIXEL, PER_ROW, PLOT, Note, Span, Start, Table, Vars
 from .common import (HALF_PIXEL, NAN, ONE, POLYGON, as_pixels, cross, first_column, first_index,
                      signed_area2, single_contour, snap_contours, table_number, without_repeats)
 from .scanline import scanline_pixels

@@ -13,9 +13,9 @@ from __future__ import annotations
 
 import numpy as np
 
-from algorithms.compiled import compiled
-from algorithms.raster import canvas_for
-from algorithms.registry import InputError
+from algorithms.core.compiled import compiled
+from algorithms.core.raster import canvas_for
+from algorithms.core.registry import InputError
 
 from .common import HALF_PIXEL, MAX_COORDINATE, ONE
 from .scanline import sample_of, scanline_pixels

@@ -5,9 +5,9 @@ from fractions import Fraction
 
 import numpy as np
 
-from ..code import Code, listing
-from ..registry import AlgorithmSpec, Option, register
-from ..steps import NO_PIXEL, PER_PIXEL, PER_ROW, PLOT, Note, Span, Start, Table, Vars
+from algorithms.core.code import Code, listing
+from algorithms.core.registry import AlgorithmSpec, Option, register
+from algorithms.core.steps import NO_PIXEL, PER_PIXEL, PER_ROW, PLOT, Note, Span, Start, Table, Vars
 from .common import (FLOATS, HALF_PIXEL, ONE, POLYGON, WholeAndError, as_pixels, edge_label,
                      first_column, first_index, snap_contours, table_number)
 

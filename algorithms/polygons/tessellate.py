@@ -3,9 +3,9 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..code import Code, listing
-from ..registry import AlgorithmSpec, InputError, Option, register
-from ..steps import NO_PIXEL, PER_PIXEL, PER_ROW, PLOT, VISIT, Note, Span, Start, Table, Vars
+from algorithms.core.code import Code, listing
+from algorithms.core.registry import AlgorithmSpec, InputError, Option, register
+from algorithms.core.steps import NO_PIXEL, PER_PIXEL, PER_ROW, PLOT, VISIT, Note, Span, Start, Table, Vars
 from .common import (HALF_PIXEL, NAN, ONE, POLYGON, cross, first_index, pixel_of, signed_area2,
                      single_contour, snap_contours, without_repeats)
 

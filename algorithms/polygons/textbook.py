@@ -12,9 +12,9 @@ from __future__ import annotations
 
 from fractions import Fraction
 
-from ..code import Code, listing
-from ..registry import AlgorithmSpec, register
-from ..steps import NO_PIXEL, PER_PIXEL, PER_ROW, PLOT, Span, Start, Table, Vars
+from algorithms.core.code import Code, listing
+from algorithms.core.registry import AlgorithmSpec, register
+from algorithms.core.steps import NO_PIXEL, PER_PIXEL, PER_ROW, PLOT, Span, Start, Table, Vars
 from .common import HALF_PIXEL, ONE, POLYGON, as_pixels, edge_label, first_column, snap_contours
 from .scanline import (ARITHMETIC, FILL_RULE, ScanEdge, first_row, runs, scanline,
                        scanline_explain, scanline_listing, scanline_pixels)

@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from algorithms.interpolate import plane_coefficients
+from algorithms.triangles.interpolate import plane_coefficients
 from algorithms.triangles.edges import OPTIONS as TRIANGLE_OPTIONS, prepare
 from algorithms.triangles.kernels import kernel_pixels
 

@@ -47,8 +47,8 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from algorithms.errors import InputError
-from algorithms.interpolate import plane_coefficients
+from algorithms.core.errors import InputError
+from algorithms.triangles.interpolate import plane_coefficients
 
 from .texels import Texture
 

@@ -1,7 +1,7 @@
 """The textures family's entries in the registry."""
 from __future__ import annotations
 
-from algorithms.registry import AlgorithmSpec, Option, register
+from algorithms.core.registry import AlgorithmSpec, Option, register
 from algorithms.triangles.edges import BASE_OPTIONS, TRIANGLES, explain
 from algorithms.triangles.specs import make_kernel
 

@@ -30,7 +30,7 @@ import os
 
 import numpy as np
 
-from algorithms.errors import InputError
+from algorithms.core.errors import InputError
 
 CHECKER_SIZE = 64
 ZONE_SIZE = 256

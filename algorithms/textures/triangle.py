@@ -9,10 +9,10 @@ from __future__ import annotations
 
 import math
 
-from algorithms.code import Code
-from algorithms.errors import InputError
-from algorithms.interpolate import pack, per_vertex
-from algorithms.steps import PLOT, VISIT, Vars
+from algorithms.core.code import Code
+from algorithms.core.errors import InputError
+from algorithms.triangles.interpolate import pack, per_vertex
+from algorithms.core.steps import PLOT, VISIT, Vars
 from algorithms.triangles.attributes import NoAttributes
 from algorithms.triangles.edges import NAN
 from algorithms.triangles.run import BASE, LOOP_OPS, TEST_OPS, Traversal, evaluate_ops, footer, \

@@ -7,11 +7,11 @@ the near plane when asked to.
 """
 from __future__ import annotations
 
-from algorithms.code import Code
-from algorithms.interpolate import (affine_value, check_w, mix, pack, per_vertex,
+from algorithms.core.code import Code
+from algorithms.triangles.interpolate import (affine_value, check_w, mix, pack, per_vertex,
                                     perspective_weights, plane_coefficients, unpack)
-from algorithms.registry import InputError
-from algorithms.steps import PLOT, VISIT, Note, Table, Vars
+from algorithms.core.registry import InputError
+from algorithms.core.steps import PLOT, VISIT, Note, Table, Vars
 
 from .edges import MAX_COORDINATE, NAN
 from .run import (BASE, LOOP_OPS, TEST_OPS, Traversal, evaluate_ops, footer, header, ops_sum,

@@ -14,9 +14,9 @@ import math
 
 import numpy as np
 
-from algorithms.compiled import compiled
-from algorithms.raster import canvas_for
-from algorithms.registry import InputError
+from algorithms.core.compiled import compiled
+from algorithms.core.raster import canvas_for
+from algorithms.core.registry import InputError
 
 from .kernels import _spans_python, oriented, snap_array
 

@@ -11,9 +11,9 @@ from decimal import Decimal, localcontext
 
 import numpy as np
 
-from algorithms.interpolate import ATTRIBUTE_OPTIONS, barycentric_weights
-from algorithms.registry import InputError, Inputs, Option
-from algorithms.steps import PLOT, VISIT, Table
+from algorithms.triangles.interpolate import ATTRIBUTE_OPTIONS, barycentric_weights
+from algorithms.core.registry import InputError, Inputs, Option
+from algorithms.core.steps import PLOT, VISIT, Table
 
 NAN = math.nan
 RULES = ("top-left", "inclusive", "strict")

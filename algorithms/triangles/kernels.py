@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from algorithms.registry import InputError
+from algorithms.core.registry import InputError
 
 from .edges import (MAX_COORDINATE, MAX_KERNEL_PIXELS, Edges, Triangle, floor_div, offset_of,
                     prepare, window_of)

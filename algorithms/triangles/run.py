@@ -10,11 +10,11 @@ from __future__ import annotations
 
 import numpy as np
 
-from algorithms.code import Code, nonzero
+from algorithms.core.code import Code, nonzero
 from algorithms.exact import triangles as exact_triangles
-from algorithms.interpolate import VertexAttributes
-from algorithms.registry import InputError
-from algorithms.steps import NO_PIXEL, PER_ROW, Note, Start, Table, Vars
+from algorithms.triangles.interpolate import VertexAttributes
+from algorithms.core.registry import InputError
+from algorithms.core.steps import NO_PIXEL, PER_ROW, Note, Start, Table, Vars
 
 from .edges import NAN, PRECISIONS, Edges, Setup, edge_table, offset_of, prepare, window_of
 from .kernels import span_mask

@@ -3,10 +3,10 @@ from __future__ import annotations
 
 import numpy as np
 
-from algorithms.interpolate import COLORS as VERTEX_COLORS, PERSPECTIVE, S as S_OPTION, \
+from algorithms.triangles.interpolate import COLORS as VERTEX_COLORS, PERSPECTIVE, S as S_OPTION, \
     W as W_OPTION, Z as Z_OPTION
-from algorithms.registry import AlgorithmSpec, Option, register
-from algorithms.steps import NO_PIXEL, PLOT
+from algorithms.core.registry import AlgorithmSpec, Option, register
+from algorithms.core.steps import NO_PIXEL, PLOT
 
 from .attributes import PERSPECTIVE_CORRECT, PLANE, PerspectiveColumns, clip_near, perspective
 from .edges import BASE_OPTIONS, OPTIONS, TRIANGLES, explain

@@ -12,8 +12,8 @@ from fractions import Fraction
 
 import numpy as np
 
-from algorithms.code import Code
-from algorithms.steps import PLOT, VISIT
+from algorithms.core.code import Code
+from algorithms.core.steps import PLOT, VISIT
 
 from .edges import Edges, ExactView, Triangle, ceil_div, floor_div
 from .run import (BASE, LOOP_OPS, TEST_OPS, Run, Traversal, evaluate_ops, footer, header,

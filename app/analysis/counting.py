@@ -11,7 +11,7 @@ from typing import Callable, Iterable
 
 import numpy as np
 
-from algorithms.steps import OP_NAMES, PER_PIXEL, PER_ROW, Note, Table, Vars
+from algorithms.core.steps import OP_NAMES, PER_PIXEL, PER_ROW, Note, Table, Vars
 
 ARITHMETIC = ("int_add", "float_add", "mul", "div", "sqrt", "round", "compare")
 COLUMNS = ("family", "experiment", "algorithm", "variant", "parameter", "parameter_value",

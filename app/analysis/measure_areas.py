@@ -7,9 +7,9 @@ from math import lcm
 
 import numpy as np
 
-from algorithms import registry
-from algorithms.errors import InputError
-from algorithms.steps import OP_NAMES
+from algorithms.core import registry
+from algorithms.core.errors import InputError
+from algorithms.core.steps import OP_NAMES
 
 from .counting import (Rows, add_costs, median_seconds, op_counts, pixel_keys, timed,
                        written_count)

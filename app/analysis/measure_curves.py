@@ -6,8 +6,8 @@ import math
 import numpy as np
 
 from algorithms.exact import circles as exact_circles
-from algorithms import registry
-from algorithms.steps import OP_NAMES
+from algorithms.core import registry
+from algorithms.core.steps import OP_NAMES
 
 from .counting import (Rows, add_costs, median_seconds, op_counts, pixel_keys, timed,
                        written_count)

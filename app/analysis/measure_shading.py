@@ -5,8 +5,8 @@ from fractions import Fraction
 
 import numpy as np
 
-from algorithms import registry
-from algorithms.errors import InputError
+from algorithms.core import registry
+from algorithms.core.errors import InputError
 
 from .counting import Rows, add_costs, median_seconds, op_counts, timed, written_count
 from .measure_areas import snapped

@@ -14,8 +14,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from algorithms import registry
-from algorithms.steps import PLOT
+from algorithms.core import registry
+from algorithms.core.steps import PLOT
 from algorithms.textures.kernel import texture_image
 
 from .counting import Rows, median_seconds

@@ -7,8 +7,8 @@ scenes of triangles at random depths.
 """
 from __future__ import annotations
 
-from algorithms import registry
-from algorithms.visibility import SCENES
+from algorithms.core import registry
+from algorithms.visibility.zbuffer_painter import SCENES
 
 from .counting import Rows, op_counts, total_ops
 

@@ -13,7 +13,7 @@ from PySide6.QtGui import QAction, QKeySequence
 from PySide6.QtWidgets import (QComboBox, QHBoxLayout, QLabel, QMainWindow, QPushButton,
                                QVBoxLayout, QWidget)
 
-from algorithms.errors import InputError
+from algorithms.core.errors import InputError
 from widgets.compare_view import CompareView
 from widgets.transport import TransportBar
 
@@ -484,5 +484,5 @@ def _options_help(algorithm: str) -> str:
 
 
 def _empty(width: int, height: int):
-    from algorithms.raster import Raster
+    from algorithms.core.raster import Raster
     return Raster(width, height)

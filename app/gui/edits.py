@@ -14,7 +14,7 @@ from contextlib import contextmanager
 
 from PySide6.QtCore import QObject
 
-from algorithms.registry import InputError
+from algorithms.core.registry import InputError
 
 from app.model.history import MERGE_SECONDS
 

@@ -5,7 +5,7 @@ While it is on, the grid shows the run only up to the step before the
 current question (stepping further is held back), a click on the grid
 answers a pixel or span question instead of drawing, and the panel takes
 branch choices and typed values. The questions and grading are
-app/model/exercise.py's; a new recording (the scene edited or undone, the
+app/teaching/exercise.py's; a new recording (the scene edited or undone, the
 origin switched) starts the exercise again on the new run.
 """
 from __future__ import annotations
@@ -19,7 +19,7 @@ from PySide6.QtWidgets import QFileDialog
 from widgets.docks import panel_dock
 from widgets.exercise_panel import ExercisePanel
 
-from app.model.exercise import Exercise
+from app.teaching.exercise import Exercise
 from app.model.files import write_atomically
 
 PLACEHOLDERS = {"value": "the value, e.g. -3", "span": "or type: first, last",

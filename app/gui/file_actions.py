@@ -19,7 +19,7 @@ from PySide6.QtCore import QObject, QSettings, Qt, Signal
 from PySide6.QtGui import QAction, QKeySequence
 from PySide6.QtWidgets import QFileDialog, QMenu, QMessageBox
 
-from algorithms.registry import InputError
+from algorithms.core.registry import InputError
 
 from app.gui.appdata import open_settings
 from app.model import scene as scenes

@@ -18,7 +18,7 @@ from PySide6.QtGui import QImage, QPixmap
 from PySide6.QtWidgets import (QDialog, QDialogButtonBox, QHBoxLayout, QLabel, QListWidget,
                                QListWidgetItem, QMessageBox, QVBoxLayout, QWidget)
 
-from algorithms.registry import InputError
+from algorithms.core.registry import InputError
 
 from app.render import compose as render
 from app.model import scene as scenes

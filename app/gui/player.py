@@ -13,8 +13,8 @@ import math
 
 from PySide6.QtCore import QElapsedTimer, QObject, Qt, QTimer, Signal
 
-from algorithms.registry import InputError
-from algorithms.trace import DEFAULT_STEP_CAP
+from algorithms.core.registry import InputError
+from algorithms.core.trace import DEFAULT_STEP_CAP
 
 from app.gui.main_thread_gc import collect_in_main_thread
 from app.model.session import Session

@@ -25,9 +25,9 @@ from PySide6.QtWidgets import (QApplication, QCheckBox, QColorDialog, QComboBox,
                                QDialogButtonBox, QFormLayout, QGridLayout, QGroupBox,
                                QPushButton, QSpinBox, QVBoxLayout)
 
-from algorithms.raster import MAX_GRID
-from algorithms.registry import InputError
-from algorithms.trace import DEFAULT_STEP_CAP, MAX_STEP_CAP
+from algorithms.core.raster import MAX_GRID
+from algorithms.core.registry import InputError
+from algorithms.core.trace import DEFAULT_STEP_CAP, MAX_STEP_CAP
 from app.model.budget import DEFAULT_MEMORY_LIMIT
 from widgets.transport import SPEED_MAX, SPEED_MIN
 

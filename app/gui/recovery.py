@@ -25,7 +25,7 @@ from pathlib import Path
 from PySide6.QtCore import QEvent, QLockFile, QObject, QTimer, Signal
 from PySide6.QtWidgets import QMessageBox
 
-from algorithms.registry import InputError
+from algorithms.core.registry import InputError
 
 from app.model import scene as scenes
 from app.gui.appdata import APP_NAME, data_dir, ensure

@@ -13,8 +13,8 @@ from PySide6.QtCore import QObject, Qt
 from PySide6.QtGui import QAction, QKeySequence
 from PySide6.QtWidgets import QFileDialog, QInputDialog
 
-from algorithms import registry
-from algorithms.errors import InputError
+from algorithms.core import registry
+from algorithms.core.errors import InputError
 
 
 
@@ -24,7 +24,7 @@ FILTERS = {"pdf": "PDF (*.pdf)", "md": "Markdown with PNG grids (*.md)",
 
 def reference_names() -> list[str]:
     """The algorithms a student's file can be checked against."""
-    from app.model import checking  # with the first student file, not the window
+    from app.teaching import checking  # with the first student file, not the window
     names = []
     for spec in registry.all_specs():
         try:
@@ -77,7 +77,7 @@ class StudentActions(QObject):
                                                "Compare your algorithm with:", names, start, False)
             if not ok:
                 return None
-        from app.model.student_algorithm import student_spec
+        from app.teaching.student_algorithm import student_spec
         try:
             spec = student_spec(path, against)
         except InputError as error:
@@ -103,7 +103,7 @@ class StudentActions(QObject):
             folder, fmt = path, next(k for k, v in FILTERS.items() if v == chosen)
         # Worksheets (and Pillow, which draws their grid) load on first use.
         from app.gui.worksheet_pdf import write_pdf
-        from app.model import worksheet
+        from app.teaching import worksheet
         try:
             sheet = worksheet.build(window.player.scene)
             files = worksheet.write(sheet, folder, fmt or "pdf", write_pdf)
@@ -122,7 +122,7 @@ class StudentActions(QObject):
             window.statusBar().showMessage("First divergence: open your algorithm first "
                                            "(File > Open algorithm…).", 5000)
             return None
-        from app.model.student_algorithm import first_divergence
+        from app.teaching.student_algorithm import first_divergence
         step, text = first_divergence(player.trace, against, player.scene.points, player.options,
                                       player.grid)
         if step is not None:

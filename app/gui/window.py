@@ -14,10 +14,10 @@ import numpy as np
 from PySide6.QtCore import Qt
 from PySide6.QtWidgets import QApplication, QMainWindow, QMessageBox
 
-from algorithms import registry
-from algorithms.raster import Raster
-from algorithms.registry import InputError
-from algorithms.steps import Note, Table
+from algorithms.core import registry
+from algorithms.core.raster import Raster
+from algorithms.core.registry import InputError
+from algorithms.core.steps import Note, Table
 from widgets.grid_view import DRAW, MARKER
 
 from app.gui.appdata import APP_NAME

@@ -7,7 +7,7 @@ from PySide6.QtCore import Qt
 from PySide6.QtWidgets import (QCheckBox, QFrame, QLabel, QLineEdit, QPushButton, QScrollArea,
                                QSizePolicy, QVBoxLayout, QWidget)
 
-from algorithms.raster import MAX_GRID
+from algorithms.core.raster import MAX_GRID
 from widgets.depth_view import DepthView
 from widgets.docks import panel_dock
 from widgets.editors import AlgorithmPicker, GridEditor, OptionsEditor

@@ -1,4 +1,4 @@
-"""A worksheet (app/model/worksheet.py) as a PDF, drawn with Qt's QPdfWriter.
+"""A worksheet (app/teaching/worksheet.py) as a PDF, drawn with Qt's QPdfWriter.
 
 A4 pages: the title, the pseudo-code and the constants, then the step table
 (ROWS_PER_PAGE rows a page, headings repeated), then one page with the grid

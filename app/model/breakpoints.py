@@ -47,7 +47,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from algorithms.steps import NO_PIXEL, PLOT, VISIT, Table, Vars
+from algorithms.core.steps import NO_PIXEL, PLOT, VISIT, Table, Vars
 
 SIGN, BRANCH, AET, SCANLINE, PIXEL, DEPTH = "sign", "branch", "aet", "scanline", "pixel", "depth"
 CONDITIONS = (SIGN, BRANCH, AET, SCANLINE, PIXEL, DEPTH)

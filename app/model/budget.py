@@ -13,7 +13,7 @@ from __future__ import annotations
 import math
 
 from algorithms.antialias.temporal import SAMPLES_PER_BAND
-from algorithms.errors import InputError
+from algorithms.core.errors import InputError
 
 DEFAULT_MEMORY_LIMIT = 2 * 1024 ** 3
 # Work between two steps longer than this cannot be stopped by the cap or a

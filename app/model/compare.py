@@ -32,9 +32,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from algorithms import registry
-from algorithms.errors import InputError
-from algorithms.raster import Raster, check_grid
+from algorithms.core import registry
+from algorithms.core.errors import InputError
+from algorithms.core.raster import Raster, check_grid
 
 from app.model.geometry import exact_reference, final_coverage, run_paths
 from app.model.inputs import split_contours

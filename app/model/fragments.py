@@ -16,7 +16,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from algorithms.steps import Vars
+from algorithms.core.steps import Vars
 
 # Columns whose values are whole numbers, and the packed colour.
 WHOLE = ("level", "fetches", "@triangle")

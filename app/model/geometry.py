@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from algorithms.steps import Vars
+from algorithms.core.steps import Vars
 
 
 # ------------------------------------------------------------ ideal primitive

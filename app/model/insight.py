@@ -19,7 +19,7 @@ from fractions import Fraction
 
 import numpy as np
 
-from algorithms.steps import NO_PIXEL, PLOT, VISIT
+from algorithms.core.steps import NO_PIXEL, PLOT, VISIT
 
 POSITIVE, NEGATIVE, ZERO, INFO = "positive", "negative", "zero", "info"
 IN, OUT = "in", "out"

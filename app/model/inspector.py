@@ -33,10 +33,10 @@ from typing import NamedTuple
 import numpy as np
 
 from algorithms import triangles
-from algorithms.interpolate import affine_value, barycentric_weights, per_vertex, \
+from algorithms.triangles.interpolate import affine_value, barycentric_weights, per_vertex, \
     perspective_weights
-from algorithms.registry import InputError, format_value
-from algorithms.steps import PLOT, VISIT, Vars
+from algorithms.core.registry import InputError, format_value
+from algorithms.core.steps import PLOT, VISIT, Vars
 
 from app.model.geometry import exact_reference
 

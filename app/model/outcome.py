@@ -3,9 +3,9 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from algorithms.errors import InputError
-from algorithms.raster import Raster
-from algorithms.trace import FrameState, Trace
+from algorithms.core.errors import InputError
+from algorithms.core.raster import Raster
+from algorithms.core.trace import FrameState, Trace
 
 from .scene import Scene
 

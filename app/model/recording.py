@@ -15,7 +15,7 @@ import sys
 import threading
 import time
 
-from algorithms.trace import Cancelled, RecordMonitor
+from algorithms.core.trace import Cancelled, RecordMonitor
 
 # While a worker records, the interpreter hands the lock over at least this
 # often (seconds; Python's default is 0.005). Painting the window calls into

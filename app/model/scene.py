@@ -18,9 +18,9 @@ from dataclasses import dataclass, field
 from functools import cached_property
 from pathlib import Path
 
-from algorithms import registry
-from algorithms.raster import MAX_GRID
-from algorithms.registry import InputError
+from algorithms.core import registry
+from algorithms.core.raster import MAX_GRID
+from algorithms.core.registry import InputError
 
 from app.model.files import write_atomically
 from app.model.inputs import complete, flatten, runnable_input, split_contours

@@ -51,10 +51,10 @@ from contextlib import contextmanager
 
 import numpy as np
 
-from algorithms import registry
-from algorithms.raster import MAX_GRID, Raster, check_grid
-from algorithms.registry import InputError
-from algorithms.trace import DEFAULT_STEP_CAP, Cancelled, FrameState, Trace
+from algorithms.core import registry
+from algorithms.core.raster import MAX_GRID, Raster, check_grid
+from algorithms.core.registry import InputError
+from algorithms.core.trace import DEFAULT_STEP_CAP, Cancelled, FrameState, Trace
 
 from app.model import drawing
 from app.model.budget import DEFAULT_MEMORY_LIMIT, check_budget

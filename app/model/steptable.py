@@ -19,7 +19,7 @@ import bisect
 import csv
 from dataclasses import dataclass
 
-from algorithms.steps import Span, Table, Vars
+from algorithms.core.steps import Span, Table, Vars
 
 from app.model.tables import cell_text
 

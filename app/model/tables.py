@@ -12,8 +12,8 @@ import bisect
 from dataclasses import dataclass, field
 from fractions import Fraction
 
-from algorithms.registry import format_value
-from algorithms.steps import Table
+from algorithms.core.registry import format_value
+from algorithms.core.steps import Table
 
 # A fraction is shown as a decimal when that decimal is exact and this short.
 MAX_DECIMALS = 6

@@ -135,7 +135,7 @@ def compose(raster, overlay: Overlay | None = None, palette: Palette = PALETTE,
             scale: int = 1, grid_lines: bool | None = None, coverage: bool = False) -> np.ndarray:
     """The grid as a uint8 array of shape (H * scale, W * scale, 4).
 
-    ``raster`` is an ``algorithms.raster.Raster``. Cells written once take the ink colour, or their value from
+    ``raster`` is an ``algorithms.core.raster.Raster``. Cells written once take the ink colour, or their value from
     ``raster.colors`` where the run writes colours; cells written more than
     once take the overdraw colour (coloured cells are darkened instead).
     With ``coverage`` every cell takes the colour of its write count

@@ -22,7 +22,7 @@ from typing import Callable, Sequence
 import numpy as np
 from PIL import Image
 
-from algorithms import registry
+from algorithms.core import registry
 
 from app.model.geometry import run_paths
 from app.render.derivation import draw_distances

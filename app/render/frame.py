@@ -21,8 +21,8 @@ from typing import Callable, Sequence
 
 import numpy as np
 
-from algorithms import registry
-from algorithms.steps import PLOT, VISIT, Span, Vars
+from algorithms.core import registry
+from algorithms.core.steps import PLOT, VISIT, Span, Vars
 
 from app.model.geometry import final_coverage
 from app.model.notation import number
@@ -165,7 +165,7 @@ def primitive_mask(width: int, height: int, paths, palette: Palette = PALETTE,
     the image's shape, or None when it draws none (no paths, or scale < 3)."""
     if scale < 3 or not paths:
         return None
-    from algorithms.raster import Raster
+    from algorithms.core.raster import Raster
     empty = Raster(width, height)
     plain = compose_frame(empty, None, palette, scale, False)
     drawn = compose_frame(empty, FrameMarks(paths=list(paths)), palette, scale, False)

@@ -26,8 +26,8 @@ from pathlib import Path
 
 import numpy as np
 
-from algorithms import registry
-from algorithms.steps import NO_PIXEL, Note, Span, Table, Vars
+from algorithms.core import registry
+from algorithms.core.steps import NO_PIXEL, Note, Span, Table, Vars
 
 from app.model.files import write_atomically
 from app.model.geometry import scene_paths

@@ -23,7 +23,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from algorithms.steps import Vars
+from algorithms.core.steps import Vars
 
 OVERLAYS = ("half-planes", "sub-triangles", "distances", "basis")
 # One colour per edge k (and its opposite vertex P_k), and one for the basis.

@@ -22,7 +22,7 @@ from fractions import Fraction
 
 import numpy as np
 
-from algorithms.steps import Span, Table
+from algorithms.core.steps import Span, Table
 
 from app.model.branches import branch_pairs, candidate_offsets
 from app.model.drawing import point_labels

@@ -16,10 +16,10 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
-from algorithms import registry
+from algorithms.core import registry
 from algorithms.antialias import animation_frame_steps
-from algorithms.registry import InputError
-from algorithms.trace import DEFAULT_STEP_CAP
+from algorithms.core.registry import InputError
+from algorithms.core.trace import DEFAULT_STEP_CAP
 
 from app.model.budget import DEFAULT_MEMORY_LIMIT, check_budget
 from app.model.scene import one_line

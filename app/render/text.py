@@ -15,7 +15,7 @@ from functools import lru_cache
 import numpy as np
 from PIL import Image, ImageDraw, ImageFont
 
-from algorithms.trace import FrameState
+from algorithms.core.trace import FrameState
 
 from app.model.notation import shown
 from app.model.tables import TableIndex

@@ -12,7 +12,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from algorithms.steps import PLOT
+from algorithms.core.steps import PLOT
 from algorithms.textures import texels
 from algorithms.textures.sampling import Mapping, Sampler
 

@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from algorithms.steps import Vars
+from algorithms.core.steps import Vars
 
 UNITS = ("auto", "step", "decision", "pixel", "scanline", "primitive")
 # The automatic choice keeps an export at most this many frames long (a

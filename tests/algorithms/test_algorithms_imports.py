@@ -8,8 +8,8 @@ FORBIDDEN = ("PySide6", "pyqtgraph", "app", "widgets", "shiboken6")
 
 SCRIPT = f"""
 import sys
-import algorithms.lines, algorithms.trace, algorithms.registry, algorithms.exact.lines
-algorithms.registry.all_specs()
+import algorithms.lines, algorithms.core.trace, algorithms.core.registry, algorithms.exact.lines
+algorithms.core.registry.all_specs()
 loaded = sorted(name for name in sys.modules
                 if name.split('.')[0] in {FORBIDDEN!r})
 print(','.join(loaded))

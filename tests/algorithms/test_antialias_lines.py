@@ -8,8 +8,8 @@ import pytest
 from hypothesis import given, settings
 
 from algorithms import antialias as aa
-from algorithms.registry import get
-from algorithms.steps import Note
+from algorithms.core.registry import get
+from algorithms.core.steps import Note
 from tests.support import record
 from tests.support.linecases import NAMED_CASES, OCTANT_CASES, points
 

@@ -7,7 +7,7 @@ import pytest
 from algorithms import antialias as aa
 from algorithms.exact import coverage as ec
 from algorithms import triangles
-from algorithms.registry import get
+from algorithms.core.registry import get
 from app.cli import main
 
 TRI = [(1.5, 2.0), (20.0, 3.25), (8.0, 17.0)]

@@ -7,9 +7,9 @@ import pytest
 
 from algorithms import antialias as aa
 from algorithms.exact import coverage as ec
-from algorithms import trace as trace_module
+from algorithms.core import trace as trace_module
 from algorithms import triangles
-from algorithms.registry import get
+from algorithms.core.registry import get
 from app.cli import main
 from tests.support.trace_oracle import slow_replay
 

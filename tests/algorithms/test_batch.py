@@ -2,8 +2,9 @@
 import numpy as np
 import pytest
 
-from algorithms.batch import bresenham_lines, midpoint_circles
-from algorithms.circles import midpoint_circle_pixels
+from algorithms.circles.batch import midpoint_circles
+from algorithms.lines.batch import bresenham_lines
+from algorithms.circles.midpoint import midpoint_circle_pixels
 from algorithms.lines.bresenham import bresenham_pixels
 
 

@@ -3,8 +3,8 @@ the midpoint rule checked in integers in the test."""
 import numpy as np
 import pytest
 
-from algorithms.batch import midpoint_circles
-from algorithms.batch_canvas import draw_midpoint_circles
+from algorithms.circles.batch import midpoint_circles
+from algorithms.circles.batch import draw_midpoint_circles
 
 
 def on_midpoint_circle(a: int, b: int, r: int) -> bool:

@@ -6,8 +6,8 @@ import numpy as np
 
 import pytest
 
-from algorithms.registry import get
-from algorithms.trace import Cancelled, RecordMonitor, watching
+from algorithms.core.registry import get
+from algorithms.core.trace import Cancelled, RecordMonitor, watching
 
 BIG = (4096, 4096)  # 16M pixels: a filled float64 buffer is 128 MiB
 TRIANGLE = [(10.0, 10.0), (30.0, 12.0), (20.0, 28.0)]
@@ -39,7 +39,7 @@ def test_the_big_buffers_are_not_filled_before_the_first_frame(name):
 
 
 def test_the_painters_final_comparison_hears_a_cancel():
-    from algorithms import visibility
+    from algorithms.visibility import zbuffer_painter as visibility
     monitor = RecordMonitor()
     monitor.cancel()
     with watching(monitor), pytest.raises(Cancelled):
@@ -174,8 +174,8 @@ def _count_calls(monkeypatch, module, name) -> list:
 
 
 def test_a_seed_search_that_finds_nothing_stops_at_the_step_caps_work(monkeypatch):
-    from algorithms import fill
-    from algorithms.errors import InputError
+    from algorithms.fill import flood as fill
+    from algorithms.core.errors import InputError
     rows = [0]
     real_row = fill.outline_row
 
@@ -192,8 +192,8 @@ def test_a_seed_search_that_finds_nothing_stops_at_the_step_caps_work(monkeypatc
 
 
 def test_outline_pixels_walked_again_count_against_the_step_cap(monkeypatch):
-    from algorithms import fill
-    from algorithms.errors import InputError
+    from algorithms.fill import flood as fill
+    from algorithms.core.errors import InputError
     walked = _count_calls(monkeypatch, fill, "_segment_walk")
     # segments back and forth over one row, each a pixel shorter: no two are
     # the same segment, and all but the first walk pixels drawn before
@@ -225,7 +225,7 @@ def test_a_temporal_frame_does_not_fill_its_image_before_its_first_pixel():
 
 def test_line_subpixels_walks_its_cells_as_the_frames_go(monkeypatch):
     import importlib
-    module = importlib.import_module("algorithms.subpixel_line")
+    module = importlib.import_module("algorithms.antialias.subpixel_line")
     walked = _count_calls(monkeypatch, module, "walk_cells")
     trace = get("line-subpixels").record([(0, 0), (4095, 3000)], {"n": 8}, grid=BIG,
                                          step_cap=20)

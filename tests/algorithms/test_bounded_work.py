@@ -4,9 +4,9 @@ import importlib
 import numpy as np
 import pytest
 
-from algorithms.registry import get
-from algorithms.steps import PLOT, CodeLine, Start
-from algorithms.trace import Cancelled, RecordMonitor, Trace
+from algorithms.core.registry import get
+from algorithms.core.steps import PLOT, CodeLine, Start
+from algorithms.core.trace import Cancelled, RecordMonitor, Trace
 
 temporal_module = importlib.import_module("algorithms.antialias.temporal")
 WHEEL = [(10.0, 10.0)]
@@ -96,7 +96,7 @@ def test_a_many_vertex_polygon_is_checked_for_simplicity_quickly():
     assert time.perf_counter() - started < 10
 
 
-fill_module = importlib.import_module("algorithms.fill")
+fill_module = importlib.import_module("algorithms.fill.flood")
 
 
 def _zigzag(vertices: int) -> list:

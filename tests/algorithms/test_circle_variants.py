@@ -81,7 +81,7 @@ def test_polar_pixels_lie_on_the_circle_and_gaps_are_counted(r, dt):
 
 
 def test_polar_refuses_a_zero_step():
-    from algorithms.registry import InputError, get
+    from algorithms.core.registry import InputError, get
     with pytest.raises(InputError):
         get("circle-polar").resolve({"dt": 0.0})
 

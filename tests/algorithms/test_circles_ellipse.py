@@ -17,8 +17,8 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from algorithms.exact import circles as exact
-from algorithms import trace as trace_module
-from algorithms.registry import InputError, get
+from algorithms.core import trace as trace_module
+from algorithms.core.registry import InputError, get
 from tests.support.trace_oracle import slow_replay
 from tests.support import record
 

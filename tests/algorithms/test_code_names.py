@@ -9,12 +9,13 @@ import textwrap
 
 import pytest
 
-from algorithms import code, registry
-from algorithms.registry import AlgorithmSpec, Inputs
+from algorithms.core import code
+from algorithms.core import registry
+from algorithms.core.registry import AlgorithmSpec, Inputs
 
 GOOD = '''
-    from algorithms.code import Code, listing
-    from algorithms.steps import NO_PIXEL, PLOT, VISIT, Start, Vars
+    from algorithms.core.code import Code, listing
+    from algorithms.core.steps import NO_PIXEL, PLOT, VISIT, Start, Vars
 
 
     def fake_listing(points, options):
@@ -77,8 +78,8 @@ def test_a_wrong_name_is_refused_before_the_algorithm_is_listed(tmp_path, monkey
 def test_a_family_without_code_is_not_held_to_it(tmp_path, monkeypatch):
     source = GOOD.replace("code = Code()", "code = Builder()").replace("(plot, x, 0, x)",
                                                                       "(4, x, 0, x)")
-    source = source.replace("from algorithms.code import Code, listing",
-                            "from algorithms.code import Code as Builder")
+    source = source.replace("from algorithms.core.code import Code, listing",
+                            "from algorithms.core.code import Code as Builder")
     spec = _register(tmp_path, monkeypatch, "fake_unconverted", source)
     registry.register(spec)
     assert registry._REGISTRY[spec.name] is spec

@@ -13,7 +13,7 @@ cli.main(["list"])
 cli.main(["run", "flood-fill", "--points", "1,1", "20,1", "20,15", "1,15", "--json"])
 cli.main(["run", "line-wu", "--points", "0,0", "9,4", "--json"])
 print("BEFORE", "numba" in sys.modules)
-from algorithms.registry import get
+from algorithms.core.registry import get
 spec = get("flood-fill")
 spec.kernel([[(1, 1), (20, 1), (20, 15), (1, 15)]], spec.resolve({}), (24, 18))
 print("AFTER", "numba" in sys.modules)

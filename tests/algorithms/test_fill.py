@@ -9,12 +9,12 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from algorithms import fill as fill_module
-from algorithms import trace as trace_module
-from algorithms.fill import outline_pixels, segment_pixels
-from algorithms.registry import InputError, get
-from algorithms.steps import PLOT, Span, Vars
-from algorithms.trace import DEFAULT_STEP_CAP
+from algorithms.fill import flood as fill_module
+from algorithms.core import trace as trace_module
+from algorithms.fill.flood import outline_pixels, segment_pixels
+from algorithms.core.registry import InputError, get
+from algorithms.core.steps import PLOT, Span, Vars
+from algorithms.core.trace import DEFAULT_STEP_CAP
 from tests.support.trace_oracle import slow_replay
 from tests.support import record
 

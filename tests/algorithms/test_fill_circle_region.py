@@ -8,8 +8,8 @@ from hypothesis import strategies as st
 from skimage.segmentation import flood
 
 from algorithms.exact import circles as exact_circles
-from algorithms.fill import outline_pixels
-from algorithms.registry import InputError, get
+from algorithms.fill.flood import outline_pixels
+from algorithms.core.registry import InputError, get
 
 BOUNDARY, FILL = 0xC0392B, 0x2E86DE
 ORDERS = ("stack", "queue", "span")

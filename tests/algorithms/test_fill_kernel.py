@@ -8,7 +8,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 from skimage.segmentation import flood
 
-from algorithms.registry import InputError, get
+from algorithms.core.registry import InputError, get
 from tests.support import record
 
 BOUNDARY, FILL = 0xC0392B, 0x2E86DE

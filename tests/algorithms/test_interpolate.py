@@ -1,7 +1,7 @@
 """Interpolation across triangles: barycentric weights, the parameter plane, perspective.
 
 Exact references come from exact_triangles (Cramer's rule on Fractions);
-the functions of algorithms/interpolate.py also run on Fractions, so
+the functions of algorithms/triangles/interpolate.py also run on Fractions, so
 several checks are exact equalities rather than tolerances.
 """
 import math
@@ -13,8 +13,8 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from algorithms.exact import triangles as X
-from algorithms import interpolate as I
-from algorithms.registry import InputError
+from algorithms.triangles import interpolate as I
+from algorithms.core.registry import InputError
 from test_triangles_cases import run_frames, spec, subgrid_triangle
 
 SETTINGS = dict(deadline=None, suppress_health_check=[HealthCheck.too_slow])

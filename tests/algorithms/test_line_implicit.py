@@ -6,7 +6,7 @@ import pytest
 from hypothesis import given, settings
 
 from algorithms.exact import lines as exact
-from algorithms.steps import PLOT, VISIT
+from algorithms.core.steps import PLOT, VISIT
 from tests.support.linecases import NAMED_CASES, segments, trace_of
 
 
@@ -72,7 +72,7 @@ def test_no_pixel_centre_is_exactly_half_a_pixel_from_a_segment():
 
 def test_explain_gives_the_exact_comparison():
     trace = trace_of("line-implicit", (0, 0), (2, 1))
-    from algorithms.registry import get
+    from algorithms.core.registry import get
     spec = get("line-implicit")
     rows = {}
     for i in range(len(trace)):

@@ -4,7 +4,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from algorithms.registry import get
+from algorithms.core.registry import get
 from tests.support.linecases import LINE_ALGORITHMS, NAMED_CASES, segments, trace_of
 
 OPTIONS = {

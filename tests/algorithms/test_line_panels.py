@@ -4,8 +4,8 @@ import json
 import pytest
 
 from algorithms.lines.forms import explicit_listing
-from algorithms.registry import get
-from algorithms.steps import PLOT, VISIT
+from algorithms.core.registry import get
+from algorithms.core.steps import PLOT, VISIT
 from tests.support.linecases import LINE_ALGORITHMS, NAMED_CASES, trace_of
 
 

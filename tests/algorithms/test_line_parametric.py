@@ -13,7 +13,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from algorithms.exact import lines as exact
-from algorithms.registry import InputError, get
+from algorithms.core.registry import InputError, get
 from tests.support.linecases import NAMED_CASES, segments, trace_of
 
 NEAR = Fraction(1, 10 ** 9)  # far above the float error of t * (Q - P)

@@ -11,7 +11,7 @@ from fractions import Fraction
 
 import pytest
 
-from algorithms import registry
+from algorithms.core import registry
 from algorithms.exact import lines as exact
 
 SEGMENTS = [((0, 0), (8, 3)), ((0, 0), (6, 3)), ((2, 1), (14, 7)), ((20, 3), (4, 18)),

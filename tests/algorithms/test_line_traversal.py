@@ -10,7 +10,7 @@ from fractions import Fraction
 
 import pytest
 
-from algorithms import registry
+from algorithms.core import registry
 
 SEGMENTS = [((0.5, 0.5), (7.5, 3.5)), ((1, 1), (4, 4)), ((2.25, 7.75), (9.5, 1.125)),
             ((3, 2), (3, 9)), ((1.5, 4), (12.25, 4)), ((6.75, 6.75), (6.75, 6.75)),

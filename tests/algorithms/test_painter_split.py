@@ -7,7 +7,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from algorithms.visibility import PALETTE
+from algorithms.visibility.zbuffer_painter import PALETTE
 from app.model import scene as scenes
 from app.model.scene import RESOURCES
 from tests.support import record

@@ -6,7 +6,7 @@ from fractions import Fraction
 import numpy as np
 import pytest
 
-from algorithms import registry
+from algorithms.core import registry
 from algorithms.pipeline.blend import final_colors
 
 SPEC = registry.get("blend-over")

@@ -7,9 +7,9 @@ from fractions import Fraction
 
 import pytest
 
-from algorithms import registry
+from algorithms.core import registry
 from algorithms.pipeline.space import clip_polygon, distance
-from algorithms.steps import PLOT
+from algorithms.core.steps import PLOT
 
 SPEC = registry.get("pipeline")
 

@@ -7,9 +7,9 @@ from fractions import Fraction
 
 import pytest
 
-from algorithms import registry
+from algorithms.core import registry
 from algorithms.exact import polygons as exact
-from algorithms.steps import Table
+from algorithms.core.steps import Table
 
 POLYGONS = {
     "triangle": [[(2, 2), (12, 3), (8, 9)]],
@@ -114,7 +114,7 @@ def test_trapezoid_tessellation_fills_any_polygon_exactly(shape, rule):
 
 @pytest.mark.parametrize("shape", ["bowtie", "with hole"])
 def test_ear_clipping_refuses_what_the_trapezoids_tessellate(shape):
-    from algorithms.errors import InputError
+    from algorithms.core.errors import InputError
     with pytest.raises(InputError):
         registry.get("polygon-tessellate").record(POLYGONS[shape], {}, grid=(24, 20))
     trace, _ = pixels("polygon-tessellate-any", POLYGONS[shape])

@@ -12,7 +12,7 @@ import math
 from hypothesis import assume
 from hypothesis import strategies as st
 
-from algorithms.steps import PLOT, Span
+from algorithms.core.steps import PLOT, Span
 
 SIZE = 24  # polygons lie in [0, SIZE] x [0, SIZE] unless a test says otherwise
 

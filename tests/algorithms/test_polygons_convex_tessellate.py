@@ -7,8 +7,8 @@ from hypothesis import strategies as st
 
 from algorithms.exact import polygons as oracle
 from algorithms.polygons import CONVEX, SCANLINE, TESSELLATE, snap_contours
-from algorithms.registry import InputError
-from algorithms.steps import PLOT, Note, Span, Table
+from algorithms.core.registry import InputError
+from algorithms.core.steps import PLOT, Note, Span, Table
 from test_polygons_cases import generator_pixels, kernel_pixels, star_shaped
 
 

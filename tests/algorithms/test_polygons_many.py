@@ -7,7 +7,7 @@ from hypothesis import strategies as st
 
 from algorithms.polygons import scanline_pixels
 from algorithms.polygons.many import scanline_fill_many
-from algorithms.registry import InputError
+from algorithms.core.registry import InputError
 
 ONE = 256
 

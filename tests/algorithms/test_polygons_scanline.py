@@ -13,9 +13,9 @@ from hypothesis import strategies as st
 
 from algorithms.exact import polygons as oracle
 from algorithms.polygons import SCANLINE, scanline_mask, scanline_pixels
-from algorithms.registry import InputError
-from algorithms.steps import PLOT, Span, Start, Table
-from algorithms.trace import Trace
+from algorithms.core.registry import InputError
+from algorithms.core.steps import PLOT, Span, Start, Table
+from algorithms.core.trace import Trace
 from tests.support import record
 from test_polygons_cases import generator_pixels, kernel_pixels, polygon
 from tests.support.trace_oracle import slow_replay

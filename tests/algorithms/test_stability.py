@@ -38,9 +38,9 @@ import pytest
 
 from algorithms.exact import (lines as exact, circles as exact_circles,
                               polygons as exact_polygons, triangles as exact_triangles)
-from algorithms import registry
-from algorithms.errors import InputError
-from algorithms.fill import NEIGHBOURS, outline_pixels
+from algorithms.core import registry
+from algorithms.core.errors import InputError
+from algorithms.fill.flood import NEIGHBOURS, outline_pixels
 from tests.support import curve_oracles, triangle_variant_oracles
 
 ROOT = Path(__file__).resolve().parents[2]

@@ -8,9 +8,9 @@ import numpy as np
 import pytest
 from PIL import Image
 
-from algorithms import registry
-from algorithms.interpolate import unpack
-from algorithms.steps import PLOT
+from algorithms.core import registry
+from algorithms.triangles.interpolate import unpack
+from algorithms.core.steps import PLOT
 from algorithms.textures import texels
 from algorithms.textures.sampling import Mapping, Sampler
 

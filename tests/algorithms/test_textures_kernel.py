@@ -4,8 +4,8 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from algorithms import registry
-from algorithms.steps import PLOT
+from algorithms.core import registry
+from algorithms.core.steps import PLOT
 from algorithms.textures.kernel import texture_image
 
 SPEC = registry.get("triangle-texture")

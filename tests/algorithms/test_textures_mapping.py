@@ -7,8 +7,8 @@ from fractions import Fraction
 import numpy as np
 import pytest
 
-from algorithms import registry
-from algorithms.steps import PLOT
+from algorithms.core import registry
+from algorithms.core.steps import PLOT
 
 SPEC = registry.get("triangle-texture")
 # Vertices on whole pixels, so snapping leaves them as they are.

@@ -4,9 +4,9 @@ import random
 import numpy as np
 import pytest
 
-from algorithms import keyframes as keyframes_module
-from algorithms import trace as trace_module
-from algorithms.registry import get
+from algorithms.core import keyframes as keyframes_module
+from algorithms.core import trace as trace_module
+from algorithms.core.registry import get
 from tests.support.trace_oracle import slow_replay
 
 
@@ -81,7 +81,7 @@ def test_dense_copies_stay_inside_the_budget(monkeypatch):
 
 def folded_variables(trace, i):
     """The variables at step i by applying every Vars record up to it in turn."""
-    from algorithms.steps import Vars
+    from algorithms.core.steps import Vars
 
     result = dict(trace.start.constants)
     for step in range(i + 1):
@@ -112,7 +112,7 @@ def test_variables_equal_the_fold_of_every_update(name, points, options):
 @pytest.mark.parametrize("spread", [50, 10_000_000])  # close writes (counted) and far ones
 @pytest.mark.parametrize("dtype", [np.uint8, np.int32])
 def test_write_many_counts_every_repeat(spread, dtype):
-    from algorithms.raster import Raster
+    from algorithms.core.raster import Raster
 
     rng = np.random.default_rng(spread)
     raster = Raster(4096, 4096)

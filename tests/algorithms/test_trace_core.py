@@ -4,10 +4,10 @@ import random
 import numpy as np
 import pytest
 
-from algorithms import trace as trace_module
-from algorithms.registry import get
-from algorithms.steps import CALC, NO_PIXEL, PLOT, CodeLine, Note, Start, Table, Vars
-from algorithms.trace import Trace, TraceError
+from algorithms.core import trace as trace_module
+from algorithms.core.registry import get
+from algorithms.core.steps import CALC, NO_PIXEL, PLOT, CodeLine, Note, Start, Table, Vars
+from algorithms.core.trace import Trace, TraceError
 from tests.support.linecases import LINE_ALGORITHMS, trace_of
 from tests.support.trace_oracle import slow_replay
 

@@ -2,8 +2,8 @@
 import numpy as np
 import pytest
 
-from algorithms.steps import CALC, CodeLine, Note, Start, Vars
-from algorithms.trace import Cancelled, RecordMonitor, Trace
+from algorithms.core.steps import CALC, CodeLine, Note, Start, Vars
+from algorithms.core.trace import Cancelled, RecordMonitor, Trace
 from tests.support import record
 
 STEPS = 100_000

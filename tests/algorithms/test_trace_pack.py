@@ -10,8 +10,8 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from algorithms.steps import NO_PIXEL, PLOT, CodeLine, Start, Vars
-from algorithms.trace import RecordMonitor, Trace, TraceError
+from algorithms.core.steps import NO_PIXEL, PLOT, CodeLine, Start, Vars
+from algorithms.core.trace import RecordMonitor, Trace, TraceError
 
 CODE = (CodeLine("start"), CodeLine("plot(x, y)", PLOT), CodeLine("set"))
 
@@ -121,7 +121,7 @@ def test_recordings_in_threads_do_not_share_a_packing_buffer(monkeypatch):
     # Finished recordings hand their buffer on; two at once must each get their own.
     from concurrent.futures import ThreadPoolExecutor
 
-    from algorithms import trace_store
+    from algorithms.core import trace_store
     monkeypatch.setattr(trace_store, "_spare_buffers", [])  # buffers the size of these runs
     def shifted(n):
         """Frames of run n, each run's pixels apart from the others'."""
@@ -178,7 +178,7 @@ def plain(frame, k):
 @given(st.lists(RUNS, max_size=8))
 def test_the_marshal_layout_packs_exactly_the_plain_frames(runs):
     frames = [frame for run in runs for frame in run]
-    from algorithms.trace_store import _pack_formats
+    from algorithms.core.trace_store import _pack_formats
     pack, dtype = _pack_formats(1)[0]
     packed = pack(frames)
     if not all(plain(frame, 1) for frame in frames):

@@ -11,11 +11,11 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from algorithms import trace as trace_module
-from algorithms.raster import Raster
-from algorithms.registry import get
-from algorithms.steps import CALC, NO_PIXEL, PLOT, VISIT, CodeLine, Note, Span, Start, Table, Vars
-from algorithms.trace import Trace
+from algorithms.core import trace as trace_module
+from algorithms.core.raster import Raster
+from algorithms.core.registry import get
+from algorithms.core.steps import CALC, NO_PIXEL, PLOT, VISIT, CodeLine, Note, Span, Start, Table, Vars
+from algorithms.core.trace import Trace
 
 RICH = (Start, Vars, Table, Note, Span)
 

@@ -7,10 +7,10 @@ from dataclasses import fields
 import numpy as np
 import pytest
 
-from algorithms import trace_store
-from algorithms.steps import CALC, NO_PIXEL, PLOT, CodeLine, Note, Span, Start, Table, Vars
-from algorithms.trace import Trace
-from algorithms.trace_store import Columns, Records
+from algorithms.core import trace_store
+from algorithms.core.steps import CALC, NO_PIXEL, PLOT, CodeLine, Note, Span, Start, Table, Vars
+from algorithms.core.trace import Trace
+from algorithms.core.trace_store import Columns, Records
 
 CODE = (CodeLine("start"), CodeLine("plot(x, y)", PLOT), CodeLine("set", CALC))
 

@@ -5,7 +5,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from algorithms import triangles
-from algorithms.registry import InputError
+from algorithms.core.registry import InputError
 from algorithms.triangles.canvas import fill_canvas
 
 SUB = 256

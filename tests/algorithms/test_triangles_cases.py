@@ -7,8 +7,8 @@ from math import gcd
 from hypothesis import strategies as st
 
 from algorithms.exact import triangles as exact_triangles
-from algorithms import registry
-from algorithms.steps import PLOT, VISIT
+from algorithms.core import registry
+from algorithms.core.steps import PLOT, VISIT
 
 SUB = 256  # 8 sub-pixel bits, the default
 RULES = ("top-left", "inclusive", "strict")

@@ -60,7 +60,7 @@ def test_the_kernel_without_a_grid_gives_the_whole_triangle():
 
 
 def test_coordinates_beyond_the_limit_are_input_errors():
-    from algorithms.registry import InputError
+    from algorithms.core.registry import InputError
 
     with pytest.raises(InputError):
         triangles.kernel_pixels([(0, 0), (2e15, 0), (0, 1)], OPTIONS, (8, 8))

@@ -5,9 +5,9 @@ from fractions import Fraction
 import pytest
 
 from algorithms.exact import triangles as exact_triangles
-from algorithms import registry
-from algorithms.registry import InputError
-from algorithms.steps import Note, Table
+from algorithms.core import registry
+from algorithms.core.registry import InputError
+from algorithms.core.steps import Note, Table
 from algorithms.triangles import MAX_OFFSET
 
 GRID = (20, 16)

@@ -12,9 +12,9 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from algorithms import registry
-from algorithms.registry import InputError
-from algorithms.steps import Note, Start
+from algorithms.core import registry
+from algorithms.core.registry import InputError
+from algorithms.core.steps import Note, Start
 from test_triangles_cases import (RULES, TRAVERSALS, as_window, centre_triangle, counts_of,
                                   far_triangle, oracle, plotted, run_frames, sliver, spec,
                                   subgrid_triangle, visited)

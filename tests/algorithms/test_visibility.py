@@ -8,10 +8,10 @@ import numpy as np
 import pytest
 
 from algorithms.exact import triangles as exact_triangles
-from algorithms import trace as trace_module
-from algorithms import visibility as vis
-from algorithms.registry import get
-from algorithms.steps import Table
+from algorithms.core import trace as trace_module
+from algorithms.visibility import zbuffer_painter as vis
+from algorithms.core.registry import get
+from algorithms.core.steps import Table
 from app.cli import main
 from tests.support.trace_oracle import slow_replay
 

@@ -9,7 +9,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from algorithms.antialias.wu_kernel import draw_wu_lines, wu_lines
-from algorithms.registry import get
+from algorithms.core.registry import get
 from tests.support.linecases import NAMED_CASES, segments, trace_of
 
 ENDPOINTS = ("full", "gap")

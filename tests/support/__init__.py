@@ -1,7 +1,7 @@
 """Helpers shared by the tests of every package."""
 from pathlib import Path
 
-from algorithms import registry
+from algorithms.core import registry
 
 # The project's top folder: resources, README.md and the packages live here.
 ROOT = Path(__file__).resolve().parents[2]

@@ -1,7 +1,7 @@
 """The scenes of the breakpoint tests and their oracles: each walks a trace
 one frame at a time (``trace.step(i)``) in plain Python and lists the frames
 where a condition holds."""
-from algorithms.steps import Span, Table
+from algorithms.core.steps import Span, Table
 
 BRESENHAM = [((4, 5), (28, 15)), ((20, 2), (5, 22)), ((30, 20), (1, 9)), ((2, 3), (20, 3)),
              ((6, 1), (9, 22))]

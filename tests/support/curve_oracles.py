@@ -1,5 +1,5 @@
 """Hard cases and independent oracles for the circle variants and curves
-(algorithms/circle_variants.py, algorithms/curves.py), shared by their own
+(algorithms/circles/variants.py, algorithms/circles/curves.py), shared by their own
 tests and the stability suite."""
 from __future__ import annotations
 

@@ -3,13 +3,13 @@ from __future__ import annotations
 
 from hypothesis import strategies as st
 
-from algorithms.cases import OCTANT_CASES, SPECIAL_CASES
-from algorithms.registry import get
+from algorithms.core.cases import OCTANT_CASES, SPECIAL_CASES
+from algorithms.core.registry import get
 
 LINE_ALGORITHMS = ("line-bresenham", "line-dda", "line-incremental",
                    "line-explicit", "line-implicit", "line-parametric")
 
-# The hard-case catalogue (algorithms/cases.py) is shared with `rasterlab check`.
+# The hard-case catalogue (algorithms/core/cases.py) is shared with `rasterlab check`.
 NAMED_CASES = OCTANT_CASES + SPECIAL_CASES
 
 

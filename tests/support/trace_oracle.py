@@ -1,7 +1,7 @@
 """An independent replay of a trace, one step and one pixel at a time, from
 step 0: the oracle the vectorised ``Trace.replay`` is checked against."""
-from algorithms.raster import Raster
-from algorithms.steps import PLOT, Span
+from algorithms.core.raster import Raster
+from algorithms.core.steps import PLOT, Span
 
 
 def slow_replay(trace, i: int) -> Raster:

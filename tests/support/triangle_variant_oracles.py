@@ -1,5 +1,5 @@
 """Hard cases and independent oracles for triangle-cramer and triangle-wireframe
-(algorithms/triangle_variants.py), shared by their tests and the stability suite."""
+(algorithms/triangles/variants.py), shared by their tests and the stability suite."""
 from __future__ import annotations
 
 import functools

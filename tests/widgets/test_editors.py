@@ -1,8 +1,8 @@
 """Editors made from option lists, the algorithm picker, points and grid."""
 from PySide6.QtWidgets import QCheckBox, QComboBox, QLineEdit, QSpinBox
 
-from algorithms import registry
-from algorithms.registry import Option
+from algorithms.core import registry
+from algorithms.core.registry import Option
 from widgets.editors import AlgorithmPicker, ColorListEditor, GridEditor, OptionsEditor
 
 OPTIONS = (
@@ -130,7 +130,7 @@ def test_grid_editor(qtbot):
 
 
 def test_the_algorithm_search_keeps_only_matching_entries(qtbot):
-    from algorithms import registry
+    from algorithms.core import registry
     from widgets.editors import AlgorithmPicker
     picker = AlgorithmPicker()
     qtbot.addWidget(picker)

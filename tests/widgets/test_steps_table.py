@@ -2,7 +2,7 @@
 text only when asked."""
 from PySide6.QtCore import Qt
 
-from algorithms import registry
+from algorithms.core import registry
 from app.model.steptable import StepTable
 from widgets.steps_table import StepsView
 

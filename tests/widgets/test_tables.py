@@ -3,7 +3,7 @@ from fractions import Fraction
 
 from PySide6.QtCore import Qt
 
-from algorithms.steps import Table
+from algorithms.core.steps import Table
 from app.model.tables import TableIndex, cell_text, changes
 from app.model.tables import ShownTable
 from widgets.tables import CHANGED_ROW, TablesPanel

@@ -8,8 +8,8 @@ import pytest
 
 from algorithms.exact import lines as exact, triangles as exact_triangles
 from app.analysis import measure
-from algorithms import registry
-from algorithms.steps import OP_NAMES, CodeLine
+from algorithms.core import registry
+from algorithms.core.steps import OP_NAMES, CodeLine
 
 
 def test_bresenham_counts_follow_its_lines():

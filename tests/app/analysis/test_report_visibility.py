@@ -2,7 +2,7 @@
 against the splitting painter's, and the splitting's cost."""
 import numpy as np
 
-from algorithms import registry
+from algorithms.core import registry
 from app.analysis import measure
 from app.analysis.measure_visibility import measure_visibility, visibility_scenes
 from app.analysis.report_findings import View

@@ -6,7 +6,7 @@ import xml.etree.ElementTree as ET
 
 import pytest
 
-from algorithms.cases import LINE_CASES
+from algorithms.core.cases import LINE_CASES
 from tests.support import ROOT
 
 SAMPLES = ROOT / "resources" / "students"

@@ -3,7 +3,7 @@ import os
 
 import pytest
 
-from algorithms import registry
+from algorithms.core import registry
 from app.analysis import report
 
 

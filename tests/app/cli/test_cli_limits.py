@@ -3,8 +3,8 @@ import json
 
 import pytest
 
-from algorithms.registry import InputError, parse_number
-from algorithms.trace import MAX_STEP_CAP
+from algorithms.core.registry import InputError, parse_number
+from algorithms.core.trace import MAX_STEP_CAP
 from app import cli
 from app.cli import main
 from app.gui import preferences

@@ -4,7 +4,7 @@ may be, one line saying what was chosen."""
 import pytest
 from PIL import Image
 
-from algorithms import registry
+from algorithms.core import registry
 
 from app.model.scene import load
 from app.render import units

@@ -17,7 +17,7 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from algorithms import registry
+from algorithms.core import registry
 from app import cli
 
 SPECS = {spec.name: spec for spec in registry.all_specs()}

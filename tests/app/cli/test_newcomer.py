@@ -6,7 +6,7 @@ import subprocess
 
 import pytest
 
-from algorithms import registry
+from algorithms.core import registry
 from tests.support import ROOT
 
 

@@ -9,7 +9,7 @@ import re
 import pytest
 from pypdf import PdfReader
 
-from algorithms.steps import Span
+from algorithms.core.steps import Span
 from app.model import scene as scenes
 from app.model.steptable import StepTable
 from tests.support import ROOT
@@ -107,7 +107,7 @@ def test_bad_input_exits_2(run_cli, tmp_path, argv, words):
 
 
 def test_a_long_run_lists_its_first_steps_and_says_so(run_cli, tmp_path, monkeypatch):
-    from app.model import worksheet
+    from app.teaching import worksheet
     monkeypatch.setattr(worksheet, "MAX_ROWS", 5)
     assert run_cli("worksheet", LINE_SCENE, "--out", tmp_path, "--format", "md")[0] == 0
     heading, rows, _ = expected_table(LINE_SCENE)

@@ -4,7 +4,7 @@ import pytest
 from PIL import Image
 from PySide6.QtCore import Qt
 
-from algorithms.steps import Span
+from algorithms.core.steps import Span
 
 pytestmark = pytest.mark.window(shown=False, files=True)
 

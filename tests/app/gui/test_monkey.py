@@ -13,7 +13,7 @@ from PySide6.QtCore import QPoint, Qt, QTimer
 from PySide6.QtTest import QTest
 from PySide6.QtWidgets import QApplication, QInputDialog, QMessageBox
 
-from algorithms import registry
+from algorithms.core import registry
 from app.model import scene as scenes
 from app.gui.recovery import content
 

@@ -1,7 +1,7 @@
 """Bugs the monkey test found, kept as plain tests."""
 import pytest
 
-from algorithms import registry
+from algorithms.core import registry
 from app.model import scene as scenes
 
 

@@ -2,8 +2,8 @@
 import numpy as np
 import pytest
 
-from algorithms import registry
-from algorithms.registry import InputError
+from algorithms.core import registry
+from algorithms.core.registry import InputError
 from app.gui.player import Player
 
 P, Q = (4, 5), (28, 15)

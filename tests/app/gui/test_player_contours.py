@@ -2,8 +2,8 @@
 set at once."""
 import pytest
 
-from algorithms import registry
-from algorithms.registry import InputError
+from algorithms.core import registry
+from algorithms.core.registry import InputError
 from app.model.inputs import complete, flatten, runnable_input
 from app.gui.player import Player
 from app.model.examples import default_scene

@@ -13,8 +13,8 @@ from PySide6.QtTest import QTest
 from PySide6.QtWidgets import (QAbstractButton, QAbstractSpinBox, QApplication, QComboBox,
                                QLineEdit, QSlider, QToolBar, QWidget)
 
-from algorithms.raster import MAX_GRID
-from algorithms.trace import DEFAULT_STEP_CAP
+from algorithms.core.raster import MAX_GRID
+from algorithms.core.trace import DEFAULT_STEP_CAP
 from app.gui import about, appdata, preferences
 from app.gui.preferences import Preferences, apply_theme, default_values
 from app.gui.window import GESTURES, MainWindow, ShortcutsDialog

@@ -48,7 +48,7 @@ def test_the_quick_search_answers_as_pyside_does_for_every_loaded_module():
     uses = [module.__name__ for module in modules if quick(module)]
     assert uses == [module.__name__ for module in modules if quick.original(module)]
     assert "widgets.grid_view" in uses and "pyqtgraph.Qt" in uses
-    assert "algorithms.trace" not in uses and "sys" not in uses
+    assert "algorithms.core.trace" not in uses and "sys" not in uses
 
 
 def test_it_is_installed_once():

@@ -13,7 +13,7 @@ import pytest
 from PySide6.QtCore import Qt
 from PySide6.QtTest import QTest
 
-from algorithms import registry
+from algorithms.core import registry
 from app.gui.player import Player
 from app.model.session import CANCELLED_MESSAGE
 from app.gui.recording import GapMeter, seek_when_recorded

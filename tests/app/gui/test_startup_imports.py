@@ -19,8 +19,8 @@ print("LOADED", sorted(m for m in sys.modules if m in DEFERRED or m.split(".")[0
 """
 
 DEFERRED = ("PIL", "numba", "av", "fpdf", "app.analysis", "app.render.export",
-            "app.render.writers", "app.render.video", "app.render.html", "app.model.worksheet",
-            "app.model.checking", "app.gui.worksheet_pdf", "logging.handlers",
+            "app.render.writers", "app.render.video", "app.render.html", "app.teaching.worksheet",
+            "app.teaching.checking", "app.gui.worksheet_pdf", "logging.handlers",
             "app.gui.compare_window", "app.gui.gallery", "app.gui.report_window")
 
 

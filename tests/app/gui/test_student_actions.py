@@ -8,8 +8,8 @@ import pytest
 from PySide6.QtCore import Qt
 from PySide6.QtTest import QTest
 
-from algorithms import registry
-from algorithms.steps import Note
+from algorithms.core import registry
+from algorithms.core.steps import Note
 from tests.support import ROOT
 
 SAMPLES = ROOT / "resources" / "students"

@@ -8,7 +8,7 @@ import pytest
 from PySide6.QtCore import Qt
 from PySide6.QtTest import QTest
 
-from algorithms import registry
+from algorithms.core import registry
 from tests.support import ROOT
 
 SAMPLES = ROOT / "resources" / "students"

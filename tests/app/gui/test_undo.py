@@ -7,7 +7,7 @@ from PySide6.QtCore import QSettings, Qt
 from PySide6.QtTest import QTest
 from PySide6.QtWidgets import QApplication
 
-from algorithms import registry
+from algorithms.core import registry
 from app.model.history import MERGE_SECONDS
 from app.gui.window import MainWindow
 from tests.support.gui import drag, settle

@@ -5,8 +5,8 @@ from PySide6.QtCore import Qt
 from PySide6.QtTest import QTest
 from PySide6.QtWidgets import QApplication
 
-from algorithms import registry
-from algorithms.registry import format_value
+from algorithms.core import registry
+from algorithms.core.registry import format_value
 from app.model import notation
 from app.gui.window import DEMO_POINTS, MainWindow
 from tests.support import record

@@ -6,9 +6,9 @@ import pytest
 from PySide6.QtCore import Qt
 from PySide6.QtTest import QTest
 
-from algorithms import registry
-from algorithms.registry import format_value
-from algorithms.steps import Span, Table, Vars
+from algorithms.core import registry
+from algorithms.core.registry import format_value
+from algorithms.core.steps import Span, Table, Vars
 from app.render.compose import PALETTE, coverage_counts
 from app.model.tables import cell_text
 from tests.support.gui import drag, settle

@@ -1,7 +1,7 @@
 """The window draws the same reasoning on its grid as an exported frame."""
 import pytest
 
-from algorithms.steps import Note, Span
+from algorithms.core.steps import Note, Span
 from app.model.scene import load
 from app.render.export import ExportSettings, FrameRenderer
 from app.render.reasoning import step_guides

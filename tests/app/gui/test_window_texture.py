@@ -7,7 +7,7 @@ import math
 import numpy as np
 import pytest
 
-from algorithms.steps import PLOT
+from algorithms.core.steps import PLOT
 from app.render.texture_frame import LEVEL_COLOURS
 
 FLOOR = [(0, 0), (24, 0), (13.2, 15), (0, 0), (13.2, 15), (10.8, 15)]

@@ -8,7 +8,7 @@ condition holds; the search under test must stop at the first of them after
 """
 import pytest
 
-from algorithms.steps import Table, Vars
+from algorithms.core.steps import Table, Vars
 from app.model import breakpoints as bp
 from tests.support import record
 from tests.support.breakpoint_oracles import (BRESENHAM, POLYGON, TRIANGLES, ZBUFFER, aet_events,

@@ -5,7 +5,7 @@ import tracemalloc
 
 import pytest
 
-from algorithms.registry import get
+from algorithms.core.registry import get
 from app.model import budget
 from app.model import scene as scenes
 

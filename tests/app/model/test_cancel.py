@@ -2,7 +2,7 @@
 the family: the job checks for it every REPORT_EVERY steps."""
 import pytest
 
-from algorithms import registry
+from algorithms.core import registry
 from app.model.recording import REPORT_EVERY, Job
 
 # Long runs of families whose steps cost the most (a z-buffer's fragments,

@@ -5,8 +5,8 @@ import numpy as np
 import pytest
 
 from algorithms.exact import triangles as exact_triangles
-from algorithms.errors import InputError
-from algorithms.raster import Raster
+from algorithms.core.errors import InputError
+from algorithms.core.raster import Raster
 from app.model import compare, geometry
 from app.render import compose as render
 from app.model.compare import EXACT, FRAME, PROGRESS, Pane

@@ -138,7 +138,7 @@ def test_wireframe_scene_differs_from_the_fill():
     scene, trace, pixels = run("triangle-wireframe")
     grid = (scene.width, scene.height)
     assert pixels == wireframe_oracle(scene.points, grid)
-    from algorithms import registry
+    from algorithms.core import registry
     bbox = {tuple(p) for p in registry.get("triangle-bbox").record(
         scene.points, {}, grid).written_pixels().tolist()}
     assert set(pixels) - bbox and bbox - set(pixels)

@@ -4,7 +4,7 @@ from fractions import Fraction
 
 import pytest
 
-from algorithms import registry
+from algorithms.core import registry
 from algorithms.exact import lines as exact
 from app.model.derivation import distance_segments
 

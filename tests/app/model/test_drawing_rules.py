@@ -6,7 +6,7 @@ import random
 
 import pytest
 
-from algorithms.registry import InputError
+from algorithms.core.registry import InputError
 from app.model.drawing import Close, Move, Place, Remove
 from app.model.session import Session
 

@@ -19,7 +19,7 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from algorithms import registry
+from algorithms.core import registry
 from app import cli
 from app.model import scene as scenes
 from app.model.scene import Scene, SceneError

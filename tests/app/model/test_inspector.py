@@ -6,8 +6,8 @@ from fractions import Fraction
 import pytest
 from shapely.geometry import Polygon, box
 
-from algorithms import registry
-from algorithms.steps import PLOT, VISIT, Span, Vars
+from algorithms.core import registry
+from algorithms.core.steps import PLOT, VISIT, Span, Vars
 from app.model.inspector import PixelInspector, inspect, rows_by_label
 from tests.support.inspector_oracles import GRID, TRIANGLE, assert_weight, edge_values, snapped
 

@@ -1,7 +1,7 @@
 """The note in force at a step: brief notes end when the run leaves their line."""
 import numpy as np
 
-from algorithms.steps import Note
+from algorithms.core.steps import Note
 from app.model.notes import note_at
 from tests.support import record
 

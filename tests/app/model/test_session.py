@@ -7,8 +7,8 @@ from pathlib import Path
 
 import pytest
 
-from algorithms import registry
-from algorithms.registry import InputError
+from algorithms.core import registry
+from algorithms.core.registry import InputError
 from app.model.scene import Scene
 from app.model.session import CANCELLED_MESSAGE, Session
 

@@ -5,8 +5,8 @@ import numpy as np
 import pytest
 
 from algorithms.exact import coverage as exact_coverage, triangles as exact_triangles
-from algorithms import registry
-from algorithms.registry import InputError
+from algorithms.core import registry
+from algorithms.core.registry import InputError
 from app.model import scene as scenes
 from app.model.scene import RESOURCES
 

@@ -5,7 +5,7 @@ import io
 
 import pytest
 
-from algorithms.steps import Table
+from algorithms.core.steps import Table
 from app.model import steptable
 from app.model.steptable import StepTable, aligned_text, cell_to_json, write_csv
 from tests.support import record

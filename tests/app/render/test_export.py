@@ -14,7 +14,7 @@ import numpy as np
 import pytest
 from PIL import Image
 
-from algorithms import registry
+from algorithms.core import registry
 from app import cli
 from app.render import export as ex
 from app.render.frame import FrameMarks, compose_frame, frame_marks, primitive_mask

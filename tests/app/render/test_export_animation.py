@@ -6,7 +6,7 @@ from fractions import Fraction
 import pytest
 from PIL import Image
 
-from algorithms import registry
+from algorithms.core import registry
 from algorithms.antialias import animation_frame_steps
 from app.render import export as exporting
 from app.model.scene import Scene, save

@@ -2,7 +2,7 @@
 import numpy as np
 import pytest
 
-from algorithms.registry import get
+from algorithms.core.registry import get
 from app.render.compose import PALETTE, compose
 from app.render.incremental import StepImages
 

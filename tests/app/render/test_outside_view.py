@@ -5,7 +5,7 @@ import math
 
 import pytest
 
-from algorithms import registry
+from algorithms.core import registry
 from app.render.outside_view import outside_view
 
 

@@ -4,7 +4,7 @@ from fractions import Fraction
 
 import pytest
 
-from algorithms.steps import Span, Table
+from algorithms.core.steps import Span, Table
 from app.model.scene import Scene
 from app.render import export as ex
 from app.render.reasoning import step_guides

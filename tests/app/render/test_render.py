@@ -2,7 +2,7 @@
 import numpy as np
 import pytest
 
-from algorithms.raster import Raster
+from algorithms.core.raster import Raster
 from app.model.geometry import differences
 from app.render.compose import PALETTE, Overlay, compose, packed_rgba, top_down
 

@@ -2,8 +2,8 @@
 read-outs keyed on value names."""
 import numpy as np
 
-from algorithms.raster import Raster
-from algorithms.steps import PLOT, VISIT
+from algorithms.core.raster import Raster
+from algorithms.core.steps import PLOT, VISIT
 from app.model.insight import row_tones, inside_chips
 from app.render.compose import PALETTE, Overlay, compose, coverage_counts
 

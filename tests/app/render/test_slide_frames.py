@@ -5,7 +5,7 @@ import re
 import numpy as np
 import pytest
 
-from algorithms.steps import Span
+from algorithms.core.steps import Span
 from app.model.scene import Scene, load
 from app.render import export as ex
 from app.render.text import _pack, _Font
@@ -136,7 +136,7 @@ def test_vertex_labels_are_an_option():
 
 @pytest.mark.parametrize("name", ["circle-radius-1", "triangle-behind-eye", "triangle-fan-32"])
 def test_the_caption_has_room_for_every_value_of_every_step(name):
-    from algorithms.trace import FrameState
+    from algorithms.core.trace import FrameState
     from app.model.scene import load as load_scene
     from app.render.export import ExportSettings as Settings, FrameRenderer as Renderer
     from tests.support import ROOT as root

@@ -1,0 +1,13 @@
+"""Qt-free teaching tools built on the model: exercises a student answers on
+the grid, checking a student's own algorithm against the hard cases, and
+worksheets to print.
+
+``exercise``           the exercise mode's questions and grading
+``student``            runs a student's program in a child process, with limits
+``student_child``      what runs in that child
+``checking``           a student's algorithm against the hard cases and the exact oracles
+``check_families``     what checking asks of each family
+``check_report``       a check's outcome as text, JSON or JUnit
+``student_algorithm``  a student's file as an algorithm the window can step through
+``worksheet``          a scene's steps as a table to fill in, with its answer key
+"""

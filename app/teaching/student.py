@@ -1,0 +1,119 @@
+"""A student's own algorithm, run in a separate process with limits.
+
+The protocol (see resources/templates/): a plain Python file defines a
+generator function that takes the family's inputs and yields each pixel as
+``x, y`` or ``x, y, {"d": d}``. RasterLab never imports that file: every
+case runs in a fresh ``python -I -S`` process (student_child.py) with a
+memory limit (RLIMIT_AS) and a CPU-time limit (RLIMIT_CPU), and a wall-clock
+timeout here as well. Whatever the student's code does (raises, loops,
+crashes, allocates without bound, yields garbage), the case ends as an
+``Outcome`` with a message, never as an exception in RasterLab.
+"""
+from __future__ import annotations
+
+import json
+import math
+import signal
+import subprocess
+import sys
+import time
+from dataclasses import dataclass, field, replace
+from pathlib import Path
+
+from algorithms.core.errors import InputError
+
+CHILD = Path(__file__).with_name("student_child.py")
+FUNCTION = "draw"
+
+
+@dataclass(frozen=True)
+class Limits:
+    """Per case: CPU seconds, address space in bytes, and yielded pixels."""
+
+    seconds: float = 2.0
+    memory: int = 256 << 20
+    max_steps: int = 100_000
+
+    def steps_for(self, expected: int) -> "Limits":
+        """A pixel limit for a case whose reference plots ``expected`` pixels:
+        an endless loop is cut off long before the general limit."""
+        return replace(self, max_steps=min(self.max_steps, 4 * expected + 1000))
+
+
+@dataclass(frozen=True)
+class Outcome:
+    """What one run of the student's generator gave: its steps, or an error.
+
+    ``steps`` holds (x, y, {name: value}) per yielded pixel (the steps before
+    the error when there is one); ``kind`` is "ok", "exception", "shape",
+    "protocol", "too-long", "time", "memory" or "crash".
+    """
+
+    kind: str
+    steps: tuple = ()
+    error: str = ""
+    seconds: float = 0.0
+    output: str = field(default="", compare=False)  # what the student printed
+
+    @property
+    def ok(self) -> bool:
+        return self.kind == "ok"
+
+
+def check_file(path) -> Path:
+    """The student's file, if it is a readable regular .py file (else InputError)."""
+    path = Path(path)
+    if path.suffix != ".py":
+        raise InputError(f"{path}: a student's algorithm is a Python file ending in .py")
+    if not path.is_file():
+        raise InputError(f"{path}: no such file")
+    try:
+        with open(path, "rb"):
+            pass
+    except OSError as error:
+        raise InputError(f"{path}: {error.strerror}") from None
+    return path.resolve()
+
+
+def run_student(path, args, limits: Limits = Limits(), function: str = FUNCTION,
+                value_name: str | None = None) -> Outcome:
+    """Run ``function(*args)`` of the file in a child process and collect its pixels.
+    With ``value_name``, a step may also be ``x, y, number``: the number is
+    kept under that name (an antialiased line's ``x, y, intensity``)."""
+    request = {"file": str(path), "function": function, "args": list(args), "value": value_name,
+               "max_steps": limits.max_steps, "memory": limits.memory,
+               "cpu_seconds": max(1, math.ceil(limits.seconds))}
+    started = time.perf_counter()
+    try:
+        done = subprocess.run([sys.executable, "-I", "-S", str(CHILD)], input=json.dumps(request),
+                              capture_output=True, text=True, timeout=limits.seconds + 1.0)
+    except subprocess.TimeoutExpired as expired:
+        return Outcome("time", error=f"no result within {limits.seconds:g} s: does the loop end?",
+                       seconds=time.perf_counter() - started, output=_text(expired.stderr))
+    seconds = time.perf_counter() - started
+    return _outcome(done, limits, seconds)
+
+
+def _outcome(done: subprocess.CompletedProcess, limits: Limits, seconds: float) -> Outcome:
+    printed = done.stderr or ""
+    if done.returncode == -signal.SIGXCPU or done.returncode == -signal.SIGKILL:
+        return Outcome("time", error=f"the CPU-time limit of {limits.seconds:g} s was reached: "
+                                     "does the loop end?", seconds=seconds, output=printed)
+    try:
+        result = json.loads(done.stdout)
+        kind = result["kind"]
+        steps = tuple((int(x), int(y), dict(values)) for x, y, values in result.get("steps", ()))
+    except (ValueError, KeyError, TypeError):
+        if "MemoryError" in printed:
+            return Outcome("memory", error="the memory limit was reached (MemoryError)",
+                           seconds=seconds, output=printed)
+        last = printed.strip().splitlines()[-1:] or [""]
+        return Outcome("crash", error=f"the process ended with status {done.returncode} and no "
+                                      f"result {last[0]}".rstrip(), seconds=seconds, output=printed)
+    return Outcome(kind, steps, str(result.get("error", "")), seconds, printed)
+
+
+def _text(data) -> str:
+    if isinstance(data, bytes):
+        return data.decode("utf-8", "replace")
+    return data or ""
