@@ -75,7 +75,7 @@ from __future__ import annotations
 
 # The package's modules, by idea: shapes (what is drawn, its exact tests,
 # what every method shares), supersample, adaptive, filters (post-filtering),
-# lines (Wu, area) and temporal; specs registers them. The names below are
+# lines (Wu, area) and temporal; specs declares them. The names below are
 # the family's public face.
 from .adaptive import ADAPTIVE_OPTIONS, adaptive, adaptive_code, adaptive_image
 from .filters import (FILTER_OPTIONS, KERNELS, aliased_image, filter_code, filter_image,
@@ -89,5 +89,8 @@ from .supersample import (FILTERS, PATTERNS, SUPERSAMPLE_OPTIONS, lattice, norma
                           supersample_image)
 from .temporal import (TEMPORAL_OPTIONS, animation_frame_steps, apparent_speed, temporal,
                        temporal_code, temporal_frames, iter_temporal_frames, time_samples)
-from . import specs  # noqa: F401  (importing it registers the family)
-from . import subpixel_line  # noqa: F401  (line supersampling as printed, listed last)
+from . import specs
+from . import subpixel_line
+
+# The family's algorithms, in the order they are listed (line supersampling as printed last).
+SPECS = specs.SPECS + subpixel_line.SPECS

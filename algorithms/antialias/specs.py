@@ -1,7 +1,7 @@
 """The antialiasing family's entries in the registry."""
 from __future__ import annotations
 
-from algorithms.core.registry import AlgorithmSpec, Inputs, register
+from algorithms.core.registry import AlgorithmSpec, Inputs
 
 from .adaptive import ADAPTIVE_OPTIONS, adaptive, adaptive_code
 from .filters import FILTER_OPTIONS, filter_code, post_filter
@@ -20,51 +20,54 @@ AA_NOTES = (
 )
 
 
-def _register(name, title, summary, inputs, options, code, generator, notes=(), explain=None,
+def _method(name, title, summary, inputs, options, code, generator, notes=(), explain=None,
               uses_grid=True, kernel=None):
-    """Register one method; ``code(points, options)`` returns its ``Code``."""
+    """The spec of one method; ``code(points, options)`` returns its ``Code``."""
     def listing(points, options):
         return tuple(code(points, options).lines)
 
-    register(AlgorithmSpec(name=name, title=title, family="antialias", summary=summary,
-                           inputs=inputs, options=options, code=listing, generator=generator,
-                           notes=AA_NOTES + tuple(notes), explain=explain, uses_grid=uses_grid,
-                           kernel=kernel))
+    return AlgorithmSpec(name=name, title=title, family="antialias", summary=summary,
+                         inputs=inputs, options=options, code=listing, generator=generator,
+                         notes=AA_NOTES + tuple(notes), explain=explain, uses_grid=uses_grid,
+                         kernel=kernel)
 
 
-_register("aa-supersample", "Supersampling", "n x n samples per pixel (grid, jittered, random "
+AA_SUPERSAMPLE = _method("aa-supersample", "Supersampling", "n x n samples per pixel (grid, jittered, random "
           "or rotated grid), weighted by a filter", POINTS, SUPERSAMPLE_OPTIONS,
           supersample_code, supersample, explain=explain_samples,
           notes=("weighted: w = h(u) + h(v), h = distance to the nearer pixel border; for the "
                  "4 x 4 grid exactly the kernel 1 2 2 1 / 2 3 3 2 / 2 3 3 2 / 1 2 2 1.",
                  "With n = 1, pattern grid and filter box the one sample is the centre: the "
                  "aliased picture."))
-_register("aa-adaptive", "Adaptive supersampling", "corners and centre first; split a square "
+AA_ADAPTIVE = _method("aa-adaptive", "Adaptive supersampling", "corners and centre first; split a square "
           "in four where its samples disagree", POINTS, ADAPTIVE_OPTIONS, adaptive_code,
           adaptive, explain=explain_samples,
           notes=("Cheap where a pixel is wholly in or out, but a detail that falls between "
                  "the five samples of a square is missed.",
                  "Corners are shared by the squares of one pixel, not between pixels; "
                  "samples counts each tested point once per pixel."))
-_register("aa-filter", "Post-filtering (convolution)", "render aliased, then blur: each pixel "
+AA_FILTER = _method("aa-filter", "Post-filtering (convolution)", "render aliased, then blur: each pixel "
           "becomes a weighted average of its neighbourhood", Inputs(3, integer=False,
                                                                     names=("P0", "P1", "P2"),
                                                                     multiple=True),
           FILTER_OPTIONS, filter_code, post_filter, explain=explain_samples,
           notes=("The filter reads the aliased image and writes a new one; it blurs the "
                  "stairs but cannot recover detail the centres missed.",))
-_register("line-wu", "Xiaolin Wu's line", "two pixels per column along the minor axis, "
+LINE_WU = _method("line-wu", "Xiaolin Wu's line", "two pixels per column along the minor axis, "
           "intensities 1 - f and f", SEGMENT, WU_OPTIONS, wu_code, wu, uses_grid=False,
           kernel=wu_pixels,
           notes=("Whole-pixel endpoints as in the line family: the segment joins the two "
                  "end pixels' centres; e counts the fraction in units of 1/dx, exactly.",))
-_register("line-area", "Area-sampled line", "intensity = the area of the pixel square that "
+LINE_AREA = _method("line-area", "Area-sampled line", "intensity = the area of the pixel square that "
           "the line's rectangle covers", SEGMENT, AREA_OPTIONS, area_code, line_area,
           uses_grid=False,
           notes=("Areas come from the exact coverage reference (float64, vectorised).",))
-_register("aa-temporal", "Temporal aliasing and motion blur", "a spinning wheel or moving "
+AA_TEMPORAL = _method("aa-temporal", "Temporal aliasing and motion blur", "a spinning wheel or moving "
           "triangle over several frames: one instant per frame, or averaged over the exposure",
           POINTS, TEMPORAL_OPTIONS, temporal_code, temporal,
           notes=("The wagon-wheel effect: a wheel with s spokes looks the same every 360/s "
                  "degrees, so a turn of speed per frame looks like the apparent speed.",
                  "temporal_frames(points, options, grid) gives the images as arrays."))
+
+# The module's algorithms, in the order they are listed.
+SPECS = (AA_SUPERSAMPLE, AA_ADAPTIVE, AA_FILTER, LINE_WU, LINE_AREA, AA_TEMPORAL)

@@ -17,7 +17,7 @@ from fractions import Fraction
 
 from algorithms.circles.curves import grey_ink
 from algorithms.core.code import Code, listing
-from algorithms.core.registry import AlgorithmSpec, Inputs, Option, register
+from algorithms.core.registry import AlgorithmSpec, Inputs, Option
 from algorithms.core.steps import PLOT, Start, Vars
 
 N = Option("n", "int", 3, "subpixels per pixel side", minimum=1, maximum=16)
@@ -123,7 +123,7 @@ def _pixel_counts(cells, n: int, grid):
         yield pixel, count
 
 
-register(AlgorithmSpec(
+LINE_SUBPIXELS = AlgorithmSpec(
     name="line-subpixels",
     title="Line supersampling (subpixels crossed)",
     family="antialias",
@@ -138,4 +138,7 @@ register(AlgorithmSpec(
            "The line has no width: the count says how long the line runs in the pixel, "
            "roughly, not how much of the pixel it covers (line-area measures that).",
            "Only the part of the line inside the grid is counted."),
-))
+)
+
+# The module's algorithms, in the order they are listed.
+SPECS = (LINE_SUBPIXELS,)

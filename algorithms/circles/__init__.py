@@ -7,5 +7,7 @@
 """
 from __future__ import annotations
 
-# Imported in this order, so the algorithms are listed in this order.
-from . import midpoint, variants, curves  # noqa: F401  (importing them registers the family)
+from . import midpoint, variants, curves
+
+# The family's algorithms, in the order they are listed.
+SPECS = midpoint.SPECS + variants.SPECS + curves.SPECS

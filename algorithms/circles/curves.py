@@ -13,7 +13,7 @@ from fractions import Fraction
 from algorithms.circles.midpoint import CENTRE, PLOT_OPS, RADIUS, _centre, mirrors8
 from algorithms.core.code import Code, listing
 from algorithms.lines.bresenham import bresenham_pixels
-from algorithms.core.registry import AlgorithmSpec, Inputs, Option, register
+from algorithms.core.registry import AlgorithmSpec, Inputs, Option
 from algorithms.core.steps import NO_PIXEL, PLOT, VISIT, Start, Vars
 
 NAN = math.nan
@@ -103,7 +103,7 @@ def distance_circle(points, options):
                                         "box": len(columns) * len(rows)})
 
 
-register(AlgorithmSpec(
+CIRCLE_DISTANCE = AlgorithmSpec(
     name="circle-distance",
     title="Circle by distance, real centre",
     family="circles",
@@ -117,7 +117,7 @@ register(AlgorithmSpec(
            "A pixel centre exactly on the circle counts as inside.",
            "The outline is the disk's pixels with a 4-neighbour outside: 8-connected and "
            "one pixel thin."),
-))
+)
 
 
 # ------------------------------------------------------- Wu's circle
@@ -169,7 +169,7 @@ def grey_ink(intensity: float) -> float:
     return float(level * 0x10101)
 
 
-register(AlgorithmSpec(
+CIRCLE_WU = AlgorithmSpec(
     name="circle-wu",
     title="Wu's antialiased circle",
     family="circles",
@@ -183,7 +183,7 @@ register(AlgorithmSpec(
            "to 1.",
            "Near the diagonal the octant's pixels and their mirrors meet: a pixel written "
            "twice keeps the last intensity, as the raster keeps the last write."),
-))
+)
 
 
 # ------------------------------------------ a cubic Bezier as N lines
@@ -236,7 +236,7 @@ def bezier_curve(points, options):
     yield Vars(line=at["done"], values={"pixels": written, "segments": n})
 
 
-register(AlgorithmSpec(
+CURVE_BEZIER = AlgorithmSpec(
     name="curve-bezier",
     title="Cubic Bezier as N lines",
     family="circles",
@@ -249,4 +249,7 @@ register(AlgorithmSpec(
            "its sides cut across the bends. More segments follow the curve closer, until a "
            "segment is shorter than a pixel and plots nothing new.",
            "B(k/N) is computed exactly and rounded halves up."),
-))
+)
+
+# The module's algorithms, in the order they are listed.
+SPECS = (CIRCLE_DISTANCE, CIRCLE_WU, CURVE_BEZIER)

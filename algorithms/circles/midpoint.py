@@ -15,7 +15,7 @@ from fractions import Fraction
 import numpy as np
 
 from algorithms.core.code import Code, listing
-from algorithms.core.registry import AlgorithmSpec, Inputs, Option, register
+from algorithms.core.registry import AlgorithmSpec, Inputs, Option
 from algorithms.core.steps import NO_PIXEL, PLOT, Start, Vars
 
 NAN = math.nan
@@ -172,7 +172,7 @@ def sqrt_explain(trace, i):
     return rows
 
 
-register(AlgorithmSpec(
+CIRCLE_SQRT4 = AlgorithmSpec(
     name="circle-sqrt4",
     title="Circle, 4-way symmetry",
     family="circles",
@@ -191,7 +191,7 @@ register(AlgorithmSpec(
            "twice on each side (duplicates).",
            "For radii up to 4096 a float square root floors to the exact integer "
            "root, so the cast loses nothing here."),
-))
+)
 
 
 # -------------------------------------------------- 8-way symmetry (sqrt)
@@ -276,7 +276,7 @@ def sqrt8_pixels(points, options) -> np.ndarray:
     return np.concatenate(parts) + np.array([xc, yc], dtype=np.int64)
 
 
-register(AlgorithmSpec(
+CIRCLE_SQRT8 = AlgorithmSpec(
     name="circle-sqrt8",
     title="Circle, 8-way symmetry",
     family="circles",
@@ -292,7 +292,7 @@ register(AlgorithmSpec(
            "For r = 0 the four axis plots are one pixel (three duplicates).",
            "For radii up to 4096 a float square root floors to the exact integer "
            "root, so the cast loses nothing here."),
-))
+)
 
 
 # ------------------------------------------------------- midpoint circle
@@ -428,7 +428,7 @@ def _image_name(ox: int, oy: int, x: int) -> str:
     return f"({'-' if ox < 0 else ''}{first}, {'-' if oy < 0 else ''}{second})"
 
 
-register(AlgorithmSpec(
+CIRCLE_MIDPOINT = AlgorithmSpec(
     name="circle-midpoint",
     title="Midpoint circle",
     family="circles",
@@ -448,7 +448,7 @@ register(AlgorithmSpec(
            "circle crosses.",
            "Each pixel is plotted once: on the axes and on the diagonal only four "
            "mirrors are distinct, and a step that crosses the diagonal stops the loop."),
-))
+)
 
 
 # ------------------------------------------------------ midpoint ellipse
@@ -562,7 +562,7 @@ def ellipse_explain(trace, i):
     return [("decision", f"d_i = {d} {relation} 0, the midpoint is {where}")]
 
 
-register(AlgorithmSpec(
+ELLIPSE_MIDPOINT = AlgorithmSpec(
     name="ellipse-midpoint",
     title="Midpoint ellipse",
     family="circles",
@@ -580,4 +580,7 @@ register(AlgorithmSpec(
            "With rx == ry the pixels are exactly those of the midpoint circle "
            "(drawn in another order).",
            "rx = 0 or ry = 0 gives a segment along an axis; both 0, one pixel."),
-))
+)
+
+# The module's algorithms, in the order they are listed.
+SPECS = (CIRCLE_SQRT4, CIRCLE_SQRT8, CIRCLE_MIDPOINT, ELLIPSE_MIDPOINT)

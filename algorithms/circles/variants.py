@@ -12,7 +12,7 @@ import math
 from algorithms.circles.midpoint import CENTRE, E_SE, PLOT_OPS, RADIUS, ArcWatch, _centre, mirrors8
 from algorithms.core.code import Code, listing
 from algorithms.exact.circles import midpoint_circle as exact_midpoint_circle
-from algorithms.core.registry import AlgorithmSpec, Option, register
+from algorithms.core.registry import AlgorithmSpec, Option
 from algorithms.core.steps import PLOT, Start, Vars
 
 NAN = math.nan
@@ -71,7 +71,7 @@ def bresenham_explain(trace, i):
     return [("decision", f"d = {d} >= 0: F(E) + F(SE) >= 0, so SE is nearer the circle")]
 
 
-register(AlgorithmSpec(
+CIRCLE_BRESENHAM = AlgorithmSpec(
     name="circle-bresenham",
     title="Bresenham circle",
     family="circles",
@@ -87,7 +87,7 @@ register(AlgorithmSpec(
            "It chooses the same pixels as the midpoint circle for every whole radius: the "
            "two tests could only disagree if R^2 - x^2 - (y - 1/2)^2, a whole number less "
            "1/4, lay in (0, 1/4]."),
-))
+)
 
 
 # ------------------------------------------------------ polar circle
@@ -142,7 +142,7 @@ def polar_circle(points, options):
     yield Vars(line=at["done"], values=summary)
 
 
-register(AlgorithmSpec(
+CIRCLE_POLAR = AlgorithmSpec(
     name="circle-polar",
     title="Circle, polar form",
     family="circles",
@@ -156,7 +156,7 @@ register(AlgorithmSpec(
            "leaves gaps, a smaller one plots pixels again (duplicates).",
            "Two cosines and two sines a point: far dearer than the midpoint circle's "
            "additions."),
-))
+)
 
 
 # ----------------------------------------- midpoint circle as printed
@@ -216,7 +216,7 @@ def printed_summary(r: int, drawn: list) -> dict:
             "first_wrong_column": first}
 
 
-register(AlgorithmSpec(
+CIRCLE_MIDPOINT_PRINTED = AlgorithmSpec(
     name="circle-midpoint-printed",
     title="Midpoint circle, as printed",
     family="circles",
@@ -233,4 +233,7 @@ register(AlgorithmSpec(
            "mirrors on the axes and the diagonal, so pixels repeat (duplicates).",
            "off_circle and missing count the pixels unlike circle-midpoint's; "
            "first_wrong_column is the first octant column where they part (-1: none)."),
-))
+)
+
+# The module's algorithms, in the order they are listed.
+SPECS = (CIRCLE_BRESENHAM, CIRCLE_POLAR, CIRCLE_MIDPOINT_PRINTED)

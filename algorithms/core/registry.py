@@ -6,7 +6,6 @@ import re
 from dataclasses import dataclass, field
 from typing import Callable
 
-from algorithms.core.code import check_family
 from algorithms.core.errors import InputError
 from algorithms.core.steps import CodeLine
 from algorithms.core.trace import DEFAULT_STEP_CAP, Trace, checkpoint, watching
@@ -357,26 +356,24 @@ def format_value(value) -> str:
 
 
 _REGISTRY: dict[str, AlgorithmSpec] = {}
-_ORDER: dict[str, tuple] = {}  # name -> (family, loaded at run time, registration) for listing
-_CHECKED_FAMILIES: set = set()  # sources already held to the pseudo-code naming convention
+_ORDER: dict[str, tuple] = {}  # name -> (family, added at run time, registration) for listing
 
 
 def register(spec: AlgorithmSpec, replace: bool = False) -> AlgorithmSpec:
-    """Add a spec, once its family's source names every line it yields (see
-    code.check_family; the shipped families are checked by a test). ``replace``: a spec loaded at run time (a student's
-    file opened again) takes the place of the one of its name."""
+    """Add a spec loaded at run time (a student's file), listed after its
+    family's own. ``replace``: a student's file opened again takes the place
+    of the spec of its name."""
+    _load()
+    return _add(spec, replace, at_run_time=True)
+
+
+def _add(spec: AlgorithmSpec, replace: bool, at_run_time: bool) -> AlgorithmSpec:
     if spec.name in _REGISTRY and not replace:
         raise ValueError(f"algorithm {spec.name!r} registered twice")
     if spec.family not in FAMILIES:
         raise ValueError(f"unknown family {spec.family!r}")
-    shipped = spec.generator.__module__.startswith("algorithms.")
-    if not shipped:
-        # A spec from elsewhere (a student's file) is checked as it comes; the
-        # shipped families are held to it by tests, which keeps their source
-        # unread at start-up.
-        check_family(spec.generator, _CHECKED_FAMILIES)
     _REGISTRY[spec.name] = spec
-    _ORDER[spec.name] = (FAMILIES.index(spec.family), not shipped, len(_ORDER))
+    _ORDER[spec.name] = (FAMILIES.index(spec.family), at_run_time, len(_ORDER))
     return spec
 
 
@@ -385,27 +382,25 @@ def unregister(name: str) -> None:
     _REGISTRY.pop(name, None)
 
 
-_loaded = False  # every family module imported (asked on every step: keep it cheap)
-_loading = 0     # _load calls under way (a family module may ask while importing)
+_loaded = False  # every family's specs added (asked on every step: keep it cheap)
 
 
 def _load() -> None:
-    global _loaded, _loading
+    """Add the specs each family package declares (algorithms.<family>.SPECS)."""
+    global _loaded
     if _loaded:
         return
     import importlib
-    _loading += 1
-    try:
-        for family in FAMILIES:
-            importlib.import_module(f"algorithms.{family}")
-    finally:
-        _loading -= 1
-    _loaded = _loading == 0
+    packages = [importlib.import_module(f"algorithms.{family}") for family in FAMILIES]
+    _loaded = True
+    for package in packages:
+        for spec in package.SPECS:
+            _add(spec, replace=False, at_run_time=False)
 
 
 def all_specs() -> list[AlgorithmSpec]:
     """Every spec, family by family in FAMILIES order, and within a family in
-    the order of registration (a spec registered at run time last)."""
+    the order the family declares them (specs registered at run time last)."""
     _load()
     return sorted(_REGISTRY.values(), key=lambda spec: _ORDER[spec.name])
 

@@ -6,4 +6,4 @@
 """
 from __future__ import annotations
 
-from . import flood  # noqa: F401  (importing it registers the family)
+from .flood import SPECS  # noqa: F401  (the family's algorithms)

@@ -28,7 +28,7 @@ from algorithms.core.code import Code, listing
 from algorithms.fill.kernel import circle_fill_state, flood_fill_state
 from algorithms.fill.seed import (BOUNDARY, FILLED, FREE, WALL, circle_outline, circle_seed, inside_pixel,
                         seed_pixel)
-from algorithms.core.registry import AlgorithmSpec, InputError, Inputs, Option, register
+from algorithms.core.registry import AlgorithmSpec, InputError, Inputs, Option
 from algorithms.core.steps import PER_PIXEL, PLOT, VISIT, Note, Span, Start, Vars
 from algorithms.core.trace import checkpoint, work_allowance
 
@@ -570,7 +570,7 @@ def _span_explain(trace, i, span, kind):
     return [("pushed", " ".join(f"({x}, {span.y})" for x in seeds) or "none: no free pixel")]
 
 
-register(AlgorithmSpec(
+FLOOD_FILL = AlgorithmSpec(
     name="flood-fill",
     title="Seed fill",
     family="fill",
@@ -595,10 +595,10 @@ register(AlgorithmSpec(
            "mode=region fills the pixels joined to the seed that have the seed's colour. "
            "With one boundary colour that is the boundary fill's region when the seed is "
            "inside; a seed on the outline recolours the outline's connected pixels instead."),
-))
+)
 
 
-register(AlgorithmSpec(
+FLOOD_FILL_CIRCLE = AlgorithmSpec(
     name="flood-fill-circle",
     title="Seed fill in a circle",
     family="fill",
@@ -618,4 +618,7 @@ register(AlgorithmSpec(
            "mode=region fills the pixels joined to the seed that have the seed's colour: "
            "inside the circle that is the same as mode=boundary, but a seed on the circle "
            "recolours the circle itself."),
-))
+)
+
+# The module's algorithms, in the order they are listed.
+SPECS = (FLOOD_FILL, FLOOD_FILL_CIRCLE)

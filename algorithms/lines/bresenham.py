@@ -6,7 +6,7 @@ from itertools import chain
 import numpy as np
 
 from algorithms.core.code import Code, listing
-from algorithms.core.registry import AlgorithmSpec, Option, register
+from algorithms.core.registry import AlgorithmSpec, Option
 from algorithms.core.steps import NO_PIXEL, PLOT, Start
 from .common import COLORS, SEGMENT, Octant, color_ramp, colored, round_half_up, with_color
 
@@ -123,7 +123,7 @@ def bresenham_explain(trace, i):
             ("update", f"d_i+1 = d_i + {name} = {d} + ({increment}) = {d + increment}")]
 
 
-register(AlgorithmSpec(
+LINE_BRESENHAM = AlgorithmSpec(
     name="line-bresenham",
     title="Bresenham",
     family="lines",
@@ -137,7 +137,7 @@ register(AlgorithmSpec(
     explain=bresenham_explain,
     notes=("The textbook loop is written for octant 1; other octants are mapped "
            "there and each plotted pixel is mapped back.",),
-))
+)
 
 
 # ---------------------------------------------------------------------- DDA
@@ -203,7 +203,7 @@ def dda_pixels(points, options) -> np.ndarray:
     return np.stack(columns, axis=1).astype(np.int64)
 
 
-register(AlgorithmSpec(
+LINE_DDA = AlgorithmSpec(
     name="line-dda",
     title="DDA",
     family="lines",
@@ -215,4 +215,7 @@ register(AlgorithmSpec(
     generator=dda,
     kernel=dda_pixels,
     notes=("round(v) is floor(v + 1/2): halves round up.",),
-))
+)
+
+# The module's algorithms, in the order they are listed.
+SPECS = (LINE_BRESENHAM, LINE_DDA)

@@ -6,7 +6,7 @@ import math
 import numpy as np
 
 from algorithms.core.code import Code, listing
-from algorithms.core.registry import AlgorithmSpec, InputError, Option, register
+from algorithms.core.registry import AlgorithmSpec, InputError, Option
 from algorithms.core.steps import NO_PIXEL, PLOT, VISIT, Start, Vars
 from .common import (COLORS, NAN, SEGMENT, color_ramp, fraction_of, major_axis, pixel_at,
                      round_half_up, sign, with_color)
@@ -109,7 +109,7 @@ def incremental_explain(trace, i):
     return _rounding_explain(trace, i, trace.start.constants["rounding"])
 
 
-register(AlgorithmSpec(
+LINE_INCREMENTAL = AlgorithmSpec(
     name="line-incremental",
     title="Basic incremental",
     family="lines",
@@ -126,7 +126,7 @@ register(AlgorithmSpec(
            "m is a float, so m * (x - x0) + y0 can miss an exact whole number by "
            "a rounding error, which floor then turns into the pixel below.",
            "round(v) is floor(v + 1/2): halves round up."),
-))
+)
 
 
 # ---------------------------------------------------------- explicit form
@@ -209,7 +209,7 @@ def explicit_explain(trace, i):
     return _rounding_explain(trace, i, "round")
 
 
-register(AlgorithmSpec(
+LINE_EXPLICIT = AlgorithmSpec(
     name="line-explicit",
     title="Explicit form",
     family="lines",
@@ -223,7 +223,7 @@ register(AlgorithmSpec(
     notes=("The loops include their last value, so both endpoints are plotted; "
            "a loop written with '<' would stop one pixel short of Q.",
            "round(v) is floor(v + 1/2): halves round up."),
-))
+)
 
 
 # ---------------------------------------------------------- implicit form
@@ -337,7 +337,7 @@ def implicit_explain(trace, i):
     return [("nearest", where), ("test", f"{test}, so {verdict}")]
 
 
-register(AlgorithmSpec(
+LINE_IMPLICIT = AlgorithmSpec(
     name="line-implicit",
     title="Implicit form",
     family="lines",
@@ -357,7 +357,7 @@ register(AlgorithmSpec(
            "segment, so the strict < never has to break a tie. Two pixels of one "
            "column can both pass, so the line is up to two pixels thick.",
            "Colours follow where each pixel projects onto PQ."),
-))
+)
 
 
 # -------------------------------------------------------- parametric form
@@ -464,7 +464,7 @@ def parametric_explain(trace, i):
     return rows
 
 
-register(AlgorithmSpec(
+LINE_PARAMETRIC = AlgorithmSpec(
     name="line-parametric",
     title="Parametric form",
     family="lines",
@@ -483,4 +483,7 @@ register(AlgorithmSpec(
            "one per jump however many pixels it skips.",
            "Too small a dt wastes work on duplicates; too large a dt leaves gaps. "
            "dt = auto takes one step per pixel along the major axis and leaves no gaps."),
-))
+)
+
+# The module's algorithms, in the order they are listed.
+SPECS = (LINE_INCREMENTAL, LINE_EXPLICIT, LINE_IMPLICIT, LINE_PARAMETRIC)

@@ -15,7 +15,7 @@ from itertools import chain
 import numpy as np
 
 from algorithms.core.code import Code, listing
-from algorithms.core.registry import AlgorithmSpec, Option, register
+from algorithms.core.registry import AlgorithmSpec, Option
 from algorithms.core.steps import NO_PIXEL, PLOT, VISIT, Start, Vars
 from .bresenham import bresenham_pixels
 from .common import COLORS, NAN, SEGMENT, Octant, color_ramp, colored, round_half_up, with_color
@@ -105,7 +105,7 @@ def dda_printed_pixels(points, options) -> np.ndarray:
     return np.array([f[1:3] for f in frames if f[1] != NO_PIXEL], dtype=np.int64).reshape(-1, 2)
 
 
-register(AlgorithmSpec(
+LINE_DDA_PRINTED = AlgorithmSpec(
     name="line-dda-printed",
     title="DDA as printed",
     family="lines",
@@ -123,7 +123,7 @@ register(AlgorithmSpec(
            "steeper than 45 degrees leaves rows empty (rows_missed counts them). The slide adds "
            "m before it writes; here y starts at y1 and is written first, so P is plotted.",
            "Float additions can land just under a whole number, which the cast then drops."),
-))
+)
 
 
 # ------------------------------------------- Bresenham as the notes state it
@@ -256,7 +256,7 @@ def textbook_explain(trace, i):
     return rows
 
 
-register(AlgorithmSpec(
+LINE_BRESENHAM_TEXTBOOK = AlgorithmSpec(
     name="line-bresenham-textbook",
     title="Bresenham as the notes state it",
     family="lines",
@@ -277,7 +277,7 @@ register(AlgorithmSpec(
            "it leaves the corrected line.",
            "s and n are the distances from the ideal line to the lower and the upper candidate "
            "(the slides' b and a); d = dx*(s - n)."),
-))
+)
 
 
 # --------------------------------------------------------- midpoint line
@@ -330,7 +330,7 @@ def _midpoint_frames(p, octant, at):
     yield (at["done"], NO_PIXEL, NO_PIXEL, NAN, NAN, NAN)
 
 
-register(AlgorithmSpec(
+LINE_MIDPOINT = AlgorithmSpec(
     name="line-midpoint",
     title="Midpoint line",
     family="lines",
@@ -343,7 +343,7 @@ register(AlgorithmSpec(
     notes=("The same pixels as line-bresenham: d is twice F(M), the implicit form at the "
            "midpoint, which is Bresenham's decision value derived another way.",
            "A midpoint exactly on the line (d = 0) goes to E, as line-bresenham's ties do."),
-))
+)
 
 
 # ------------------------------------------- the implicit form, unbounded
@@ -378,7 +378,7 @@ def implicit_line(points, options, grid):
     yield (at["done"], NO_PIXEL, NO_PIXEL, NAN)
 
 
-register(AlgorithmSpec(
+LINE_IMPLICIT_INFINITE = AlgorithmSpec(
     name="line-implicit-infinite",
     title="Implicit form, unbounded",
     family="lines",
@@ -391,7 +391,7 @@ register(AlgorithmSpec(
     notes=("line-implicit limits the test to P and Q's bounding box; without that box the "
            "implicit form draws the whole line through P and Q, past both ends.",
            "The test is exact in integers: 4 * F^2 < a^2 + b^2."),
-))
+)
 
 
 # ------------------------------------------ the parametric loop as printed
@@ -426,7 +426,7 @@ def parametric_printed(points, options):
     yield Vars(line=at["done"], values={"last_t": last, "Q_plotted": reached})
 
 
-register(AlgorithmSpec(
+LINE_PARAMETRIC_PRINTED = AlgorithmSpec(
     name="line-parametric-printed",
     title="Parametric loop as printed",
     family="lines",
@@ -440,4 +440,8 @@ register(AlgorithmSpec(
            "adds dt to t, and 1000 additions of 0.001 give 1.0000000000000007, so its last t "
            "is 0.999... and on a line longer than about 500 px Q is never plotted.",
            "last_t and Q_plotted say what happened."),
-))
+)
+
+# The module's algorithms, in the order they are listed.
+SPECS = (LINE_DDA_PRINTED, LINE_BRESENHAM_TEXTBOOK, LINE_MIDPOINT, LINE_IMPLICIT_INFINITE,
+         LINE_PARAMETRIC_PRINTED)

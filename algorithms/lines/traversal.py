@@ -11,7 +11,7 @@ import math
 from fractions import Fraction
 
 from algorithms.core.code import Code, listing
-from algorithms.core.registry import MAX_INTEGER_COORDINATE, AlgorithmSpec, InputError, Inputs, register
+from algorithms.core.registry import MAX_INTEGER_COORDINATE, AlgorithmSpec, InputError, Inputs
 from algorithms.core.steps import NO_PIXEL, PLOT, VISIT, Start
 
 REAL_SEGMENT = Inputs(2, integer=False, names=("P", "Q"))
@@ -76,7 +76,7 @@ def _strip_range(x0, y0, x1, y1, a, b):
     return min(ya, yb), max(ya, yb)
 
 
-register(AlgorithmSpec(
+LINE_SUPERCOVER = AlgorithmSpec(
     name="line-supercover",
     title="Supercover",
     family="lines",
@@ -88,7 +88,7 @@ register(AlgorithmSpec(
     notes=("Cells are closed here: a segment through a cell corner takes all four cells "
            "around it, and one along a grid line takes both rows beside it.",
            "Points are real; pixel (i, j) is the square [i, i+1) x [j, j+1)."),
-))
+)
 
 
 # -------------------------------------------------------- Amanatides-Woo
@@ -149,7 +149,7 @@ def woo(points, options):
     yield (at["done"], NO_PIXEL, NO_PIXEL, *values())
 
 
-register(AlgorithmSpec(
+LINE_AMANATIDES_WOO = AlgorithmSpec(
     name="line-amanatides-woo",
     title="Amanatides-Woo traversal",
     family="lines",
@@ -161,7 +161,7 @@ register(AlgorithmSpec(
     notes=("A 4-connected walk: where the segment passes exactly through a corner it steps "
            "in y first, so it takes one of the two side cells the supercover takes both of.",
            "Points are real; pixel (i, j) is the square [i, i+1) x [j, j+1)."),
-))
+)
 
 
 # ------------------------------------------------------ diamond exit rule
@@ -238,7 +238,7 @@ def diamond(points, options):
     yield (at["done"], NO_PIXEL, NO_PIXEL, math.nan)
 
 
-register(AlgorithmSpec(
+LINE_DIAMOND_EXIT = AlgorithmSpec(
     name="line-diamond-exit",
     title="Diamond-exit rule",
     family="lines",
@@ -256,4 +256,7 @@ register(AlgorithmSpec(
            "The last pixel is left out when Q lies in its diamond, so a strip of segments "
            "draws each shared pixel once.",
            "Candidates are the supercover's cells, which hold every diamond the segment meets."),
-))
+)
+
+# The module's algorithms, in the order they are listed.
+SPECS = (LINE_SUPERCOVER, LINE_AMANATIDES_WOO, LINE_DIAMOND_EXIT)

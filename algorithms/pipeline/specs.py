@@ -1,13 +1,13 @@
 """The pipeline family's entries in the registry."""
 from __future__ import annotations
 
-from algorithms.core.registry import AlgorithmSpec, Option, register
+from algorithms.core.registry import AlgorithmSpec, Option
 from algorithms.visibility.zbuffer_painter import COLORS, FILL_RULE, TRIANGLES, Z
 
 from .blend import ALPHA, DEPTH_WRITE, ORDER, blend, blend_code
 
 
-register(AlgorithmSpec(
+BLEND_OVER = AlgorithmSpec(
     name="blend-over", title="Transparency: over and the z-buffer", family="pipeline",
     summary="composite transparent triangles with CB = alpha src + (1 - alpha) CB; the "
             "result depends on the drawing order",
@@ -20,7 +20,7 @@ register(AlgorithmSpec(
            "that pierce each other cannot be sorted as wholes."),
     uses_grid=True,
     fragments=(("triangle", "@triangle"), ("z", "z"), ("alpha", "alpha"), ("source", "src"), ("before", "dst"),
-               ("color", "rgb"))))
+               ("color", "rgb")))
 
 # ---------------------------------------------------------------- the 3-D pipeline
 
@@ -51,7 +51,7 @@ PIPELINE_OPTIONS = (
     Option("light", "numbers", (-1.0, -1.0, -2.0), "the direction the light travels x,y,z"),
 )
 
-register(AlgorithmSpec(
+PIPELINE = AlgorithmSpec(
     name="pipeline", title="The pipeline from a 3-D scene", family="pipeline",
     summary="world triangles: view and projection, clipping in clip space, divide, viewport, "
             "then rasterize, depth test and shade",
@@ -66,4 +66,7 @@ register(AlgorithmSpec(
            "A fragment's panel rows retrace it: its weights, then its clip, NDC and window "
            "coordinates from the corners of its fan triangle."),
     explain=explain, uses_grid=True,
-    fragments=(("triangle", "@triangle"), ("depth", "depth"), ("w", "w"), ("u", "u"), ("v", "v"), ("color", "rgb"))))
+    fragments=(("triangle", "@triangle"), ("depth", "depth"), ("w", "w"), ("u", "u"), ("v", "v"), ("color", "rgb")))
+
+# The module's algorithms, in the order they are listed.
+SPECS = (BLEND_OVER, PIPELINE)

@@ -22,7 +22,10 @@ from .scanline import SCANLINE, scanline_mask, scanline_pixels
 from .many import scanline_fill_many
 from .convex import CONVEX, convexity_problem
 from .tessellate import TESSELLATE, simplicity_problem
-from . import textbook, trapezoids  # noqa: F401  (they register the variants)
+from . import textbook, trapezoids
+
+# The family's algorithms, in the order they are listed.
+SPECS = (SCANLINE, CONVEX, TESSELLATE) + textbook.SPECS + trapezoids.SPECS
 
 __all__ = ["ONE", "POLYGON", "snap", "snap_contours", "SCANLINE", "scanline_mask",
            "scanline_pixels", "scanline_fill_many", "CONVEX", "convexity_problem", "TESSELLATE", "simplicity_problem"]

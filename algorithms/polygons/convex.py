@@ -6,7 +6,7 @@ from fractions import Fraction
 import numpy as np
 
 from algorithms.core.code import Code, listing
-from algorithms.core.registry import AlgorithmSpec, InputError, register
+from algorithms.core.registry import AlgorithmSpec, InputError
 from algorithms.core.steps import NO_PIXEL, PER_PIXEL, PER_ROW, PLOT, Note, Span, Start, Table, Vars
 from .common import (HALF_PIXEL, NAN, ONE, POLYGON, as_pixels, cross, first_column, first_index,
                      signed_area2, single_contour, snap_contours, table_number, without_repeats)
@@ -166,7 +166,7 @@ def convex_pixels(points, options=None) -> np.ndarray:
     return scanline_pixels(points, {"fill_rule": "evenodd", "arithmetic": "exact"})
 
 
-CONVEX = register(AlgorithmSpec(
+CONVEX = AlgorithmSpec(
     name="polygon-convex",
     title="Convex polygon",
     family="polygons",
@@ -181,4 +181,7 @@ CONVEX = register(AlgorithmSpec(
            "Refuses a polygon that is not convex, or more than one contour.",
            "Same fill rule as polygon-scanline: a centre on the left chain is filled, "
            "one on the right chain is not."),
-))
+)
+
+# The module's algorithms, in the order they are listed.
+SPECS = (CONVEX,)

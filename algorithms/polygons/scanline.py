@@ -6,7 +6,7 @@ from fractions import Fraction
 import numpy as np
 
 from algorithms.core.code import Code, listing
-from algorithms.core.registry import AlgorithmSpec, Option, register
+from algorithms.core.registry import AlgorithmSpec, Option
 from algorithms.core.steps import NO_PIXEL, PER_PIXEL, PER_ROW, PLOT, Note, Span, Start, Table, Vars
 from .common import (FLOATS, HALF_PIXEL, ONE, POLYGON, WholeAndError, as_pixels, edge_label,
                      first_column, first_index, snap_contours, table_number)
@@ -361,7 +361,7 @@ def scanline_pixels(points, options=None) -> np.ndarray:
     return pixels
 
 
-SCANLINE = register(AlgorithmSpec(
+SCANLINE = AlgorithmSpec(
     name="polygon-scanline",
     title="Scan line (ET/AET)",
     family="polygons",
@@ -382,4 +382,7 @@ SCANLINE = register(AlgorithmSpec(
            "share a pixel.",
            "Any number of contours: holes are contours inside others; self-intersecting "
            "polygons are filled by the fill rule."),
-))
+)
+
+# The module's algorithms, in the order they are listed.
+SPECS = (SCANLINE,)

@@ -4,7 +4,7 @@ from __future__ import annotations
 import numpy as np
 
 from algorithms.core.code import Code, listing
-from algorithms.core.registry import AlgorithmSpec, InputError, Option, register
+from algorithms.core.registry import AlgorithmSpec, InputError, Option
 from algorithms.core.steps import NO_PIXEL, PER_PIXEL, PER_ROW, PLOT, VISIT, Note, Span, Start, Table, Vars
 from .common import (HALF_PIXEL, NAN, ONE, POLYGON, cross, first_index, pixel_of, signed_area2,
                      single_contour, snap_contours, without_repeats)
@@ -292,7 +292,7 @@ def _side(a: int, b: int) -> str:
     return "bottom" if b > 0 else "top"
 
 
-TESSELLATE = register(AlgorithmSpec(
+TESSELLATE = AlgorithmSpec(
     name="polygon-tessellate",
     title="Tessellation (ear clipping)",
     family="polygons",
@@ -309,4 +309,7 @@ TESSELLATE = register(AlgorithmSpec(
            "shared diagonal goes to exactly one triangle, so the result equals "
            "polygon-scanline's; inclusive shows the overlaps, strict the cracks.",
            "Refuses a self-intersecting polygon or more than one contour."),
-))
+)
+
+# The module's algorithms, in the order they are listed.
+SPECS = (TESSELLATE,)

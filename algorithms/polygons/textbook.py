@@ -13,7 +13,7 @@ from __future__ import annotations
 from fractions import Fraction
 
 from algorithms.core.code import Code, listing
-from algorithms.core.registry import AlgorithmSpec, register
+from algorithms.core.registry import AlgorithmSpec
 from algorithms.core.steps import NO_PIXEL, PER_PIXEL, PER_ROW, PLOT, Span, Start, Table, Vars
 from .common import HALF_PIXEL, ONE, POLYGON, as_pixels, edge_label, first_column, snap_contours
 from .scanline import (ARITHMETIC, FILL_RULE, ScanEdge, first_row, runs, scanline,
@@ -90,7 +90,7 @@ def brute_scanline(points, options):
                                         "pixels": pixels})
 
 
-register(AlgorithmSpec(
+POLYGON_BRUTE_SCANLINE = AlgorithmSpec(
     name="polygon-brute-scanline",
     title="Scan line, brute force",
     family="polygons",
@@ -104,7 +104,7 @@ register(AlgorithmSpec(
            "(tests counts them: rows x edges), where the edge table only looks at the edges "
            "that reach the row.",
            "A crossing is where an edge meets the row's centre line y + 1/2, exactly."),
-))
+)
 
 
 # --------------------------------------------------- the X_low edge table
@@ -124,7 +124,7 @@ def xlow_pixels(points, options) -> object:
     return scanline_pixels(points, _xlow(options))
 
 
-register(AlgorithmSpec(
+POLYGON_SCANLINE_XLOW = AlgorithmSpec(
     name="polygon-scanline-xlow",
     title="Scan line, X_low table",
     family="polygons",
@@ -141,7 +141,7 @@ register(AlgorithmSpec(
            "sampled at the middle of its bottom edge (i + 1/2, y): the fill sits half a pixel "
            "lower than polygon-scanline's, and a vertex on a whole y starts its edge's rows.",
            "Everything else (the AET, the fill rule, the spans) is polygon-scanline's."),
-))
+)
 
 
 # ----------------------------------------------- the integer edge stepper
@@ -161,7 +161,7 @@ def integer_pixels(points, options) -> object:
     return scanline_pixels(points, {**options, "arithmetic": "exact"})
 
 
-register(AlgorithmSpec(
+POLYGON_SCANLINE_INTEGER = AlgorithmSpec(
     name="polygon-scanline-integer",
     title="Scan line, integer edge walk",
     family="polygons",
@@ -177,4 +177,7 @@ register(AlgorithmSpec(
            "carries when e reaches it, as Bresenham's line does: integers only.",
            "The same pixels as polygon-scanline's exact arithmetic; the AET shows x as "
            "(whole, e/denominator)."),
-))
+)
+
+# The module's algorithms, in the order they are listed.
+SPECS = (POLYGON_BRUTE_SCANLINE, POLYGON_SCANLINE_XLOW, POLYGON_SCANLINE_INTEGER)

@@ -13,7 +13,7 @@ from __future__ import annotations
 from fractions import Fraction
 
 from algorithms.core.code import Code, listing
-from algorithms.core.registry import AlgorithmSpec, register
+from algorithms.core.registry import AlgorithmSpec
 from algorithms.core.steps import NO_PIXEL, PER_PIXEL, PER_ROW, PLOT, Span, Start, Table, Vars
 from .common import ONE, POLYGON, cross, snap_contours
 from .scanline import FILL_RULE
@@ -116,7 +116,7 @@ def tessellate_any(points, options):
                                         "slabs": max(0, len(cuts) - 1)})
 
 
-register(AlgorithmSpec(
+POLYGON_TESSELLATE_ANY = AlgorithmSpec(
     name="polygon-tessellate-any",
     title="Tessellation into trapezoids",
     family="polygons",
@@ -131,4 +131,7 @@ register(AlgorithmSpec(
            "keep their order and each filled span is a trapezoid.",
            "Coordinates stay exact fractions; each triangle is filled with the left-bottom "
            "tie rule, so the pixels equal polygon-scanline's."),
-))
+)
+
+# The module's algorithms, in the order they are listed.
+SPECS = (POLYGON_TESSELLATE_ANY,)

@@ -3,4 +3,4 @@
 See texels.py (textures and their pyramids), sampling.py (the mapping, the
 level of detail and the filters) and triangle.py (the traversal).
 """
-from . import specs  # noqa: F401  (registers the family's algorithms)
+from .specs import SPECS  # noqa: F401  (the family's algorithms)

@@ -1,7 +1,7 @@
 """The textures family's entries in the registry."""
 from __future__ import annotations
 
-from algorithms.core.registry import AlgorithmSpec, Option, register
+from algorithms.core.registry import AlgorithmSpec, Option
 from algorithms.triangles.edges import BASE_OPTIONS, TRIANGLES, explain
 from algorithms.triangles.specs import make_kernel
 
@@ -43,10 +43,13 @@ NOTES = (
 FRAGMENTS = (("triangle", "@triangle"), ("weights", "@weights"), ("u", "u"), ("v", "v"),
              ("lod", "lambda"), ("level", "level"), ("fetches", "fetches"), ("color", "rgb"))
 
-register(AlgorithmSpec(
+TRIANGLE_TEXTURE = AlgorithmSpec(
     name="triangle-texture", title="Textured triangle", family="textures",
     summary="look a texture up at every covered pixel: uv (affine or perspective-correct), "
             "nearest, bilinear, mip-mapped, anisotropic or the reference average",
     inputs=TRIANGLES, options=OPTIONS, code=code_lines, generator=generator,
     kernel=make_kernel("triangle-texture", generator, code_lines),
-    notes=NOTES, explain=explain, uses_grid=True, fragments=FRAGMENTS))
+    notes=NOTES, explain=explain, uses_grid=True, fragments=FRAGMENTS)
+
+# The module's algorithms, in the order they are listed.
+SPECS = (TRIANGLE_TEXTURE,)

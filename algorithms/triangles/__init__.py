@@ -108,7 +108,9 @@ from .canvas import fill_canvas
 from .run import BASE, Run, Traversal, drive, mesh_flaws, ops_sum
 from .traversals import (BACKTRACK, BARYCENTRIC, BBOX, HALFPLANE, INCREMENTAL, LINEWISE, PINEDA,
                          SCAN, linewise_rows, top_start)
-from .specs import NOTES, make_kernel  # importing specs registers the family
-# Then the other views of a triangle (barycentric, Cramer's plane, linewise
-# interpolation), listed after the traversals.
-from . import variants, span_interpolation  # noqa: E402,F401  (they register theirs)
+from .specs import NOTES, make_kernel
+from . import specs, variants, span_interpolation  # noqa: E402
+
+# The family's algorithms, in the order they are listed: the traversals, then
+# the other views of a triangle (barycentric, Cramer's plane, linewise interpolation).
+SPECS = specs.SPECS + variants.SPECS + span_interpolation.SPECS

@@ -13,7 +13,7 @@ from fractions import Fraction
 
 from algorithms.core.code import Code, listing
 from algorithms.circles.curves import grey_ink
-from algorithms.core.registry import AlgorithmSpec, Option, register
+from algorithms.core.registry import AlgorithmSpec, Option
 from algorithms.core.steps import NO_PIXEL, PLOT, Note, Start, Vars
 from algorithms.triangles.variants import HALF, centre_range, check_coordinates, cramer, triangles_of
 from algorithms.triangles.edges import TRIANGLES
@@ -84,7 +84,7 @@ def _unit(f, low, high) -> float:
     return 0.0 if high == low else float((f - Fraction(low)) / (Fraction(high) - Fraction(low)))
 
 
-register(AlgorithmSpec(
+TRIANGLE_SPAN_INTERPOLATE = AlgorithmSpec(
     name="triangle-span-interpolate",
     title="Linewise interpolation (edges, then spans)",
     family="triangles",
@@ -101,4 +101,7 @@ register(AlgorithmSpec(
            "exactly).",
            "The pixels are drawn in grey from black (the smallest vertex value) to white "
            "(the largest); s takes one value per point, repeated when fewer are given."),
-))
+)
+
+# The module's algorithms, in the order they are listed.
+SPECS = (TRIANGLE_SPAN_INTERPOLATE,)

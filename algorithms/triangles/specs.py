@@ -5,7 +5,7 @@ import numpy as np
 
 from algorithms.triangles.interpolate import COLORS as VERTEX_COLORS, PERSPECTIVE, S as S_OPTION, \
     W as W_OPTION, Z as Z_OPTION
-from algorithms.core.registry import AlgorithmSpec, Option, register
+from algorithms.core.registry import AlgorithmSpec, Option
 from algorithms.core.steps import NO_PIXEL, PLOT
 
 from .attributes import PERSPECTIVE_CORRECT, PLANE, PerspectiveColumns, clip_near, perspective
@@ -60,57 +60,57 @@ FRAGMENTS = (("triangle", "@triangle"), ("weights", "@weights"),
 
 def _spec(name, title, summary, code, generator, notes=(), options=OPTIONS, top_down=False,
           box=None, kernel=True):
-    register(AlgorithmSpec(
+    return AlgorithmSpec(
         name=name, title=title, family="triangles", summary=summary, inputs=TRIANGLES,
         options=options, code=code, generator=generator,
         kernel=make_kernel(name, generator, code, top_down, box) if kernel else None,
-        notes=NOTES + tuple(notes), explain=explain, uses_grid=True, fragments=FRAGMENTS))
+        notes=NOTES + tuple(notes), explain=explain, uses_grid=True, fragments=FRAGMENTS)
 
 
-_spec("triangle-scan", "Every pixel (naive)", "test every pixel of the grid against the three "
+TRIANGLE_SCAN = _spec("triangle-scan", "Every pixel (naive)", "test every pixel of the grid against the three "
       "edge functions", SCAN.code, SCAN.generator, box="whole",
       notes=("The simplest traversal: correct, but it tests every pixel of the grid for "
              "every triangle.",))
-_spec("triangle-bbox", "Bounding box", "test the pixels of the triangle's bounding box",
+TRIANGLE_BBOX = _spec("triangle-bbox", "Bounding box", "test the pixels of the triangle's bounding box",
       BBOX.code, BBOX.generator, box="box",
       notes=("Only rows and columns whose centres fall between the extreme vertices are "
              "tested; any order would do.",))
-_spec("triangle-incremental", "Incremental edge functions", "bounding box, edge values "
+TRIANGLE_INCREMENTAL = _spec("triangle-incremental", "Incremental edge functions", "bounding box, edge values "
       "updated by e += a per pixel and e += b per row", INCREMENTAL.code, INCREMENTAL.generator,
       notes=("One full evaluation per triangle; then one addition per edge and pixel. Exact "
              "in fixed precision; in floating point the additions accumulate rounding.",))
-_spec("triangle-backtrack", "Backtracking", "from the top vertex down: back up left until "
+TRIANGLE_BACKTRACK = _spec("triangle-backtrack", "Backtracking", "from the top vertex down: back up left until "
       "outside, then right until outside", BACKTRACK.code, BACKTRACK.generator, top_down=True,
       notes=("Outside to the left: failing an edge with a > 0; outside to the right: one with "
              "a < 0. Pixels backtracked over are visited again going right.",
              "The walk never leaves the grid: its edges count as outside."))
-_spec("triangle-pineda", "Pineda pixel walk", "zig-zag from the top vertex, visiting a "
+TRIANGLE_PINEDA = _spec("triangle-pineda", "Pineda pixel walk", "zig-zag from the top vertex, visiting a "
       "superset of the covered pixels, each once", PINEDA.code, PINEDA.generator, kernel=False,
       notes=("Each row first carries on in the last direction, then turns and walks back; "
              "edge values follow each step (e += a, e -= b).",
              "No fast kernel: the pixels equal triangle-bbox's, in the walk's order."))
-_spec("triangle-linewise", "Linewise (explicit form)", "per row, the span between the long "
+TRIANGLE_LINEWISE = _spec("triangle-linewise", "Linewise (explicit form)", "per row, the span between the long "
       "edge and a short edge", LINEWISE.code, LINEWISE.generator,
       notes=("The span's ends are rational; in fixed precision they are compared with the "
              "centres exactly, so the fill rule holds at both ends.",
              "The e values shown are computed for display; the algorithm needs only the spans."))
-_spec("triangle-halfplane", "Half-plane (implicit form)", "a centre is inside when it lies "
+TRIANGLE_HALFPLANE = _spec("triangle-halfplane", "Half-plane (implicit form)", "a centre is inside when it lies "
       "on the inner side of all three edges, by the winding order", HALFPLANE.code,
       HALFPLANE.generator,
       notes=("Clockwise triangles keep their order: the inside is then to the right of every "
              "edge, and the fill rule is mirrored to match.",
              "Floating-point side tests use (V - U) x (P - U), relative to a vertex."))
-_spec("triangle-barycentric", "Barycentric (parametric form)", "inside when alpha, beta, gamma "
+TRIANGLE_BARYCENTRIC = _spec("triangle-barycentric", "Barycentric (parametric form)", "inside when alpha, beta, gamma "
       "= e_k / 2A are all in range", BARYCENTRIC.code, BARYCENTRIC.generator,
       notes=("alpha, beta, gamma are shown rounded; the test uses their exact signs in fixed "
              "precision.",))
-_spec("triangle-plane", "Parameter plane (Cramer's rule)", "fit q = c_x x + c_y y + c_k "
+TRIANGLE_PLANE = _spec("triangle-plane", "Parameter plane (Cramer's rule)", "fit q = c_x x + c_y y + c_k "
       "through the vertex values; walk it with q += c_x", PLANE.code, PLANE.generator,
       options=BASE_OPTIONS + (Option("colors", "colors", ("#ff0000", "#00ff00", "#0000ff"),
                                      VERTEX_COLORS.help), Z_OPTION, S_OPTION),
       notes=("The plane's value at each pixel equals the barycentric interpolation "
              "alpha q0 + beta q1 + gamma q2 (tests check it exactly).",))
-_spec("triangle-perspective", "Perspective-correct interpolation", "interpolate s/w and 1/w "
+TRIANGLE_PERSPECTIVE = _spec("triangle-perspective", "Perspective-correct interpolation", "interpolate s/w and 1/w "
       "in screen space and divide per pixel", PERSPECTIVE_CORRECT.code, perspective,
       options=BASE_OPTIONS + (VERTEX_COLORS, Z_OPTION,
                               Option("w", "numbers", (1.0, 3.0, 3.0), W_OPTION.help),
@@ -122,3 +122,8 @@ _spec("triangle-perspective", "Perspective-correct interpolation", "interpolate 
                                      "every w must then be > 0)", minimum=0.0, maximum=1e6)),
       notes=("Defaults follow the classic example: s = 4 at w = 1 and s = 6 at w = 3; half way "
              "along P0 -> P1 the affine value is 5, the perspective-correct one 4.5.",))
+
+# The module's algorithms, in the order they are listed.
+SPECS = (TRIANGLE_SCAN, TRIANGLE_BBOX, TRIANGLE_INCREMENTAL, TRIANGLE_BACKTRACK, TRIANGLE_PINEDA,
+         TRIANGLE_LINEWISE, TRIANGLE_HALFPLANE, TRIANGLE_BARYCENTRIC, TRIANGLE_PLANE,
+         TRIANGLE_PERSPECTIVE)

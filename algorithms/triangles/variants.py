@@ -13,7 +13,7 @@ from fractions import Fraction
 from algorithms.core.code import Code, listing
 from algorithms.core.errors import InputError
 from algorithms.lines.common import Octant
-from algorithms.core.registry import AlgorithmSpec, Option, register
+from algorithms.core.registry import AlgorithmSpec, Option
 from algorithms.core.steps import NO_PIXEL, PLOT, VISIT, Note, Start, Vars
 from algorithms.triangles.edges import MAX_COORDINATE, TRIANGLES
 
@@ -115,7 +115,7 @@ def cramer_explain(trace, i):
                       "over area(P0 P1 P2)")]
 
 
-register(AlgorithmSpec(
+TRIANGLE_CRAMER = AlgorithmSpec(
     name="triangle-cramer",
     title="Barycentric by Cramer's rule",
     family="triangles",
@@ -134,7 +134,7 @@ register(AlgorithmSpec(
            "centre on an edge counts as inside (alpha, beta or gamma = 0), so two triangles "
            "sharing an edge both fill its centres; triangle-barycentric applies the fill rule.",
            "Clockwise triangles work too: D and the three D's change sign together."),
-))
+)
 
 
 # -------------------------------------------------- trilinear coordinates
@@ -191,7 +191,7 @@ def trilinear_run(points, options, grid):
                                         "degenerate": degenerate})
 
 
-register(AlgorithmSpec(
+TRIANGLE_TRILINEAR = AlgorithmSpec(
     name="triangle-trilinear",
     title="Trilinear coordinates",
     family="triangles",
@@ -210,7 +210,7 @@ register(AlgorithmSpec(
            "The inside test uses the exact sign of each edge function (a centre on a side "
            "counts as inside), as triangle-cramer does; the distances themselves involve a "
            "square root and are rounded."),
-))
+)
 
 
 # -------------------------------------------------- explicit form by columns
@@ -310,7 +310,7 @@ def exact_column_count(points, grid) -> int:
     return total
 
 
-register(AlgorithmSpec(
+TRIANGLE_COLUMNS = AlgorithmSpec(
     name="triangle-columns",
     title="Explicit form by columns",
     family="triangles",
@@ -328,7 +328,7 @@ register(AlgorithmSpec(
            "with B below it leaves them reversed, so every column comes out empty (a pixel "
            "only where the two edges meet); its loop also stops at B. missing counts the "
            "pixels the closed triangle has and the run did not fill."),
-))
+)
 
 
 # -------------------------------------------------- wireframe
@@ -382,7 +382,7 @@ def wireframe_run(points, options, grid):
     yield Vars(line=at["done"], values={"pixels": written})
 
 
-register(AlgorithmSpec(
+TRIANGLE_WIREFRAME = AlgorithmSpec(
     name="triangle-wireframe",
     title="Triangle as three lines",
     family="triangles",
@@ -397,4 +397,7 @@ register(AlgorithmSpec(
            "edge are not on a line.",
            "Each line is drawn without its last pixel, which the next line starts from, so "
            "every corner is plotted once."),
-))
+)
+
+# The module's algorithms, in the order they are listed.
+SPECS = (TRIANGLE_CRAMER, TRIANGLE_TRILINEAR, TRIANGLE_COLUMNS, TRIANGLE_WIREFRAME)

@@ -5,5 +5,7 @@
 """
 from __future__ import annotations
 
-# Imported in this order, so the algorithms are listed in this order.
-from . import zbuffer_painter, painter_split  # noqa: F401  (importing them registers the family)
+from . import zbuffer_painter, painter_split
+
+# The family's algorithms, in the order they are listed.
+SPECS = zbuffer_painter.SPECS + painter_split.SPECS

@@ -24,7 +24,7 @@ import numpy as np
 from algorithms.visibility import zbuffer_painter as visibility  # its names are read when a run starts: it may still be loading now
 from algorithms.core.code import Code, listing
 from algorithms.triangles.interpolate import per_vertex
-from algorithms.core.registry import AlgorithmSpec, Option, register
+from algorithms.core.registry import AlgorithmSpec, Option
 from algorithms.core.steps import PLOT, Note, Start, Table, Vars
 from algorithms.triangles.edges import TRIANGLES
 
@@ -194,7 +194,7 @@ def _paint(order, grid, color, at):
             yield (line, i, j, depth, float(setup.number + 1), float(packed))
 
 
-register(AlgorithmSpec(
+PAINTER_SPLIT = AlgorithmSpec(
     name="painter-split",
     title="Painter's algorithm with splitting (BSP)",
     family="visibility",
@@ -210,4 +210,7 @@ register(AlgorithmSpec(
            "disagree counts the pixels unlike the z-buffer's: 0 but for pixel centres within "
            "a rounding of the line where two triangles meet, or of an edge a cut ends on (the "
            "pieces' corners snap to 1/256 px)."),
-))
+)
+
+# The module's algorithms, in the order they are listed.
+SPECS = (PAINTER_SPLIT,)

@@ -47,7 +47,7 @@ from algorithms import triangles
 from algorithms.triangles import ops_sum
 from algorithms.core.code import Code
 from algorithms.triangles.interpolate import mix, per_vertex, unpack
-from algorithms.core.registry import AlgorithmSpec, Inputs, Option, register
+from algorithms.core.registry import AlgorithmSpec, Inputs, Option
 from algorithms.core.steps import PER_ROW, PLOT, VISIT, Note, Start, Table, Vars
 from algorithms.core.trace import checkpoint
 
@@ -464,7 +464,7 @@ FRAGMENTS = (("triangle", "@triangle"), ("z", "z"), ("color", "rgb"))
 ZBUFFER_OPTIONS = (Z, COLORS, DEPTH_TEST, CLEAR_DEPTH, FILL_RULE)
 PAINTER_OPTIONS = (Z, COLORS, SORT, FILL_RULE)
 
-register(AlgorithmSpec(
+ZBUFFER = AlgorithmSpec(
     name="zbuffer", title="Z-buffer", family="visibility",
     summary="keep, per pixel, the nearest fragment: z < ZB[x, y] writes colour and depth",
     inputs=TRIANGLES, options=ZBUFFER_OPTIONS,
@@ -475,9 +475,9 @@ register(AlgorithmSpec(
            "buffer view shows ZB at any step.",
            "Triangles may come in any order, intersect or overlap in a cycle: the "
            "z-buffer is right in every case."),
-    explain=explain_depth, uses_grid=True, fragments=FRAGMENTS))
+    explain=explain_depth, uses_grid=True, fragments=FRAGMENTS)
 
-register(AlgorithmSpec(
+PAINTER = AlgorithmSpec(
     name="painter", title="Painter's algorithm", family="visibility",
     summary="sort triangles by depth and draw them back to front",
     inputs=TRIANGLES, options=PAINTER_OPTIONS,
@@ -486,4 +486,7 @@ register(AlgorithmSpec(
            "Whole triangles cannot be ordered when they pierce each other or overlap in "
            "a cycle; the last step counts the pixels where the result differs from the "
            "z-buffer's.",),
-    explain=explain_painter, uses_grid=True, fragments=FRAGMENTS))
+    explain=explain_painter, uses_grid=True, fragments=FRAGMENTS)
+
+# The module's algorithms, in the order they are listed.
+SPECS = (ZBUFFER, PAINTER)
