@@ -3,9 +3,10 @@ undo history of the scene's edits.
 
 Nothing here imports Qt. The window's ``Player`` (app/gui/player.py) adds
 Qt signals and timed play on top; a script or a test drives a ``Session``
-directly. What happens is told through plain callbacks (``Listeners``):
-``scene_changed``, ``trace_changed``, ``step_changed(index)``,
-``comparison_changed``, ``recording_started``, ``recording_progress(steps)``,
+directly. What happens is told through the events the class declares
+(``app/model/events.py``, connected and emitted as Qt's signals are): ``scene_changed``,
+``trace_changed``, ``step_changed(index)``, ``comparison_changed``,
+``recording_started``, ``recording_progress(steps)``,
 ``recording_finished(note)`` and ``message(text)``.
 
 Where the step goes after a re-recording
@@ -58,8 +59,8 @@ from algorithms.core.trace import DEFAULT_STEP_CAP, Cancelled, FrameState, Trace
 
 from app.model import drawing
 from app.model.budget import DEFAULT_MEMORY_LIMIT, check_budget
+from app.model.events import Event
 from app.model.history import EditHistory
-from app.model.listeners import Listeners
 from app.model.examples import default_scene
 from app.model.inputs import (clamp, clean_breaks, complete, contour_sizes, flatten,
                               open_ended, runnable_input)
@@ -83,6 +84,24 @@ _NO_CELLS = np.zeros((0, 2), dtype=np.int64)
 class Session:
     """The current scene, its recorded trace and the step on show."""
 
+    #: The scene was replaced: an edit, undo or redo, a file opened.
+    scene_changed = Event()
+    #: A new trace was installed (or the trace was dropped: ``trace`` is None).
+    trace_changed = Event()
+    #: The step on show changed (its index).
+    step_changed = Event(int)
+    #: The cells where the run and the previous algorithm's differ changed.
+    comparison_changed = Event()
+    #: A recording started in the background (the previous trace stays on show).
+    recording_started = Event()
+    #: Steps recorded so far by the background recording.
+    recording_progress = Event(int)
+    #: The background recording ended: "" when its trace was installed as
+    #: asked, else why the scene is not the one asked for.
+    recording_finished = Event(str)
+    #: A message for the person (a refusal, an error of a run).
+    message = Event(str)
+
     def __init__(self, step_cap: int = DEFAULT_STEP_CAP, post=None):
         self.sync_wait = sync_wait()
         self.step_cap = step_cap
@@ -101,10 +120,6 @@ class Session:
         # Optional hook (app/gui/breakpoint_actions.py): stepper(index, delta)
         # gives where a step of delta units goes (None: nowhere).
         self.stepper = None
-        for name in ("scene_changed", "trace_changed", "step_changed", "comparison_changed",
-                     "recording_started", "recording_progress", "recording_finished",
-                     "message"):
-            setattr(self, name, Listeners())
         self._inbox = queue.SimpleQueue()
         self._post = post or self._inbox.put
         self._job: Job | None = None  # the background recording, if one runs

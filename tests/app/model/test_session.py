@@ -264,3 +264,21 @@ def test_a_step_forward_writes_into_the_raster_already_on_show(session):
     assert session.state().raster is raster
     session.seek(1)
     assert session.state().raster is not raster
+
+
+def test_events_are_declared_on_the_class_and_heard_per_session():
+    from app.model.events import Event
+    declared = {name for name, value in vars(Session).items() if isinstance(value, Event)}
+    assert declared == {"scene_changed", "trace_changed", "step_changed", "comparison_changed",
+                        "recording_started", "recording_progress", "recording_finished",
+                        "message"}
+    one, other = Session(), Session()
+    heard = []
+    one.step_changed.connect(heard.append)
+    one.step_changed.connect(lambda i: heard.append(-i))
+    other.step_changed.emit(3)
+    one.step_changed.emit(5)
+    assert heard == [5, -5]  # this session's callbacks only, in the order connected
+    one.step_changed.disconnect(heard.append)
+    one.step_changed.emit(7)
+    assert heard == [5, -5, -7]
