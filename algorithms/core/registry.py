@@ -266,6 +266,30 @@ class Inputs:
         return [p for contour in points for p in contour] if self.contours else list(points)
 
 
+ORACLE_KINDS = ("exact", "reference", "none")
+
+
+@dataclass(frozen=True)
+class Oracle:
+    """What the tests hold an algorithm's results to.
+
+    ``kind``: "exact" (integer or rational arithmetic written apart from the
+    algorithm: algorithms/exact/ or tests/support/), "reference" (a plain
+    definition or a well-kept library, with a stated tolerance where
+    floats differ), or "none" (``about`` says why; a smoke test still runs
+    it). ``about`` says what the algorithm is held to; ``tests`` names the
+    test modules that do it (paths under tests/).
+    """
+
+    kind: str
+    about: str
+    tests: tuple[str, ...] = ()
+
+    def __post_init__(self):
+        if self.kind not in ORACLE_KINDS:
+            raise ValueError(f"oracle kind {self.kind!r} is not one of {ORACLE_KINDS}")
+
+
 @dataclass(frozen=True)
 class AlgorithmSpec:
     """Everything the program knows about one algorithm."""
@@ -290,6 +314,9 @@ class AlgorithmSpec:
     uses_grid: bool = False
     # `run --json`'s "fragments": (key, value column) pairs reported per written pixel.
     fragments: tuple[tuple[str, str], ...] = ()
+    # What the tests hold the results to (every shipped algorithm declares
+    # one; a spec loaded at run time, a student's file, has none).
+    oracle: Oracle | None = None
 
     def option(self, name: str) -> Option:
         for option in self.options:
