@@ -33,11 +33,18 @@ CHIP_COLORS = {"positive": ("#d3f9d8", "#1f6b35"), "negative": ("#ffe3e3", "#a61
 
 
 SERIES_DOTS = 300  # more steps than this: no dot per step on the plot over the run
-# A decision variable's dots by the branch its step took (E, NE), and the
-# steps that decide nothing.
-BRANCH_COLORS = ("#2563a8", "#2f9e44")
+# A decision variable's dots by the branch its step took (E, NE, ...: the
+# k-th branch of a decision takes the k-th colour), and the steps that
+# decide nothing.
+BRANCH_COLORS = ("#2563a8", "#2f9e44", "#e8590c", "#9c36b5", "#0c8599", "#c2255c")
 UNDECIDED_COLOR = "#9aa5b1"
-DOT_COLORS = (UNDECIDED_COLOR, *BRANCH_COLORS)  # by kind: decides nothing, E, NE
+DOT_COLORS = (UNDECIDED_COLOR, *BRANCH_COLORS)  # by kind: decides nothing, then each branch
+
+
+def branch_legend(names) -> str:
+    """Rich text naming each branch beside a dot of its colour."""
+    return ", ".join(f"<span style='color:{BRANCH_COLORS[k % len(BRANCH_COLORS)]}'>\u25cf "
+                     f"{name}</span>" for k, name in enumerate(names))
 
 
 def monospace_font(scale: float = 1.0) -> QFont:
@@ -476,9 +483,9 @@ class VariablesPanel(QWidget):
         """Plot ``values`` against the step index, or hide the plot.
 
         For a decision variable the zero line is drawn and kept in view,
-        and ``branches`` = (codes, (first, second)) colours each step's dot
-        by the branch it took (codes 0, 1; -1 for a step that decides
-        nothing), as app/model/branches.py works it out.
+        and ``branches`` = (codes, names) colours each step's dot by the
+        branch it took (code k for the k-th of ``names``; -1 for a step that
+        decides nothing), as app/model/branches.py works it out.
         """
         finite = values is not None and bool(np.isfinite(values).any())
         self.plot.setVisible(finite)
@@ -498,9 +505,7 @@ class VariablesPanel(QWidget):
         self._draw_series(steps, known,
                           branches[0][steps.astype(np.int64)] if coloured else None)
         self.plot_title.setText(f"{name} over the run" + (
-            f" (the branch taken: <span style='color:{BRANCH_COLORS[0]}'>\u25cf "
-            f"{branches[1][0]}</span>, <span style='color:{BRANCH_COLORS[1]}'>\u25cf "
-            f"{branches[1][1]}</span>)" if coloured else ""))
+            f" (the branch taken: {branch_legend(branches[1])})" if coloured else ""))
         low, high = float(known.min()), float(known.max())
         self.zero.setVisible(decision)
         if decision:
@@ -518,9 +523,9 @@ class VariablesPanel(QWidget):
         if taken is not None:
             self.curve.setPen(pg.mkPen(UNDECIDED_COLOR, width=1))
             self.curve.setData(steps if few else [], known if few else [], symbol=None)
-            # 0: decides nothing, 1 and 2: the branches. Drawn in that
+            # 0: decides nothing, 1, 2, ...: the branches. Drawn in that
             # order, so that where dots overlap a branch's lie on top.
-            kind = np.where((taken == 0) | (taken == 1), taken + 1, 0)
+            kind = np.where(taken >= 0, taken % len(BRANCH_COLORS) + 1, 0)
             order = np.argsort(kind, kind="stable")
             self._set_dots(steps[order], known[order], kind[order], 4 if few else 3)
             return

@@ -24,7 +24,7 @@ import numpy as np
 
 from algorithms.core.steps import Span, Table
 
-from app.model.branches import branch_pairs, candidate_offsets
+from app.model.branches import branch_groups, candidate_offsets
 from app.model.drawing import point_labels
 from app.model.tools import drawing_mode
 from app.render.frame import pixel_samples
@@ -234,7 +234,7 @@ def _branch_of(trace, state, side: int) -> str:
     candidates."""
     if side == -1:
         return ""
-    names = branch_pairs(trace).get(candidate_offsets(trace, trace.code[state.step.line]), [])
+    names = branch_groups(trace).get(candidate_offsets(trace, trace.code[state.step.line]), [])
     return f": {names[side]}" if len(names) == 2 else ""
 
 

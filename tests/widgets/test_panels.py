@@ -240,3 +240,21 @@ def test_variables_panel_sets_only_the_cells_that_changed(qtbot):
     assert set(touched) == {(0, 1)}  # x no longer changed: back to plain type
     assert not panel.table.item(0, 1).font().bold()
     assert panel.rows() == [("x", "5"), ("y", "2"), ("d", "-3")]
+
+
+def test_a_decision_of_three_branches_colours_each_and_names_each(qtbot):
+    from widgets.panels import BRANCH_COLORS, UNDECIDED_COLOR
+    p = VariablesPanel()
+    qtbot.addWidget(p)
+    values = np.arange(30, dtype=float) - 15
+    taken = np.array([-1, 0, 1, 2] * 7 + [2, 0], dtype=np.int8)
+    p.set_series(values, "count", decision=True, branches=(taken, ("reflex", "blocked", "ear")))
+    colour = {-1: UNDECIDED_COLOR, 0: BRANCH_COLORS[0], 1: BRANCH_COLORS[1], 2: BRANCH_COLORS[2]}
+    dots = _dots(p)
+    assert sorted(x for x, _y, _n in dots) == list(range(30))
+    for x, _y, name in dots:
+        assert name == colour[int(taken[int(x)])]
+    assert len(set(colour.values())) == 4  # four kinds, four colours
+    title = p.plot_title.text()
+    for k, branch in enumerate(("reflex", "blocked", "ear")):
+        assert f"color:{BRANCH_COLORS[k]}'>\u25cf {branch}</span>" in title

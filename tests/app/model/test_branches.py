@@ -8,13 +8,13 @@ from app.model.branches import NO_BRANCH, decision_branches
 from tests.support import record
 
 
-def exact_branches(trace, first, second):
-    """Per step: 0 for a step on a line whose branch is ``first``, 1 for
-    ``second``, -1 otherwise (from each step's own record)."""
+def exact_branches(trace, *names):
+    """Per step: k for a step on a line whose branch is ``names[k]``, -1
+    otherwise (from each step's own record)."""
     out = []
     for i in range(len(trace)):
         branch = trace.step(i).branch
-        out.append(0 if branch == first else 1 if branch == second else NO_BRANCH)
+        out.append(names.index(branch) if branch in names else NO_BRANCH)
     return np.array(out)
 
 
@@ -47,3 +47,17 @@ def test_the_ellipse_names_both_regions_pairs():
     steps = [trace.step(i).branch for i in range(len(trace))]
     assert {b for b, c in zip(steps, codes) if c == 0} == {"E", "S"}
     assert {b for b, c in zip(steps, codes) if c == 1} == {"SE", "SW"}
+
+
+@pytest.mark.parametrize("name, points, options, names", [
+    # A comb whose first vertex is reflex: its ears are found after a miss or two.
+    ("polygon-tessellate", [[(7.5, 8.5), (2.5, 20.5), (2.5, 2.5), (22.5, 2.5), (22.5, 20.5),
+                             (17.5, 8.5), (12.5, 20.5)]], None, ("reflex", "blocked", "ear")),
+    ("aa-adaptive", [(2.25, 2.5), (20.5, 6.25), (8.75, 19.5)], None, ("hit", "miss", "split")),
+])
+def test_a_decision_of_three_branches_gives_each_its_own_code(name, points, options, names):
+    trace = record(name, points, options, grid=(25, 25))
+    codes, shown = decision_branches(trace)
+    assert shown == names
+    assert np.array_equal(codes, exact_branches(trace, *names))
+    assert set(codes.tolist()) >= {0, 1, 2}  # every branch taken somewhere in these scenes
