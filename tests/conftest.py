@@ -6,6 +6,7 @@ import tempfile
 from pathlib import Path
 
 import pytest
+from hypothesis import HealthCheck, settings
 
 # Qt tests never need a display.
 os.environ.setdefault("QT_QPA_PLATFORM", "offscreen")
@@ -29,6 +30,18 @@ from PySide6.QtCore import QSettings  # noqa: E402 (after the environment is set
 for _format in (QSettings.Format.NativeFormat, QSettings.Format.IniFormat):
     for _scope in (QSettings.Scope.UserScope, QSettings.Scope.SystemScope):
         QSettings.setPath(_format, _scope, _SETTINGS_DIR)
+
+# No property test fails because the machine is slow or loaded: hypothesis's
+# time limit per example and its check for slow data generation are off.
+settings.register_profile("rasterlab", deadline=None,
+                          suppress_health_check=[HealthCheck.too_slow])
+settings.load_profile("rasterlab")
+
+
+def pytest_addoption(parser):
+    parser.addoption("--update-golden", action="store_true",
+                     help="rewrite the golden frames (tests/app/render/golden/) from the "
+                          "frames drawn now instead of comparing with them")
 
 
 @pytest.fixture(autouse=True)

@@ -77,7 +77,7 @@ def test_wu_gap_endpoints_give_half_columns(p, q):
     assert image[tuple(p)] == 0.5
 
 
-@settings(max_examples=60, deadline=None)
+@settings(max_examples=60)
 @given(points(25), points(25))
 def test_wu_property(p, q):
     image = aa.wu_image((p, q), {})

@@ -7,7 +7,6 @@ import pytest
 
 from algorithms import antialias as aa
 from algorithms.exact import coverage as ec
-from algorithms.core import trace as trace_module
 from algorithms import triangles
 from algorithms.core.registry import get
 from app.cli import main
@@ -166,9 +165,8 @@ def test_frames_show_every_sample_with_its_position_and_verdict():
         assert (inside >= 0) == (hit[i] == 1)
 
 
-def test_state_at_equals_slow_replay_on_a_supersample_trace(monkeypatch):
-    monkeypatch.setattr(trace_module, "MIN_KEYFRAME_GAP", 5)
-    monkeypatch.setattr(trace_module, "KEYFRAME_BYTES_PER_STEP", 2 ** 40)
+def test_state_at_equals_slow_replay_on_a_supersample_trace(small_keyframes):
+    small_keyframes(5)
     trace = get("aa-supersample").record([(1.5, 2.0), (12.0, 3.25), (5.0, 10.0)],
                                          {"n": 2, "pattern": "random", "colors": ("#3366cc",)},
                                          grid=(14, 12))

@@ -45,7 +45,7 @@ def test_bresenham_picks_the_candidate_with_the_smaller_residual():
         assert set(pixels) == exact.midpoint_circle(r), r
 
 
-@settings(max_examples=30, deadline=None)
+@settings(max_examples=30)
 @given(st.integers(1, 300), st.tuples(st.integers(-40, 40), st.integers(-40, 40)))
 def test_bresenham_decision_is_the_sum_of_the_candidates_residuals(r, centre):
     trace = record("circle-bresenham", (centre,), {"radius": r}, (8, 8))

@@ -10,7 +10,6 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from algorithms.exact import circles as exact
-from algorithms.core import trace as trace_module
 from algorithms.circles.midpoint import midpoint_listing, mirrors8
 from algorithms.core.registry import InputError, get
 from tests.support.trace_oracle import slow_replay
@@ -95,7 +94,7 @@ def test_large_radii(r):
     assert is_closed_curve(pixels)
 
 
-@settings(max_examples=60, deadline=None)
+@settings(max_examples=60)
 @given(st.integers(0, 600), st.tuples(st.integers(-50, 50), st.integers(-50, 50)),
        st.sampled_from(["integer", "fraction"]))
 def test_midpoint_is_eight_way_symmetric_anywhere(r, centre, start):
@@ -255,16 +254,11 @@ def test_pixels_past_the_grid_are_clipped_but_kept(name):
     assert trace.raster_at(len(trace) - 1).counts.sum() == inside.sum()
 
 
-@pytest.fixture
-def small_keyframes(monkeypatch):
-    monkeypatch.setattr(trace_module, "MIN_KEYFRAME_GAP", 5)
-    monkeypatch.setattr(trace_module, "KEYFRAME_BYTES_PER_STEP", 2 ** 40)
-
-
 @pytest.mark.parametrize("name, options", [
     ("circle-midpoint", {"radius": 9}), ("circle-midpoint", {"radius": 9, "start": "fraction"}),
     ("circle-sqrt4", {"radius": 9}), ("circle-sqrt8", {"radius": 9})])
 def test_state_at_equals_slow_replay(name, options, small_keyframes):
+    small_keyframes(5)
     trace = get(name).record(((10, 10),), options, grid=(21, 21))
     for i in range(len(trace)):
         state = trace.state_at(i)

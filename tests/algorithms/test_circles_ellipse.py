@@ -17,7 +17,6 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from algorithms.exact import circles as exact
-from algorithms.core import trace as trace_module
 from algorithms.core.registry import InputError, get
 from tests.support.trace_oracle import slow_replay
 from tests.support import record
@@ -63,7 +62,7 @@ def test_every_small_ellipse():
             check_ellipse(rx, ry)
 
 
-@settings(max_examples=80, deadline=None)
+@settings(max_examples=80)
 @given(st.integers(0, 400), st.integers(0, 400),
        st.tuples(st.integers(-30, 30), st.integers(-30, 30)))
 def test_random_ellipses(rx, ry, centre):
@@ -135,9 +134,8 @@ def test_options_are_checked():
         ellipse(3, 5000)
 
 
-def test_state_at_equals_slow_replay(monkeypatch):
-    monkeypatch.setattr(trace_module, "MIN_KEYFRAME_GAP", 4)
-    monkeypatch.setattr(trace_module, "KEYFRAME_BYTES_PER_STEP", 2 ** 40)
+def test_state_at_equals_slow_replay(small_keyframes):
+    small_keyframes(4)
     trace = ellipse(11, 6, centre=(12, 7), grid=(25, 15))
     for i in range(len(trace)):
         state = trace.state_at(i)

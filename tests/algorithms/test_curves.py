@@ -25,7 +25,7 @@ def disk_oracle(centre, r, grid):
             if (i + half - cx) ** 2 + (j + half - cy) ** 2 <= r * r}
 
 
-@settings(max_examples=40, deadline=None)
+@settings(max_examples=40)
 @given(st.floats(4, 12), st.floats(4, 12), st.floats(0, 4.5),
        st.sampled_from(["disk", "outline"]))
 def test_distance_circle_is_the_exact_disk(cx, cy, r, shape):
@@ -91,7 +91,7 @@ def test_wu_circle_values_are_coverages_and_grey_ink():
 CONTROL = st.tuples(st.integers(-20, 40), st.integers(-20, 40))
 
 
-@settings(max_examples=40, deadline=None)
+@settings(max_examples=40)
 @given(st.tuples(CONTROL, CONTROL, CONTROL, CONTROL), st.integers(1, 24))
 def test_bezier_is_the_polyline_through_the_rounded_curve_points(points, n):
     trace = record("curve-bezier", points, {"segments": n}, (8, 8))

@@ -10,7 +10,6 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from algorithms.fill import flood as fill_module
-from algorithms.core import trace as trace_module
 from algorithms.fill.flood import outline_pixels, segment_pixels
 from algorithms.core.registry import InputError, get
 from algorithms.core.steps import PLOT, Span, Vars
@@ -68,7 +67,7 @@ def round_half_up(value: Fraction) -> int:
     return (value + Fraction(1, 2)).__floor__()
 
 
-@settings(max_examples=200, deadline=None)
+@settings(max_examples=200)
 @given(st.tuples(st.integers(-30, 30), st.integers(-30, 30)),
        st.tuples(st.integers(-30, 30), st.integers(-30, 30)))
 def test_segments_round_to_the_nearest_pixel(p, q):
@@ -129,7 +128,7 @@ def scenes(draw):
     return [contour], seed
 
 
-@settings(max_examples=80, deadline=None)
+@settings(max_examples=80)
 @given(scenes(), st.sampled_from(["4", "8"]), st.sampled_from(["4", "8"]))
 def test_random_outlines_and_seeds(scene, connectivity, outline):
     contours, seed = scene
@@ -319,9 +318,8 @@ def test_entries_stop_after_the_detail_limit(monkeypatch):
 
 @pytest.mark.parametrize("order", ORDERS)
 @pytest.mark.parametrize("connectivity", ["4", "8"])
-def test_state_at_equals_slow_replay(order, connectivity, monkeypatch):
-    monkeypatch.setattr(trace_module, "MIN_KEYFRAME_GAP", 7)
-    monkeypatch.setattr(trace_module, "KEYFRAME_BYTES_PER_STEP", 2 ** 40)
+def test_state_at_equals_slow_replay(order, connectivity, small_keyframes):
+    small_keyframes(7)
     trace = flood([[(1, 1), (9, 1), (5, 4), (9, 8), (1, 8)]], grid=(11, 10), order=order,
                    connectivity=connectivity)
     for i in range(len(trace)):

@@ -111,7 +111,7 @@ def test_region_mode_from_the_outline_recolours_the_outline(connectivity, order)
     assert trace.start.constants["spreads over"] == "the outline"
 
 
-@settings(max_examples=60, deadline=None)
+@settings(max_examples=60)
 @given(st.lists(st.tuples(st.integers(0, 25), st.integers(0, 20)), min_size=3, max_size=6),
        st.tuples(st.integers(0, 25), st.integers(0, 20)), st.sampled_from(["4", "8"]))
 def test_region_mode_is_the_flood_of_the_seeds_colour(contour, seed, connectivity):

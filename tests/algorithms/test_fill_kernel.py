@@ -181,7 +181,7 @@ def scenes(draw):
     return contours, seed, options
 
 
-@settings(max_examples=120, deadline=None)
+@settings(max_examples=120)
 @given(scenes())
 def test_random_scenes(scene):
     contours, seed, options = scene

@@ -9,7 +9,7 @@ from fractions import Fraction
 
 import numpy as np
 import pytest
-from hypothesis import HealthCheck, given, settings
+from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from algorithms.exact import triangles as X
@@ -17,7 +17,6 @@ from algorithms.triangles import interpolate as I
 from algorithms.core.registry import InputError
 from test_triangles_cases import run_frames, spec, subgrid_triangle
 
-SETTINGS = dict(deadline=None, suppress_health_check=[HealthCheck.too_slow])
 values = st.integers(-50, 50).map(float)
 positive = st.integers(1, 40).map(lambda n: n / 4)
 
@@ -68,7 +67,7 @@ def test_the_worked_example_in_a_trace():
 
 
 # ------------------------------------------------------- barycentric weights
-@settings(max_examples=40, **SETTINGS)
+@settings(max_examples=40)
 @given(subgrid_triangle(0, 10))
 def test_weights_sum_to_one_and_equal_cramers_rule(points):
     if not nondegenerate(points):
@@ -97,7 +96,7 @@ def test_weights_from_edge_functions_are_exact_on_fractions():
         assert weights == tuple(Fraction(int(m == k)) for m in range(3))
 
 
-@settings(max_examples=40, **SETTINGS)
+@settings(max_examples=40)
 @given(subgrid_triangle(0, 10), st.tuples(values, values, values))
 def test_vertex_values_are_reproduced_at_the_vertices(points, q):
     if not nondegenerate(points):
@@ -119,7 +118,7 @@ def test_vertex_colours_land_on_vertex_pixels():
 
 
 # ---------------------------------------------- the parameter plane (Cramer)
-@settings(max_examples=40, **SETTINGS)
+@settings(max_examples=40)
 @given(subgrid_triangle(0, 10), st.tuples(values, values, values))
 def test_the_parameter_plane_equals_barycentric_interpolation_exactly(points, q):
     if not nondegenerate(points):
@@ -138,7 +137,7 @@ def test_the_parameter_plane_equals_barycentric_interpolation_exactly(points, q)
         q_row += cy
 
 
-@settings(max_examples=25, **SETTINGS)
+@settings(max_examples=25)
 @given(subgrid_triangle(0, 10), st.tuples(values, values, values))
 def test_the_plane_trace_agrees_with_the_barycentric_trace(points, z):
     if not nondegenerate(points):
@@ -162,7 +161,7 @@ def test_plane_colours_match_gouraud_shading():
 
 
 # -------------------------------------------------- perspective correction
-@settings(max_examples=40, **SETTINGS)
+@settings(max_examples=40)
 @given(subgrid_triangle(0, 10), st.tuples(values, values, values),
        st.tuples(positive, positive, positive))
 def test_affine_and_perspective_values_match_exact_formulas(points, s, w):

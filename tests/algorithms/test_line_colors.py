@@ -42,7 +42,7 @@ def test_named_cases(name, p, q):
 
 
 @pytest.mark.parametrize("name", LINE_ALGORITHMS)
-@settings(max_examples=40, deadline=None)
+@settings(max_examples=40)
 @given(pq=segments(20), first=HEX, last=HEX)
 def test_random_colours(name, pq, first, last):
     check(name, *pq, first, last)

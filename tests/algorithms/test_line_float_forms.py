@@ -50,7 +50,7 @@ def test_dda_named_cases_are_exact(p, q):
         assert pixel[0] in accepted(x, "round") and pixel[1] in accepted(y, "round")
 
 
-@settings(max_examples=150, deadline=None)
+@settings(max_examples=150)
 @given(segments(600))
 def test_dda_float64_rounds_exactly_except_at_halves(pq):
     p, q = pq
@@ -102,7 +102,7 @@ def test_incremental_named_cases(p, q, rounding):
     check_incremental(p, q, rounding)
 
 
-@settings(max_examples=150, deadline=None)
+@settings(max_examples=150)
 @given(segments(600), st.sampled_from(["floor", "round"]))
 def test_incremental_matches_its_formula_exactly(pq, rounding):
     check_incremental(*pq, rounding)
@@ -146,7 +146,7 @@ def test_explicit_named_cases(p, q):
     check_explicit(p, q)
 
 
-@settings(max_examples=150, deadline=None)
+@settings(max_examples=150)
 @given(segments(600))
 def test_explicit_matches_its_formula_exactly(pq):
     check_explicit(*pq)

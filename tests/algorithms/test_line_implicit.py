@@ -43,7 +43,7 @@ def test_named_cases(p, q):
     check(p, q)
 
 
-@settings(max_examples=150, deadline=None)
+@settings(max_examples=150)
 @given(segments(25))
 def test_every_box_pixel_follows_the_exact_rule(pq):
     check(*pq)

@@ -46,7 +46,7 @@ def test_parametric_named_cases(p, q, dt):
 
 
 @pytest.mark.parametrize("name", LINE_ALGORITHMS)
-@settings(max_examples=60, deadline=None)
+@settings(max_examples=60)
 @given(data=st.data())
 def test_random_segments_and_options(name, data):
     span = 25 if name == "line-implicit" else 400

@@ -73,13 +73,13 @@ def test_named_cases(p, q, dt):
     check(p, q, dt)
 
 
-@settings(max_examples=120, deadline=None)
+@settings(max_examples=120)
 @given(segments(60), DTS)
 def test_counts_and_endpoints(pq, dt):
     check(*pq, dt)
 
 
-@settings(max_examples=120, deadline=None)
+@settings(max_examples=120)
 @given(segments(300))
 def test_auto_step_leaves_no_gaps_and_no_duplicates(pq):
     p, q = pq

@@ -81,6 +81,22 @@ def test_s_and_n_are_the_derivations_distances(p, q):
         previous = step.pixel
 
 
+# ---------------------------------------------------------------- the kernel
+# The kernel and the generator share one decision loop, so agreeing with the
+# generator proves little: the kernel is held to the oracles themselves.
+def kernel_pixels(p, q, variant):
+    pixels = registry.get("line-bresenham-textbook").kernel((p, q), {"variant": variant})
+    return [tuple(pixel) for pixel in pixels.tolist()]
+
+
+@pytest.mark.parametrize("p, q", SEGMENTS)
+def test_the_kernel_is_the_nearest_pixel_line_with_ties_away_from_p(p, q):
+    minor = 1 if exact.x_is_major(p, q) else 0
+    away = "up" if q[minor] >= p[minor] else "down"  # the tie's side nearer Q
+    expected = exact.nearest_pixel_line(p, q, away)
+    assert kernel_pixels(p, q, "ties-ne") == kernel_pixels(p, q, "sign-reversed") == expected
+
+
 # ------------------------------------------------------- the printed listing
 def printed_draw_line(x1, y1, x2, y2):
     """The slide's listing, transcribed (its y = y0 read as y = y1)."""
@@ -104,7 +120,7 @@ FIRST_OCTANT = [((0, 0), (8, 3)), ((0, 0), (10, 1)), ((3, 2), (17, 9)), ((0, 0),
 @pytest.mark.parametrize("p, q", FIRST_OCTANT)
 def test_as_printed_reproduces_the_listing_and_counts_its_error(p, q):
     trace, pixels = run("line-bresenham-textbook", (p, q), variant="as-printed")
-    assert pixels == printed_draw_line(*p, *q)
+    assert pixels == printed_draw_line(*p, *q) == kernel_pixels(p, q, "as-printed")
     nearest = exact.nearest_pixel_line(p, q, "up")
     wrong = [a for a, b in zip(pixels, nearest) if a != b]
     if q[0] > p[0]:

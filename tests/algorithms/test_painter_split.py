@@ -95,7 +95,7 @@ COORD = st.integers(0, 8 * 24).map(lambda v: v / 8)
 DEPTH = st.integers(1, 9).map(lambda v: v / 10)
 
 
-@settings(max_examples=15, deadline=None)
+@settings(max_examples=15)
 @given(st.lists(st.tuples(COORD, COORD), min_size=6, max_size=9).filter(lambda p: len(p) % 3 == 0),
        st.lists(DEPTH, min_size=9, max_size=9))
 def test_random_scenes_match_the_nearest_triangle(points, depths):

@@ -48,7 +48,7 @@ def convex_polygon(draw):
 
 
 # ---------------------------------------------------------------- convex
-@settings(max_examples=200, deadline=None)
+@settings(max_examples=200)
 @given(convex_polygon())
 def test_convex_equals_scanline_row_for_row(points):
     pixels = generator_pixels(CONVEX, [points])
@@ -83,7 +83,7 @@ def test_convex_accepts_a_flat_polygon_and_fills_nothing():
 
 
 # ------------------------------------------------------------ tessellate
-@settings(max_examples=150, deadline=None)
+@settings(max_examples=150)
 @given(star_shaped())
 def test_tessellate_equals_scanline(points):
     pixels = generator_pixels(TESSELLATE, [points])

@@ -73,7 +73,7 @@ contour = st.lists(st.tuples(coordinate, coordinate), min_size=3, max_size=8)
 polygon = st.lists(contour, min_size=1, max_size=2)
 
 
-@settings(max_examples=60, deadline=None)
+@settings(max_examples=60)
 @given(st.lists(polygon, min_size=1, max_size=4), st.sampled_from(["evenodd", "nonzero"]),
        st.sampled_from([None, "x-low"]))
 def test_random_polygons_with_holes_and_crossings(polygons, rule, edge_x):

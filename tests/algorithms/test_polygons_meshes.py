@@ -32,7 +32,7 @@ def assert_tiles(pieces, outline, fill=lambda piece: kernel_pixels(SCANLINE, [pi
     assert set(counts) == oracle.covered_pixels([outline])
 
 
-@settings(max_examples=200, deadline=None)
+@settings(max_examples=200)
 @given(st.tuples(coordinate, coordinate), st.tuples(coordinate, coordinate),
        st.tuples(coordinate, coordinate), st.tuples(coordinate, coordinate))
 def test_two_triangles_on_one_edge(p, q, r, s):
@@ -49,7 +49,7 @@ def test_two_triangles_on_one_edge(p, q, r, s):
     assert set(counts) == oracle.covered_pixels([[p, s, q, r]])
 
 
-@settings(max_examples=120, deadline=None)
+@settings(max_examples=120)
 @given(star_shaped())
 def test_a_fan_of_triangles_tiles_its_star(points):
     xs, ys = zip(*points)
@@ -84,7 +84,7 @@ def quad_mesh(draw):
     return quads, outline
 
 
-@settings(max_examples=60, deadline=None)
+@settings(max_examples=60)
 @given(quad_mesh())
 def test_a_mesh_of_perturbed_quads_covers_each_pixel_once(mesh):
     quads, outline = mesh

@@ -91,7 +91,7 @@ def test_pentagram_centre_differs_between_the_rules():
     assert evenodd < nonzero
 
 
-@settings(max_examples=250, deadline=None)
+@settings(max_examples=250)
 @given(polygon(), st.sampled_from(RULES))
 def test_random_polygons_match_the_oracle(contours, rule):
     pixels = generator_pixels(SCANLINE, contours, {"fill_rule": rule})
@@ -99,14 +99,14 @@ def test_random_polygons_match_the_oracle(contours, rule):
     assert set(pixels) == oracle_pixels(contours, rule)
 
 
-@settings(max_examples=250, deadline=None)
+@settings(max_examples=250)
 @given(polygon(), st.sampled_from(RULES))
 def test_fast_kernel_gives_the_generator_pixels_in_order(contours, rule):
     options = {"fill_rule": rule}
     assert kernel_pixels(SCANLINE, contours, options) == generator_pixels(SCANLINE, contours, options)
 
 
-@settings(max_examples=150, deadline=None)
+@settings(max_examples=150)
 @given(polygon(), st.sampled_from(RULES), st.integers(-6, 6), st.integers(-6, 6),
        st.integers(1, 30), st.integers(1, 30))
 def test_grid_mask_is_the_clipped_pixel_set(contours, rule, x0, y0, width, height):
@@ -118,7 +118,7 @@ def test_grid_mask_is_the_clipped_pixel_set(contours, rule, x0, y0, width, heigh
     assert set(zip(xs.tolist(), ys.tolist())) == expected
 
 
-@settings(max_examples=200, deadline=None)
+@settings(max_examples=200)
 @given(polygon())
 def test_evenodd_and_nonzero_differ_exactly_where_the_winding_is_even_and_not_zero(contours):
     evenodd = set(kernel_pixels(SCANLINE, contours, {"fill_rule": "evenodd"}))
@@ -162,7 +162,7 @@ def near_boundary(contours, pixels, epsilon):
                for i, j in pixels)
 
 
-@settings(max_examples=120, deadline=None)
+@settings(max_examples=120)
 @given(HALF_GRID, st.sampled_from(RULES))
 def test_float64_agrees_with_exact_except_at_centres_on_an_edge(contours, rule):
     exact = set(kernel_pixels(SCANLINE, contours, {"fill_rule": rule}))

@@ -68,13 +68,13 @@ def check(points, simple: bool):
         assert theirs - ours == outline - oracle.covered_pixels([points])
 
 
-@settings(max_examples=120, deadline=None)
+@settings(max_examples=120)
 @given(contour(size=28))
 def test_any_contour_agrees_off_the_outline(points):
     check(shifted(points), simple=False)
 
 
-@settings(max_examples=120, deadline=None)
+@settings(max_examples=120)
 @given(star_shaped(size=28))
 def test_simple_polygons_differ_only_on_the_outline_which_skimage_fills(points):
     check(shifted(points), simple=True)

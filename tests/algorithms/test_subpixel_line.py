@@ -46,7 +46,7 @@ def oracle(points, n, grid):
 PIXEL = st.tuples(st.integers(-3, GRID[0] + 2), st.integers(-3, GRID[1] + 2))
 
 
-@settings(max_examples=30, deadline=None)
+@settings(max_examples=30)
 @given(PIXEL, PIXEL, st.integers(1, 4))
 def test_counts_are_the_subpixels_the_segment_meets(p, q, n):
     trace = record("line-subpixels", (p, q), {"n": n}, GRID)

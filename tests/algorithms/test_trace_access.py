@@ -20,10 +20,9 @@ def same_values(raster, oracle):
 
 
 @pytest.fixture
-def tiny_keyframes(monkeypatch):
+def tiny_keyframes(small_keyframes, monkeypatch):
     """Keyframes every 37 steps, a dense copy after every few hundred changed pixels."""
-    monkeypatch.setattr(trace_module, "MIN_KEYFRAME_GAP", 37)
-    monkeypatch.setattr(trace_module, "KEYFRAME_BYTES_PER_STEP", 2 ** 40)
+    small_keyframes(37)
     monkeypatch.setattr(keyframes_module, "CHAIN_PIXELS", 300)
 
 

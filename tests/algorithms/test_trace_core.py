@@ -4,7 +4,6 @@ import random
 import numpy as np
 import pytest
 
-from algorithms.core import trace as trace_module
 from algorithms.core.registry import get
 from algorithms.core.steps import CALC, NO_PIXEL, PLOT, CodeLine, Note, Start, Table, Vars
 from algorithms.core.trace import Trace, TraceError
@@ -21,17 +20,6 @@ def same_raster(a, b):
         assert a.colors is None and b.colors is None
     else:
         assert np.array_equal(a.colors, b.colors)
-
-
-@pytest.fixture
-def small_keyframes(monkeypatch):
-    """Keyframes every few steps, so random access really starts from them."""
-    def use(gap, budget=trace_module.KEYFRAME_BUDGET):
-        monkeypatch.setattr(trace_module, "MIN_KEYFRAME_GAP", gap)
-        monkeypatch.setattr(trace_module, "KEYFRAME_BUDGET", budget)
-        # Short traces would otherwise get no keyframes at all.
-        monkeypatch.setattr(trace_module, "KEYFRAME_BYTES_PER_STEP", 2 ** 40)
-    return use
 
 
 # ------------------------------------------------------ state_at == replay

@@ -62,14 +62,14 @@ def same(got, expected):
 SEGMENT = st.tuples(st.sampled_from(sorted(VALUES) + ["vars"]), st.integers(1, 2600))
 
 
-@settings(max_examples=40, deadline=None)
+@settings(max_examples=40)
 @given(st.lists(SEGMENT, min_size=1, max_size=4))
 def test_columns_equal_a_frame_by_frame_reading(segments):
     frames, expected = build(segments)
     same(columns_of(Trace.record(iter(frames), CODE, 128, 128)), expected)
 
 
-@settings(max_examples=15, deadline=None)
+@settings(max_examples=15)
 @given(st.lists(SEGMENT, min_size=1, max_size=3), st.integers(1, 6000))
 def test_the_cap_falls_anywhere(segments, cap):
     frames, expected = build(segments)
@@ -174,7 +174,7 @@ def plain(frame, k):
             and 0 <= frame[0] <= 65535)
 
 
-@settings(max_examples=300, deadline=None)
+@settings(max_examples=300)
 @given(st.lists(RUNS, max_size=8))
 def test_the_marshal_layout_packs_exactly_the_plain_frames(runs):
     frames = [frame for run in runs for frame in run]

@@ -133,7 +133,7 @@ def runs_and_ranges(draw):
     return run, lo, hi
 
 
-QUERIES = settings(max_examples=150, deadline=None,
+QUERIES = settings(max_examples=150,
                    suppress_health_check=[HealthCheck.too_slow, HealthCheck.data_too_large])
 
 
@@ -212,7 +212,7 @@ def test_replay_of_a_range_continues_a_raster(found):
 
 
 # ------------------------------------------------- state_at == full replay
-@settings(max_examples=80, deadline=None,
+@settings(max_examples=80,
           suppress_health_check=[HealthCheck.too_slow, HealthCheck.data_too_large])
 @given(runs_and_ranges(), st.integers(1, 7))
 def test_state_at_equals_a_replay_from_scratch(found, gap):

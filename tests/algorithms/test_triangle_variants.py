@@ -17,7 +17,7 @@ COORD = st.integers(-40, 220).map(lambda v: v / 8)
 TRIANGLE = st.tuples(*(st.tuples(COORD, COORD) for _ in range(3)))
 
 
-@settings(max_examples=20, deadline=None)
+@settings(max_examples=20)
 @given(TRIANGLE)
 def test_cramer_covers_the_closed_triangle(triangle):
     trace = record("triangle-cramer", triangle, {}, GRID)
@@ -25,7 +25,7 @@ def test_cramer_covers_the_closed_triangle(triangle):
     assert got == cramer_oracle(triangle, GRID)
 
 
-@settings(max_examples=25, deadline=None)
+@settings(max_examples=25)
 @given(TRIANGLE)
 def test_cramer_weights_are_the_edge_functions_over_2a_and_sum_to_1(triangle):
     trace = record("triangle-cramer", triangle, {}, GRID)
@@ -58,7 +58,7 @@ def test_clockwise_and_shared_edges():
                .written_pixels().tolist()) == set(cramer_oracle(clockwise, GRID))
 
 
-@settings(max_examples=40, deadline=None)
+@settings(max_examples=40)
 @given(TRIANGLE)
 def test_wireframe_is_three_nearest_pixel_lines(triangle):
     trace = record("triangle-wireframe", triangle, {}, GRID)
@@ -72,7 +72,7 @@ def test_wireframe_of_a_huge_triangle_costs_only_the_grid():
     assert [tuple(p) for p in trace.written_pixels().tolist()] == wireframe_oracle(huge, GRID)
 
 
-@settings(max_examples=10, deadline=None)
+@settings(max_examples=10)
 @given(TRIANGLE)
 def test_trilinear_distances_convert_to_the_barycentric_weights(triangle):
     trace = record("triangle-trilinear", triangle, {}, GRID)
@@ -98,7 +98,7 @@ def test_trilinear_distances_convert_to_the_barycentric_weights(triangle):
             assert step.values[name] == pytest.approx(float(e / two_a), rel=1e-9, abs=1e-12)
 
 
-@settings(max_examples=30, deadline=None)
+@settings(max_examples=30)
 @given(TRIANGLE)
 def test_columns_fill_the_closed_triangle_and_the_printed_code_fills_nothing_of_it(triangle):
     correct = record("triangle-columns", triangle, {}, GRID)
@@ -113,7 +113,7 @@ def test_columns_fill_the_closed_triangle_and_the_printed_code_fills_nothing_of_
     assert len(drawn) <= 1 or sum(expected.values()) == 0 or len(drawn) < sum(expected.values())
 
 
-@settings(max_examples=12, deadline=None)
+@settings(max_examples=12)
 @given(TRIANGLE, st.tuples(*(st.integers(-8, 8).map(lambda v: v / 4) for _ in range(3))))
 def test_edges_then_spans_give_the_plane_exactly(triangle, values):
     trace = record("triangle-span-interpolate", triangle, {"s": values}, GRID)

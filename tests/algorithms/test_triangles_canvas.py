@@ -63,7 +63,7 @@ def check(points, grid, rule="top-left", cull=False):
 coordinate = st.integers(-3 * SUB, 19 * SUB).map(lambda n: n / SUB)
 
 
-@settings(max_examples=40, deadline=None)
+@settings(max_examples=40)
 @given(st.lists(st.tuples(coordinate, coordinate), min_size=3, max_size=12).filter(
     lambda p: len(p) % 3 == 0), st.sampled_from(RULES))
 def test_random_triangles_on_the_sub_pixel_grid(points, rule):

@@ -19,7 +19,7 @@ from algorithms import triangles
 from test_triangles_cases import SUB, as_window, oracle, spec, sub
 from tests.support.trace_oracle import slow_replay
 
-SETTINGS = dict(deadline=None, suppress_health_check=[HealthCheck.too_slow, HealthCheck.filter_too_much])
+SETTINGS = dict(suppress_health_check=[HealthCheck.too_slow, HealthCheck.filter_too_much])
 
 
 def ccw(a, b, c) -> Fraction:

@@ -9,7 +9,7 @@ import math
 
 import numpy as np
 import pytest
-from hypothesis import HealthCheck, given, settings
+from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from algorithms.core import registry
@@ -20,7 +20,6 @@ from test_triangles_cases import (RULES, TRAVERSALS, as_window, centre_triangle,
                                   subgrid_triangle, visited)
 
 GRID = (12, 10)
-SETTINGS = dict(deadline=None, suppress_health_check=[HealthCheck.too_slow])
 
 
 def check_every_traversal(points, grid=GRID, rules=RULES):
@@ -39,32 +38,32 @@ def check_every_traversal(points, grid=GRID, rules=RULES):
         assert len(seen) == len(set(seen)), "the Pineda walk visited a pixel twice"
 
 
-@settings(max_examples=150, **SETTINGS)
+@settings(max_examples=150)
 @given(subgrid_triangle(-2, 14))
 def test_random_triangles_on_the_subpixel_grid(points):
     check_every_traversal(points)
 
 
-@settings(max_examples=100, **SETTINGS)
+@settings(max_examples=100)
 @given(centre_triangle(12, 10))
 def test_vertices_exactly_on_pixel_centres(points):
     check_every_traversal(points)
 
 
-@settings(max_examples=100, **SETTINGS)
+@settings(max_examples=100)
 @given(sliver())
 def test_slivers_thinner_than_a_thousandth_of_a_pixel(points):
     check_every_traversal(points, grid=(16, 12))
 
 
-@settings(max_examples=80, **SETTINGS)
+@settings(max_examples=80)
 @given(far_triangle())
 def test_coordinates_up_to_a_million_through_a_small_window(case):
     points, window = case
     check_every_traversal(points, grid=window)
 
 
-@settings(max_examples=30, **SETTINGS)
+@settings(max_examples=30)
 @given(subgrid_triangle(0, 12), st.sampled_from(RULES))
 def test_both_windings_give_the_same_pixels_and_cull_drops_clockwise(points, rule):
     reverse = [points[0], points[2], points[1]]

@@ -8,7 +8,6 @@ import numpy as np
 import pytest
 
 from algorithms.exact import triangles as exact_triangles
-from algorithms.core import trace as trace_module
 from algorithms.visibility import zbuffer_painter as vis
 from algorithms.core.registry import get
 from algorithms.core.steps import Table
@@ -116,9 +115,8 @@ def test_clear_depth_and_far_fragments():
     assert trace.final_variables()["failed"] == 0
 
 
-def test_state_at_equals_slow_replay_with_the_depth_buffer(monkeypatch):
-    monkeypatch.setattr(trace_module, "MIN_KEYFRAME_GAP", 7)
-    monkeypatch.setattr(trace_module, "KEYFRAME_BYTES_PER_STEP", 2 ** 40)
+def test_state_at_equals_slow_replay_with_the_depth_buffer(small_keyframes):
+    small_keyframes(7)
     points, z = random_scene(3, 3, (14, 12))
     trace = get("zbuffer").record(points, {"z": tuple(z)}, grid=(14, 12))
     assert len(trace._ensure_keyframes()) > 3

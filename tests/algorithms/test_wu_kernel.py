@@ -57,7 +57,7 @@ def test_named_cases_every_octant(p, q, endpoints):
     check(p, q, endpoints)
 
 
-@settings(max_examples=80, deadline=None)
+@settings(max_examples=80)
 @given(segments(60), st.sampled_from(ENDPOINTS))
 def test_random_segments(segment, endpoints):
     check(*segment, endpoints)

@@ -52,24 +52,6 @@ def dda_pixels(p, q, bits: int) -> list:
     return pixels
 
 
-def bresenham_pixels(p, q) -> list:
-    """The textbook first-octant Bresenham loop (0 <= dy <= dx): d = 2dy - dx,
-    d <= 0 chooses E (d += 2dy), else NE (d += 2(dy - dx), y += 1)."""
-    (x0, y0), (x1, y1) = p, q
-    dx, dy = x1 - x0, y1 - y0
-    assert 0 <= dy <= dx, "first octant only"
-    d, y = 2 * dy - dx, y0
-    pixels = [(x0, y0)]
-    for x in range(x0 + 1, x1 + 1):
-        if d <= 0:
-            d += 2 * dy
-        else:
-            d += 2 * (dy - dx)
-            y += 1
-        pixels.append((x, y))
-    return pixels
-
-
 def diff_counts(pixels_a, pixels_b, width: int, height: int) -> dict:
     """Counts of cells only in A, only in B, in both, and in both but
     written a different number of times (runs without values), from the

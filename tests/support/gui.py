@@ -1,5 +1,11 @@
 """Shared by the window tests."""
 
+# How long a test waits for the window to do something, in ms: long enough
+# for the slowest, busiest machine. A wait ends as soon as its condition
+# holds, so a long limit costs nothing; it only stops a test that would
+# otherwise hang.
+WAIT_MS = 60_000
+
 
 def settle(qtbot, window):
     """Wait until the grid's view has taken its final place after showing:
@@ -9,7 +15,7 @@ def settle(qtbot, window):
     def still():
         where.append(window.grid.widget_pos_of((0.0, 0.0)))
         return len(where) > 2 and where[-1] == where[-2] == where[-3]
-    qtbot.waitUntil(still, timeout=2000)
+    qtbot.waitUntil(still, timeout=WAIT_MS)
 
 
 def shown_window(qtbot, *args, settled: bool = False, **kwargs):

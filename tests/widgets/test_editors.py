@@ -4,6 +4,7 @@ from PySide6.QtWidgets import QCheckBox, QComboBox, QLineEdit, QSpinBox
 from algorithms.core import registry
 from algorithms.core.registry import Option
 from widgets.editors import AlgorithmPicker, ColorListEditor, GridEditor, OptionsEditor
+from tests.support.gui import WAIT_MS
 
 OPTIONS = (
     Option("symmetric", "bool", False, "ties the same both ways"),
@@ -107,7 +108,7 @@ def test_picker_groups_by_family_and_emits_names(qtbot):
     assert picker.names() == [s.name for s in specs]
     families = [picker.topLevelItem(i).text(0) for i in range(picker.topLevelItemCount())]
     assert families == list(dict.fromkeys(s.family.capitalize() for s in specs))
-    with qtbot.waitSignal(picker.algorithmChosen, timeout=500) as blocker:
+    with qtbot.waitSignal(picker.algorithmChosen, timeout=WAIT_MS) as blocker:
         picker.setCurrentItem(picker.item_for(specs[-1].name))
     assert blocker.args == [specs[-1].name]
     # Setting the current algorithm from outside is silent.
@@ -121,10 +122,10 @@ def test_grid_editor(qtbot):
     qtbot.addWidget(grid)
     grid.set_grid(32, 24)
     assert grid.width_box.maximum() == 4096
-    with qtbot.waitSignal(grid.gridChanged, timeout=500) as blocker:
+    with qtbot.waitSignal(grid.gridChanged, timeout=WAIT_MS) as blocker:
         grid.width_box.setValue(64)
     assert blocker.args == [64, 24]
-    with qtbot.waitSignal(grid.originChanged, timeout=500) as blocker:
+    with qtbot.waitSignal(grid.originChanged, timeout=WAIT_MS) as blocker:
         grid.origin.setCurrentIndex(1)
     assert blocker.args == [True]
 

@@ -8,6 +8,7 @@ from app.model.drawing import Move, Place, Tool, apply
 from app.render.compose import OUTLINE_STYLE, PALETTE
 from widgets.grid_items import MIN_CELL_PX, visible_grid_lines
 from widgets.grid_view import PixelGridView
+from tests.support.gui import WAIT_MS
 
 LEFT = Qt.MouseButton.LeftButton
 NONE = Qt.KeyboardModifier.NoModifier
@@ -27,7 +28,7 @@ def view(qtbot):
     def still():
         where.append(v.widget_pos_of((0.0, 0.0)))
         return len(where) > 2 and where[-1] == where[-2] == where[-3]
-    qtbot.waitUntil(still, timeout=2000)
+    qtbot.waitUntil(still, timeout=WAIT_MS)
     return v
 
 
@@ -120,7 +121,7 @@ def test_hover_reports_the_pixel_under_the_cursor(view, qtbot):
     seen = []
     view.hoverChanged.connect(seen.append)
     QTest.mouseMove(view.viewport(), view.widget_pos_of((7.3, 4.8)))
-    qtbot.waitUntil(lambda: seen and seen[-1] == (7, 4), timeout=1000)
+    qtbot.waitUntil(lambda: seen and seen[-1] == (7, 4), timeout=WAIT_MS)
 
 
 def test_grid_lines_only_in_view_and_only_when_cells_are_large():
@@ -263,7 +264,7 @@ def test_the_pointer_reports_its_real_coordinates(view, qtbot):
     seen = []
     view.pointerMoved.connect(seen.append)
     QTest.mouseMove(view.viewport(), view.widget_pos_of((7.25, 4.75)))
-    qtbot.waitUntil(lambda: bool(seen) and seen[-1] is not None, timeout=1000)
+    qtbot.waitUntil(lambda: bool(seen) and seen[-1] is not None, timeout=WAIT_MS)
     x, y = seen[-1]
     assert abs(x - 7.25) < 0.1 and abs(y - 4.75) < 0.1
 
@@ -336,7 +337,7 @@ def test_the_grid_is_a_bare_view_box_with_two_pixel_axes(view, qtbot):
     (x0, x1), (y0, y1) = view.view_box.viewRange()
     box.setRange(xRange=(x0, x1), yRange=(y0, y1), padding=0)
     qtbot.waitUntil(lambda: box.sceneBoundingRect() == view.view_box.sceneBoundingRect()
-                    and box.viewRange() == view.view_box.viewRange(), timeout=2000)
+                    and box.viewRange() == view.view_box.viewRange(), timeout=WAIT_MS)
     for name, axis in view.axes.items():
         assert axis.sceneBoundingRect() == plot.getPlotItem().getAxis(name).sceneBoundingRect()
     # The axes' strips, clear of the view box (whose contents differ), are

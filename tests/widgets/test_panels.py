@@ -5,6 +5,7 @@ from PySide6.QtCore import Qt
 
 from widgets.panels import CURRENT_LINE, CodePanel, VariablesPanel
 from widgets.transport import TransportBar
+from tests.support.gui import WAIT_MS
 
 
 def test_code_panel_marks_one_line(qtbot):
@@ -74,9 +75,9 @@ def test_transport_bar_signals_and_counter(qtbot):
                            (bar.play_button, bar.playRequested),
                            (bar.forward_button, bar.forwardRequested),
                            (bar.last_button, bar.lastRequested)):
-        with qtbot.waitSignal(signal, timeout=500):
+        with qtbot.waitSignal(signal, timeout=WAIT_MS):
             qtbot.mouseClick(button, Qt.MouseButton.LeftButton)
-    with qtbot.waitSignal(bar.seekRequested, timeout=500) as blocker:
+    with qtbot.waitSignal(bar.seekRequested, timeout=WAIT_MS) as blocker:
         bar.timeline.setValue(20)
     assert blocker.args == [20]
     # Positions set from outside do not echo back as seek requests.
@@ -89,7 +90,7 @@ def test_transport_bar_signals_and_counter(qtbot):
 def test_transport_speed(qtbot):
     bar = TransportBar()
     qtbot.addWidget(bar)
-    with qtbot.waitSignal(bar.speedChanged, timeout=500) as blocker:
+    with qtbot.waitSignal(bar.speedChanged, timeout=WAIT_MS) as blocker:
         bar.speed_box.setValue(120)
     assert blocker.args == [120.0]
     # The logarithmic slider spans 1 .. 2000 steps a second.

@@ -4,6 +4,7 @@ from PySide6.QtCore import QEvent, QObject
 
 from widgets.panels import VariablesPanel
 from widgets.transport import TransportBar
+from tests.support.gui import WAIT_MS
 
 
 class LayoutAsks(QObject):
@@ -42,7 +43,7 @@ def test_a_caption_of_the_same_height_lays_nothing_out_a_taller_one_does(qtbot):
     assert panel.caption.text().startswith("<b>Step 11</b>")
     one_line = panel.caption.height()
     panel.set_caption("<b>Step 12</b> of 90 · " + " · ".join(["updates variables"] * 8))
-    qtbot.waitUntil(lambda: panel.caption.height() > one_line, timeout=2000)
+    qtbot.waitUntil(lambda: panel.caption.height() > one_line, timeout=WAIT_MS)
     assert asks.count > 0
     # All of it in view: as tall as its text needs at its width.
     assert panel.caption.height() >= panel.caption.heightForWidth(panel.caption.width())
@@ -68,4 +69,4 @@ def test_a_new_style_sheet_gives_the_caption_the_room_it_asks(qtbot):
     panel = _shown_panel(qtbot)
     before = panel.caption.height()
     panel.setStyleSheet("QLabel#stepCaption { padding: 20px 0 20px 0; }")
-    qtbot.waitUntil(lambda: panel.caption.height() >= before + 40, timeout=2000)
+    qtbot.waitUntil(lambda: panel.caption.height() >= before + 40, timeout=WAIT_MS)

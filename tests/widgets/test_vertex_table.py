@@ -10,6 +10,7 @@ from PySide6.QtWidgets import QApplication, QColorDialog
 
 from app.gui.window import MainWindow
 from widgets.vertex_table import VertexTable
+from tests.support.gui import WAIT_MS
 
 LEFT = Qt.MouseButton.LeftButton
 NONE = Qt.KeyboardModifier.NoModifier
@@ -46,13 +47,13 @@ def test_widget_emits_typed_values_exactly(qtbot):
     table.set_grid(32, 24)
     table.set_points([(1.0, 2.0), (9.5, 3.0), (4.0, 11.0)], ["P0", "P1", "P2"])
     table.set_attributes(["colors", "z", "w"], {"z": (0.5, 0.25, 1.0)})
-    with qtbot.waitSignal(table.edited, timeout=500) as blocker:
+    with qtbot.waitSignal(table.edited, timeout=WAIT_MS) as blocker:
         assert table.type_value(1, "x", " 3.00390625 ")
     points, breaks, values = blocker.args
     assert points[1] == (float(Fraction("3.00390625")), 3.0) and breaks == ()
     assert values["z"] == (0.5, 0.25, 1.0)
     # A first colour gives the others their defaults: one colour per vertex.
-    with qtbot.waitSignal(table.edited, timeout=500) as blocker:
+    with qtbot.waitSignal(table.edited, timeout=WAIT_MS) as blocker:
         assert table.type_value(2, "colors", "#A0B0C0")
     colors = blocker.args[2]["colors"]
     assert len(colors) == 3 and colors[2] == "#a0b0c0"
@@ -79,7 +80,7 @@ def test_widget_refuses_bad_text(qtbot, column, text, words):
     table.set_points([(1.0, 2.0), (9.5, 3.0), (4.0, 11.0)])
     table.set_attributes(["colors", "z", "w"], {})
     with qtbot.assertNotEmitted(table.edited):
-        with qtbot.waitSignal(table.refused, timeout=500) as blocker:
+        with qtbot.waitSignal(table.refused, timeout=WAIT_MS) as blocker:
             assert not table.type_value(0, column, text)
     assert words in blocker.args[0]
     assert words in table.message.text() and not table.message.isHidden()
@@ -184,7 +185,7 @@ def test_keyboard_typing_tab_and_enter(make, qtbot):
     view = w.points.view
     view.setFocus()
     view.setCurrentIndex(w.points.model.index(0, 0))
-    qtbot.waitUntil(lambda: QApplication.focusWidget() is view, timeout=1000)
+    qtbot.waitUntil(lambda: QApplication.focusWidget() is view, timeout=WAIT_MS)
     QTest.keyClick(view, Qt.Key.Key_6)  # typing replaces the value
     QTest.keyClicks(QApplication.focusWidget(), ".25")
     QTest.keyClick(QApplication.focusWidget(), Qt.Key.Key_Tab)
@@ -197,7 +198,7 @@ def test_keyboard_typing_tab_and_enter(make, qtbot):
     # Ctrl+Z, with the table's focus and no cell being edited, undoes.
     QTest.keyClick(QApplication.focusWidget(), Qt.Key.Key_Escape)
     view.setFocus()
-    qtbot.waitUntil(lambda: QApplication.focusWidget() is view, timeout=1000)
+    qtbot.waitUntil(lambda: QApplication.focusWidget() is view, timeout=WAIT_MS)
     QTest.keyClick(view, Qt.Key.Key_Z, Qt.KeyboardModifier.ControlModifier)
     assert w.player.points[0][1] != 7.5 and w.player.points[0][0] == 6.25
 
@@ -208,7 +209,7 @@ def test_rows_added_and_removed_with_insert_and_delete(make, qtbot):
     view = w.points.view
     view.setFocus()
     view.setCurrentIndex(w.points.model.index(1, 0))
-    qtbot.waitUntil(lambda: QApplication.focusWidget() is view, timeout=1000)
+    qtbot.waitUntil(lambda: QApplication.focusWidget() is view, timeout=WAIT_MS)
     QTest.keyClick(view, Qt.Key.Key_Insert)
     assert len(w.player.points) == len(points) + 1
     assert w.player.points[:2] == points[:2] and w.player.points[3:] == points[2:]

@@ -9,13 +9,9 @@ from fractions import Fraction
 
 import pytest
 
+from tests.support.bresenham import bresenham_run
+
 LINE = ("run", "line-bresenham", "--points", "0,0", "8,3")
-
-
-def bresenham_d(dx, dy, k, y_before):
-    """The textbook's d for column k, from its closed form 2dy*k - 2dx*y - dx
-    (d_1 = 2dy - dx at k = 1, y = 0), with y the row before the step."""
-    return 2 * dy * k - 2 * dx * y_before - dx
 
 
 def test_csv_has_a_row_per_step_with_the_decision_of_each(run_cli):
@@ -28,9 +24,10 @@ def test_csv_has_a_row_per_step_with_the_decision_of_each(run_cli):
     assert [int(r["step"]) for r in rows] == list(range(len(rows)))
     plotted = [r for r in rows if r["pixel"]]
     assert [r["pixel"] for r in plotted] == [f"({x}, {y})" for x, y in result["pixels"]]
+    decisions = bresenham_run((0, 0), (8, 3))[1]
     previous_y = 0
     for k, row in enumerate(plotted[1:], start=1):
-        assert int(row["d"]) == bresenham_d(8, 3, k, previous_y)
+        assert int(row["d"]) == decisions[k - 1]
         y = int(row["pixel"].strip("()").split(",")[1])
         # The nearest row to y = 3k/8, halves down (ties go to E).
         exact = Fraction(3 * k, 8)

@@ -28,7 +28,7 @@ FIELDS = {"algorithm", "grid", "pixels", "steps", "final", "options"}
 
 def fuzz_settings(examples: int):
     # Derandomized: the same examples every run, so a failure reproduces.
-    return settings(max_examples=examples, deadline=None, derandomize=True, database=None,
+    return settings(max_examples=examples, derandomize=True, database=None,
                     suppress_health_check=list(HealthCheck))
 
 

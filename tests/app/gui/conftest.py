@@ -1,13 +1,15 @@
-"""The main window, made once here for every window test.
+"""The main window and the player, made once here for every window test.
 
 A module or a test says how its window is made with
 ``pytest.mark.window(*args, **kwargs)``: the arguments of ``make_window``
 below. Without the mark, ``window`` is a window on screen showing the demo
-scene.
+scene. ``pytest.mark.player(...)`` says the scene of a player without a window.
 """
 import pytest
 from PySide6.QtCore import QSettings
 
+from algorithms import registry
+from app.gui.player import Player
 from app.gui.window import MainWindow
 from tests.support.gui import settle
 
@@ -96,3 +98,30 @@ def theme(window):
         window.preferences.apply(values)
     yield use
     use("light")  # the application's look is shared by the tests after this one
+
+
+@pytest.fixture
+def player(request, qtbot):
+    """A player without a window showing the scene of the test's player mark,
+    ``pytest.mark.player(algorithm, points, options=None, grid=(32, 24),
+    sync_wait=None)``: the scene is recorded before the player is handed
+    over, and ``sync_wait`` (if given) applies to the edits after it. A
+    recording still running at the end is cancelled."""
+    marker = request.node.get_closest_marker("player")
+    scene = dict(marker.kwargs)
+    sync_wait = scene.pop("sync_wait", None)
+    made = Player()
+    made.set_scene(*marker.args, **scene)
+    if sync_wait is not None:
+        made.sync_wait = sync_wait
+    yield made
+    made.stop_recording()
+
+
+@pytest.fixture
+def forget_student_algorithms():
+    """The registry is the process's: a student's algorithm leaves with its test."""
+    yield
+    for spec in registry.all_specs():
+        if spec.name.startswith("student-"):
+            registry.unregister(spec.name)

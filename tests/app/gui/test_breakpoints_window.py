@@ -6,7 +6,7 @@ from PySide6.QtWidgets import QApplication, QInputDialog, QMessageBox
 
 from app.model import scene as scenes
 
-from tests.support.gui import settle
+from tests.support.gui import WAIT_MS, settle
 from tests.support.breakpoint_oracles import (POLYGON, ZBUFFER, depth_fail_events, first_after,
                                               scanline_events, sign_events)
 
@@ -108,11 +108,11 @@ def test_play_stops_at_a_failing_depth_test(window, qtbot):
     window.transport.speed_box.setValue(2000)
     window.player.first()
     window.player.play()
-    qtbot.waitUntil(lambda: not window.player.playing, timeout=3000)
+    qtbot.waitUntil(lambda: not window.player.playing, timeout=WAIT_MS)
     assert window.player.index == fails[0]
     assert "Play stopped at step" in message(window) and "depth test fails" in message(window)
     window.player.play()
-    qtbot.waitUntil(lambda: not window.player.playing, timeout=3000)
+    qtbot.waitUntil(lambda: not window.player.playing, timeout=WAIT_MS)
     assert window.player.index == fails[1]
 
 
@@ -175,13 +175,13 @@ def test_bookmarks_add_rename_delete_and_jump(window, qtbot, monkeypatch):
     marks.marks.select(0)
     marks.marks.rename_button.click()
     qtbot.waitUntil(lambda: QApplication.focusWidget() is not None
-                    and QApplication.focusWidget().parent() is table.viewport(), timeout=1000)
+                    and QApplication.focusWidget().parent() is table.viewport(), timeout=WAIT_MS)
     editor = QApplication.focusWidget()
     editor.selectAll()
     QTest.keyClicks(editor, "  first  frame ")
     QTest.keyClick(editor, Qt.Key.Key_Return)  # the delegate commits on the next event
     qtbot.waitUntil(lambda: rows(window) == [("first frame", 3), ("the second tie", 12)],
-                    timeout=1000)
+                    timeout=WAIT_MS)
     marks.delete_bookmark(0)
     assert rows(window) == [("the second tie", 12)]
     assert window.bookmarks == [{"name": "the second tie", "step": 12}]

@@ -2,6 +2,8 @@
 the pixel inspector open beside the code and a projector-sized window."""
 import pytest
 
+from tests.support.gui import WAIT_MS
+
 pytestmark = pytest.mark.window(shown=True)
 
 
@@ -19,7 +21,7 @@ def test_the_marked_line_is_in_view_after_every_step(make_window, qtbot, algorit
     window = make_window(algorithm)
     window.resize(1280, 720)
     window.inspector.action.trigger()  # the inspector takes room from the code
-    qtbot.waitUntil(lambda: window.inspector.dock.isVisible(), timeout=1000)
+    qtbot.waitUntil(lambda: window.inspector.dock.isVisible(), timeout=WAIT_MS)
     qtbot.wait(50)
     trace = window.player.trace
     steps = range(0, len(trace), max(1, len(trace) // 150))  # a lean walk through the run
@@ -34,4 +36,4 @@ def test_the_marked_line_is_in_view_after_every_step(make_window, qtbot, algorit
     # Narrower and wider again: the rows re-wrap and the line stays in view.
     for width in (900, 1280):
         window.resize(width, 720)
-        qtbot.waitUntil(lambda: marked_line_in_view(window), timeout=2000)
+        qtbot.waitUntil(lambda: marked_line_in_view(window), timeout=WAIT_MS)

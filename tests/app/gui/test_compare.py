@@ -9,8 +9,9 @@ from PySide6.QtWidgets import QApplication
 from app.model import compare
 from app.gui.compare_window import WINDOW_KEY
 from app.gui.window import DEMO_POINTS
-from tests.support.compare_oracles import (FLOAT32_BITS, FLOAT64_BITS, bresenham_pixels,
-                                           dda_pixels, diff_counts)
+from tests.support.bresenham import bresenham_pixels
+from tests.support.compare_oracles import FLOAT32_BITS, FLOAT64_BITS, dda_pixels, diff_counts
+from tests.support.gui import WAIT_MS
 
 
 @pytest.fixture
@@ -215,7 +216,7 @@ def test_play_runs_every_pane_to_its_end_and_stops(comparing, qtbot):
     assert c.position == 0
     c.transport.playRequested.emit()
     assert c.playing
-    qtbot.waitUntil(lambda: not c.playing, timeout=5000)
+    qtbot.waitUntil(lambda: not c.playing, timeout=WAIT_MS)
     assert c.position == c.last
     assert c.indices() == [run.last for run in c.runs]
 
@@ -227,7 +228,7 @@ def test_esc_and_ctrl_w_close_compare(comparing, qtbot, keys):
     c = comparing
     c.activateWindow()
     QTest.keyClick(c.view.grids()[0], *keys)
-    qtbot.waitUntil(lambda: not c.isVisible(), timeout=1000)
+    qtbot.waitUntil(lambda: not c.isVisible(), timeout=WAIT_MS)
 
 
 def test_n_zooms_to_the_next_difference(comparing, qtbot):

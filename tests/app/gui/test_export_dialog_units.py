@@ -5,6 +5,7 @@ from PIL import Image
 from PySide6.QtCore import Qt
 
 from algorithms.core.steps import Span
+from tests.support.gui import WAIT_MS
 
 pytestmark = pytest.mark.window(shown=False, files=True)
 
@@ -12,7 +13,7 @@ pytestmark = pytest.mark.window(shown=False, files=True)
 def test_a_frame_per_scan_line_from_the_dialog(window, qtbot, tmp_path):
     window.set_scene("polygon-scanline", [[(3, 4), (28, 6), (16, 20)]], None, (32, 24))
     qtbot.waitUntil(lambda: window.player.trace is not None and not window.player.recording,
-                    timeout=10000)
+                    timeout=WAIT_MS)
     controller = window.file_actions.export_animation()
     dialog = controller.dialog
     target = tmp_path / "rows.gif"

@@ -14,6 +14,7 @@ from app.gui import file_actions as fa
 from app.model import scene as scenes
 from app.gui.window import MainWindow
 from tests.support import ROOT
+from tests.support.gui import WAIT_MS
 
 SHIPPED = sorted((ROOT / "resources" / "scenes").glob("*.json"))
 
@@ -308,10 +309,10 @@ def test_ctrl_e_opens_the_export_dialog(window, files, qtbot):
     window.show()
     qtbot.waitExposed(window)
     window.activateWindow()
-    qtbot.waitUntil(lambda: QApplication.activeWindow() is window, timeout=3000)
+    qtbot.waitUntil(lambda: QApplication.activeWindow() is window, timeout=WAIT_MS)
     target = QApplication.focusWidget() or window
     qtbot.keyClick(target, Qt.Key.Key_E, Qt.KeyboardModifier.ControlModifier)
-    qtbot.waitUntil(lambda: files.export_controller is not None, timeout=3000)
+    qtbot.waitUntil(lambda: files.export_controller is not None, timeout=WAIT_MS)
     assert files.export_controller.dialog.isVisible()
     files.export_controller.dialog.close()
 
@@ -394,7 +395,7 @@ def test_an_open_cancelled_while_recording_changes_nothing(qtbot, held):
     assert window.player.recording and window.file_actions.opening
     window.recovery.check()
     assert window.file_actions.path == small and not window.recovery.dirty
-    with qtbot.waitSignal(window.player.recordingFinished, timeout=10_000):
+    with qtbot.waitSignal(window.player.recordingFinished, timeout=WAIT_MS):
         window.recording_status.shortcut.activated.emit()  # Esc
     gate.set()
     assert not window.file_actions.opening
@@ -409,7 +410,7 @@ def test_an_open_whose_run_fails_changes_nothing(qtbot, held):
         raise MemoryError()
     then["do"] = fail
     assert window.file_actions.open_path(big) and window.player.recording
-    with qtbot.waitSignal(window.player.recordingFinished, timeout=10_000) as finished:
+    with qtbot.waitSignal(window.player.recordingFinished, timeout=WAIT_MS) as finished:
         gate.set()
     assert "MemoryError" in finished.args[0]
     assert_open_undone(qtbot, window, small, big, before)
@@ -424,7 +425,7 @@ def test_a_reopened_last_scene_cancelled_at_start_changes_nothing(qtbot, held, m
     monkeypatch.setattr(prefs, "get", lambda name: True if name == "reopen_last" else get(name))
     before = shown_state(window)
     assert preferences.reopen_last_scene(window) and window.player.recording
-    with qtbot.waitSignal(window.player.recordingFinished, timeout=10_000):
+    with qtbot.waitSignal(window.player.recordingFinished, timeout=WAIT_MS):
         window.player.cancel_recording()
     gate.set()
     assert_open_undone(qtbot, window, small, big, before)
@@ -451,7 +452,7 @@ def test_saving_while_an_open_records_is_refused(qtbot, held, messages):
     assert not window.file_actions.save()
     assert small.read_bytes() == saved_small
     assert messages[-1][0] == "information" and "big.json" in messages[-1][2]
-    with qtbot.waitSignal(window.player.recordingFinished, timeout=10_000):
+    with qtbot.waitSignal(window.player.recordingFinished, timeout=WAIT_MS):
         window.player.cancel_recording()
     gate.set()
 

@@ -7,6 +7,8 @@ from PySide6.QtGui import QWheelEvent
 from PySide6.QtTest import QTest
 from PySide6.QtWidgets import QApplication
 
+from tests.support.gui import WAIT_MS
+
 pytestmark = pytest.mark.window(shown=True)
 
 
@@ -31,7 +33,7 @@ def test_the_wheel_over_unfocused_controls_changes_nothing(window, qtbot):
     assert not editor.width_box.hasFocus()
     # Focused, the wheel is the control's again.
     editor.width_box.setFocus()
-    qtbot.waitUntil(editor.width_box.hasFocus, timeout=1000)
+    qtbot.waitUntil(editor.width_box.hasFocus, timeout=WAIT_MS)
     wheel(editor.width_box, -1)
     assert editor.width_box.value() == width - 1
 
@@ -40,7 +42,7 @@ def test_ctrl_z_undoes_a_spin_box_edit_with_the_focus_in_it(window, qtbot):
     box = window.grid_editor.width_box
     before = window.player.grid
     box.setFocus()
-    qtbot.waitUntil(box.hasFocus, timeout=1000)
+    qtbot.waitUntil(box.hasFocus, timeout=WAIT_MS)
     box.selectAll()
     QTest.keyClicks(box, "20")
     QTest.keyClick(box, Qt.Key.Key_Return)

@@ -5,6 +5,7 @@ import pytest
 from PySide6.QtCore import Qt
 from PySide6.QtTest import QTest
 
+from tests.support.gui import WAIT_MS
 from tests.support.inspector_oracles import GRID, TRIANGLE, assert_weight, edge_values, snapped
 
 pytestmark = pytest.mark.window("triangle-bbox", TRIANGLE, grid=GRID, settled=True)
@@ -18,7 +19,7 @@ def test_hovering_and_pinning_fill_the_dock(window, qtbot):
     grid, panel = w.grid, w.inspector.panel
     es = edge_values(snapped(TRIANGLE), (5, 4))
     QTest.mouseMove(grid.viewport(), grid.widget_pos_of((5.5, 4.5)))
-    qtbot.waitUntil(lambda: panel.rows().get("pixel", "").startswith("(5, 4) "), timeout=2000)
+    qtbot.waitUntil(lambda: panel.rows().get("pixel", "").startswith("(5, 4) "), timeout=WAIT_MS)
     rows = panel.rows()
     assert [Fraction(rows[f"e{k}"].split()[0]) for k in range(3)] == es
     assert_weight(rows["alpha"], es[0] / sum(es))
@@ -44,9 +45,9 @@ def test_hovering_and_pinning_fill_the_dock(window, qtbot):
     assert panel.rows()["pixel"].startswith("(9, 6) ") and panel.unpin.isVisible()
     w.activateWindow()
     QTest.keyClick(w, Qt.Key.Key_Escape)
-    qtbot.waitUntil(lambda: w.inspector.pinned is None, timeout=1000)
+    qtbot.waitUntil(lambda: w.inspector.pinned is None, timeout=WAIT_MS)
     # I pins the pixel under the pointer.
     QTest.mouseMove(grid.viewport(), grid.widget_pos_of((3.5, 2.5)))
-    qtbot.waitUntil(lambda: w.inspector.hovered == (3, 2), timeout=1000)
+    qtbot.waitUntil(lambda: w.inspector.hovered == (3, 2), timeout=WAIT_MS)
     QTest.keyClick(w, Qt.Key.Key_I)
-    qtbot.waitUntil(lambda: w.inspector.pinned == (3, 2), timeout=1000)
+    qtbot.waitUntil(lambda: w.inspector.pinned == (3, 2), timeout=WAIT_MS)

@@ -55,7 +55,7 @@ def test_an_edit_survives_sigkill(qtbot, tmp_path, monkeypatch):
     try:
         written = wait_ready(child)
         child.send_signal(signal.SIGKILL)
-        child.wait(timeout=10)
+        child.wait(timeout=60)
     finally:
         if child.poll() is None:
             child.kill()

@@ -4,6 +4,7 @@ import gc
 import threading
 
 from app.gui.player import Player
+from tests.support.gui import WAIT_MS
 
 SMALL = [(0, 0), (6, 0), (6, 6), (0, 6)]
 SQUARE = [(0, 0), (300, 0), (300, 300), (0, 300)]
@@ -31,7 +32,7 @@ def test_cycles_are_collected_in_the_main_thread_while_a_recording_runs(qtbot):
         player.set_points(SQUARE)
         for _ in range(2000):  # garbage made while the worker allocates
             Probe(seen)
-    qtbot.waitUntil(lambda: len(seen) == 2000, timeout=10_000)
+    qtbot.waitUntil(lambda: len(seen) == 2000, timeout=WAIT_MS)
     assert set(seen) == {threading.main_thread()}
     player.stop_recording()
 

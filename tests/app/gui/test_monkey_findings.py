@@ -3,6 +3,7 @@ import pytest
 
 from algorithms.core import registry
 from app.model import scene as scenes
+from tests.support.gui import WAIT_MS
 
 
 pytestmark = pytest.mark.window(shown=False)
@@ -39,9 +40,9 @@ def test_a_switch_to_a_fill_on_a_grid_too_thin_for_any_outline_keeps_the_points(
     window.set_algorithm("polygon-tessellate")
     window.set_points([(5.5, 0.5)])
     window.set_grid(12, 1)
-    qtbot.waitUntil(lambda: not window.player.recording, timeout=5000)
+    qtbot.waitUntil(lambda: not window.player.recording, timeout=WAIT_MS)
     window.set_algorithm("flood-fill")
-    qtbot.waitUntil(lambda: not window.player.recording, timeout=5000)
+    qtbot.waitUntil(lambda: not window.player.recording, timeout=WAIT_MS)
     assert window.player.spec.name == "flood-fill"
     assert window.picker.current_name() == "flood-fill"
     assert window.player.points == [(5, 0)]  # the point, as the fill takes it
@@ -53,15 +54,15 @@ def test_complete_points_no_fill_can_run_on_are_kept_until_a_seed_is_given(windo
     window.set_algorithm("polygon-tessellate")
     window.set_points([(0.5, 0.5), (10.5, 0.5), (5.5, 1.5)])
     window.set_grid(12, 2)
-    qtbot.waitUntil(lambda: not window.player.recording, timeout=5000)
+    qtbot.waitUntil(lambda: not window.player.recording, timeout=WAIT_MS)
     assert window.player.grid == (12, 2) and window.player.trace is not None
-    qtbot.waitUntil(lambda: not window.player.recording, timeout=5000)
+    qtbot.waitUntil(lambda: not window.player.recording, timeout=WAIT_MS)
     window.set_algorithm("flood-fill")
-    qtbot.waitUntil(lambda: not window.player.recording, timeout=5000)
+    qtbot.waitUntil(lambda: not window.player.recording, timeout=WAIT_MS)
     assert window.player.spec.name == "flood-fill"
     assert window.player.points == [(0, 0), (10, 0), (5, 1)]
     assert "no free pixel" in window.message.text()
     # what the message says to do works: a seed outside the outline fills the rest
     window.set_option("seed", (11, 1))
-    qtbot.waitUntil(lambda: window.player.trace is not None, timeout=5000)
+    qtbot.waitUntil(lambda: window.player.trace is not None, timeout=WAIT_MS)
     assert window.player.options["seed"] == (11, 1)

@@ -8,7 +8,7 @@ from app.model.scene import load
 from app.render.compose import PALETTE
 from app.render.export import ExportSettings, FrameRenderer, auto_scale
 from tests.support import ROOT
-from tests.support.gui import settle, shown_window
+from tests.support.gui import WAIT_MS, settle, shown_window
 
 SCENE = ROOT / "resources" / "scenes" / "rendering" / "pipeline-near-crossing.json"
 
@@ -30,7 +30,7 @@ def test_window_and_export_draw_the_same_pipeline_outline(qtbot):
     window.resize(1500, 950)
     window.set_scene(scene.algorithm, scene.points, scene.options, (scene.width, scene.height))
     qtbot.waitUntil(lambda: window.player.trace is not None and not window.player.recording,
-                    timeout=10000)
+                    timeout=WAIT_MS)
     settle(qtbot, window)
     trace = window.player.trace
     scale = auto_scale(scene.width, scene.height)

@@ -5,15 +5,10 @@ import pytest
 from algorithms.core import registry
 from algorithms.core.registry import InputError
 from app.gui.player import Player
+from tests.support.gui import WAIT_MS
 
 P, Q = (4, 5), (28, 15)
-
-
-@pytest.fixture
-def player(qtbot):
-    p = Player()
-    p.set_scene("line-bresenham", [P, Q], grid=(32, 24))
-    return p
+pytestmark = pytest.mark.player("line-bresenham", [P, Q], grid=(32, 24))
 
 
 def expected_trace(name="line-bresenham", points=(P, Q), options=None, grid=(32, 24)):
@@ -121,10 +116,10 @@ def test_grid_changes_clamp_the_points(player):
 def test_play_runs_to_the_end_and_stops(qtbot, player):
     player.first()
     player.set_speed(400)
-    with qtbot.waitSignal(player.playingChanged, timeout=1000):
+    with qtbot.waitSignal(player.playingChanged, timeout=WAIT_MS):
         player.play()
     assert player.playing
-    qtbot.waitUntil(lambda: not player.playing, timeout=3000)
+    qtbot.waitUntil(lambda: not player.playing, timeout=WAIT_MS)
     assert player.index == player.last
 
 
@@ -136,7 +131,7 @@ def test_play_skips_frames_at_high_speed(qtbot):
     shown = []
     player.frameChanged.connect(shown.append)
     player.play()
-    qtbot.waitUntil(lambda: not player.playing, timeout=5000)
+    qtbot.waitUntil(lambda: not player.playing, timeout=WAIT_MS)
     assert player.index == player.last
     # About 60 frames a second: far fewer frames than steps.
     assert len(shown) < player.last / 3

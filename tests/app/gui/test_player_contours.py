@@ -10,13 +10,7 @@ from app.model.examples import default_scene
 
 OUTER = [(2.0, 2.0), (20.0, 2.0), (20.0, 16.0), (2.0, 16.0)]
 HOLE = [(6.0, 6.0), (12.0, 6.0), (9.0, 11.0)]
-
-
-@pytest.fixture
-def player(qtbot):
-    p = Player()
-    p.set_scene("polygon-scanline", [OUTER, HOLE])
-    return p
+pytestmark = pytest.mark.player("polygon-scanline", [OUTER, HOLE])
 
 
 def test_contours_are_flat_points_and_breaks(player):

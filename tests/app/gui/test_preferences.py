@@ -19,6 +19,7 @@ from app.gui import about, appdata, preferences
 from app.gui.preferences import Preferences, apply_theme, default_values
 from app.gui.window import GESTURES, MainWindow, ShortcutsDialog
 from tests.support import ROOT
+from tests.support.gui import WAIT_MS
 
 CTRL = Qt.KeyboardModifier.ControlModifier
 
@@ -45,7 +46,7 @@ def open_window(qtbot) -> MainWindow:
 def focus_grid(qtbot, window) -> None:
     # Window shortcuts need the window active: giving its grid the focus does it.
     window.grid.setFocus()
-    qtbot.waitUntil(window.grid.hasFocus, timeout=2000)
+    qtbot.waitUntil(window.grid.hasFocus, timeout=WAIT_MS)
 
 
 def press(window, key, modifier=Qt.KeyboardModifier.NoModifier) -> None:

@@ -10,6 +10,7 @@ from app.model import scene as scenes
 from app.gui.crash import CrashHandler
 from app.gui.recovery import PREFIX, content, pending_recoveries
 from app.gui.window import DEMO_POINTS
+from tests.support.gui import WAIT_MS
 
 BUTTONS = QMessageBox.StandardButton
 RESTORE, DISCARD, LATER = recovery_module.RESTORE, recovery_module.DISCARD, \
@@ -64,13 +65,13 @@ def test_title_and_dirty_flag(window):
 
 def test_a_change_made_without_a_signal_is_seen(window, qtbot):
     window.set_y_down(True)
-    qtbot.waitUntil(lambda: window.recovery.dirty, timeout=4000)
+    qtbot.waitUntil(lambda: window.recovery.dirty, timeout=WAIT_MS)
 
 
 def test_autosave_writes_a_loadable_file(window, qtbot):
     recovery = window.recovery
     window.set_points([(1, 2), (20, 9)])
-    qtbot.waitUntil(recovery.path.exists, timeout=2000)
+    qtbot.waitUntil(recovery.path.exists, timeout=WAIT_MS)
     loaded = scenes.load(recovery.path)
     assert (loaded.algorithm, loaded.points) == ("line-bresenham", ((1, 2), (20, 9)))
     assert (loaded.width, loaded.height) == (32, 24)
@@ -85,14 +86,14 @@ def test_the_slow_look_does_not_put_off_the_autosave(make_window, qtbot):
     # with nothing new it must not restart the delay.
     window = make_window(delay_ms=300, poll_ms=40)
     window.set_points([(1, 2), (20, 9)])
-    qtbot.waitUntil(window.recovery.path.exists, timeout=3000)
+    qtbot.waitUntil(window.recovery.path.exists, timeout=WAIT_MS)
     assert points_in(window.recovery.path) == ((1, 2), (20, 9))
 
 
 def test_a_clean_save_removes_the_recovery_file(window, qtbot, tmp_path):
     recovery = window.recovery
     window.set_points([(1, 2), (20, 9)])
-    qtbot.waitUntil(recovery.path.exists, timeout=2000)
+    qtbot.waitUntil(recovery.path.exists, timeout=WAIT_MS)
     assert window.file_actions.save_to(tmp_path / "mine.json")
     assert not recovery.path.exists() and not recovery.dirty
     assert window.windowTitle().startswith("mine.json[*]")
@@ -170,7 +171,7 @@ def test_cancel_keeps_the_window_open(window, qtbot, answers):
     recovery = window.recovery
     window.show()
     window.set_points([(1, 2), (20, 9)])
-    qtbot.waitUntil(recovery.path.exists, timeout=2000)
+    qtbot.waitUntil(recovery.path.exists, timeout=WAIT_MS)
     queue.append(BUTTONS.Cancel)
     assert not window.close()
     assert window.isVisible() and len(asked) == 1
@@ -302,7 +303,7 @@ def test_an_exception_in_a_slot_is_logged_and_shown_once(window, handler, shown,
     window.player.set_option = broken
     for value in (True, False, True):  # a burst: three failing slots
         window.options.valueEdited.emit("symmetric", value)
-    qtbot.waitUntil(lambda: len(shown) == 1, timeout=2000)
+    qtbot.waitUntil(lambda: len(shown) == 1, timeout=WAIT_MS)
     qtbot.wait(50)
     assert len(shown) == 1 and handler.count == 3
     assert "RuntimeError: the option store is broken" in shown[0]
@@ -323,7 +324,7 @@ def test_an_exception_in_a_thread_is_shown_in_the_window(window, handler, shown,
     thread = threading.Thread(target=work)
     thread.start()
     thread.join()
-    qtbot.waitUntil(lambda: len(shown) == 1, timeout=2000)
+    qtbot.waitUntil(lambda: len(shown) == 1, timeout=WAIT_MS)
     assert "ValueError: bad worker" in shown[0]
 
 

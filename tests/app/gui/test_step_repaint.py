@@ -6,6 +6,7 @@ import pytest
 from PySide6.QtCore import QEvent, QObject
 from PySide6.QtWidgets import QApplication, QDockWidget, QMainWindow
 
+from tests.support.gui import WAIT_MS
 from widgets.panels import CodePanel, VariablesPanel
 
 pytestmark = pytest.mark.window(shown=True)
@@ -22,22 +23,34 @@ class Paints(QObject):
         return False
 
 
-def painted_by_step(window, qtbot, index):
+def painted_while(qtbot, action):
+    """The widgets painted while ``action`` runs and 30 ms after."""
     app = QApplication.instance()
     paints = Paints()
     app.installEventFilter(paints)
     try:
-        window.player.seek(index)
+        action()
         qtbot.wait(30)
     finally:
         app.removeEventFilter(paints)
     return paints.painted
 
 
+def painted_by_step(window, qtbot, index):
+    return painted_while(qtbot, lambda: window.player.seek(index))
+
+
+def wait_until_still(qtbot):
+    """Wait until the window paints nothing of its own accord: the first
+    show's layout and paints (or the docks' relayout after a new look) are
+    over, however long a busy machine takes for them."""
+    qtbot.waitUntil(lambda: not painted_while(qtbot, lambda: None), timeout=WAIT_MS)
+
+
 def test_a_step_repaints_what_it_changes_and_nothing_behind(window, qtbot):
     window.player.pause()
     window.player.seek(3)
-    qtbot.wait(30)
+    wait_until_still(qtbot)
     painted = painted_by_step(window, qtbot, 4)
     names = {widget.objectName() for widget in painted}
     # What the step changed was repainted ...
@@ -55,6 +68,6 @@ def test_nothing_behind_after_a_change_of_theme(window, qtbot, theme, name):
     theme(name)
     window.player.pause()
     window.player.seek(3)
-    qtbot.wait(500)  # the docks' animated relayout after the new look ends
+    wait_until_still(qtbot)
     painted = painted_by_step(window, qtbot, 4)
     assert not [w for w in painted if isinstance(w, (QMainWindow, QDockWidget))]

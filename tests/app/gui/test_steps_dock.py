@@ -8,6 +8,8 @@ from PySide6.QtCore import Qt
 from PySide6.QtGui import QGuiApplication
 from PySide6.QtTest import QTest
 
+from tests.support.gui import WAIT_MS
+
 P, Q = (1, 2), (17, 8)
 pytestmark = pytest.mark.window("line-bresenham-textbook", [P, Q], grid=(20, 12), settled=True)
 
@@ -44,7 +46,7 @@ def test_clicking_a_row_goes_to_its_step(window, qtbot):
     window.player.seek(0)
     rect = view.view.visualRect(view.model.index(3, 0))
     QTest.mouseClick(view.view.viewport(), Qt.MouseButton.LeftButton, pos=rect.center())
-    qtbot.waitUntil(lambda: window.player.index == 3, timeout=2000)
+    qtbot.waitUntil(lambda: window.player.index == 3, timeout=WAIT_MS)
     assert view.model.current == 3
 
 
@@ -91,7 +93,7 @@ def test_the_table_follows_a_new_run(window, qtbot):
     window.set_scene("line-supercover", [(1.5, 1.25), (9.75, 6.5)], {}, (20, 12))
     qtbot.waitUntil(lambda: window.player.trace is not None
                     and view.model.table is not None and view.model.table is not before,
-                    timeout=3000)
+                    timeout=WAIT_MS)
     assert view.model.table.trace is window.player.trace
     titles = [column.title for column in view.model.table.columns]
     assert "y_lo" in titles and "d" not in titles

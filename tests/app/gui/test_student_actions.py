@@ -11,47 +11,25 @@ from PySide6.QtTest import QTest
 from algorithms.core import registry
 from algorithms.core.steps import Note
 from tests.support import ROOT
+from tests.support.bresenham import bresenham_pixels
+from tests.support.gui import WAIT_MS
 
 SAMPLES = ROOT / "resources" / "students"
 LINE = ((2, 3), (9, 6))
-pytestmark = pytest.mark.window("line-bresenham", LINE, grid=(16, 12), settled=True)
-
-
-@pytest.fixture(autouse=True)
-def forget_student_algorithms():
-    """The registry is the process's: a student's algorithm leaves with its test."""
-    yield
-    for spec in registry.all_specs():
-        if spec.name.startswith("student-"):
-            registry.unregister(spec.name)
-
-
-def textbook(p, q):
-    """Bresenham's pixels for a shallow rising line, from its recurrence."""
-    (x0, y0), (x1, y1) = p, q
-    dx, dy = x1 - x0, y1 - y0
-    d, x, y, pixels = 2 * dy - dx, x0, y0, [(x0, y0)]
-    while x < x1:
-        if d <= 0:
-            d += 2 * dy
-        else:
-            d += 2 * (dy - dx)
-            y += 1
-        x += 1
-        pixels.append((x, y))
-    return pixels
+pytestmark = [pytest.mark.window("line-bresenham", LINE, grid=(16, 12), settled=True),
+              pytest.mark.usefixtures("forget_student_algorithms")]
 
 
 def test_a_student_file_runs_as_an_algorithm_and_d_finds_its_divergence(window, qtbot):
     name = window.student_actions.open(str(SAMPLES / "truncates.py"), "line-bresenham")
     assert name == "student-truncates" and window.player.spec.name == name
     assert window.picker.current_name() == name
-    qtbot.waitUntil(lambda: window.player.trace is not None, timeout=5000)
+    qtbot.waitUntil(lambda: window.player.trace is not None, timeout=WAIT_MS)
     (x0, y0), (x1, y1) = LINE
     cut = [(x, int(y0 + Fraction(x - x0, x1 - x0) * (y1 - y0))) for x in range(x0, x1 + 1)]
     trace = window.player.trace
     assert [tuple(p) for p in trace.written_pixels().tolist()] == cut
-    first = next(n for n, (a, b) in enumerate(zip(textbook(*LINE), cut)) if a != b)
+    first = next(n for n, (a, b) in enumerate(zip(bresenham_pixels(*LINE), cut)) if a != b)
     window.player.first()
     QTest.keyClick(window, Qt.Key.Key_D)
     assert window.player.index == trace.written().steps.tolist()[first]
@@ -60,13 +38,13 @@ def test_a_student_file_runs_as_an_algorithm_and_d_finds_its_divergence(window, 
 
 def test_the_correct_file_agrees_and_an_error_becomes_a_note(window, qtbot):
     window.student_actions.open(str(SAMPLES / "bresenham_correct.py"), "line-bresenham")
-    qtbot.waitUntil(lambda: window.player.trace is not None, timeout=5000)
+    qtbot.waitUntil(lambda: window.player.trace is not None, timeout=WAIT_MS)
     assert window.student_actions.first_divergence() is None
     assert "Same pixels" in window.statusBar().currentMessage()
     window.student_actions.open(str(SAMPLES / "raises.py"), "line-bresenham")
     window.player.set_points([(4, 2), (4, 9)])  # vertical: the file divides by zero
     qtbot.waitUntil(lambda: window.player.trace is not None and len(window.player.trace) == 2,
-                    timeout=5000)
+                    timeout=WAIT_MS)
     notes = window.player.trace.records_of(Note)
     assert notes and "ZeroDivisionError" in notes[0][1].text
 
@@ -86,10 +64,10 @@ def test_export_worksheet_from_the_window(window, tmp_path):
 
 def test_the_compare_view_puts_the_file_beside_its_reference(window, qtbot):
     name = window.student_actions.open(str(SAMPLES / "off_by_one.py"), "line-bresenham")
-    qtbot.waitUntil(lambda: window.player.trace is not None, timeout=5000)
+    qtbot.waitUntil(lambda: window.player.trace is not None, timeout=WAIT_MS)
     compare = window.compare_entry.open()
     assert [pane.algorithm for pane in compare.panes] == [name, "line-bresenham"]
-    qtbot.waitUntil(lambda: compare.current_diff is not None, timeout=5000)
+    qtbot.waitUntil(lambda: compare.current_diff is not None, timeout=WAIT_MS)
     compare.seek(compare.last, pause=True)
     # At the end, the reference's last pixel, Q, is the one cell only it has.
     assert len(compare.current_diff.cells()) == 1 and compare.next_difference() == LINE[1]

@@ -10,23 +10,17 @@ from PySide6.QtTest import QTest
 
 from algorithms.core import registry
 from tests.support import ROOT
+from tests.support.gui import WAIT_MS
 
 SAMPLES = ROOT / "resources" / "students"
 OUTLINE = (((1, 1), (13, 3), (5, 10)),)
-
-
-@pytest.fixture(autouse=True)
-def forget_student_algorithms():
-    yield
-    for spec in registry.all_specs():
-        if spec.name.startswith("student-"):
-            registry.unregister(spec.name)
+pytestmark = pytest.mark.usefixtures("forget_student_algorithms")
 
 
 def run_file(window, qtbot, sample, against):
     name = window.student_actions.open(str(SAMPLES / sample), against)
     assert window.player.spec.name == name == window.picker.current_name()
-    qtbot.waitUntil(lambda: window.player.trace is not None, timeout=5000)
+    qtbot.waitUntil(lambda: window.player.trace is not None, timeout=WAIT_MS)
     return window.player.trace
 
 

@@ -10,7 +10,7 @@ from PySide6.QtWidgets import QApplication
 from algorithms.core import registry
 from app.model.history import MERGE_SECONDS
 from app.gui.window import MainWindow
-from tests.support.gui import drag, settle
+from tests.support.gui import WAIT_MS, drag, settle
 
 LEFT = Qt.MouseButton.LeftButton
 NONE = Qt.KeyboardModifier.NoModifier
@@ -262,13 +262,13 @@ def test_ctrl_z_in_a_text_field_is_the_fields_own_undo(make, qtbot):
     points = list(w.player.points)
     field = w.options.editor("z")
     field.setFocus()
-    qtbot.waitUntil(lambda: QApplication.focusWidget() is field, timeout=1000)
+    qtbot.waitUntil(lambda: QApplication.focusWidget() is field, timeout=WAIT_MS)
     QTest.keyClicks(field, "1,2,3")
     QTest.keyClick(field, Qt.Key.Key_Z, CTRL)
     assert w.player.points == points  # the scene did not go back
     assert field.text() == ""  # the field took back its typing
     w.grid.setFocus()
-    qtbot.waitUntil(lambda: QApplication.focusWidget() is w.grid, timeout=1000)
+    qtbot.waitUntil(lambda: QApplication.focusWidget() is w.grid, timeout=WAIT_MS)
     QTest.keyClick(w.grid, Qt.Key.Key_Z, CTRL)
     assert w.player.points != points
     QTest.keyClick(w.grid, Qt.Key.Key_Z, CTRL | Qt.KeyboardModifier.ShiftModifier)
@@ -302,7 +302,7 @@ def test_ctrl_z_in_a_spin_box_stays_in_the_box(make, qtbot):
     points = list(w.player.points)
     box = w.options.editor("radius")
     box.setFocus()
-    qtbot.waitUntil(lambda: QApplication.focusWidget() is box, timeout=1000)
+    qtbot.waitUntil(lambda: QApplication.focusWidget() is box, timeout=WAIT_MS)
     box.lineEdit().selectAll()
     QTest.keyClicks(box, "7")
     QTest.keyClick(box, Qt.Key.Key_Z, CTRL)

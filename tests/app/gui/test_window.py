@@ -10,6 +10,7 @@ from algorithms.core.registry import format_value
 from app.model import notation
 from app.gui.window import DEMO_POINTS, MainWindow
 from tests.support import record
+from tests.support.gui import WAIT_MS
 
 LEFT = Qt.MouseButton.LeftButton
 NONE = Qt.KeyboardModifier.NoModifier
@@ -170,14 +171,14 @@ def test_play_and_pause(window, qtbot):
     window.player.first()
     window.transport.play_button.click()
     assert window.player.playing
-    qtbot.waitUntil(lambda: window.player.index > 3, timeout=2000)
+    qtbot.waitUntil(lambda: window.player.index > 3, timeout=WAIT_MS)
     window.transport.play_button.click()
     assert not window.player.playing
     stopped = window.player.index
     qtbot.wait(50)
     assert window.player.index == stopped
     window.transport.play_button.click()
-    qtbot.waitUntil(lambda: not window.player.playing, timeout=3000)
+    qtbot.waitUntil(lambda: not window.player.playing, timeout=WAIT_MS)
     assert window.player.index == window.player.last
 
 
@@ -186,7 +187,7 @@ def test_keyboard_shortcuts_wherever_the_focus_is(window, qtbot):
     for widget in (window.grid, window.picker, window.options.editor("symmetric"),
                    window.grid_editor.origin):
         widget.setFocus()
-        qtbot.waitUntil(lambda: widget.hasFocus(), timeout=1000)
+        qtbot.waitUntil(lambda: widget.hasFocus(), timeout=WAIT_MS)
         press(window, Qt.Key.Key_Home, widget=widget)
         assert player.index == 0, widget
         press(window, Qt.Key.Key_Right, widget=widget)
@@ -206,7 +207,7 @@ def test_keyboard_shortcuts_wherever_the_focus_is(window, qtbot):
     # The spin boxes of the grid size keep their keys for typing.
     box = window.grid_editor.width_box
     box.setFocus()
-    qtbot.waitUntil(box.hasFocus, timeout=1000)
+    qtbot.waitUntil(box.hasFocus, timeout=WAIT_MS)
     player.seek(5)
     press(window, Qt.Key.Key_Home, widget=box)
     press(window, Qt.Key.Key_Right, widget=box)
@@ -252,7 +253,7 @@ def test_panels_show_the_current_frame(window):
 
 def test_status_bar_shows_the_pixel_under_the_cursor(window, qtbot):
     QTest.mouseMove(window.grid.viewport(), window.grid.widget_pos_of((4.5, 5.5)))
-    qtbot.waitUntil(lambda: window.cursor_label.text().startswith("pixel (4, 5)"), timeout=1000)
+    qtbot.waitUntil(lambda: window.cursor_label.text().startswith("pixel (4, 5)"), timeout=WAIT_MS)
     assert "written" in window.cursor_label.text()
 
 
@@ -261,7 +262,7 @@ def test_status_bar_shows_the_real_coordinates_under_the_cursor(window, qtbot, y
     window.set_y_down(y_down)
     qtbot.wait(50)
     QTest.mouseMove(window.grid.viewport(), window.grid.widget_pos_of((6.25, 3.75)))
-    qtbot.waitUntil(lambda: "at (" in window.cursor_label.text(), timeout=1000)
+    qtbot.waitUntil(lambda: "at (" in window.cursor_label.text(), timeout=WAIT_MS)
     text = window.cursor_label.text()
     x, y = (float(v) for v in text.split("at (")[1].rstrip(")").split(", "))
     # Within a screen pixel of where the pointer is, in the frame of the axes.

@@ -24,7 +24,7 @@ from PySide6.QtCore import QRectF
 from app.model.scene import load
 from tests.support import ROOT
 from app.render.export import ExportSettings, FrameRenderer, auto_scale
-from tests.support.gui import settle, shown_window
+from tests.support.gui import WAIT_MS, settle, shown_window
 
 SCENES = ROOT / "resources" / "scenes"
 AGREEING = ["demo-bresenham", "circle-radius-2", "polygon-star-evenodd", "triangle-mesh-1e6",
@@ -38,7 +38,7 @@ def show_in_window(qtbot, scene):
     window.set_y_down(scene.origin == "top-left")
     window.show_primitive.setChecked(False)
     qtbot.waitUntil(lambda: window.player.trace is not None and not window.player.recording,
-                    timeout=10000)
+                    timeout=WAIT_MS)
     settle(qtbot, window)  # the new size has reached the grid
     grid = window.grid
     for item in grid.view_box.addedItems:

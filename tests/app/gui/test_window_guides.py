@@ -6,6 +6,7 @@ from app.model.scene import load
 from app.render.export import ExportSettings, FrameRenderer
 from app.render.reasoning import step_guides
 from tests.support import ROOT
+from tests.support.gui import WAIT_MS
 
 pytestmark = pytest.mark.window(shown=False)
 
@@ -14,7 +15,7 @@ def _show(qtbot, window, name):
     scene = load(ROOT / "resources" / "scenes" / f"{name}.json")
     window.set_scene(scene.algorithm, scene.points, scene.options, (scene.width, scene.height))
     qtbot.waitUntil(lambda: window.player.trace is not None and not window.player.recording,
-                    timeout=10000)
+                    timeout=WAIT_MS)
     return scene
 
 
@@ -23,7 +24,7 @@ def test_scan_line_guides_follow_the_step_in_both_origins(qtbot, window, y_down)
     scene = _show(qtbot, window, "polygon-star-evenodd")
     window.set_y_down(y_down)
     qtbot.waitUntil(lambda: window.player.trace is not None and not window.player.recording,
-                    timeout=10000)
+                    timeout=WAIT_MS)
     trace = window.player.trace
     span_step = int(trace.steps_of(Span)[5])
     window.player.seek(span_step)
@@ -56,7 +57,7 @@ def test_the_left_out_note_leaves_the_status_line_once_the_scan_lines_start(qtbo
     # built, and not at every step after it.
     window.set_scene("polygon-scanline", [[(2, 2), (10, 2), (10, 8), (2, 8)]], None, (16, 12))
     qtbot.waitUntil(lambda: window.player.trace is not None and not window.player.recording,
-                    timeout=10000)
+                    timeout=WAIT_MS)
     trace = window.player.trace
     note = int(trace.steps_of(Note)[0])
     window.player.seek(note)
@@ -79,7 +80,7 @@ def test_the_label_at_m_follows_the_origin(qtbot, window):
     (before,) = window.guides.item.label_texts()
     window.set_y_down(True)
     qtbot.waitUntil(lambda: window.player.trace is not None and not window.player.recording,
-                    timeout=10000)
+                    timeout=WAIT_MS)
     window.player.seek(step)
     qtbot.wait(10)
     (after,) = window.guides.item.label_texts()

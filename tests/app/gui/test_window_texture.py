@@ -9,6 +9,7 @@ import pytest
 
 from algorithms.core.steps import PLOT
 from app.render.texture_frame import LEVEL_COLOURS
+from tests.support.gui import WAIT_MS
 
 FLOOR = [(0, 0), (24, 0), (13.2, 15), (0, 0), (13.2, 15), (10.8, 15)]
 OPTIONS = {"uv": (0, 0, 2, 0, 2, 9, 0, 0, 2, 9, 0, 9), "w": (1, 1, 10, 1, 10, 10),
@@ -21,7 +22,7 @@ def _last_plot(trace):
 
 @pytest.mark.window("triangle-texture", FLOOR, OPTIONS, (24, 16))
 def test_texture_panel_shows_the_footprint_and_levels(window, qtbot):
-    qtbot.waitUntil(lambda: window.player.trace is not None, timeout=10_000)
+    qtbot.waitUntil(lambda: window.player.trace is not None, timeout=WAIT_MS)
     trace = window.player.trace
     index = _last_plot(trace)
     window.player.seek(index)
@@ -38,17 +39,17 @@ def test_texture_panel_shows_the_footprint_and_levels(window, qtbot):
     x, y = step.pixel
     assert tuple(image[y, x, :3]) == tuple(LEVEL_COLOURS[level])
     window.set_scene("triangle-bbox", FLOOR[:3], {}, grid=(24, 16))
-    qtbot.waitUntil(lambda: not window.texture_dock.isVisible(), timeout=10_000)
+    qtbot.waitUntil(lambda: not window.texture_dock.isVisible(), timeout=WAIT_MS)
 
 
 @pytest.mark.window("triangle-texture", FLOOR[:3], {}, (24, 16))
 def test_an_unreadable_texture_is_a_message(window, qtbot, tmp_path):
-    qtbot.waitUntil(lambda: window.player.trace is not None, timeout=10_000)
+    qtbot.waitUntil(lambda: window.player.trace is not None, timeout=WAIT_MS)
     fake = tmp_path / "fake.png"
     fake.write_text("no picture")
     for name, words in (("/no/such/texture.png", "cannot read"), (str(fake), "not an image")):
         window.open_texture(name)
-        qtbot.waitUntil(lambda: words in window._error, timeout=10_000)
+        qtbot.waitUntil(lambda: words in window._error, timeout=WAIT_MS)
         assert window.player.options["texture"] == "checker:8"
 
 
@@ -56,28 +57,28 @@ def test_an_unreadable_texture_is_a_message(window, qtbot, tmp_path):
 def test_a_png_opened_in_the_window_is_the_texture(window, qtbot):
     from pathlib import Path
     bricks = str(Path(__file__).resolve().parents[3] / "resources" / "textures" / "bricks.png")
-    qtbot.waitUntil(lambda: window.player.trace is not None, timeout=10_000)
+    qtbot.waitUntil(lambda: window.player.trace is not None, timeout=WAIT_MS)
     window.open_texture(bricks)
-    qtbot.waitUntil(lambda: window.player.options["texture"] == bricks, timeout=10_000)
+    qtbot.waitUntil(lambda: window.player.options["texture"] == bricks, timeout=WAIT_MS)
     qtbot.waitUntil(lambda: window.player.trace is not None
                     and window.player.trace.final_variables().get("texture") == "bricks.png",
-                    timeout=10_000)
+                    timeout=WAIT_MS)
     assert window.texture_view.open_button.isVisibleTo(window)
 
 
 @pytest.mark.window("pipeline", [(3, 3), (28, 4), (15, 20)], {}, (32, 24))
 def test_the_pipeline_shows_the_scene_from_outside(window, qtbot):
     qtbot.waitUntil(lambda: window.outside_dock is not None and window.outside_dock.isVisible(),
-                    timeout=10_000)
+                    timeout=WAIT_MS)
     assert "Camera at (16.0, 12.0, 40.0)" in window.outside_view.caption.text()
     window.set_option("near", 0.0)
-    qtbot.waitUntil(lambda: "near" in window._error, timeout=10_000)
+    qtbot.waitUntil(lambda: "near" in window._error, timeout=WAIT_MS)
 
 
 @pytest.mark.window("pipeline", [(3, 3), (28, 4), (15, 20)], {}, (32, 24))
 def test_the_issues_bad_input_is_a_message_in_the_window(window, qtbot, tmp_path):
     """Each bad input of the rendering family is one message; the window keeps going."""
-    qtbot.waitUntil(lambda: window.player.trace is not None, timeout=10_000)
+    qtbot.waitUntil(lambda: window.player.trace is not None, timeout=WAIT_MS)
     fake = tmp_path / "fake.png"
     fake.write_text("no picture")
     cases = [("uv", (0.0, 0.0, 1.0), "option uv"), ("fov", 0.0, "fov"),
@@ -87,14 +88,14 @@ def test_the_issues_bad_input_is_a_message_in_the_window(window, qtbot, tmp_path
     for name, value, words in cases:
         before = dict(window.player.options)
         window.set_option(name, value)
-        qtbot.waitUntil(lambda: words in (window._error or ""), timeout=10_000)
+        qtbot.waitUntil(lambda: words in (window._error or ""), timeout=WAIT_MS)
         assert "\n" not in window._error.strip()
         window.set_scene("pipeline", [(3, 3), (28, 4), (15, 20)], before, grid=(32, 24))
         qtbot.waitUntil(lambda: window.player.trace is not None and not window._error,
-                        timeout=10_000)
+                        timeout=WAIT_MS)
     # A vertex behind the eye without clipping: refused with the way out.
     window.set_option("z", (50.0, 0.0, 0.0))
-    qtbot.waitUntil(lambda: window.player.options["z"] == (50.0, 0.0, 0.0), timeout=10_000)
+    qtbot.waitUntil(lambda: window.player.options["z"] == (50.0, 0.0, 0.0), timeout=WAIT_MS)
     window.set_option("clipping", "none")
-    qtbot.waitUntil(lambda: "w <= 0" in (window._error or ""), timeout=10_000)
+    qtbot.waitUntil(lambda: "w <= 0" in (window._error or ""), timeout=WAIT_MS)
     assert window.player.options["clipping"] == "all" and window.player.trace is not None

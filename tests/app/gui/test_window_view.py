@@ -7,6 +7,7 @@ from PySide6.QtWidgets import QApplication
 
 from app.gui.window import MainWindow
 from app.gui.window_view import MIN_SIZE
+from tests.support.gui import WAIT_MS
 
 pytestmark = pytest.mark.window(shown=True)
 
@@ -27,7 +28,7 @@ def test_presentation_hides_the_docks_and_esc_restores_them(window, qtbot):
     assert len(docks) == 2
     code_size = point_size(window.code.lines)
     QTest.keyClick(window.grid, Qt.Key.Key_F11)
-    qtbot.waitUntil(window.isFullScreen, timeout=2000)
+    qtbot.waitUntil(window.isFullScreen, timeout=WAIT_MS)
     assert window.view.presenting
     for hidden in (*docks, window.toolbar, window.menuBar(), window.statusBar()):
         assert not hidden.isVisible(), hidden
@@ -35,7 +36,7 @@ def test_presentation_hides_the_docks_and_esc_restores_them(window, qtbot):
     assert inside(window, window.transport)
     assert point_size(window.code.lines) >= 1.5 * code_size  # large type beside the grid
     QTest.keyClick(window.grid, Qt.Key.Key_Escape)
-    qtbot.waitUntil(lambda: not window.isFullScreen(), timeout=2000)
+    qtbot.waitUntil(lambda: not window.isFullScreen(), timeout=WAIT_MS)
     assert not window.view.presenting
     for shown in (*docks, window.toolbar, window.menuBar(), window.statusBar()):
         assert shown.isVisible(), shown
@@ -46,15 +47,15 @@ def test_f11_and_the_view_menu_toggle_presentation(window, qtbot):
     action = window.actions_["present"]
     assert action in window.menus["view"].actions()
     action.trigger()
-    qtbot.waitUntil(window.isFullScreen, timeout=2000)
+    qtbot.waitUntil(window.isFullScreen, timeout=WAIT_MS)
     QTest.keyClick(window.grid, Qt.Key.Key_F11)
-    qtbot.waitUntil(lambda: not window.isFullScreen(), timeout=2000)
+    qtbot.waitUntil(lambda: not window.isFullScreen(), timeout=WAIT_MS)
     assert window.scene_dock.isVisible()
 
 
 def test_a_1280_by_720_window_shows_the_transport_and_its_parts_apart(window, qtbot):
     window.resize(1280, 720)
-    qtbot.waitUntil(lambda: window.height() <= 720, timeout=2000)
+    qtbot.waitUntil(lambda: window.height() <= 720, timeout=WAIT_MS)
     t = window.transport
     assert inside(window, t) and inside(window, t.play_button) and inside(window, t.speed_box)
     counter = t.counter.geometry()
@@ -80,7 +81,7 @@ def test_the_pseudo_code_column_gets_its_width_back(window, qtbot):
     window.resize(MIN_SIZE[0], 720)
     qtbot.wait(20)
     window.resize(1280, 720)
-    qtbot.waitUntil(lambda: window.code_dock.width() >= min(wide, 1280 // 3) - 10, timeout=2000)
+    qtbot.waitUntil(lambda: window.code_dock.width() >= min(wide, 1280 // 3) - 10, timeout=WAIT_MS)
 
 
 def test_zoom_keys_scale_the_whole_window_and_are_remembered(window, qtbot, tmp_path):
@@ -198,7 +199,7 @@ def test_the_marked_code_line_takes_the_presentation_type_too(window, qtbot):
         return window.code.lines.item(row, 1).font().pointSizeF()
     before = marked_size()
     QTest.keyClick(window.grid, Qt.Key.Key_F11)
-    qtbot.waitUntil(lambda: window.view.presenting, timeout=2000)
+    qtbot.waitUntil(lambda: window.view.presenting, timeout=WAIT_MS)
     assert marked_size() == point_size(window.code.lines) >= 1.5 * before
     # A line marked before is plain again: no font of its own, so it is
     # drawn in the table's (presentation) font like the rest.
@@ -206,7 +207,7 @@ def test_the_marked_code_line_takes_the_presentation_type_too(window, qtbot):
     qtbot.wait(10)
     assert window.code.lines.item(row, 1).data(Qt.ItemDataRole.FontRole) is None
     QTest.keyClick(window.grid, Qt.Key.Key_Escape)
-    qtbot.waitUntil(lambda: not window.view.presenting, timeout=2000)
+    qtbot.waitUntil(lambda: not window.view.presenting, timeout=WAIT_MS)
     lines = window.code.lines
     marked = window.code.current
     assert lines.item(marked, 1).font().pointSizeF() == point_size(lines) == before
@@ -222,9 +223,9 @@ def test_the_words_on_the_grid_grow_when_presenting(window, qtbot):
     qtbot.wait(10)
     (before,) = window.guides.item.label_sizes()
     QTest.keyClick(window.grid, Qt.Key.Key_F11)
-    qtbot.waitUntil(lambda: window.view.presenting, timeout=2000)
+    qtbot.waitUntil(lambda: window.view.presenting, timeout=WAIT_MS)
     (presenting,) = window.guides.item.label_sizes()
     assert presenting >= 1.3 * before
     QTest.keyClick(window.grid, Qt.Key.Key_Escape)
-    qtbot.waitUntil(lambda: not window.view.presenting, timeout=2000)
+    qtbot.waitUntil(lambda: not window.view.presenting, timeout=WAIT_MS)
     assert window.guides.item.label_sizes() == [before]

@@ -12,8 +12,9 @@ from app.render import compose as render
 from app.model.compare import EXACT, FRAME, PROGRESS, Pane
 from app.model.scene import Scene
 from tests.support import ROOT
-from tests.support.compare_oracles import (FLOAT32_BITS, FLOAT64_BITS, bresenham_pixels,
-                                           dda_pixels, diff_counts, round_to_float)
+from tests.support.bresenham import bresenham_pixels
+from tests.support.compare_oracles import (FLOAT32_BITS, FLOAT64_BITS, dda_pixels, diff_counts,
+                                           round_to_float)
 
 DEMO = ((4, 5), (28, 15))
 LONG = ((0, 0), (4095, 192))

@@ -31,7 +31,7 @@ STEP_CAP = 2000
 
 def fuzz_settings(examples: int):
     # Derandomized: the same examples every run, so a failure reproduces.
-    return settings(max_examples=examples, deadline=None, derandomize=True, database=None,
+    return settings(max_examples=examples, derandomize=True, database=None,
                     suppress_health_check=list(HealthCheck))
 
 

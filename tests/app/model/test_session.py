@@ -13,6 +13,7 @@ from app.model.scene import Scene
 from app.model.session import CANCELLED_MESSAGE, Session
 
 from tests.support import ROOT
+from tests.support.bresenham import bresenham_pixels
 P, Q = (1, 1), (12, 5)
 
 
@@ -215,19 +216,6 @@ def test_a_run_over_the_memory_budget_is_refused_and_changes_nothing(session):
     assert session.points == [P, (15, 7)]
 
 
-def _bresenham(p, q):
-    """The textbook integer Bresenham line for a gentle slope, as the oracle."""
-    (x0, y0), (x1, y1) = p, q
-    dx, dy = x1 - x0, y1 - y0
-    d, y, out = 2 * dy - dx, y0, set()
-    for x in range(x0, x1 + 1):
-        out.add((x, y))
-        if d > 0:
-            y, d = y + 1, d - 2 * dx
-        d += 2 * dy
-    return out
-
-
 @pytest.mark.parametrize("algorithm, points", [
     ("line-bresenham", [P, Q]),
     ("polygon-scanline", [(1, 1), (13, 2), (7, 7)]),
@@ -254,7 +242,7 @@ def test_stepping_on_replays_onto_the_raster_on_show_and_matches_a_fresh_replay(
     assert session.state().raster is not raster or last < 4  # a step back starts afresh
     if algorithm == "line-bresenham":
         written = {(x, y) for y, x in zip(*state.raster.counts.nonzero())}
-        assert written == _bresenham(P, Q)
+        assert written == set(bresenham_pixels(P, Q))
 
 
 def test_a_step_forward_writes_into_the_raster_already_on_show(session):

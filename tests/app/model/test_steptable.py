@@ -9,29 +9,15 @@ from algorithms.core.steps import Table
 from app.model import steptable
 from app.model.steptable import StepTable, aligned_text, cell_to_json, write_csv
 from tests.support import record
-
-
-def bresenham_first_octant(x0, y0, x1, y1):
-    """(x, y, d used to decide) per plotted pixel after the first, in integers."""
-    dx, dy = x1 - x0, y1 - y0
-    d, x, y, out = 2 * dy - dx, x0, y0, []
-    while x < x1:
-        used = d
-        if d <= 0:
-            d += 2 * dy
-        else:
-            d += 2 * (dy - dx)
-            y += 1
-        x += 1
-        out.append((x, y, used))
-    return out
+from tests.support.bresenham import bresenham_run
 
 
 @pytest.mark.parametrize("end", [(9, 4), (13, 13), (20, 1), (17, 5)])
 def test_bresenham_rows_carry_the_exact_decision_variable(end):
     table = StepTable(record("line-bresenham", [(1, 1), end]))
     rows = [row for row in table.rows() if row["choice"] in ("E", "NE")]
-    expected = bresenham_first_octant(1, 1, *end)
+    pixels, decisions = bresenham_run((1, 1), end)
+    expected = [(x, y, d) for (x, y), d in zip(pixels[1:], decisions)]
     assert [(r["pixel"][0], r["pixel"][1], r["d"]) for r in rows] == expected
     assert [r["choice"] for r in rows] == ["E" if d <= 0 else "NE" for _, _, d in expected]
 

@@ -21,26 +21,10 @@ from app.render.frame import FrameMarks, compose_frame, frame_marks, primitive_m
 from app.render.compose import PALETTE, Overlay, compose
 from app.model.scene import Scene, load, save
 from tests.support import ROOT
+from tests.support.bresenham import bresenham_pixels
 
 P, Q = (1, 1), (12, 6)
 GRID = (14, 8)
-
-
-def bresenham(p, q):
-    """Textbook Bresenham for 0 <= dy <= dx (the oracle)."""
-    (x, y), (x1, y1) = p, q
-    dx, dy = x1 - x, y1 - y
-    d = 2 * dy - dx
-    pixels = [(x, y)]
-    while x < x1:
-        if d <= 0:
-            d += 2 * dy
-        else:
-            d += 2 * (dy - dx)
-            y += 1
-        x += 1
-        pixels.append((x, y))
-    return pixels
 
 
 def rgb(color):
@@ -121,7 +105,7 @@ def test_gif_frames_sizes_durations_and_pixels(tmp_path):
     # 1000 / 5 = 200 ms a frame; the last one held 1.5 s longer.
     assert [info["duration"] for info in infos] == [200] * (steps - 1) + [1700]
     assert infos[0]["loop"] == 0
-    line = set(bresenham(P, Q))
+    line = set(bresenham_pixels(P, Q))
     ink, background = rgb(PALETTE.ink), rgb(PALETTE.background)
     # Step 0 is the set-up: nothing written yet.
     for x in range(GRID[0]):
@@ -264,7 +248,7 @@ def test_png_frames_beside_the_gif(tmp_path):
     last = np.asarray(Image.open(folder / names[-1]).convert("RGB"))
     assert last.shape[:2] == result.size[::-1]
     # Origin top-left: row 0 of the grid is at the top of the picture.
-    for x, y in bresenham(P, Q):
+    for x, y in bresenham_pixels(P, Q):
         assert cell(last, x, y, 6, GRID[1], y_down=True) == rgb(PALETTE.ink)
     assert cell(last, 0, 7, 6, GRID[1], y_down=True) == rgb(PALETTE.background)
     # The GIF's frames are the same pictures.

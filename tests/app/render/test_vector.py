@@ -10,21 +10,11 @@ from app.model.scene import Scene, save
 from app.render import export as ex
 from app.render.vector import CELL, PdfWriter, SvgFolderWriter
 from tests.support import record
+from tests.support.bresenham import bresenham_pixels
 
 SVG = "{http://www.w3.org/2000/svg}"
 P, Q = (1, 1), (12, 6)
 SCENE = Scene(algorithm="line-bresenham", points=(P, Q), width=14, height=8)
-
-
-def bresenham(p, q):
-    (x, y), (x1, y1) = p, q
-    dx, dy, out = x1 - x, y1 - y, [(x, y)]
-    d = 2 * dy - dx
-    while x < x1:
-        d, y = (d + 2 * dy, y) if d <= 0 else (d + 2 * (dy - dx), y + 1)
-        x += 1
-        out.append((x, y))
-    return out
 
 
 def filled_cells(svg_root, background) -> set:
@@ -48,7 +38,7 @@ def test_each_svg_frame_shows_the_cells_written_so_far_and_its_caption(tmp_path)
     result = ex.export(SCENE, settings, writers=[SvgFolderWriter(tmp_path / "svg")])
     names = sorted(p.name for p in (tmp_path / "svg").glob("*.svg"))
     assert len(names) == result.frames == len(record("line-bresenham", [P, Q], grid=(14, 8)))
-    expected = bresenham(P, Q)
+    expected = bresenham_pixels(P, Q)
     background = ex.LIGHT.palette.background
     for k in (0, 5, result.frames - 1):
         root = ET.parse(tmp_path / "svg" / names[k]).getroot()

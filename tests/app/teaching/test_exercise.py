@@ -10,6 +10,7 @@ import pytest
 
 from app.teaching.exercise import Exercise
 from tests.support import record
+from tests.support.bresenham import bresenham_run
 
 LINE = ((2, 3), (17, 9))
 TRIANGLE = ((2.0, 2.0), (12.0, 3.0), (5.0, 10.0))
@@ -78,11 +79,8 @@ def test_the_decision_variable_can_be_typed():
     trace = record("line-bresenham", LINE)
     exercise = Exercise(trace, "decision", answer_with="value")
     dx, dy = LINE[1][0] - LINE[0][0], LINE[1][1] - LINE[0][1]
-    # The textbook recurrence, written here: the d that decides each pixel.
-    d, decided = 2 * dy - dx, [2 * dy - dx]
-    for _ in range(dx):
-        decided.append(d)
-        d += 2 * dy if d <= 0 else 2 * (dy - dx)
+    # The start's d, then the d that decides each pixel after the first.
+    decided = [2 * dy - dx] + bresenham_run(*LINE)[1]
     assert [q.answer for q in exercise.questions] == decided
     first = exercise.current
     assert exercise.answer(str(decided[0])).right
