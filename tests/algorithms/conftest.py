@@ -1,7 +1,7 @@
 """Fixtures shared by the tests of the algorithms."""
 import pytest
 
-from algorithms import trace as trace_module
+from algorithms.core import trace as trace_module
 
 
 @pytest.fixture

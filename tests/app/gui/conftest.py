@@ -8,7 +8,7 @@ scene. ``pytest.mark.player(...)`` says the scene of a player without a window.
 import pytest
 from PySide6.QtCore import QSettings
 
-from algorithms import registry
+from algorithms.core import registry
 from app.gui.player import Player
 from app.gui.window import MainWindow
 from tests.support.gui import settle
