@@ -32,7 +32,7 @@ x and y derivative vectors and lambda = log2(rho). Filters:
   averaging their texels. The estimate's error falls as 1/n for a
   piecewise-constant texture (only sub-squares straddling a texel edge are
   wrong); with n = 8 a pixel is within 1/8 of the texture's range of the
-  32 x 32 estimate (tests/algorithms/test_textures_filters.py checks it).
+  32 x 32 estimate (tests/algorithms/textures/test_textures_filters.py checks it).
 
 Bounds the tests hold the filters to, on a checkerboard floor receding to
 w = 12 (RMS over pixels, against the reference): trilinear within 25% of

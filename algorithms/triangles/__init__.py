@@ -47,7 +47,7 @@ which is what the option is there to show). For coordinates below 2^m px
 on the 1/256 grid every intermediate is a multiple of 2^-16 below
 2^(2m+2), so the result is exact while 2m + 18 bits fit the significand:
 float32 is exact below 8 px, float64 below 2^17 px. The sweep in
-tests/algorithms/test_triangles_float.py measures where they really start
+tests/algorithms/triangles/test_triangles_float.py measures where they really start
 to differ: float32 at coordinates of 16-32 px (a centre exactly on an
 edge rounds to the wrong side), float64 at 2^19-2^20 px.
 

@@ -554,7 +554,7 @@ def oracle_triangles(case: Case, spec, trace) -> None:
     options = spec.resolve(case.options)
     bits = options["subpixel_bits"]
     # Clipped at the near plane, the run draws other triangles than the input's
-    # (tests/algorithms/test_triangles_offset_near.py checks them).
+    # (tests/algorithms/triangles/test_triangles_offset_near.py checks them).
     clipped = options.get("near", 0) > 0
     # The offset moves the arithmetic (not the pixels) that far from the origin.
     largest = (max(abs(c) for point in case.points for c in point)

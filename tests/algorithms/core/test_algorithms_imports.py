@@ -3,7 +3,7 @@ import subprocess
 import sys
 from pathlib import Path
 
-ROOT = Path(__file__).resolve().parents[2]
+ROOT = Path(__file__).resolve().parents[3]
 FORBIDDEN = ("PySide6", "pyqtgraph", "app", "widgets", "shiboken6")
 
 SCRIPT = f"""
