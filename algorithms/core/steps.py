@@ -3,7 +3,8 @@
 A generator yields one frame per step a person can step to. Frames come in
 two shapes:
 
-* A *lean frame*: a plain tuple ``(line, x, y, v1, v2, ...)`` of numbers.
+* A *lean frame*: a plain tuple ``(line, x, y, v1, v2, ...)`` of numbers:
+  integers ``line``, ``x`` and ``y``, real numbers ``v1, v2, ...``.
   ``line`` is the index of the pseudo-code line being run; its kind (see
   ``CodeLine.kind``) says what the frame does to pixel ``(x, y)``. The values
   ``v1, v2, ...`` are named once, by the ``Start`` record. Lean frames are

@@ -23,18 +23,18 @@ from __future__ import annotations
 
 import functools
 import math
+import struct
 import time
 from dataclasses import dataclass
-from itertools import chain, groupby, islice
+from itertools import groupby, islice
 from typing import Iterable, NamedTuple, Sequence
 
 import numpy as np
 
-from algorithms.core.errors import InputError
-from algorithms.core.monitor import (CHUNK, DEFAULT_STEP_CAP, Cancelled, RecordMonitor,  # noqa: F401 (the trace's API)
-                      checkpoint, watching, work_allowance)
+from algorithms.core.monitor import (  # noqa: F401 (the trace's API)
+    DEFAULT_STEP_CAP, Cancelled, RecordMonitor, checkpoint, watching, work_allowance)
 from algorithms.core.keyframes import Keyframes, color_dtype, smallest_unsigned
-from algorithms.core.trace_store import Columns, Packer, Records, frame_dtype
+from algorithms.core.trace_store import Columns, Records, frame_dtype, frame_rows
 from algorithms.core.raster import Raster
 from algorithms.core.steps import NO_PIXEL, PLOT, RICH_RECORDS, CodeLine, Span, Start, Step, Vars
 
@@ -45,13 +45,11 @@ MAX_STEP_CAP = 50_000_000
 KEYFRAME_BUDGET = 64 * 2 ** 20  # bytes the dense keyframes of one trace may take
 KEYFRAME_BYTES_PER_STEP = 16  # or this per recorded step, when that is more
 MIN_KEYFRAME_GAP = 1024
-# While frames come slowly, the bulk chunk shrinks so that a cancel is heard
+LIST_ROWS = 1024  # frames listed and converted together (a list that stays in cache)
+# While frames come slowly, the list shortens so that a cancel is heard
 # within about this many seconds, however long each frame takes.
 PACE = 0.02
-FIRST_CHUNK = 64
-SHORT_GROUP = 64  # tuples between rich records gathered in a list, not converted alone
-PENDING_ROWS = 8192  # frames the list holds before they go to numpy (a few MB at most)
-LEAN_ROWS = 1024  # frames of a bulk chunk listed and converted together
+FIRST_LIST_ROWS = 64  # a watched recording's first list
 # Steps between keyframes on long runs: a replay of this many steps takes a
 # few milliseconds, so any step of any run is that far from a keyframe.
 MAX_KEYFRAME_GAP = 1 << 16
@@ -121,7 +119,7 @@ class Trace:
         self._flat: np.ndarray | None = None
         self._monitor: RecordMonitor | None = None
         self._next_report = math.inf
-        self._chunk = self._max_chunk = CHUNK
+        self._list_rows = LIST_ROWS
 
     @functools.cached_property
     def _plot_lines(self) -> np.ndarray:
@@ -138,10 +136,8 @@ class Trace:
         trace = cls(code, width, height, step_cap)
         trace._monitor = monitor
         trace._next_report = monitor.every if monitor is not None else math.inf
-        # Bulk chunks no longer than the report interval, so reports keep time.
-        trace._max_chunk = CHUNK if monitor is None else min(CHUNK, monitor.every)
-        # Watched, the first chunk is small and grows while frames come fast.
-        trace._chunk = trace._max_chunk if monitor is None else min(FIRST_CHUNK, trace._max_chunk)
+        # Watched, the first list is short and grows while frames come fast.
+        trace._list_rows = LIST_ROWS if monitor is None else FIRST_LIST_ROWS
         with watching(monitor, step_cap):
             trace._record(iter(frames))
         trace._monitor = None
@@ -157,21 +153,20 @@ class Trace:
         if not isinstance(start, Start):
             raise TraceError("the first frame of a run must be a Start record")
         self.start = start
-        self._dtype = frame_dtype(len(start.values))
-        self._columns = Columns(self._dtype.names[3:], min(self._chunk, PENDING_ROWS))
         self._nans = (math.nan,) * len(start.values)
-        # Every frame, lean or rich, goes to this list first and to numpy a
-        # chunk at a time: one conversion per chunk, never one per record.
+        # Every frame goes to this list first (a rich record as its line and
+        # pixel) and into the columns a list at a time (see frame_rows).
         self._pending = [(start.line, NO_PIXEL, NO_PIXEL) + self._nans]
+        self._columns = Columns(frame_dtype(len(start.values)).names[3:], self._list_rows)
+        self._listed_at = time.perf_counter()
         self._store_rich(0, start)
-        left = self._record_packed(frames)
-        capped = islice(left, self.step_cap - self._count)
         # groupby sets the rich records aside without a Python-level test
         # per frame; its key (a C-level isinstance) puts consecutive rich
         # records of any types in one run.
-        for lean, group in groupby(capped, tuple.__instancecheck__):
-            if lean:
-                self._record_lean(group)
+        capped = islice(frames, self.step_cap - 1)
+        for plain, group in groupby(capped, tuple.__instancecheck__):
+            if plain:
+                self._record_plain(group)
             else:
                 self._record_rich(group)
         self._flush()
@@ -186,139 +181,76 @@ class Trace:
         """Frames recorded so far, converted or waiting."""
         return self._columns.count + len(self._pending)
 
-    def _record_packed(self, frames):
-        """Record the leading run of plain frames (see Packer) the fast way
-        and give back the frames left, from the first list of frames that
-        does not pack on. The general path takes that list again, so it
-        decides exactly as before, errors included. A run that begins with
-        a rich record goes to the general path at once, which hears a
-        cancel after every rich record."""
-        head = next(frames, None) if self._count < self.step_cap else None
-        if not isinstance(head, tuple):
-            return frames if head is None else chain((head,), frames)
-        packer = Packer(len(self._nans), head)
-        self._flush()
-        try:
-            self._convert_chunks(lambda size: packer.chunk(frames, size), self.step_cap)
-        finally:
-            packer.close()
-        return chain(packer.left, frames)
+    def _list_size(self) -> int:
+        """Frames the list takes before it goes into the columns: never past
+        the next report, so that progress keeps its interval."""
+        return min(self._list_rows, self._next_report - self._columns.count)
 
-    def _record_lean(self, group) -> None:
-        # A short run of tuples between rich records waits in the list; a
-        # long one goes to numpy in bulk chunks (_lean_chunk).
-        pending = self._pending
-        before = len(pending)
-        pending.extend(islice(group, SHORT_GROUP))
-        if len(pending) - before < SHORT_GROUP:
-            if len(pending) >= min(self._chunk, PENDING_ROWS):
-                self._flush()
-            return
-        self._flush()
-
-        def convert(size):
-            rows = self._lean_chunk(group, size)
-            return rows, len(rows) > 0
-        self._convert_chunks(convert, math.inf)
-
-    def _convert_chunks(self, convert, limit) -> None:
-        """Into the columns, chunk after chunk: ``convert(size)`` gives up to
-        ``size`` frames as rows and whether more may follow. A chunk never
-        passes the next report, so progress keeps its interval, nor ``limit``
-        frames recorded in all."""
-        while self._count < limit:
-            first = self._columns.count
-            began = time.perf_counter()
-            size = min(self._chunk, max(1, self._next_report - self._count), limit - self._count)
-            try:
-                rows, more = convert(size)
-            except InputError:
-                raise  # the generator refused its input: not a protocol fault
-            except (ValueError, TypeError, OverflowError) as error:
-                raise self._frame_error(first, error) from None
-            if len(rows):
-                self._check_rows(rows, first)
-                self._columns.append(rows)
-            if not more:
-                return
-            if self._monitor is not None:
-                self._pace(time.perf_counter() - began)
-            if self._count >= self._next_report:
-                self._report()
-
-    def _lean_chunk(self, group, size: int) -> np.ndarray:
-        """Up to ``size`` frames of ``group`` as structured rows. Wide rows
-        (two values or more) are converted LEAN_ROWS at a time: numpy
-        converts a list that small, whose tuples stay in the processor's
-        cache, faster than frames straight from the generator (8% on the
-        midpoint circle, 3% on triangle-bbox); narrow rows lose about 4%
-        that way, and go straight to numpy."""
-        if len(self._nans) < 2:
-            return np.fromiter(islice(group, size), self._dtype)
-        size = min(size, PENDING_ROWS)  # the parts and their join: under 1 MB at a time
-        parts, filled = [], 0
-        while filled < size:
-            part = list(islice(group, min(LEAN_ROWS, size - filled)))
-            if not part:
-                break
-            parts.append(np.fromiter(part, self._dtype, len(part)))
-            filled += len(part)
-        if len(parts) == 1:
-            return parts[0]
-        return np.concatenate(parts) if parts else np.empty(0, self._dtype)
-
-    def _pace(self, took: float) -> None:
-        """Fit the bulk chunk to the frames' speed: a chunk that took longer
-        than PACE is followed by a smaller one, fast chunks grow back to the
-        report interval, and a cancel is heard after every chunk."""
-        if took > PACE:
-            self._chunk = max(1, int(self._chunk * PACE / took))
-        elif took < PACE / 4 and self._chunk < self._max_chunk:
-            self._chunk = min(self._max_chunk, 2 * self._chunk)
-        if self._monitor.cancelled:
-            self._report()  # raises Cancelled; progress keeps its interval
+    def _record_plain(self, group) -> None:
+        """A run of tuples, listed as many at a time as the list has room for."""
+        while True:
+            size = self._list_size()
+            self._pending.extend(islice(group, size - len(self._pending)))
+            if len(self._pending) < size:
+                return  # the run has ended
+            self._flush()
 
     def _record_rich(self, group) -> None:
         """A run of rich records; a record type is checked at its first record."""
         by_type = self._steps_by_type
-        pending, add, steps = self._pending, self._store.add, self._rich_steps
-        limit = min(self._chunk, PENDING_ROWS)
+        add, steps = self._store.add, self._rich_steps
         monitor = self._monitor
-        index = self._count
+        size = self._list_size()
         for record in group:
+            index = self._count
             kind = type(record)
             of_kind = by_type.get(kind)
             if of_kind is None or kind is Start:
                 if not issubclass(kind, RICH_RECORDS) or issubclass(kind, Start):
+                    self._flush()  # a bad frame listed before it is reported first
                     raise TraceError(f"step {index}: {record!r} is not a frame "
                                      "steps.py allows here")
                 of_kind = by_type[kind] = []
             x, y = record.pixel or NO_PIXELS
-            pending.append((record.line, x, y, *self._nans))
+            self._pending.append((record.line, x, y, *self._nans))
             add(record)
             steps.append(index)
             of_kind.append(index)
-            index += 1
-            if len(pending) >= limit:
+            if len(self._pending) >= size:
                 self._flush()
-                pending = self._pending
+                size = self._list_size()
             if monitor is not None and monitor.cancelled:
                 self._report()  # raises Cancelled: heard after any record
 
     def _flush(self) -> None:
-        """The waiting frames to numpy and into the columns; report progress."""
+        """The listed frames into the columns; report progress."""
         if not self._pending:
             return
         first = self._columns.count
         try:
-            rows = np.fromiter(self._pending, self._dtype, len(self._pending))
-        except (ValueError, TypeError, OverflowError) as error:
+            rows = frame_rows(self._pending, len(self._nans))
+        except struct.error as error:
             raise self._frame_error(first, error) from None
         self._check_rows(rows, first)
         self._columns.append(rows)
         self._pending = []
+        if self._monitor is not None:
+            self._pace()
         if self._count >= self._next_report:
             self._report()
+
+    def _pace(self) -> None:
+        """Fit the list to the frames' speed: a list that took longer than
+        PACE to fill and convert is followed by a shorter one, fast lists
+        grow back to LIST_ROWS, and a cancel is heard after every list."""
+        now = time.perf_counter()
+        took, self._listed_at = now - self._listed_at, now
+        if took > PACE:
+            self._list_rows = max(1, int(self._list_rows * PACE / took))
+        elif took < PACE / 4:
+            self._list_rows = min(LIST_ROWS, 2 * self._list_rows)
+        if self._monitor.cancelled:
+            self._report()  # raises Cancelled; progress keeps its interval
 
     def _frame_error(self, first: int, error) -> TraceError:
         return TraceError(f"near step {first}: a frame is not (line, x, y"

@@ -3,8 +3,7 @@
 ``Columns``  the frame columns (line, x, y, values), filled a chunk at a
              time and grown in place, so that recording never holds the
              frames twice (the chunks and the finished columns).
-``Packer``   plain frames to bytes numpy reads in place, the fast way to
-             record long runs of tuples.
+``frame_rows``  a list of plain frames as one such chunk, packed by struct.
 ``Records``  the rich records (Vars, Table, Note, Span), pickled in batches:
              a pickled batch takes a fraction of the memory of the Python
              objects (a Table of Fractions, say), and a batch is unpickled
@@ -13,27 +12,17 @@
 from __future__ import annotations
 
 import functools
-import marshal
 import pickle
 import struct
 import threading
 from collections import OrderedDict
-from itertools import islice, starmap
+from itertools import starmap
 
 import numpy as np
 
 GROWTH = 1.25  # the columns grow by a quarter when a chunk does not fit
 BATCH = 512  # rich records pickled together
-SMALL_BATCH = 8  # a last batch shorter than this is kept as objects
-PART = 1024  # plain frames listed and packed together
 CACHED_BATCHES = 8  # unpickled batches kept for the next look-up
-SPARE_BUFFERS = 2  # packing buffers kept for the next recordings
-SPARE_BYTES = 1 << 20  # and only small ones: a long run pays for its buffer many times over
-
-# Packing buffers of finished recordings, for the next ones to reuse:
-# fresh pages cost more than the packing itself on short runs (the C
-# library gives freed memory back to the system and faults it in again).
-_spare_buffers: list = []
 
 
 class Columns:
@@ -71,149 +60,34 @@ class Columns:
         self.values.resize((rows, len(self.names)), refcheck=False)
 
 
-class Packer:
-    """Plain frames, tuples of integers line, x, y and k numbers, to bytes.
-
-    Three formats, each tried while the frames fit it: marshal while every
-    value is an int within 32 bits (the fastest: one C call a list, read in
-    place by a dtype with offsets), struct with 64-bit integers while every
-    value is an integer, then struct with doubles. struct packs a list of
-    tuples into rows about twice as fast as numpy converts them one tuple
-    at a time; the columns turn integers into the same doubles numpy would.
-    """
-
-    def __init__(self, k: int, head):
-        self._formats = list(_pack_formats(k))
-        self.dtype = self._formats[0][1]
-        self._buffer = _spare_buffers.pop() if _spare_buffers else memoryview(b"")
-        self._carry = [head]  # frames read but not yet packed
-        self.left: list = []  # the frames that would not pack in any format
-
-    def chunk(self, frames, size: int):
-        """Up to ``size`` frames as rows, and whether more may follow. The
-        frames are listed and packed PART at a time (a list that small stays
-        in the processor's cache) into one buffer reused for every chunk,
-        whose pages are touched once, not once a chunk. A list that does not
-        pack is carried to the next chunk in the next format (at most twice:
-        the formats only widen), or, with no format left, kept in ``left``
-        and the packing ends."""
-        filled = 0
-        for done in range(0, size, PART):
-            want = min(PART, size - done)
-            part = list(islice(frames, max(0, want - len(self._carry))))
-            if self._carry:
-                part[:0], self._carry = self._carry, []
-            piece = self.pack(part)
-            if piece is None:
-                rows = np.frombuffer(self._buffer[:filled], self.dtype)
-                if self._widen():
-                    self._carry = part
-                else:
-                    self.left = part
-                return rows, not self.left
-            self._room(filled + len(piece))
-            self._buffer[filled:filled + len(piece)] = piece
-            filled += len(piece)
-            if len(part) < want:
-                return np.frombuffer(self._buffer[:filled], self.dtype), False
-        return np.frombuffer(self._buffer[:filled], self.dtype), True
-
-    def _room(self, size: int) -> None:
-        """A buffer of at least ``size`` bytes, grown by doubling (a short
-        run never asks for a whole chunk's worth), its bytes kept."""
-        if len(self._buffer) < size:
-            grown = memoryview(np.empty(max(size, 2 * len(self._buffer)), np.uint8))
-            grown[:len(self._buffer)] = self._buffer
-            self._buffer = grown
-
-    def close(self) -> None:
-        """Hand the buffer on to the next recording; the rows taken from it
-        must have been copied out."""
-        if len(_spare_buffers) < SPARE_BUFFERS and 0 < len(self._buffer) <= SPARE_BYTES:
-            _spare_buffers.append(self._buffer)
-        self._buffer = memoryview(b"")
-
-    def pack(self, frames: list):
-        """The frames as rows of ``dtype`` (bytes), or None if one does not pack."""
-        return self._formats[0][0](frames)
-
-    def _widen(self) -> bool:
-        """Go on with the next format; False when none is left."""
-        self._formats.pop(0)
-        if self._formats:
-            self.dtype = self._formats[0][1]
-        return bool(self._formats)
-
-
 @functools.lru_cache(maxsize=16)
-def frame_dtype(k: int, value: str = "f8") -> np.dtype:
-    """Rows of frames with k values: line, x, y, v0 ... (made once, not per run)."""
+def frame_dtype(k: int) -> np.dtype:
+    """Rows of frames with k values: line, x, y, v0 ... (made once, not per
+    run), packed without padding in the machine's byte order."""
     return np.dtype([("line", "u2"), ("x", "i4"), ("y", "i4")]
-                    + [(f"v{n}", value) for n in range(k)])
+                    + [(f"v{n}", "f8") for n in range(k)])
 
 
 @functools.lru_cache(maxsize=16)
-def _pack_formats(k: int) -> tuple:
-    """(pack, dtype) of frames with k values: small integers, integers, doubles."""
-    return (_marshal_format(k),) + tuple(
-        (_struct_pack(struct.Struct("=Hii" + code * k).pack), frame_dtype(k, kind))
-        for code, kind in (("q", "i8"), ("d", "f8")))
+def _frame_struct(k: int) -> struct.Struct:
+    """The struct of a frame_dtype(k) row: "=" is the machine's byte order
+    with standard sizes and no padding."""
+    return struct.Struct("=Hii" + "d" * k)
 
 
-def _struct_pack(pack):
-    def rows(frames: list) -> bytes | None:
-        try:
-            return b"".join(starmap(pack, frames))
-        except (struct.error, TypeError, ValueError, OverflowError):
-            return None
-    return rows
+def frame_rows(frames: list, k: int) -> np.ndarray:
+    """Plain frames, tuples of integers line, x, y and k real numbers, as
+    rows of frame_dtype(k); struct.error names what does not fit.
 
-
-def _marshal_format(k: int) -> tuple:
-    """(pack, dtype) of frames whose k + 3 items are all ints of 32 bits.
-
-    marshal (version 2, which writes no back-references) writes a list of
-    such tuples as fixed 5-byte cells: a tuple's head "(" and its length,
-    then "i" and 4 little-endian bytes per int. A list of n frames packs
-    when its length is n cells of each frame, every cell's tag is the one
-    such a frame has there, and the low byte of every tuple's length is
-    k + 3. That proves the layout: an object of another size puts its own
-    tag where a cell's tag is checked, and a longer tuple (or one nested in
-    it) would leave too few cells for the other frames. Anything else (a
-    bool, a float, a bigger int, a numpy scalar, a subclass) is left to the
-    struct formats, as is a line the line column cannot hold.
+    struct packs a list of tuples about twice as fast as np.fromiter
+    converts them, which sets each field of each row on its own. Values
+    become the doubles float() gives, as numpy would make them.
     """
-    cells = k + 4
-    stride = 5 * cells
-    fields = ["line", "x", "y"] + [f"v{n}" for n in range(k)]
-    dtype = np.dtype({"names": fields, "formats": ["<i4"] * (k + 3),
-                      "offsets": [6 + 5 * n for n in range(k + 3)], "itemsize": stride})
-    tags = (b"(" + b"i" * (cells - 1)) * PART  # the tags of a list's cells
-    lengths = bytes([k + 3]) * PART
-    zeros = bytes(PART)
-
-    def rows(frames: list):
-        n = len(frames)
-        if n > PART:  # longer than the checks' patterns
-            return None
-        try:
-            data = marshal.dumps(frames, 2)
-        except ValueError:
-            return None
-        if len(data) != 5 + n * stride:
-            return None
-        # cells from byte 5 on; a frame's length at byte 1 of its cells, the
-        # two high bytes of its line (0 for lines 0 to 65535) at bytes 8 and 9
-        if (data[5::5] != tags[:n * cells] or data[6::stride] != lengths[:n]
-                or data[13::stride] != zeros[:n] or data[14::stride] != zeros[:n]):
-            return None
-        return memoryview(data)[5:]
-    return rows, dtype
+    return np.frombuffer(b"".join(starmap(_frame_struct(k).pack, frames)), frame_dtype(k))
 
 
 class Records:
-    """Rich records by step, pickled BATCH at a time in step order (a last
-    batch of fewer than SMALL_BATCH records stays as the objects)."""
+    """Rich records by step, pickled BATCH at a time in step order."""
 
     def __init__(self):
         self._pending: list = []
@@ -228,11 +102,8 @@ class Records:
             self._seal()
 
     def finish(self, steps: np.ndarray) -> None:
-        if len(self._pending) >= SMALL_BATCH:
+        if self._pending:
             self._seal()
-        elif self._pending:  # a few records (a line's Start): pickling saves nothing
-            self._batches.append(self._pending)
-            self._pending = []
         self.steps = steps
 
     def get(self, step: int):

@@ -115,6 +115,8 @@ def run_bad(*bad):
     ((1, "x", 0, 1.0), "is not (line, x, y, value)"),
     ((1, 2 ** 40, 0, 1.0), "is not (line, x, y, value)"),
     ((-1, 0, 0, 1.0), "is not (line, x, y, value)"),
+    ((1, 0.5, 0, 1.0), "is not (line, x, y, value)"),
+    ((1, 0, 0, None), "is not (line, x, y, value)"),
     ((9, 0, 0, 1.0), "pseudo-code line 9 does not exist"),
     ({"line": 1}, "is not a frame steps.py allows here"),
     (Start(line=0, values=("v",)), "is not a frame steps.py allows here"),
