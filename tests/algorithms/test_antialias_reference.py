@@ -41,7 +41,7 @@ from fractions import Fraction
 import numpy as np
 import pytest
 import shapely
-from hypothesis import given, settings
+from hypothesis import example, given, settings
 from hypothesis import strategies as st
 
 from algorithms.antialias import sample_strata, time_samples
@@ -249,9 +249,16 @@ def shape_inputs(draw):
     return points, options
 
 
+# Edges along the rows and columns of a 4 x 4 grid's samples (at 1/8 + k/4):
+# a top, a bottom, a left and a right edge, where the tie rule decides.
+ON_SAMPLES = ([(1.125, 5.125), (9.125, 5.125), (5.0, 1.125), (3.125, 6.125), (9.125, 6.125),
+               (9.125, 11.125), (10.125, 1.375), (10.125, 9.875), (12.5, 5.0)], {"colors": ()})
+
+
 @settings(max_examples=40, deadline=None)
 @given(shape_inputs(), st.sampled_from(["grid", "rotated-grid", "jitter", "random"]),
        st.integers(1, 4), st.sampled_from(["box", "weighted", "tent", "gaussian"]))
+@example(ON_SAMPLES, "grid", 4, "box")
 def test_supersample_random_shapes(shape, pattern, n, name):
     points, options = shape
     options = {**options, "pattern": pattern, "n": n, "filter": name, "seed": 3, "sigma": 0.4}
@@ -292,6 +299,7 @@ def test_adaptive_on_the_catalogue(case):
 
 @settings(max_examples=30, deadline=None)
 @given(shape_inputs(), st.integers(0, 3))
+@example(ON_SAMPLES, 2)
 def test_adaptive_random_shapes(shape, depth):
     points, options = shape
     options = {**options, "max_depth": depth}
