@@ -1,46 +1,13 @@
 """Line supersampling by subpixels crossed, against a brute-force oracle: for
 every subpixel of the grid, does the segment meet its half-open square?"""
-from collections import Counter
-from fractions import Fraction
-
 import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from tests.support import record
+from tests.support.antialias_oracles import subpixel_counts as oracle
 
 GRID = (12, 8)
-
-
-def meets_half_open(p, q, a, b):
-    """Is there t in [0, 1] with a <= x(t) < a + 1 and b <= y(t) < b + 1?
-    Intervals of t as (low, low included, high, high included)."""
-    low, low_in, high, high_in = Fraction(0), True, Fraction(1), True
-    for axis, start in ((0, a), (1, b)):
-        d = q[axis] - p[axis]
-        if d == 0:
-            if not start <= p[axis] < start + 1:
-                return False
-            continue
-        enter, leave = (start - p[axis]) / d, (start + 1 - p[axis]) / d
-        # Going up, the cell's low side is included and its high side not; going down, the reverse.
-        (lo, lo_in), (hi, hi_in) = ((enter, True), (leave, False)) if d > 0 else \
-            ((leave, False), (enter, True))
-        if lo > low or (lo == low and not lo_in):
-            low, low_in = lo, lo_in
-        if hi < high or (hi == high and not hi_in):
-            high, high_in = hi, hi_in
-    return low < high or (low == high and low_in and high_in)
-
-
-def oracle(points, n, grid):
-    p, q = (tuple(Fraction(2 * c + 1) * n / 2 for c in point) for point in points)
-    counts = Counter()
-    for a in range(grid[0] * n):
-        for b in range(grid[1] * n):
-            if meets_half_open(p, q, a, b):
-                counts[(a // n, b // n)] += 1
-    return counts
 
 
 PIXEL = st.tuples(st.integers(-3, GRID[0] + 2), st.integers(-3, GRID[1] + 2))

@@ -1,8 +1,5 @@
 """Wu's line kernel: the generator's pixels and intensities in order, to the
 last bit, and the intensities from the line's definition in exact fractions."""
-import math
-from fractions import Fraction
-
 import numpy as np
 import pytest
 from hypothesis import given, settings
@@ -10,36 +7,13 @@ from hypothesis import strategies as st
 
 from algorithms.antialias.wu_kernel import draw_wu_lines, wu_lines
 from algorithms.core.registry import get
+from tests.support.antialias_oracles import wu_oracle as oracle
 from tests.support.linecases import NAMED_CASES, segments, trace_of
 
 ENDPOINTS = ("full", "gap")
 EXTRA = [((3, 3), (3, 3)), ((0, 0), (9, 0)), ((0, 0), (-9, 0)), ((0, 0), (0, 9)), ((0, 0), (0, -9)),
          ((0, 0), (7, 7)), ((0, 0), (-7, 7)), ((0, 0), (-7, -7)), ((0, 0), (7, -7)),
          ((2, 1), (3, 2)), ((0, 0), (1, 0)), ((5, -4), (-20, 13))]
-
-
-def oracle(p, q, endpoints):
-    """In order, from the definition: along the major axis from P, column c
-    holds the minor coordinate m = m0 + d_minor (c - c0) / d_major exactly;
-    the pixel the line is nearer to, on P's side of m, takes 1 - f, the next
-    one away from P's side takes f, f = |m - near| (a tie between axes goes to x)."""
-    axis = 0 if abs(q[0] - p[0]) >= abs(q[1] - p[1]) else 1
-    c0, c1, m0, m1 = p[axis], q[axis], p[1 - axis], q[1 - axis]
-    if c0 == c1:
-        return [(tuple(p), 1.0)]
-    step = 1 if c1 > c0 else -1
-    towards = 1 if m1 >= m0 else -1
-    out = []
-    for c in range(c0, c1 + step, step):
-        m = m0 + Fraction((m1 - m0) * (c - c0), c1 - c0)
-        near = math.floor(m) if towards > 0 else math.ceil(m)
-        f = abs(m - near)
-        half = Fraction(1, 2) if endpoints == "gap" and c in (c0, c1) else 1
-        for minor, share in ((near, 1 - f), (near + towards, f)):
-            if share:
-                pixel = (c, minor) if axis == 0 else (minor, c)
-                out.append((pixel, float(share * half)))
-    return out
 
 
 def check(p, q, endpoints):

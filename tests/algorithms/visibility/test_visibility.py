@@ -2,7 +2,6 @@
 import json
 import math
 import random
-from fractions import Fraction
 
 import numpy as np
 import pytest
@@ -13,46 +12,9 @@ from algorithms.core.registry import get
 from algorithms.core.steps import Table
 from app.cli import main
 from tests.support.trace_oracle import slow_replay
+from tests.support.visibility_oracles import nearest_oracle
 
 PALETTE = [int(c[1:], 16) for c in vis.PALETTE]
-
-
-# ------------------------------------------------------------- the oracle
-def snapped(point):
-    return tuple(exact_triangles.snap(v, 8) for v in point)
-
-
-def depth_at(tri, zs, centre):
-    """Barycentric depth at the centre, in fractions: alpha z0 + beta z1 + gamma z2."""
-    (x0, y0), (x1, y1), (x2, y2) = tri
-    px, py = centre
-    area = (x1 - x0) * (y2 - y0) - (x2 - x0) * (y1 - y0)
-    alpha = ((x1 - px) * (y2 - py) - (x2 - px) * (y1 - py)) / area
-    beta = ((x2 - px) * (y0 - py) - (x0 - px) * (y2 - py)) / area
-    gamma = 1 - alpha - beta
-    return alpha * zs[0] + beta * zs[1] + gamma * zs[2]
-
-
-def nearest_oracle(points, z, grid, test="less", clear=Fraction(1)):
-    """Per pixel: the triangle the z-buffer must keep, and its exact depth."""
-    width, height = grid
-    owner = np.full((height, width), -1)
-    depth = np.full((height, width), None, dtype=object)
-    depth[...] = clear
-    for k in range(len(points) // 3):
-        tri = [snapped(p) for p in points[3 * k:3 * k + 3]]
-        zs = [Fraction(v) for v in z[3 * k:3 * k + 3]]
-        if exact_triangles.twice_area(tri) == 0:
-            continue
-        for j in range(height):
-            for i in range(width):
-                centre = exact_triangles.centre(i, j)
-                if not exact_triangles.covers(tri, centre, "top-left"):
-                    continue
-                d = depth_at(tri, zs, centre)
-                if d < depth[j, i] or (test == "less-equal" and d == depth[j, i]):
-                    owner[j, i], depth[j, i] = k, d
-    return owner, depth
 
 
 def random_scene(seed, count, grid=(20, 16)):
