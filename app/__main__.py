@@ -1,6 +1,6 @@
 """`python -m app` is the `rasterlab` command."""
 import sys
 
-from app.launcher import main
+from app.cli import main
 
 sys.exit(main())

@@ -577,9 +577,7 @@ def main(argv: list[str] | None = None) -> int:
         args = build_parser().parse_args(_shield_negative_points(argv))
         if args.command is None:
             _check_display()
-            from app.window_preload import load_before_qt
-            load_before_qt()  # before Qt's import hook: see the module
-            from app.gui.window import launch
+            from app.gui import launch
             return launch()
         return {"list": command_list, "run": command_run,
                 "export": command_export, "report": command_report,

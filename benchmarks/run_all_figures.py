@@ -448,20 +448,15 @@ def watch(app):
     app.installEventFilter(app.shown)
 """
 
-# Ours loads as the `rasterlab` command without a command does: collection
-# off (app/launcher.py), the command line's module, then the Qt-free modules
-# main() loads before it imports the window; the watcher needs a
-# QApplication, made here before launch() would.
+# Ours loads as the `rasterlab` command without a command does: the command
+# line's module, then launch(); the watcher needs a QApplication, made here
+# before launch() would.
 STARTUP_OURS = """
-from app.launcher import before_window
-before_window()  # as `rasterlab` without a command does, before its first import
 from app import cli
-from app.window_preload import load_before_qt
-load_before_qt()
 """ + SHOWN + """
 app = QApplication([])
 watch(app)
-from app.gui.window import launch
+from app.gui import launch
 launch()
 """
 

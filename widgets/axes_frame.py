@@ -1,32 +1,10 @@
 """A view box with an axis to its left and one below, as a PlotItem lays
 them out, without the rest of a PlotItem (its title, top and right axes,
-buttons and options form): the grid view and the variables panel's plot;
-and the axis they use."""
+buttons and options form): the grid view and the variables panel's plot."""
 from __future__ import annotations
 
 import pyqtgraph as pg
 from PySide6.QtWidgets import QGraphicsGridLayout, QGraphicsItem, QSizePolicy
-
-
-class Axis(pg.AxisItem):
-    """A pyqtgraph axis that sets its label's text only when the text
-    changes and the label is shown with a text: pyqtgraph sets it on every
-    change of range, pen or scale (50 times while the window is built,
-    and on every pan and zoom, for labels that are all hidden and empty)."""
-
-    def _updateLabel(self):  # noqa: N802 (pyqtgraph's name)
-        shown = self.label.isVisibleTo(self) and (self.labelText or self.labelUnits)
-        text = self.labelString() if shown else ""
-        if text != getattr(self, "_label_text", ""):  # the label starts empty
-            self._label_text = text
-            self.label.setHtml(text)
-        self._adjustSize()
-        self.picture = None
-        self.update()
-
-    def showLabel(self, show: bool = True):  # noqa: N802
-        super().showLabel(show)
-        self._updateLabel()  # the text it did not take while hidden
 
 
 def axes_frame(box, axes) -> pg.GraphicsWidget:

@@ -9,7 +9,6 @@ import pyqtgraph as pg
 from PySide6.QtCore import QLineF, QRectF, Qt
 from PySide6.QtGui import QColor, QFontMetricsF, QPen
 
-from .axes_frame import Axis
 from .dirty import cache_drawing, cells_box, update_boxes
 
 # Grid lines appear once a cell is this many screen pixels wide, and reach
@@ -24,7 +23,7 @@ RIM_SIZE = 11     # the square handle on a circle's rim
 MARKER_SIZE = 22  # the seed marker
 
 
-class PixelAxis(Axis):
+class PixelAxis(pg.AxisItem):
     """An axis whose ticks stand at cell boundaries, at whole coordinates:
     pixel i is [i, i+1), so tick "k" is the left (or lower) edge of pixel k
     and a vertex typed as (3, 3) sits on the ticks 3 and 3.

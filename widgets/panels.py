@@ -5,15 +5,14 @@ import math
 
 import numpy as np
 import pyqtgraph as pg
-from PySide6.QtCore import Qt, QTimer, Signal
+from PySide6.QtCore import QCoreApplication, QEvent, Qt, QTimer, Signal
 from PySide6.QtGui import QBrush, QColor, QFont, QFontDatabase, QFontMetrics
 from PySide6.QtWidgets import (QAbstractItemView, QFrame, QGraphicsEllipseItem,
                                QGraphicsItem, QHeaderView, QLabel, QScrollArea, QStyle, QTableWidget, QTableWidgetItem, QVBoxLayout, QWidget)
 
-from .axes_frame import Axis, axes_frame
+from .axes_frame import axes_frame
 from .dirty import cache_drawing, fill_own_background
 from .series_points import plot_points
-from .steady import SteadyBox
 
 CURRENT_LINE = QColor("#ffe8b3")
 CURRENT_TEXT = QColor("#1d2733")
@@ -21,8 +20,6 @@ CURRENT_EDGE = QColor("#f08c00")
 CHANGED_VALUE = QColor("#b35900")
 LINE_NUMBER = QColor("#8a94a1")
 NOTES_MAX_HEIGHT = 120
-# Where a variables cell keeps the look it was last given (colour, font,
-# swatch), so that an unchanged look is not set (and repainted) again.
 # Values whose sign or range matters: text colours by tone.
 TONE_COLORS = {"positive": QColor("#1f7a3d"), "negative": QColor("#c92a2a"),
                "zero": QColor("#b35900")}
@@ -52,6 +49,14 @@ def monospace_font(scale: float = 1.0) -> QFont:
     if scale != 1.0 and font.pointSizeF() > 0:
         font.setPointSizeF(font.pointSizeF() * scale)
     return font
+
+
+def _value_fonts(scale: float) -> tuple[QFont, QFont]:
+    """The values' type, plain and bold (a value the step changed)."""
+    plain = monospace_font(scale)
+    bold = QFont(plain)
+    bold.setBold(True)
+    return plain, bold
 
 
 def _as_color(text) -> str:
@@ -95,7 +100,9 @@ class CodePanel(QWidget):
         self.lines.setEditTriggers(QAbstractItemView.EditTrigger.NoEditTriggers)
         self.lines.setSelectionMode(QAbstractItemView.SelectionMode.NoSelection)
         self.lines.setFocusPolicy(Qt.FocusPolicy.NoFocus)
-        fill_own_background(self.lines.viewport())  # its marked line moves every step
+        # Its marked line moves every step; a scroll bar that comes or goes
+        # as rows change height repaints the table alone.
+        fill_own_background(self.lines, self.lines.viewport())
         self.lines.setHorizontalScrollBarPolicy(Qt.ScrollBarPolicy.ScrollBarAlwaysOff)
         self.lines.setVerticalScrollMode(QAbstractItemView.ScrollMode.ScrollPerPixel)
         header = self.lines.horizontalHeader()
@@ -128,10 +135,6 @@ class CodePanel(QWidget):
         layout.addWidget(self.notes_area)
         self._texts: tuple[str, ...] = ()
         self._current: int | None = None
-        # A line's height, marked or not, at the columns' widths and the
-        # type size it was fitted at: stepping between the same lines sets
-        # it again instead of laying the text out each step.
-        self._heights: dict[tuple, int] = {}
 
     def set_code(self, texts, notes=()) -> None:
         """The lines (strings) and the notes shown under them."""
@@ -139,7 +142,6 @@ class CodePanel(QWidget):
         if texts != self._texts:
             self._texts = texts
             self._current = None
-            self._heights.clear()
             self.lines.setRowCount(len(texts))
             for row, text in enumerate(texts):
                 number = QTableWidgetItem(f"  {row + 1}")
@@ -237,14 +239,7 @@ class CodePanel(QWidget):
         number.setText(("\u25b6 " if current else "  ") + str(row + 1))
         number.setForeground(QBrush(CURRENT_EDGE if current else LINE_NUMBER))
         # Bold text is wider: the row wraps again rather than lose its end.
-        key = (row, current, self.lines.columnWidth(0), self.lines.columnWidth(1),
-               self.lines.font().pointSizeF())
-        height = self._heights.get(key)
-        if height is None:
-            self.lines.resizeRowToContents(row)
-            self._heights[key] = self.lines.rowHeight(row)
-        else:
-            self.lines.setRowHeight(row, height)
+        self.lines.resizeRowToContents(row)
 
 
 def _step_dot() -> QGraphicsEllipseItem:
@@ -276,10 +271,7 @@ class VariablesPanel(QWidget):
         self.chips.setTextFormat(Qt.TextFormat.RichText)
         self.chips.hide()
         self.table = self._make_table()
-        self._value_font = monospace_font()
-        # (row, column) -> (text, look) as last set: a step's unchanged
-        # cells (most of them) cost no call into Qt.
-        self._cells: dict[tuple[int, int], tuple] = {}
+        self._value_fonts = _value_fonts(1.0)
 
         self.plot = self._make_plot()
         self.plot_title = QLabel(self)
@@ -288,8 +280,7 @@ class VariablesPanel(QWidget):
         layout = QVBoxLayout(self)
         layout.setContentsMargins(6, 6, 6, 6)
         layout.setSpacing(6)
-        self._caption_box = SteadyBox(self.caption, self)
-        layout.addWidget(self._caption_box)
+        layout.addWidget(self._caption_area())
         layout.addWidget(self.chips)
         layout.addWidget(self.table, 1)
         layout.addWidget(self.plot_title)
@@ -300,11 +291,35 @@ class VariablesPanel(QWidget):
         self._series: np.ndarray | None = None
         self.set_series(None)
 
+    def _caption_area(self) -> QScrollArea:
+        """The caption in a scroll area of two lines' height (``_fit_caption``):
+        a label's new text asks its layout for room, and the ask would climb
+        to the main window, which lays out and repaints its docks (1 to 2 ms
+        a step, measured); a scroll area takes the ask itself."""
+        self.caption.setAlignment(Qt.AlignmentFlag.AlignLeft | Qt.AlignmentFlag.AlignTop)
+        area = QScrollArea(self)
+        area.setWidget(self.caption)
+        area.setWidgetResizable(True)
+        area.setFrameShape(QFrame.Shape.NoFrame)
+        area.setFocusPolicy(Qt.FocusPolicy.NoFocus)
+        area.setHorizontalScrollBarPolicy(Qt.ScrollBarPolicy.ScrollBarAlwaysOff)
+        area.setVerticalScrollBarPolicy(Qt.ScrollBarPolicy.ScrollBarAlwaysOff)
+        self.caption_area = area
+        self._fit_caption()
+        return area
+
+    def _fit_caption(self) -> None:
+        margins = self.caption.contentsMargins()
+        self.caption_area.setFixedHeight(2 * self.caption.fontMetrics().lineSpacing()
+                                         + margins.top() + margins.bottom())
+
     def _make_table(self) -> QTableWidget:
         """The name/value table of the step's variables."""
         table = QTableWidget(0, 2, self)
         table.setObjectName("variables")
-        fill_own_background(table.viewport())  # values change every step
+        # Values change every step; a scroll bar that comes or goes as rows
+        # are added repaints the table alone.
+        fill_own_background(table, table.viewport())
         table.setHorizontalHeaderLabels(["Name", "Value"])
         table.verticalHeader().setVisible(False)
         table.horizontalHeader().setSectionResizeMode(0, QHeaderView.ResizeMode.ResizeToContents)
@@ -330,7 +345,7 @@ class VariablesPanel(QWidget):
         plot.setMaximumHeight(190)
         self.plot_view = view = pg.ViewBox(enableMenu=False)  # no view menu is built
         view.setMouseEnabled(x=True, y=False)
-        self.plot_axes = {name: Axis(name, pen="#8a94a1", textPen="#3d4754")
+        self.plot_axes = {name: pg.AxisItem(name, pen="#8a94a1", textPen="#3d4754")
                           for name in ("left", "bottom")}
         plot.setCentralItem(axes_frame(view, self.plot_axes))
         # No background grid: pyqtgraph redraws it whole whenever the
@@ -358,7 +373,13 @@ class VariablesPanel(QWidget):
 
     # ----------------------------------------------------------- table
     def set_caption(self, text: str) -> None:
-        self._caption_box.set_text(text)
+        self.caption.setText(text)
+        # The scroll area fits the label to its new text now, before it is
+        # painted: measuring a rich-text label lays its text out again,
+        # which after the paint would ask for two more (about 1 ms a step,
+        # measured).
+        QCoreApplication.sendPostedEvents(self.caption_area.viewport(),
+                                          QEvent.Type.LayoutRequest)
 
     def set_chips(self, chips) -> None:
         """A one-line summary over the table: chips (text, tone, tooltip),
@@ -393,18 +414,13 @@ class VariablesPanel(QWidget):
         before = dict(self._rows)
         if self.table.rowCount() != len(rows):
             self.table.setRowCount(len(rows))
-            self._cells = {cell: kept for cell, kept in self._cells.items()
-                           if cell[0] < len(rows)}
-        # Only the cells whose text or look changed are set: each set
-        # repaints its cell, and a step changes one or two values.
         fitted = []
         for row, (name, text) in enumerate(rows):
-            self._set_cell(row, 0, name, None)
+            self._set_text(self._cell(row, 0), name)
             changed = name in before and before[name] != text
             color = TONE_COLORS.get(tones.get(name)) or (CHANGED_VALUE if changed else None)
             swatch = text if name in color_names and QColor.isValidColorName(text) else None
-            if self._set_cell(row, 1, text, color, self._value_font, bold=changed,
-                              swatch=swatch):
+            if self._set_value(row, text, color, changed, swatch):
                 fitted.append(row)
         self._fit_long_rows(rows, fitted)
         self._rows = rows
@@ -421,21 +437,22 @@ class VariablesPanel(QWidget):
 
     def set_type_scale(self, factor: float) -> None:
         """Values (and rows) ``factor`` times their usual size: the window's
-        zoom, or presentation mode's large type; the next ``set_rows`` shows them."""
-        self._value_font = monospace_font(factor)
-        self._cells = {}  # every value is set again in the new type
-        height = max(QFontMetrics(self._value_font).height(), self.fontMetrics().height())
+        zoom, or presentation mode's large type; the next ``set_rows`` shows
+        them. The caption's two lines fit its type as it is now."""
+        self._value_fonts = _value_fonts(factor)
+        self._fit_caption()
+        height = max(QFontMetrics(self._value_fonts[0]).height(), self.fontMetrics().height())
         self.table.verticalHeader().setDefaultSectionSize(height + 6)
 
     def _fit_long_rows(self, rows, fitted) -> None:
         """A value too long for its cell (a fill's queue, say) wraps onto a
         second line instead of losing its end; the others keep one line.
-        ``fitted``: the rows whose value changed; all of them when the
-        column's width did."""
+        ``fitted``: the rows whose value or its type changed; all of them
+        when the column's width did."""
         width = self.table.columnWidth(1) - 10
         if width != self._fitted_width:
             self._fitted_width, fitted = width, range(len(rows))
-        metrics = QFontMetrics(self._value_font)
+        metrics = QFontMetrics(self._value_fonts[0])
         default = self.table.verticalHeader().defaultSectionSize()
         for row in fitted:
             text = rows[row][1]
@@ -452,30 +469,36 @@ class VariablesPanel(QWidget):
                 return brush.color() if brush.style() != Qt.BrushStyle.NoBrush else None
         raise KeyError(name)
 
-    def _set_cell(self, row, column, text, color, font=None, bold=False, swatch=None) -> bool:
-        """Set what differs from the cell's text, colour, font and swatch;
-        True when anything did."""
-        look = (color.rgba() if color is not None else None, font is not None and bold, swatch)
-        kept = self._cells.get((row, column))
-        if kept == (text, look):
-            return False
-        self._cells[row, column] = (text, look)
+    def _cell(self, row: int, column: int) -> QTableWidgetItem:
         item = self.table.item(row, column)
         if item is None:
             item = QTableWidgetItem()
             self.table.setItem(row, column, item)
-        if kept is None or kept[1] != look:
-            if font is not None:
-                font = QFont(font)
-                font.setBold(bold)
-                item.setFont(font)
-            item.setForeground(QBrush(color) if color is not None else QBrush())
-            item.setData(Qt.ItemDataRole.DecorationRole, QColor(swatch) if swatch else None)
-        if kept is None or kept[0] != text:
-            # Pairs such as (4, 10) stay whole when a long value wraps.
-            item.setText(text.replace(", ", ",\u00a0"))
-            item.setToolTip(text)
+        return item
+
+    @staticmethod
+    def _set_text(item: QTableWidgetItem, text: str) -> bool:
+        """Show ``text`` in the cell; True when it changed."""
+        shown = text.replace(", ", ",\u00a0")  # pairs such as (4, 10) stay whole when wrapped
+        if item.text() == shown:
+            return False
+        item.setText(shown)
+        item.setToolTip(text)
         return True
+
+    def _set_value(self, row, text, color, bold, swatch) -> bool:
+        """The value's text, colour, type and swatch; True when its text or
+        type changed (its row may need another height). Qt repaints the cell
+        only for what differs from what it holds."""
+        item = self._cell(row, 1)
+        refit = self._set_text(item, text)
+        font = self._value_fonts[bold]
+        if item.font() != font:
+            item.setFont(font)
+            refit = True
+        item.setForeground(QBrush(color) if color is not None else QBrush())
+        item.setData(Qt.ItemDataRole.DecorationRole, QColor(swatch) if swatch else None)
+        return refit
 
     # ------------------------------------------------------------ plot
     def set_series(self, values: np.ndarray | None, name: str = "",

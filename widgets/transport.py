@@ -5,13 +5,12 @@ from __future__ import annotations
 import math
 
 from PySide6.QtCore import QEvent, QSize, Qt, Signal
-from PySide6.QtGui import QFontMetrics
+from PySide6.QtGui import QFont, QFontMetrics
 from PySide6.QtWidgets import (QHBoxLayout, QLabel, QSizePolicy, QSlider, QSpinBox,
                                QToolButton, QVBoxLayout, QWidget)
 
 from .dirty import fill_own_background
 from .media_icons import media_icon
-from .steady import SteadyBox
 
 SPEED_MIN = 1
 SPEED_MAX = 2000
@@ -33,13 +32,12 @@ class TransportBar(QWidget):
         super().__init__(parent)
         self.setObjectName("transport")
         self._playing = False
+        self._last = 0
+        self._position = 0
         self._make_buttons()
         self._make_timeline()
         speed_label = self._make_speed()
         self._lay_out(speed_label)
-
-        self._last = 0
-        self._position = 0
         self.set_speed(8)
         self.set_range(0)
 
@@ -77,6 +75,8 @@ class TransportBar(QWidget):
         super().changeEvent(event)
         if event.type() == QEvent.Type.PaletteChange:
             self._paint_icons()
+        elif event.type() == QEvent.Type.FontChange:
+            self._fit_counter()
 
     def _make_timeline(self) -> None:
         """The scrub slider and the step counter."""
@@ -124,7 +124,7 @@ class TransportBar(QWidget):
                   self.last_button):
             row.addWidget(b)
         row.addSpacing(12)
-        row.addWidget(SteadyBox(self.counter, self))
+        row.addWidget(self.counter)
         row.addStretch(1)
         row.addWidget(speed_label)
         row.addSpacing(6)
@@ -149,12 +149,22 @@ class TransportBar(QWidget):
         for widget in (self.first_button, self.back_button, self.play_button, self.forward_button,
                        self.last_button, self.timeline):
             widget.setEnabled(enabled)
-        digits = len(f"{max(last, 0):,}")
-        bold = self.counter.font()
-        bold.setBold(True)  # the style sheet draws it bold: measure it so
-        self.counter.setMinimumWidth(QFontMetrics(bold).horizontalAdvance(
-            "step " + "8" * (2 * digits + 1) + " / ") + 12)
+        self._fit_counter()
         self._update_counter()
+
+    def _fit_counter(self) -> None:
+        """The counter as large as the run's longest text, fixed: a new
+        text then asks no layout for room (a label's new text otherwise
+        lays out the main window again: 1 to 2 ms a step, measured, with the
+        caption's). Measured in the bar's font, which the counter has, in
+        bold as its style sheet draws it."""
+        digits = len(f"{max(self._last, 0):,}")
+        bold = QFont(self.font())
+        bold.setBold(True)
+        metrics = QFontMetrics(bold)
+        self.counter.setFixedSize(
+            metrics.horizontalAdvance("step " + "8" * (2 * digits + 1) + " / ") + 12,
+            metrics.height())
 
     def set_position(self, index: int) -> None:
         self._position = index

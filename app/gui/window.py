@@ -1,18 +1,14 @@
 """The main window: the pixel grid in the middle, the scene on the left,
 pseudo-code and variables on the right, the transport bar at the bottom.
 
-``launch()`` opens it on the demo scene; ``MainWindow`` can also be built
-on its own (tests, screenshots, benchmarks) and driven through
-``window.player``.
+``app.gui.launch()`` opens it; ``MainWindow`` can also be built on its own
+(tests, screenshots, benchmarks) and driven through ``window.player``.
 """
 from __future__ import annotations
 
-import gc
-import sys
-
 import numpy as np
 from PySide6.QtCore import Qt
-from PySide6.QtWidgets import QApplication, QMainWindow, QMessageBox
+from PySide6.QtWidgets import QMainWindow, QMessageBox
 
 from algorithms.core import registry
 from algorithms.core.raster import Raster
@@ -660,31 +656,3 @@ def crack_cells(trace, index: int) -> list:
         if table.name == "cracks":
             return [tuple(row) for row in table.rows]
     return []
-
-
-def launch(argv=None) -> int:
-    """Open the window on the demo scene and run until it is closed."""
-    app = QApplication.instance()
-    if app is None:
-        app = QApplication(list(argv) if argv is not None else sys.argv[:1])
-        app.setApplicationName(APP_NAME)
-        app.setStyle("Fusion")
-    app.setWindowIcon(app_icon())
-    window = MainWindow()
-    window.add_file_actions()
-    window.add_report_entry()
-    from app.gui.appdata import open_settings
-    window.view.remember(open_settings())  # the layout and zoom of the last run
-    from app.gui.preferences import reopen_last_scene
-    reopen_last_scene(window)
-    window.add_crash_handler()
-    recovery = window.add_recovery()
-    # What is loaded by now (modules, classes, the QApplication, the window)
-    # lives as long as the program: frozen, collections never walk it again,
-    # and the first one (1.2 ms, before the first paint) has nothing to do.
-    # Measured: some 120,000 objects, a full collection of them 37-45 ms, of
-    # which a few hundred were garbage; the window's build leaves about 40.
-    gc.freeze()
-    window.show()
-    recovery.offer()
-    return app.exec()

@@ -1,7 +1,9 @@
 """Pseudo-code panel, variables panel and transport bar."""
 import numpy as np
 import pyqtgraph as pg
-from PySide6.QtCore import Qt
+import pytest
+from PySide6.QtCore import QEvent, QObject, Qt
+from PySide6.QtGui import QFont
 
 from widgets.panels import CURRENT_LINE, CodePanel, VariablesPanel
 from widgets.transport import TransportBar
@@ -85,6 +87,83 @@ def test_transport_bar_signals_and_counter(qtbot):
         bar.set_position(5)
     bar.set_range(-1)
     assert bar.counter.text() == "no run" and not bar.play_button.isEnabled()
+
+
+class LayoutAsks(QObject):
+    """Counts the layout requests a widget receives."""
+
+    def __init__(self, widget):
+        super().__init__()
+        self.count = 0
+        widget.installEventFilter(self)
+
+    def eventFilter(self, obj, event):  # noqa: N802
+        if event.type() == QEvent.Type.LayoutRequest:
+            self.count += 1
+        return False
+
+
+def test_a_new_caption_lays_nothing_out_around_it(qtbot):
+    # A label's new text asks its layout for room, up to the main window;
+    # the caption's row keeps its height whatever the text.
+    panel = VariablesPanel()
+    qtbot.addWidget(panel)
+    panel.resize(320, 420)
+    panel.show()
+    qtbot.waitExposed(panel)
+    panel.set_caption("<b>Step 1</b> of 90")
+    qtbot.wait(20)
+    asks, height = LayoutAsks(panel), panel.caption_area.height()
+    for k in range(2, 12):
+        panel.set_caption(f"<b>Step {k}</b> of 90 · plots ({k}, 2) · branch <b>E</b>" * (k % 3))
+        qtbot.wait(2)
+    assert asks.count == 0 and panel.caption_area.height() == height
+    assert panel.caption.text().startswith("<b>Step 11</b>")
+
+
+@pytest.mark.parametrize("scale", [1.0, 2.5])
+def test_the_caption_shows_two_lines_whole_in_any_type(qtbot, scale):
+    panel = VariablesPanel()
+    qtbot.addWidget(panel)
+    font = QFont(panel.caption.font())
+    font.setPointSizeF(font.pointSizeF() * scale)
+    panel.caption.setFont(font)
+    panel.set_type_scale(scale)  # as the window's zoom does, after the fonts
+    panel.set_caption("<b>Step 12</b> of 90<br>plots (5, 3)")
+    panel.resize(320, 420)
+    panel.show()
+    qtbot.waitExposed(panel)
+    caption = panel.caption
+    assert caption.heightForWidth(caption.width()) <= panel.caption_area.viewport().height()
+
+
+def test_the_step_counter_lays_nothing_out(qtbot):
+    bar = TransportBar()
+    qtbot.addWidget(bar)
+    bar.show()
+    qtbot.waitExposed(bar)
+    bar.set_range(20_450)
+    qtbot.wait(20)
+    asks = LayoutAsks(bar)
+    for index in (0, 9, 10, 999, 1_000, 20_450):
+        bar.set_position(index)
+        qtbot.wait(2)
+    assert asks.count == 0
+    assert bar.counter.text() == "step 20,450 / 20,450"
+
+
+@pytest.mark.parametrize("scale", [1.0, 2.5])
+def test_the_step_counter_shows_its_longest_text_whole_in_any_type(qtbot, scale):
+    bar = TransportBar()
+    qtbot.addWidget(bar)
+    bar.set_range(20_450)
+    font = QFont(bar.font())
+    font.setPointSizeF(font.pointSizeF() * scale)
+    font.setBold(True)  # as the window's style sheet draws it
+    bar.setFont(font)
+    bar.set_position(20_448)
+    hint = bar.counter.sizeHint()
+    assert bar.counter.width() >= hint.width() and bar.counter.height() >= hint.height()
 
 
 def test_transport_speed(qtbot):
@@ -198,7 +277,7 @@ def test_the_marked_line_wraps_whole_never_cut(qtbot):
 
 
 def test_stepping_between_lines_keeps_each_row_as_tall_as_its_text(qtbot):
-    # Heights are kept per line, marked or not, and set again while stepping.
+    # Marked or not, each line is as tall as its text wraps at the column's width.
     from PySide6.QtGui import QFontMetrics
     p = CodePanel()
     qtbot.addWidget(p)

@@ -288,9 +288,9 @@ class Counter:
 
 def no_window():
     # With no command main opens the window; the fuzz must not.
-    module = types.ModuleType("app.gui.window")
+    module = types.ModuleType("app.gui")
     module.launch = lambda: 0
-    return mock.patch.dict(sys.modules, {"app.gui.window": module})
+    return mock.patch.dict(sys.modules, {"app.gui": module})
 
 
 # ------------------------------------------------------------------- tests
