@@ -67,11 +67,12 @@ AA_FILTER = _method("aa-filter", "Post-filtering (convolution)", "render aliased
           notes=("The filter reads the aliased image and writes a new one; it blurs the "
                  "stairs but cannot recover detail the centres missed.",),
           oracle=Oracle(
-              "none",
-              "No independent oracle yet: only the run against its module's vectorised filter, "
-              "the kernels' weights, the total kept, and an RMS error against the exact coverage "
-              "below the aliased fill's, are checked.",
-              ("algorithms/antialias/test_antialias_methods.py",)))
+              "exact",
+              "The aliased image from the exact coverage of the pixel centres, convolved with "
+              "the documented kernel in whole numbers (zero beyond the grid) and divided by its "
+              "sum once, written in the test: equal on the catalogue and random triangles.",
+              ("algorithms/antialias/test_antialias_reference.py",
+               "algorithms/antialias/test_antialias_methods.py")))
 LINE_WU = _method("line-wu", "Xiaolin Wu's line", "two pixels per column along the minor axis, "
           "intensities 1 - f and f", SEGMENT, WU_OPTIONS, wu_code, wu, uses_grid=False,
           kernel=wu_pixels,
@@ -102,11 +103,12 @@ AA_TEMPORAL = _method("aa-temporal", "Temporal aliasing and motion blur", "a spi
                  "degrees, so a turn of speed per frame looks like the apparent speed.",
                  "temporal_frames(points, options, grid) gives the images as arrays."),
           oracle=Oracle(
-              "none",
-              "No independent oracle yet: only properties are checked (a wheel turned by its "
-              "symmetry looks still, one turned nearly so turns backwards, a blurred frame is the "
-              "mean of its instants) and that the run gives its module's frames.",
-              ("algorithms/antialias/test_antialias_methods.py",)))
+              "reference",
+              "Each frame equals the documented definition written in the test: the mean over "
+              "its instants of the n x n samples the moved or turned shapes hold (whole-number "
+              "sample tests); jittered instants are only held to one per stratum.",
+              ("algorithms/antialias/test_antialias_reference.py",
+               "algorithms/antialias/test_antialias_methods.py")))
 
 # The module's algorithms, in the order they are listed.
 SPECS = (AA_SUPERSAMPLE, AA_ADAPTIVE, AA_FILTER, LINE_WU, LINE_AREA, AA_TEMPORAL)

@@ -495,11 +495,12 @@ PAINTER = AlgorithmSpec(
            "z-buffer's.",),
     explain=explain_painter, uses_grid=True, fragments=FRAGMENTS,
     oracle=Oracle(
-        "none",
-        "No independent oracle yet: only its disagreement count against its own module's z-buffer "
-        "image, the drawing order by the sort key, and no disagreement on stacks that sort, are "
-        "checked.",
-        ("algorithms/visibility/test_visibility.py",)),
+        "exact",
+        "Each pixel shows the last triangle, in the order the key sorts (farthest first, ties in "
+        "input order), whose exact coverage holds it; vertex colours mixed by exact barycentric "
+        "weights, within half a level. Written in the test, on the catalogue and random scenes.",
+        ("algorithms/visibility/test_visibility_reference.py",
+         "algorithms/visibility/test_visibility.py")),
 )
 
 # The module's algorithms, in the order they are listed.
