@@ -17,7 +17,7 @@ from fractions import Fraction
 
 from algorithms.circles.curves import grey_ink
 from algorithms.core.code import Code, listing
-from algorithms.core.registry import AlgorithmSpec, Inputs, Option
+from algorithms.core.registry import AlgorithmSpec, Inputs, Option, Oracle
 from algorithms.core.steps import PLOT, Start, Vars
 
 N = Option("n", "int", 3, "subpixels per pixel side", minimum=1, maximum=16)
@@ -138,6 +138,12 @@ LINE_SUBPIXELS = AlgorithmSpec(
            "The line has no width: the count says how long the line runs in the pixel, "
            "roughly, not how much of the pixel it covers (line-area measures that).",
            "Only the part of the line inside the grid is counted."),
+    oracle=Oracle(
+        "exact",
+        "Per pixel, how many of its n x n subpixels' half-open squares the segment meets, by a "
+        "brute-force test of every subpixel in Fractions written in the test; intensity "
+        "min(1, k / n).",
+        ("algorithms/antialias/test_subpixel_line.py",)),
 )
 
 # The module's algorithms, in the order they are listed.

@@ -13,7 +13,7 @@ from fractions import Fraction
 from algorithms.circles.midpoint import CENTRE, PLOT_OPS, RADIUS, _centre, mirrors8
 from algorithms.core.code import Code, listing
 from algorithms.lines.bresenham import bresenham_pixels
-from algorithms.core.registry import AlgorithmSpec, Inputs, Option
+from algorithms.core.registry import AlgorithmSpec, Inputs, Option, Oracle
 from algorithms.core.steps import NO_PIXEL, PLOT, VISIT, Start, Vars
 
 NAN = math.nan
@@ -117,6 +117,12 @@ CIRCLE_DISTANCE = AlgorithmSpec(
            "A pixel centre exactly on the circle counts as inside.",
            "The outline is the disk's pixels with a 4-neighbour outside: 8-connected and "
            "one pixel thin."),
+    oracle=Oracle(
+        "exact",
+        "The pixels whose centres lie within R of the real centre (disk), or those of them with a "
+        "4-neighbour outside (outline), in exact Fractions.",
+        ("algorithms/circles/test_curves.py", "algorithms/test_stability.py"),
+        check="disk"),
 )
 
 
@@ -183,6 +189,13 @@ CIRCLE_WU = AlgorithmSpec(
            "to 1.",
            "Near the diagonal the octant's pixels and their mirrors meet: a pixel written "
            "twice keeps the last intensity, as the raster keeps the last write."),
+    oracle=Oracle(
+        "exact",
+        "The pixels floor(h) and floor(h) + 1 of each octant column, h = sqrt(R^2 - x^2), from "
+        "integer square roots, mirrored 8 ways; the intensities give h to within 1e-9 and add up "
+        "to 1 per column.",
+        ("algorithms/circles/test_curves.py", "algorithms/test_stability.py"),
+        check="wu-circle"),
 )
 
 
@@ -249,6 +262,12 @@ CURVE_BEZIER = AlgorithmSpec(
            "its sides cut across the bends. More segments follow the curve closer, until a "
            "segment is shorter than a pixel and plots nothing new.",
            "B(k/N) is computed exactly and rounded halves up."),
+    oracle=Oracle(
+        "exact",
+        "The curve's points B(k/N) by de Casteljau in Fractions, rounded, joined by the exact "
+        "nearest-pixel lines (algorithms/exact/lines.py), pixel for pixel in order.",
+        ("algorithms/circles/test_curves.py", "algorithms/test_stability.py"),
+        check="bezier-polyline"),
 )
 
 # The module's algorithms, in the order they are listed.

@@ -15,7 +15,7 @@ from fractions import Fraction
 import numpy as np
 
 from algorithms.core.code import Code, listing
-from algorithms.core.registry import AlgorithmSpec, Inputs, Option
+from algorithms.core.registry import AlgorithmSpec, Inputs, Option, Oracle
 from algorithms.core.steps import NO_PIXEL, PLOT, Start, Vars
 
 NAN = math.nan
@@ -191,6 +191,12 @@ CIRCLE_SQRT4 = AlgorithmSpec(
            "twice on each side (duplicates).",
            "For radii up to 4096 a float square root floors to the exact integer "
            "root, so the cast loses nothing here."),
+    oracle=Oracle(
+        "exact",
+        "y = floor(sqrt(R^2 - x^2)) mirrored four ways, from integer square roots "
+        "(algorithms/exact/circles.py), with its duplicates and gap columns counted exactly.",
+        ("algorithms/circles/test_circles.py", "algorithms/test_stability.py"),
+        check="sqrt4-circle"),
 )
 
 
@@ -292,6 +298,12 @@ CIRCLE_SQRT8 = AlgorithmSpec(
            "For r = 0 the four axis plots are one pixel (three duplicates).",
            "For radii up to 4096 a float square root floors to the exact integer "
            "root, so the cast loses nothing here."),
+    oracle=Oracle(
+        "exact",
+        "The integer-root octant mirrored eight ways (algorithms/exact/circles.py): a closed curve "
+        "without gaps.",
+        ("algorithms/circles/test_circles.py", "algorithms/test_stability.py"),
+        check="sqrt8-circle"),
 )
 
 
@@ -448,6 +460,12 @@ CIRCLE_MIDPOINT = AlgorithmSpec(
            "circle crosses.",
            "Each pixel is plotted once: on the axes and on the diagonal only four "
            "mirrors are distinct, and a step that crosses the diagonal stops the loop."),
+    oracle=Oracle(
+        "exact",
+        "The midpoint circle's pixels from integer square roots (algorithms/exact/circles.py), for "
+        "both starts, each once; each decision is F at the midpoint, exactly.",
+        ("algorithms/circles/test_circles.py", "algorithms/test_stability.py"),
+        check="midpoint-circle"),
 )
 
 
@@ -580,6 +598,13 @@ ELLIPSE_MIDPOINT = AlgorithmSpec(
            "With rx == ry the pixels are exactly those of the midpoint circle "
            "(drawn in another order).",
            "rx = 0 or ry = 0 gives a segment along an axis; both 0, one pixel."),
+    oracle=Oracle(
+        "reference",
+        "A bound: every pixel within one pixel of the ellipse along its column or row (exact "
+        "Fractions), 4-way symmetric and unbroken, decisions 4F at the midpoints. The exact pixels "
+        "only when rx = ry (the midpoint circle) or an axis is 0.",
+        ("algorithms/circles/test_circles_ellipse.py", "algorithms/test_stability.py"),
+        check="midpoint-ellipse"),
 )
 
 # The module's algorithms, in the order they are listed.

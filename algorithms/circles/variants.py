@@ -12,7 +12,7 @@ import math
 from algorithms.circles.midpoint import CENTRE, E_SE, PLOT_OPS, RADIUS, ArcWatch, _centre, mirrors8
 from algorithms.core.code import Code, listing
 from algorithms.exact.circles import midpoint_circle as exact_midpoint_circle
-from algorithms.core.registry import AlgorithmSpec, Option
+from algorithms.core.registry import AlgorithmSpec, Option, Oracle
 from algorithms.core.steps import PLOT, Start, Vars
 
 NAN = math.nan
@@ -87,6 +87,13 @@ CIRCLE_BRESENHAM = AlgorithmSpec(
            "It chooses the same pixels as the midpoint circle for every whole radius: the "
            "two tests could only disagree if R^2 - x^2 - (y - 1/2)^2, a whole number less "
            "1/4, lay in (0, 1/4]."),
+    oracle=Oracle(
+        "exact",
+        "Per column the candidate with the smaller integer residual |x^2 + y^2 - R^2|, mirrored 8 "
+        "ways, written in the test: the exact midpoint circle's pixels "
+        "(algorithms/exact/circles.py); d is the sum of the two residuals.",
+        ("algorithms/circles/test_circle_variants.py", "algorithms/test_stability.py"),
+        check="bresenham-circle"),
 )
 
 
@@ -156,6 +163,13 @@ CIRCLE_POLAR = AlgorithmSpec(
            "leaves gaps, a smaller one plots pixels again (duplicates).",
            "Two cosines and two sines a point: far dearer than the midpoint circle's "
            "additions."),
+    oracle=Oracle(
+        "reference",
+        "A bound: every pixel's square meets the ideal circle (an exact integer test), in "
+        "ceil(2 pi / dt) plots; gaps and duplicates recounted from the pixels, no gap with "
+        "dt = 1/R. Which pixel near the circle is not fixed.",
+        ("algorithms/circles/test_circle_variants.py", "algorithms/test_stability.py"),
+        check="polar-circle"),
 )
 
 
@@ -233,6 +247,13 @@ CIRCLE_MIDPOINT_PRINTED = AlgorithmSpec(
            "mirrors on the axes and the diagonal, so pixels repeat (duplicates).",
            "off_circle and missing count the pixels unlike circle-midpoint's; "
            "first_wrong_column is the first octant column where they part (-1: none)."),
+    oracle=Oracle(
+        "exact",
+        "The lecture's code as printed, transcribed in integers (tests/support/curve_oracles.py), "
+        "pixel for pixel in order; its pixels off the exact midpoint circle and those it misses "
+        "are counted.",
+        ("algorithms/circles/test_circle_variants.py", "algorithms/test_stability.py"),
+        check="printed-midpoint-circle"),
 )
 
 # The module's algorithms, in the order they are listed.

@@ -276,14 +276,18 @@ class Oracle:
     ``kind``: "exact" (integer or rational arithmetic written apart from the
     algorithm: algorithms/exact/ or tests/support/), "reference" (a plain
     definition or a well-kept library, with a stated tolerance where
-    floats differ), or "none" (``about`` says why; a smoke test still runs
-    it). ``about`` says what the algorithm is held to; ``tests`` names the
-    test modules that do it (paths under tests/).
+    floats differ), or "none" (``about`` says why, "No independent oracle
+    ...", and what is checked; a smoke test still runs it). ``about`` says
+    what the algorithm is held to; ``tests`` names the test modules that do
+    it (paths under tests/). ``check`` names the check
+    tests/algorithms/test_stability.py runs on each of its hard cases
+    (empty: only the checks every algorithm gets there).
     """
 
     kind: str
     about: str
     tests: tuple[str, ...] = ()
+    check: str = ""
 
     def __post_init__(self):
         if self.kind not in ORACLE_KINDS:

@@ -28,7 +28,7 @@ from algorithms.core.code import Code, listing
 from algorithms.fill.kernel import circle_fill_state, flood_fill_state
 from algorithms.fill.seed import (BOUNDARY, FILLED, FREE, WALL, circle_outline, circle_seed, inside_pixel,
                         seed_pixel)
-from algorithms.core.registry import AlgorithmSpec, InputError, Inputs, Option
+from algorithms.core.registry import AlgorithmSpec, InputError, Inputs, Option, Oracle
 from algorithms.core.steps import PER_PIXEL, PLOT, VISIT, Note, Span, Start, Vars
 from algorithms.core.trace import checkpoint, work_allowance
 
@@ -595,6 +595,14 @@ FLOOD_FILL = AlgorithmSpec(
            "mode=region fills the pixels joined to the seed that have the seed's colour. "
            "With one boundary colour that is the boundary fill's region when the seed is "
            "inside; a seed on the outline recolours the outline's connected pixels instead."),
+    oracle=Oracle(
+        "exact",
+        "The seed's 4- or 8-connected region, by a breadth-first search written in the tests and "
+        "by scikit-image's flood, within an outline of exact nearest-pixel segments; every order "
+        "fills the same pixels, none twice but outline pixels a region fill recolours.",
+        ("algorithms/fill/test_fill.py", "algorithms/fill/test_fill_kernel.py",
+         "algorithms/fill/test_fill_circle_region.py", "algorithms/test_stability.py"),
+        check="seed-fill"),
 )
 
 
@@ -618,6 +626,12 @@ FLOOD_FILL_CIRCLE = AlgorithmSpec(
            "mode=region fills the pixels joined to the seed that have the seed's colour: "
            "inside the circle that is the same as mode=boundary, but a seed on the circle "
            "recolours the circle itself."),
+    oracle=Oracle(
+        "exact",
+        "The seed's region by scikit-image's flood and a breadth-first search written in the "
+        "tests, within the exact midpoint circle (algorithms/exact/circles.py).",
+        ("algorithms/fill/test_fill_circle_region.py", "algorithms/test_stability.py"),
+        check="seed-fill"),
 )
 
 # The module's algorithms, in the order they are listed.

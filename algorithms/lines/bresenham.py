@@ -6,7 +6,7 @@ from itertools import chain
 import numpy as np
 
 from algorithms.core.code import Code, listing
-from algorithms.core.registry import AlgorithmSpec, Option
+from algorithms.core.registry import AlgorithmSpec, Option, Oracle
 from algorithms.core.steps import NO_PIXEL, PLOT, Start
 from .common import COLORS, SEGMENT, Octant, color_ramp, colored, round_half_up, with_color
 
@@ -137,6 +137,14 @@ LINE_BRESENHAM = AlgorithmSpec(
     explain=bresenham_explain,
     notes=("The textbook loop is written for octant 1; other octants are mapped "
            "there and each plotted pixel is mapped back.",),
+    oracle=Oracle(
+        "exact",
+        "The pixel nearest the ideal line in every column, from exact rational arithmetic "
+        "(algorithms/exact/lines.py): ties toward P, or down with symmetric. scikit-image's line "
+        "agrees but for its other tie rule.",
+        ("algorithms/lines/test_line_bresenham.py", "algorithms/lines/test_line_skimage.py",
+         "algorithms/test_stability.py"),
+        check="nearest-line"),
 )
 
 
@@ -215,6 +223,13 @@ LINE_DDA = AlgorithmSpec(
     generator=dda,
     kernel=dda_pixels,
     notes=("round(v) is floor(v + 1/2): halves round up.",),
+    oracle=Oracle(
+        "exact",
+        "With float64, each pixel is the exact point after k of n equal steps from P to Q, rounded "
+        "(either neighbour at an exact half). With float32, only both end pixels, on short "
+        "segments near the origin; a test shows it drifting on a long line.",
+        ("algorithms/lines/test_line_float_forms.py", "algorithms/test_stability.py"),
+        check="dda-line"),
 )
 
 # The module's algorithms, in the order they are listed.

@@ -6,7 +6,7 @@ import math
 import numpy as np
 
 from algorithms.core.code import Code, listing
-from algorithms.core.registry import AlgorithmSpec, InputError, Option
+from algorithms.core.registry import AlgorithmSpec, InputError, Option, Oracle
 from algorithms.core.steps import NO_PIXEL, PLOT, VISIT, Start, Vars
 from .common import (COLORS, NAN, SEGMENT, color_ramp, fraction_of, major_axis, pixel_at,
                      round_half_up, sign, with_color)
@@ -126,6 +126,13 @@ LINE_INCREMENTAL = AlgorithmSpec(
            "m is a float, so m * (x - x0) + y0 can miss an exact whole number by "
            "a rounding error, which floor then turns into the pixel below.",
            "round(v) is floor(v + 1/2): halves round up."),
+    oracle=Oracle(
+        "exact",
+        "In every column, the floor or the rounding (by the option) of the exact line value, "
+        "either neighbour where that value is whole or an exact half. With rounding round, the "
+        "pixel nearest the ideal line in every column.",
+        ("algorithms/lines/test_line_float_forms.py", "algorithms/test_stability.py"),
+        check="incremental-line"),
 )
 
 
@@ -223,6 +230,12 @@ LINE_EXPLICIT = AlgorithmSpec(
     notes=("The loops include their last value, so both endpoints are plotted; "
            "a loop written with '<' would stop one pixel short of Q.",
            "round(v) is floor(v + 1/2): halves round up."),
+    oracle=Oracle(
+        "exact",
+        "The pixel nearest the ideal line in every column of the major axis, from exact rational "
+        "line values (algorithms/exact/lines.py); either neighbour at an exact half.",
+        ("algorithms/lines/test_line_float_forms.py", "algorithms/test_stability.py"),
+        check="nearest-line"),
 )
 
 
@@ -357,6 +370,12 @@ LINE_IMPLICIT = AlgorithmSpec(
            "segment, so the strict < never has to break a tie. Two pixels of one "
            "column can both pass, so the line is up to two pixels thick.",
            "Colours follow where each pixel projects onto PQ."),
+    oracle=Oracle(
+        "exact",
+        "Every pixel whose centre lies closer than 1/2 px to the segment, and no other, by exact "
+        "integer distances (algorithms/exact/lines.py); each pixel of the box tested once.",
+        ("algorithms/lines/test_line_implicit.py", "algorithms/test_stability.py"),
+        check="implicit-line"),
 )
 
 
@@ -483,6 +502,14 @@ LINE_PARAMETRIC = AlgorithmSpec(
            "one per jump however many pixels it skips.",
            "Too small a dt wastes work on duplicates; too large a dt leaves gaps. "
            "dt = auto takes one step per pixel along the major axis and leaves no gaps."),
+    oracle=Oracle(
+        "exact",
+        "Each pixel is P + t (Q - P) rounded, computed exactly from the run's t (which must be k/n "
+        "or k dt, ending at 1), either neighbour within 1e-9 of a half; duplicates and gaps "
+        "recounted from the pixels. With dt auto, the pixel nearest the ideal line in every "
+        "column.",
+        ("algorithms/lines/test_line_parametric.py", "algorithms/test_stability.py"),
+        check="parametric-line"),
 )
 
 # The module's algorithms, in the order they are listed.

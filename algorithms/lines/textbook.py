@@ -15,7 +15,7 @@ from itertools import chain
 import numpy as np
 
 from algorithms.core.code import Code, listing
-from algorithms.core.registry import AlgorithmSpec, Option
+from algorithms.core.registry import AlgorithmSpec, Option, Oracle
 from algorithms.core.steps import NO_PIXEL, PLOT, VISIT, Start, Vars
 from .bresenham import bresenham_pixels
 from .common import COLORS, NAN, SEGMENT, Octant, color_ramp, colored, round_half_up, with_color
@@ -123,6 +123,12 @@ LINE_DDA_PRINTED = AlgorithmSpec(
            "steeper than 45 degrees leaves rows empty (rows_missed counts them). The slide adds "
            "m before it writes; here y starts at y1 and is written first, so P is plotted.",
            "Float additions can land just under a whole number, which the cast then drops."),
+    oracle=Oracle(
+        "exact",
+        "truncate: the exact truncation of P + k (Q - P) / n in Fractions, on slopes whose float "
+        "sums are exact; x-only: one pixel per column at the rounded exact y, and the rows it "
+        "misses counted.",
+        ("algorithms/lines/test_line_textbook.py",)),
 )
 
 
@@ -277,6 +283,14 @@ LINE_BRESENHAM_TEXTBOOK = AlgorithmSpec(
            "it leaves the corrected line.",
            "s and n are the distances from the ideal line to the lower and the upper candidate "
            "(the slides' b and a); d = dx*(s - n)."),
+    oracle=Oracle(
+        "exact",
+        "ties-ne and sign-reversed: the pixel nearest the ideal line in every column, ties away "
+        "from P, from exact rational arithmetic (algorithms/exact/lines.py). as-printed: the "
+        "slide's listing transcribed in integers in the test, and its pixels off the nearest line "
+        "counted.",
+        ("algorithms/lines/test_line_textbook.py", "algorithms/test_stability.py"),
+        check="textbook-line"),
 )
 
 
@@ -343,6 +357,13 @@ LINE_MIDPOINT = AlgorithmSpec(
     notes=("The same pixels as line-bresenham: d is twice F(M), the implicit form at the "
            "midpoint, which is Bresenham's decision value derived another way.",
            "A midpoint exactly on the line (d = 0) goes to E, as line-bresenham's ties do."),
+    oracle=Oracle(
+        "exact",
+        "The pixel nearest the ideal line in every column, from exact rational arithmetic "
+        "(algorithms/exact/lines.py; ties either way), and each decision d is twice the implicit "
+        "form at the midpoint, in Fractions.",
+        ("algorithms/lines/test_line_textbook.py", "algorithms/test_stability.py"),
+        check="nearest-line"),
 )
 
 
@@ -391,6 +412,11 @@ LINE_IMPLICIT_INFINITE = AlgorithmSpec(
     notes=("line-implicit limits the test to P and Q's bounding box; without that box the "
            "implicit form draws the whole line through P and Q, past both ends.",
            "The test is exact in integers: 4 * F^2 < a^2 + b^2."),
+    oracle=Oracle(
+        "exact",
+        "Every pixel of the grid whose centre lies closer than 1/2 px to the infinite line PQ, and "
+        "no other, by exact rational distances written in the test.",
+        ("algorithms/lines/test_line_textbook.py",)),
 )
 
 
@@ -440,6 +466,11 @@ LINE_PARAMETRIC_PRINTED = AlgorithmSpec(
            "adds dt to t, and 1000 additions of 0.001 give 1.0000000000000007, so its last t "
            "is 0.999... and on a line longer than about 500 px Q is never plotted.",
            "last_t and Q_plotted say what happened."),
+    oracle=Oracle(
+        "reference",
+        "The printed loop transcribed in the test, with the listing's own float additions of dt "
+        "and rounding; at dt = 0.001 it misses just Q, which exact steps reach, and says so.",
+        ("algorithms/lines/test_line_textbook.py",)),
 )
 
 # The module's algorithms, in the order they are listed.

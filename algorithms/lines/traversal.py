@@ -11,7 +11,8 @@ import math
 from fractions import Fraction
 
 from algorithms.core.code import Code, listing
-from algorithms.core.registry import MAX_INTEGER_COORDINATE, AlgorithmSpec, InputError, Inputs
+from algorithms.core.registry import (MAX_INTEGER_COORDINATE, AlgorithmSpec, InputError, Inputs,
+                                     Oracle)
 from algorithms.core.steps import NO_PIXEL, PLOT, VISIT, Start
 
 REAL_SEGMENT = Inputs(2, integer=False, names=("P", "Q"))
@@ -88,6 +89,11 @@ LINE_SUPERCOVER = AlgorithmSpec(
     notes=("Cells are closed here: a segment through a cell corner takes all four cells "
            "around it, and one along a grid line takes both rows beside it.",
            "Points are real; pixel (i, j) is the square [i, i+1) x [j, j+1)."),
+    oracle=Oracle(
+        "exact",
+        "Every cell the segment meets, corners included, each once: exact Liang-Barsky clipping of "
+        "the segment against each cell, in Fractions written in the test.",
+        ("algorithms/lines/test_line_traversal.py",)),
 )
 
 
@@ -161,6 +167,12 @@ LINE_AMANATIDES_WOO = AlgorithmSpec(
     notes=("A 4-connected walk: where the segment passes exactly through a corner it steps "
            "in y first, so it takes one of the two side cells the supercover takes both of.",
            "Points are real; pixel (i, j) is the square [i, i+1) x [j, j+1)."),
+    oracle=Oracle(
+        "exact",
+        "A 4-connected walk from P's cell to Q's, one step per grid line crossed, holding every "
+        "cell whose inside the segment crosses and none it misses (exact clipping in Fractions "
+        "written in the test); at a corner, either side cell.",
+        ("algorithms/lines/test_line_traversal.py",)),
 )
 
 
@@ -256,6 +268,11 @@ LINE_DIAMOND_EXIT = AlgorithmSpec(
            "The last pixel is left out when Q lies in its diamond, so a strip of segments "
            "draws each shared pixel once.",
            "Candidates are the supercover's cells, which hold every diamond the segment meets."),
+    oracle=Oracle(
+        "exact",
+        "The cells whose diamond the segment meets, but Q's, each once: the diamond-exit rule "
+        "clipped exactly in Fractions (in u = x + y, v = x - y) in the test.",
+        ("algorithms/lines/test_line_traversal.py",)),
 )
 
 # The module's algorithms, in the order they are listed.

@@ -1,7 +1,7 @@
 """The pipeline family's entries in the registry."""
 from __future__ import annotations
 
-from algorithms.core.registry import AlgorithmSpec, Option
+from algorithms.core.registry import AlgorithmSpec, Option, Oracle
 from algorithms.visibility.zbuffer_painter import COLORS, FILL_RULE, TRIANGLES, Z
 
 from .blend import ALPHA, DEPTH_WRITE, ORDER, blend, blend_code
@@ -20,7 +20,13 @@ BLEND_OVER = AlgorithmSpec(
            "that pierce each other cannot be sorted as wholes."),
     uses_grid=True,
     fragments=(("triangle", "@triangle"), ("z", "z"), ("alpha", "alpha"), ("source", "src"), ("before", "dst"),
-               ("color", "rgb")))
+               ("color", "rgb")),
+    oracle=Oracle(
+        "reference",
+        "The colour buffer from `over` composited per pixel in the test, coverage and depth order "
+        "in exact Fractions, within half a colour level, for the input and back-to-front orders.",
+        ("algorithms/pipeline/test_pipeline_blend.py",)),
+)
 
 # ---------------------------------------------------------------- the 3-D pipeline
 
@@ -66,7 +72,14 @@ PIPELINE = AlgorithmSpec(
            "A fragment's panel rows retrace it: its weights, then its clip, NDC and window "
            "coordinates from the corners of its fan triangle."),
     explain=explain, uses_grid=True,
-    fragments=(("triangle", "@triangle"), ("depth", "depth"), ("w", "w"), ("u", "u"), ("v", "v"), ("color", "rgb")))
+    fragments=(("triangle", "@triangle"), ("depth", "depth"), ("w", "w"), ("u", "u"), ("v", "v"), ("color", "rgb")),
+    oracle=Oracle(
+        "reference",
+        "Flat, Gouraud and Phong colours equal the shading formulas written in the test within 1.5 "
+        "levels; the near clipping keeps exactly the part in front (Fractions), and a clipped run "
+        "equals the unclipped one beyond the near plane.",
+        ("algorithms/pipeline/test_pipeline_stages.py",)),
+)
 
 # The module's algorithms, in the order they are listed.
 SPECS = (BLEND_OVER, PIPELINE)

@@ -6,7 +6,7 @@ from fractions import Fraction
 import numpy as np
 
 from algorithms.core.code import Code, listing
-from algorithms.core.registry import AlgorithmSpec, InputError
+from algorithms.core.registry import AlgorithmSpec, InputError, Oracle
 from algorithms.core.steps import NO_PIXEL, PER_PIXEL, PER_ROW, PLOT, Note, Span, Start, Table, Vars
 from .common import (HALF_PIXEL, NAN, ONE, POLYGON, as_pixels, cross, first_column, first_index,
                      signed_area2, single_contour, snap_contours, table_number, without_repeats)
@@ -181,6 +181,13 @@ CONVEX = AlgorithmSpec(
            "Refuses a polygon that is not convex, or more than one contour.",
            "Same fill rule as polygon-scanline: a centre on the left chain is filled, "
            "one on the right chain is not."),
+    oracle=Oracle(
+        "exact",
+        "The pixel centres the polygon covers, from exact integer arithmetic "
+        "(algorithms/exact/polygons.py), on the hard cases; on random convex polygons the same "
+        "runs, row for row, as polygon-scanline.",
+        ("algorithms/polygons/test_polygons_convex_tessellate.py", "algorithms/test_stability.py"),
+        check="covered-polygon"),
 )
 
 # The module's algorithms, in the order they are listed.

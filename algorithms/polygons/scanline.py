@@ -6,7 +6,7 @@ from fractions import Fraction
 import numpy as np
 
 from algorithms.core.code import Code, listing
-from algorithms.core.registry import AlgorithmSpec, Option
+from algorithms.core.registry import AlgorithmSpec, Option, Oracle
 from algorithms.core.steps import NO_PIXEL, PER_PIXEL, PER_ROW, PLOT, Note, Span, Start, Table, Vars
 from .common import (FLOATS, HALF_PIXEL, ONE, POLYGON, WholeAndError, as_pixels, edge_label,
                      first_column, first_index, snap_contours, table_number)
@@ -382,6 +382,14 @@ SCANLINE = AlgorithmSpec(
            "share a pixel.",
            "Any number of contours: holes are contours inside others; self-intersecting "
            "polygons are filled by the fill rule."),
+    oracle=Oracle(
+        "exact",
+        "The pixel centres the polygon covers by either fill rule, ties to left and bottom edges, "
+        "from exact integer arithmetic (algorithms/exact/polygons.py); float64 differs only at "
+        "centres within 1e-9 px of an edge. scikit-image's polygon agrees off the outline.",
+        ("algorithms/polygons/test_polygons_scanline.py",
+         "algorithms/polygons/test_polygons_skimage.py", "algorithms/test_stability.py"),
+        check="covered-polygon"),
 )
 
 # The module's algorithms, in the order they are listed.

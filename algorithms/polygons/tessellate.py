@@ -4,7 +4,7 @@ from __future__ import annotations
 import numpy as np
 
 from algorithms.core.code import Code, listing
-from algorithms.core.registry import AlgorithmSpec, InputError, Option
+from algorithms.core.registry import AlgorithmSpec, InputError, Option, Oracle
 from algorithms.core.steps import NO_PIXEL, PER_PIXEL, PER_ROW, PLOT, VISIT, Note, Span, Start, Table, Vars
 from .common import (HALF_PIXEL, NAN, ONE, POLYGON, cross, first_index, pixel_of, signed_area2,
                      single_contour, snap_contours, without_repeats)
@@ -309,6 +309,13 @@ TESSELLATE = AlgorithmSpec(
            "shared diagonal goes to exactly one triangle, so the result equals "
            "polygon-scanline's; inclusive shows the overlaps, strict the cracks.",
            "Refuses a self-intersecting polygon or more than one contour."),
+    oracle=Oracle(
+        "exact",
+        "With ties left-bottom, the pixel centres the polygon covers, each once, from exact "
+        "integer arithmetic (algorithms/exact/polygons.py); inclusive and strict are only checked "
+        "to nest around it.",
+        ("algorithms/polygons/test_polygons_convex_tessellate.py", "algorithms/test_stability.py"),
+        check="covered-polygon"),
 )
 
 # The module's algorithms, in the order they are listed.

@@ -13,7 +13,7 @@ from __future__ import annotations
 from fractions import Fraction
 
 from algorithms.core.code import Code, listing
-from algorithms.core.registry import AlgorithmSpec
+from algorithms.core.registry import AlgorithmSpec, Oracle
 from algorithms.core.steps import NO_PIXEL, PER_PIXEL, PER_ROW, PLOT, Span, Start, Table, Vars
 from .common import HALF_PIXEL, ONE, POLYGON, as_pixels, edge_label, first_column, snap_contours
 from .scanline import (ARITHMETIC, FILL_RULE, ScanEdge, first_row, runs, scanline,
@@ -104,6 +104,12 @@ POLYGON_BRUTE_SCANLINE = AlgorithmSpec(
            "(tests counts them: rows x edges), where the edge table only looks at the edges "
            "that reach the row.",
            "A crossing is where an edge meets the row's centre line y + 1/2, exactly."),
+    oracle=Oracle(
+        "exact",
+        "The pixel centres the polygon covers by either fill rule, each once, from exact integer "
+        "arithmetic (algorithms/exact/polygons.py); its tests counted as rows times edges.",
+        ("algorithms/polygons/test_polygon_textbook.py", "algorithms/test_stability.py"),
+        check="covered-polygon"),
 )
 
 
@@ -141,6 +147,13 @@ POLYGON_SCANLINE_XLOW = AlgorithmSpec(
            "sampled at the middle of its bottom edge (i + 1/2, y): the fill sits half a pixel "
            "lower than polygon-scanline's, and a vertex on a whole y starts its edge's rows.",
            "Everything else (the AET, the fill rule, the spans) is polygon-scanline's."),
+    oracle=Oracle(
+        "exact",
+        "With exact arithmetic, the pixels whose sample point (i + 1/2, j) the polygon covers: the "
+        "exact centre rule (algorithms/exact/polygons.py) on the polygon lifted by 1/2 px. float64 "
+        "and float32 are not checked against it.",
+        ("algorithms/polygons/test_polygon_textbook.py", "algorithms/test_stability.py"),
+        check="covered-polygon-lifted"),
 )
 
 
@@ -177,6 +190,13 @@ POLYGON_SCANLINE_INTEGER = AlgorithmSpec(
            "carries when e reaches it, as Bresenham's line does: integers only.",
            "The same pixels as polygon-scanline's exact arithmetic; the AET shows x as "
            "(whole, e/denominator)."),
+    oracle=Oracle(
+        "exact",
+        "The pixel centres the polygon covers, from exact integer arithmetic "
+        "(algorithms/exact/polygons.py), and each active edge's whole part and error term equal to "
+        "its exact crossing, in Fractions.",
+        ("algorithms/polygons/test_polygon_textbook.py", "algorithms/test_stability.py"),
+        check="covered-polygon"),
 )
 
 # The module's algorithms, in the order they are listed.

@@ -13,7 +13,7 @@ from __future__ import annotations
 from fractions import Fraction
 
 from algorithms.core.code import Code, listing
-from algorithms.core.registry import AlgorithmSpec
+from algorithms.core.registry import AlgorithmSpec, Oracle
 from algorithms.core.steps import NO_PIXEL, PER_PIXEL, PER_ROW, PLOT, Span, Start, Table, Vars
 from .common import ONE, POLYGON, cross, snap_contours
 from .scanline import FILL_RULE
@@ -131,6 +131,12 @@ POLYGON_TESSELLATE_ANY = AlgorithmSpec(
            "keep their order and each filled span is a trapezoid.",
            "Coordinates stay exact fractions; each triangle is filled with the left-bottom "
            "tie rule, so the pixels equal polygon-scanline's."),
+    oracle=Oracle(
+        "exact",
+        "The pixel centres the polygon covers by either fill rule, holes and self-crossings "
+        "included, each once, from exact integer arithmetic (algorithms/exact/polygons.py).",
+        ("algorithms/polygons/test_polygon_textbook.py", "algorithms/test_stability.py"),
+        check="covered-polygon"),
 )
 
 # The module's algorithms, in the order they are listed.

@@ -1,7 +1,7 @@
 """The textures family's entries in the registry."""
 from __future__ import annotations
 
-from algorithms.core.registry import AlgorithmSpec, Option
+from algorithms.core.registry import AlgorithmSpec, Option, Oracle
 from algorithms.triangles.edges import BASE_OPTIONS, TRIANGLES, explain
 from algorithms.triangles.specs import make_kernel
 
@@ -49,7 +49,15 @@ TRIANGLE_TEXTURE = AlgorithmSpec(
             "nearest, bilinear, mip-mapped, anisotropic or the reference average",
     inputs=TRIANGLES, options=OPTIONS, code=code_lines, generator=generator,
     kernel=make_kernel("triangle-texture", generator, code_lines),
-    notes=NOTES, explain=explain, uses_grid=True, fragments=FRAGMENTS)
+    notes=NOTES, explain=explain, uses_grid=True, fragments=FRAGMENTS,
+    oracle=Oracle(
+        "reference",
+        "uv, its derivatives and lambda equal exact rational values to 1e-12; nearest and bilinear "
+        "colours equal a texel lookup written in the test within half a level; the mip-mapped and "
+        "anisotropic filters only stay within bounds of the module's own reference filter.",
+        ("algorithms/textures/test_textures_mapping.py",
+         "algorithms/textures/test_textures_filters.py")),
+)
 
 # The module's algorithms, in the order they are listed.
 SPECS = (TRIANGLE_TEXTURE,)

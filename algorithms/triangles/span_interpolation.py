@@ -13,7 +13,7 @@ from fractions import Fraction
 
 from algorithms.core.code import Code, listing
 from algorithms.circles.curves import grey_ink
-from algorithms.core.registry import AlgorithmSpec, Option
+from algorithms.core.registry import AlgorithmSpec, Option, Oracle
 from algorithms.core.steps import NO_PIXEL, PLOT, Note, Start, Vars
 from algorithms.triangles.variants import HALF, centre_range, check_coordinates, cramer, triangles_of
 from algorithms.triangles.edges import TRIANGLES
@@ -101,6 +101,12 @@ TRIANGLE_SPAN_INTERPOLATE = AlgorithmSpec(
            "exactly).",
            "The pixels are drawn in grey from black (the smallest vertex value) to white "
            "(the largest); s takes one value per point, repeated when fewer are given."),
+    oracle=Oracle(
+        "exact",
+        "The centres of the closed triangles by exact side tests, and at each the plane through "
+        "the vertex values, alpha s0 + beta s1 + gamma s2 in Fractions, to within 1e-9.",
+        ("algorithms/triangles/test_triangle_variants.py", "algorithms/test_stability.py"),
+        check="span-plane"),
 )
 
 # The module's algorithms, in the order they are listed.

@@ -13,7 +13,7 @@ from fractions import Fraction
 from algorithms.core.code import Code, listing
 from algorithms.core.errors import InputError
 from algorithms.lines.common import Octant
-from algorithms.core.registry import AlgorithmSpec, Option
+from algorithms.core.registry import AlgorithmSpec, Option, Oracle
 from algorithms.core.steps import NO_PIXEL, PLOT, VISIT, Note, Start, Vars
 from algorithms.triangles.edges import MAX_COORDINATE, TRIANGLES
 
@@ -134,6 +134,13 @@ TRIANGLE_CRAMER = AlgorithmSpec(
            "centre on an edge counts as inside (alpha, beta or gamma = 0), so two triangles "
            "sharing an edge both fill its centres; triangle-barycentric applies the fill rule.",
            "Clockwise triangles work too: D and the three D's change sign together."),
+    oracle=Oracle(
+        "exact",
+        "Per pixel, how many of the closed triangles hold its centre, by exact side tests in "
+        "Fractions (tests/support/triangle_variant_oracles.py); the weights are the edge functions "
+        "over 2A and add up to 1.",
+        ("algorithms/triangles/test_triangle_variants.py", "algorithms/test_stability.py"),
+        check="closed-triangle"),
 )
 
 
@@ -210,6 +217,13 @@ TRIANGLE_TRILINEAR = AlgorithmSpec(
            "The inside test uses the exact sign of each edge function (a centre on a side "
            "counts as inside), as triangle-cramer does; the distances themselves involve a "
            "square root and are rounded."),
+    oracle=Oracle(
+        "exact",
+        "Per pixel, how many of the closed triangles hold its centre, by exact side tests in "
+        "Fractions (tests/support/triangle_variant_oracles.py); the distances convert to the "
+        "barycentric weights.",
+        ("algorithms/triangles/test_triangle_variants.py", "algorithms/test_stability.py"),
+        check="closed-triangle"),
 )
 
 
@@ -328,6 +342,13 @@ TRIANGLE_COLUMNS = AlgorithmSpec(
            "with B below it leaves them reversed, so every column comes out empty (a pixel "
            "only where the two edges meet); its loop also stops at B. missing counts the "
            "pixels the closed triangle has and the run did not fill."),
+    oracle=Oracle(
+        "exact",
+        "correct: the centres of the closed triangles, by exact side tests; printed: the lecture's "
+        "loop with its reversed swap test, transcribed in Fractions "
+        "(tests/support/triangle_variant_oracles.py).",
+        ("algorithms/triangles/test_triangle_variants.py", "algorithms/test_stability.py"),
+        check="columns"),
 )
 
 
@@ -397,6 +418,13 @@ TRIANGLE_WIREFRAME = AlgorithmSpec(
            "edge are not on a line.",
            "Each line is drawn without its last pixel, which the next line starts from, so "
            "every corner is plotted once."),
+    oracle=Oracle(
+        "exact",
+        "The three nearest-pixel lines between the pixels holding the vertices, ties toward P, "
+        "from exact line values (algorithms/exact/lines.py), clipped to the grid, pixel for pixel "
+        "in order.",
+        ("algorithms/triangles/test_triangle_variants.py", "algorithms/test_stability.py"),
+        check="wireframe"),
 )
 
 # The module's algorithms, in the order they are listed.

@@ -24,7 +24,7 @@ import numpy as np
 from algorithms.visibility import zbuffer_painter as visibility  # its names are read when a run starts: it may still be loading now
 from algorithms.core.code import Code, listing
 from algorithms.triangles.interpolate import per_vertex
-from algorithms.core.registry import AlgorithmSpec, Option
+from algorithms.core.registry import AlgorithmSpec, Option, Oracle
 from algorithms.core.steps import PLOT, Note, Start, Table, Vars
 from algorithms.triangles.edges import TRIANGLES
 
@@ -210,6 +210,12 @@ PAINTER_SPLIT = AlgorithmSpec(
            "disagree counts the pixels unlike the z-buffer's: 0 but for pixel centres within "
            "a rounding of the line where two triangles meet, or of an edge a cut ends on (the "
            "pieces' corners snap to 1/256 px)."),
+    oracle=Oracle(
+        "exact",
+        "Where the nearest triangle is clear (not within 1/256 px of an edge, nor 1/50 in depth of "
+        "another), the colour of the triangle nearest the viewer, from exact plane depths in "
+        "Fractions written in the test.",
+        ("algorithms/visibility/test_painter_split.py",)),
 )
 
 # The module's algorithms, in the order they are listed.

@@ -47,7 +47,7 @@ from algorithms import triangles
 from algorithms.triangles import ops_sum
 from algorithms.core.code import Code
 from algorithms.triangles.interpolate import mix, per_vertex, unpack
-from algorithms.core.registry import AlgorithmSpec, Inputs, Option
+from algorithms.core.registry import AlgorithmSpec, Inputs, Option, Oracle
 from algorithms.core.steps import PER_ROW, PLOT, VISIT, Note, Start, Table, Vars
 from algorithms.core.trace import checkpoint
 
@@ -475,7 +475,14 @@ ZBUFFER = AlgorithmSpec(
            "buffer view shows ZB at any step.",
            "Triangles may come in any order, intersect or overlap in a cycle: the "
            "z-buffer is right in every case."),
-    explain=explain_depth, uses_grid=True, fragments=FRAGMENTS)
+    explain=explain_depth, uses_grid=True, fragments=FRAGMENTS,
+    oracle=Oracle(
+        "exact",
+        "Per pixel, the colour of the nearest triangle covering its centre and its depth rounded "
+        "once, from exact barycentric depths in Fractions written in the test, for both depth "
+        "tests.",
+        ("algorithms/visibility/test_visibility.py",)),
+)
 
 PAINTER = AlgorithmSpec(
     name="painter", title="Painter's algorithm", family="visibility",
@@ -486,7 +493,15 @@ PAINTER = AlgorithmSpec(
            "Whole triangles cannot be ordered when they pierce each other or overlap in "
            "a cycle; the last step counts the pixels where the result differs from the "
            "z-buffer's.",),
-    explain=explain_painter, uses_grid=True, fragments=FRAGMENTS)
+    explain=explain_painter, uses_grid=True, fragments=FRAGMENTS,
+    oracle=Oracle(
+        "exact",
+        "Each pixel shows the last triangle, in the order the key sorts (farthest first, ties in "
+        "input order), whose exact coverage holds it; vertex colours mixed by exact barycentric "
+        "weights, within half a level. Written in the test, on the catalogue and random scenes.",
+        ("algorithms/visibility/test_visibility_reference.py",
+         "algorithms/visibility/test_visibility.py")),
+)
 
 # The module's algorithms, in the order they are listed.
 SPECS = (ZBUFFER, PAINTER)

@@ -17,12 +17,13 @@ clear line, or finish and give:
 * final variables that are finite numbers;
 * the same pixels from the fast kernel as from the generator, where the
   family promises it;
-* the documented result where there is one: the exact oracles (exact.py,
-  exact_circles.py, exact_polygons.py, exact_triangles.py, a breadth-first
-  seed fill written here), or the documented bound (a nearest-pixel line
-  lies within 1/2 px of the ideal line; float precisions are exact below
-  their documented coordinate sizes; a perspective-correct value lies
-  between its vertex values).
+* the documented result where there is one, by the check the algorithm's
+  oracle declares (AlgorithmSpec.oracle.check, a key of CHECKS): the exact
+  oracles (algorithms/exact/, tests/support/, a breadth-first seed fill
+  written here), or the documented bound (a nearest-pixel line lies within
+  1/2 px of the ideal line; float precisions are exact below their
+  documented coordinate sizes; a perspective-correct value lies between its
+  vertex values).
 """
 from __future__ import annotations
 
@@ -345,7 +346,7 @@ def triangle_cases(spec) -> list[Case]:
 
 def cases_for(spec) -> list[Case]:
     inputs = spec.inputs
-    if spec.name in curve_oracles.ORACLES:
+    if spec.oracle.check in curve_oracles.CHECKS:  # the curve oracles bring their own cases
         return curve_oracles.cases(spec, lambda name, points, options, valid: Case(
             name, spec.name, points, options, GRID, valid))
     if inputs.contours:
@@ -428,90 +429,128 @@ def check_kernel(case: Case, spec, trace) -> None:
 
 
 # ----------------------------------------------------------- oracles
+# Each algorithm declares the check it is held to here (AlgorithmSpec.oracle.check);
+# CHECKS below maps those names to the functions.
 def _written(trace) -> list[tuple[int, int]]:
     return [tuple(p) for p in trace.written_pixels().tolist()]
 
 
-NEAREST_LINES = {("line-bresenham", None), ("line-explicit", None), ("line-dda", "float64"),
-                 ("line-incremental", "round"), ("line-parametric", "auto"), ("line-midpoint", None),
-                 ("line-bresenham-textbook", "ties-ne"), ("line-bresenham-textbook", "sign-reversed")}
-# Printed listings whose faults include missing an end pixel, and the
-# traversals, whose real end points are not pixel centres, and the unbounded
-# implicit form, which walks the grid rather than P to Q.
-OTHER_ENDS = {"line-dda-printed", ("line-bresenham-textbook", "as-printed"), "line-supercover",
-              "line-diamond-exit", "line-amanatides-woo", "line-implicit-infinite",
-              "line-parametric-printed"}
+def _small(p, q) -> bool:
+    """Near the origin and of moderate length: where the nearest-pixel line is checked."""
+    return max(abs(c) for c in (*p, *q)) < 4096 and max(abs(q[0] - p[0]), abs(q[1] - p[1])) < 5000
 
 
-def oracle_lines(case: Case, spec, trace) -> None:
+def nearest_line(case: Case, pixels, columns_once: bool = True) -> None:
+    """The documented result: one pixel per major-axis column, the nearest to
+    the ideal line (either one where it passes exactly midway)."""
     p, q = case.points
+    major_x = exact.x_is_major(p, q)
+    columns = Counter(px if major_x else py for px, py in pixels)
+    assert all(n == 1 for n in columns.values()) or not columns_once, \
+        f"{case}: a column with two pixels"
+    for px, py in pixels:
+        a, b = (px, py) if major_x else (py, px)
+        value = exact.line_value(p, q, a)
+        allowed = {exact.nearest_minor(value, "down", 0), exact.nearest_minor(value, "up", 0)}
+        assert b in allowed, f"{case}: pixel {(px, py)} is not a nearest pixel"
+    length = max(abs(q[0] - p[0]), abs(q[1] - p[1]))
+    assert len(set(pixels)) == length + 1, f"{case}: not one pixel per column"
+
+
+def end_pixels(case: Case, pixels) -> None:
+    p, q = case.points
+    assert pixels[0] == tuple(p) and pixels[-1] == tuple(q), f"{case}: an end pixel is missing"
+
+
+def check_nearest_line(case: Case, spec, trace) -> None:
     pixels = _written(trace)
-    options = spec.resolve(case.options)
-    small = max(abs(c) for c in (*p, *q)) < 4096 and max(abs(q[0] - p[0]), abs(q[1] - p[1])) < 5000
-    if spec.name == "line-implicit":
-        assert set(pixels) == exact.implicit_pixels(p, q), f"{case}: unlike the exact implicit line"
-        return
-    if spec.family != "lines":
-        return
-    variant = {"line-dda": options.get("dtype"), "line-incremental": options.get("rounding"),
-               "line-parametric": options.get("dt"),
-               "line-bresenham-textbook": options.get("variant")}.get(spec.name)
-    if (spec.name, variant) in NEAREST_LINES and small:
-        # The documented result: one pixel per major-axis column, the nearest
-        # to the ideal line (either one where it passes exactly midway).
-        major_x = exact.x_is_major(p, q)
-        columns = Counter(px if major_x else py for px, py in pixels)
-        assert all(n == 1 for n in columns.values()) or spec.name == "line-parametric", \
-            f"{case}: a column with two pixels"
-        for px, py in pixels:
-            a, b = (px, py) if major_x else (py, px)
-            value = exact.line_value(p, q, a)
-            allowed = {exact.nearest_minor(value, "down", 0), exact.nearest_minor(value, "up", 0)}
-            assert b in allowed, f"{case}: pixel {(px, py)} is not a nearest pixel"
-        length = max(abs(q[0] - p[0]), abs(q[1] - p[1]))
-        assert len(set(pixels)) == length + 1, f"{case}: not one pixel per column"
-    if spec.name == "line-dda" and options["dtype"] == "float32" and not small:
-        return  # float32 drifts on long or far segments: the point of the option
-    if spec.name in OTHER_ENDS or (spec.name, variant) in OTHER_ENDS:
-        return
-    if small or spec.name != "line-dda":
-        assert pixels[0] == tuple(p) and pixels[-1] == tuple(q), f"{case}: an end pixel is missing"
+    if _small(*case.points):
+        nearest_line(case, pixels)
+    end_pixels(case, pixels)
 
 
-def oracle_circles(case: Case, spec, trace) -> None:
+def check_dda_line(case: Case, spec, trace) -> None:
+    """float64 gives the nearest pixels; float32 drifts, the point of the option.
+    Both drift on long or far segments, so even their ends are checked on small ones only."""
+    if not _small(*case.points):
+        return
+    pixels = _written(trace)
+    if spec.resolve(case.options)["dtype"] == "float64":
+        nearest_line(case, pixels)
+    end_pixels(case, pixels)
+
+
+def check_incremental_line(case: Case, spec, trace) -> None:
+    """Rounding gives the nearest pixels; floor biases the line down."""
+    pixels = _written(trace)
+    if spec.resolve(case.options)["rounding"] == "round" and _small(*case.points):
+        nearest_line(case, pixels)
+    end_pixels(case, pixels)
+
+
+def check_parametric_line(case: Case, spec, trace) -> None:
+    """dt auto gives the nearest pixels (a point plots P at t = 0 and t = 1);
+    a fixed dt leaves gaps or repeats."""
+    pixels = _written(trace)
+    if spec.resolve(case.options)["dt"] == "auto" and _small(*case.points):
+        nearest_line(case, pixels, columns_once=False)
+    end_pixels(case, pixels)
+
+
+def check_textbook_line(case: Case, spec, trace) -> None:
+    """Ties to NE and the sign-reversed D give the nearest pixels; the listing
+    as printed has faults, missing an end pixel among them."""
+    if spec.resolve(case.options)["variant"] == "as-printed":
+        return
+    check_nearest_line(case, spec, trace)
+
+
+def check_implicit_line(case: Case, spec, trace) -> None:
+    p, q = case.points
+    assert set(_written(trace)) == exact.implicit_pixels(p, q), \
+        f"{case}: unlike the exact implicit line"
+
+
+def exact_circle(expected):
+    """The check that the offsets from the centre are ``expected(radius)``."""
+    def check(case: Case, spec, trace) -> None:
+        (xc, yc), = case.points
+        offsets = {(x - xc, y - yc) for x, y in _written(trace)}
+        assert offsets == expected(spec.resolve(case.options)["radius"]), \
+            f"{case}: unlike the exact circle"
+    return check
+
+
+def check_midpoint_ellipse(case: Case, spec, trace) -> None:
     (xc, yc), = case.points
     offsets = {(x - xc, y - yc) for x, y in _written(trace)}
     options = spec.resolve(case.options)
-    if spec.name == "ellipse-midpoint":
-        rx, ry = options["rx"], options["ry"]
-        if rx == 0 or ry == 0:
-            expected = exact_circles.ellipse_segment(rx, ry)
-        elif rx == ry:
-            expected = exact_circles.midpoint_circle(rx)
-        else:
-            expected = exact_circles.four_way(offsets)  # symmetric, at least
-        assert offsets == expected, f"{case}: unlike the oracle"
-        return
-    r = options["radius"]
-    expected = {"circle-sqrt4": exact_circles.sqrt4_circle, "circle-sqrt8": exact_circles.sqrt8_circle,
-                "circle-midpoint": exact_circles.midpoint_circle}[spec.name](r)
-    assert offsets == expected, f"{case}: unlike the exact circle"
+    rx, ry = options["rx"], options["ry"]
+    if rx == 0 or ry == 0:
+        expected = exact_circles.ellipse_segment(rx, ry)
+    elif rx == ry:
+        expected = exact_circles.midpoint_circle(rx)
+    else:
+        expected = exact_circles.four_way(offsets)  # symmetric, at least
+    assert offsets == expected, f"{case}: unlike the oracle"
 
 
-def oracle_polygons(case: Case, spec, trace) -> None:
-    options = spec.resolve(case.options)
-    pixels = _written(trace)
-    if options.get("arithmetic", "exact") != "exact" or options.get("ties", "left-bottom") != \
-            "left-bottom":
-        return
-    rule = options.get("fill_rule", "evenodd")
-    points = case.points
-    if spec.name == "polygon-scanline-xlow":
-        # Sampled at (i + 1/2, j): the centre rule on the polygon lifted by 1/2 px.
-        points = [[(x, y + 0.5) for x, y in contour] for contour in points]
-    expected = exact_polygons.covered_pixels(points, rule)
-    assert len(pixels) == len(set(pixels)), f"{case}: a pixel filled twice"
-    assert set(pixels) == expected, f"{case}: unlike the exact polygon"
+def covered_polygon(lift: float = 0.0):
+    """The check against the exact polygon. Sampled at (i + 1/2, j + 1/2 - lift)
+    instead of the centre, pixels follow the centre rule on the polygon lifted by ``lift``."""
+    def check(case: Case, spec, trace) -> None:
+        options = spec.resolve(case.options)
+        pixels = _written(trace)
+        if options.get("arithmetic", "exact") != "exact" or options.get("ties", "left-bottom") != \
+                "left-bottom":
+            return
+        points = case.points
+        if lift:
+            points = [[(x, y + lift) for x, y in contour] for contour in points]
+        expected = exact_polygons.covered_pixels(points, options.get("fill_rule", "evenodd"))
+        assert len(pixels) == len(set(pixels)), f"{case}: a pixel filled twice"
+        assert set(pixels) == expected, f"{case}: unlike the exact polygon"
+    return check
 
 
 def oracle_fill(case: Case, spec, trace) -> None:
@@ -570,22 +609,40 @@ def oracle_triangles(case: Case, spec, trace) -> None:
     final = trace.final_variables()
     if options["fill_rule"] == "top-left" and options["precision"] == "fixed":
         assert final["overlaps"] == 0 and final["cracks"] == 0, f"{case}: overlaps or cracks"
-    if spec.name == "triangle-perspective":
-        plotted = trace.writes()
-        s = [v for v in options["s"]]
-        values = trace.series("s_persp")[plotted]
-        assert np.all(values >= min(s) - 1e-9) and np.all(values <= max(s) + 1e-9), \
-            f"{case}: a perspective-correct value outside its vertex values"
     if "alpha" in trace.value_names:
         plotted = trace.writes()
         total = (trace.series("alpha") + trace.series("beta") + trace.series("gamma"))[plotted]
         assert np.allclose(total, 1.0, atol=1e-6), f"{case}: weights do not sum to 1"
 
 
-# Algorithms with oracles of their own, by name.
-VARIANT_ORACLES = {**curve_oracles.ORACLES, **triangle_variant_oracles.ORACLES}
-ORACLES = {"lines": oracle_lines, "circles": oracle_circles,
-           "polygons": oracle_polygons, "fill": oracle_fill, "triangles": oracle_triangles}
+def oracle_perspective(case: Case, spec, trace) -> None:
+    """The exact coverage, and each perspective-correct value between its vertex values."""
+    oracle_triangles(case, spec, trace)
+    s = spec.resolve(case.options)["s"]
+    values = trace.series("s_persp")[trace.writes()]
+    assert np.all(values >= min(s) - 1e-9) and np.all(values <= max(s) + 1e-9), \
+        f"{case}: a perspective-correct value outside its vertex values"
+
+
+def _pixels_check(check):
+    """A check of tests/support, which takes the resolved options and the written pixels."""
+    return lambda case, spec, trace: check(case, spec.resolve(case.options), trace,
+                                           _written(trace))
+
+
+# The checks by the name an algorithm's oracle declares (AlgorithmSpec.oracle.check).
+CHECKS = {"nearest-line": check_nearest_line, "dda-line": check_dda_line,
+          "incremental-line": check_incremental_line, "parametric-line": check_parametric_line,
+          "textbook-line": check_textbook_line, "implicit-line": check_implicit_line,
+          "sqrt4-circle": exact_circle(exact_circles.sqrt4_circle),
+          "sqrt8-circle": exact_circle(exact_circles.sqrt8_circle),
+          "midpoint-circle": exact_circle(exact_circles.midpoint_circle),
+          "midpoint-ellipse": check_midpoint_ellipse,
+          "covered-polygon": covered_polygon(), "covered-polygon-lifted": covered_polygon(0.5),
+          "seed-fill": oracle_fill, "triangle-coverage": oracle_triangles,
+          "perspective-coverage": oracle_perspective,
+          **{name: _pixels_check(check) for name, check in {
+              **curve_oracles.CHECKS, **triangle_variant_oracles.CHECKS}.items()}}
 
 
 # ================================================================ the test
@@ -602,13 +659,8 @@ def test_hard_case(case: Case):
     assert not trace.truncated or len(trace) == trace.step_cap
     check_values(case, trace)
     check_kernel(case, spec, trace)
-    variant = VARIANT_ORACLES.get(spec.name)
-    if variant is not None:
-        variant(case, spec.resolve(case.options), trace, _written(trace))
-        return
-    oracle = ORACLES.get(spec.family)
-    if oracle is not None:
-        oracle(case, spec, trace)
+    if spec.oracle.check:
+        CHECKS[spec.oracle.check](case, spec, trace)
 
 
 def test_catalogue_covers_every_algorithm():

@@ -131,9 +131,10 @@ def check_bezier(case, options, trace, pixels):
         f"{case}: unlike the polyline"
 
 
-ORACLES = {"circle-bresenham": check_bresenham, "circle-polar": check_polar,
-           "circle-midpoint-printed": check_printed, "circle-distance": check_distance,
-           "circle-wu": check_wu, "curve-bezier": check_bezier}
+# The stability suite's checks, by the name an algorithm's oracle declares.
+CHECKS = {"bresenham-circle": check_bresenham, "polar-circle": check_polar,
+          "printed-midpoint-circle": check_printed, "disk": check_distance,
+          "wu-circle": check_wu, "bezier-polyline": check_bezier}
 
 # ------------------------------------------------------------- cases
 CENTRES = {"centre": (12, 10), "centre at origin": (0, 0), "negative centre": (-30, -4),

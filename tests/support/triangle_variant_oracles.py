@@ -146,5 +146,6 @@ def check_span(case, options, trace, pixels):
             count += 1
 
 
-ORACLES = {"triangle-span-interpolate": check_span, "triangle-columns": check_columns, "triangle-cramer": check_cramer, "triangle-trilinear": check_cramer,
-           "triangle-wireframe": check_wireframe}
+# The stability suite's checks, by the name an algorithm's oracle declares.
+CHECKS = {"closed-triangle": check_cramer, "columns": check_columns, "wireframe": check_wireframe,
+          "span-plane": check_span}
