@@ -7,7 +7,7 @@
 
 One line per run, ``name  sha256``:
 
-* every case of the hard-case catalogue (tests/algorithms/test_stability.py):
+* every case of the hard-case catalogue (tests/support/catalogue.py):
   each recorded step, the pseudo-code, the final variables and the final
   raster, or the message of a refusal;
 * ``rasterlab run --scene SCENE --json`` of every shipped scene;
@@ -19,7 +19,6 @@ different order (a float off in its last bit) shows as a different line.
 from __future__ import annotations
 
 import hashlib
-import importlib.util
 import subprocess
 import sys
 from pathlib import Path
@@ -29,15 +28,7 @@ sys.path.insert(0, str(ROOT))
 
 from algorithms.core import registry  # noqa: E402
 from algorithms.core.errors import InputError  # noqa: E402
-
-
-def _catalogue():
-    path = ROOT / "tests" / "algorithms" / "test_stability.py"
-    spec = importlib.util.spec_from_file_location("stability_catalogue", path)
-    module = importlib.util.module_from_spec(spec)
-    sys.modules[spec.name] = module  # dataclasses look their module up there
-    spec.loader.exec_module(module)
-    return module.CASES
+from tests.support.catalogue import CASES  # noqa: E402
 
 
 def _digest(parts) -> str:
@@ -61,7 +52,7 @@ def _trace_parts(trace):
 
 
 def case_lines():
-    for case in _catalogue():
+    for case in CASES:
         spec = registry.get(case.algorithm)
         try:
             trace = spec.record(case.points, case.options, case.grid)

@@ -40,12 +40,13 @@ AA_SUPERSAMPLE = _method("aa-supersample", "Supersampling", "n x n samples per p
                  "With n = 1, pattern grid and filter box the one sample is the centre: the "
                  "aliased picture."),
           oracle=Oracle(
-              "reference",
-              "The exact coverage (algorithms/exact/coverage.py) within documented bounds: the "
-              "RMS error at edge pixels falls as n grows and stays below each pattern's bound at "
-              "n = 4; polygons and thick lines within 1/8 at n = 8; one centre sample gives the "
-              "aliased fill.",
-              ("algorithms/antialias/test_antialias_supersample.py",)))
+              "exact",
+              "Per pixel, the documented sample positions and whole-number filter weights "
+              "applied to exact sample tests written in the test (jittered and random positions "
+              "taken from the documented hash); and the exact coverage "
+              "(algorithms/exact/coverage.py) within documented bounds as n grows.",
+              ("algorithms/antialias/test_antialias_reference.py",
+               "algorithms/antialias/test_antialias_supersample.py")))
 AA_ADAPTIVE = _method("aa-adaptive", "Adaptive supersampling", "corners and centre first; split a square "
           "in four where its samples disagree", POINTS, ADAPTIVE_OPTIONS, adaptive_code,
           adaptive, explain=explain_samples,
@@ -54,11 +55,12 @@ AA_ADAPTIVE = _method("aa-adaptive", "Adaptive supersampling", "corners and cent
                  "Corners are shared by the squares of one pixel, not between pixels; "
                  "samples counts each tested point once per pixel."),
           oracle=Oracle(
-              "reference",
-              "The exact coverage (algorithms/exact/coverage.py) as a bound: the RMS error at "
-              "edge pixels falls with max_depth and is below 0.05 at depth 4; five samples where "
-              "a pixel is wholly in or out.",
-              ("algorithms/antialias/test_antialias_methods.py",)))
+              "exact",
+              "The recursive corners-and-centre definition in Fractions written in the test; "
+              "and the exact coverage (algorithms/exact/coverage.py) as a bound: the RMS error "
+              "at edge pixels falls with max_depth and is below 0.05 at depth 4.",
+              ("algorithms/antialias/test_antialias_reference.py",
+               "algorithms/antialias/test_antialias_methods.py")))
 AA_FILTER = _method("aa-filter", "Post-filtering (convolution)", "render aliased, then blur: each pixel "
           "becomes a weighted average of its neighbourhood", Inputs(3, integer=False,
                                                                     names=("P0", "P1", "P2"),
@@ -84,6 +86,7 @@ LINE_WU = _method("line-wu", "Xiaolin Wu's line", "two pixels per column along t
               "the exact minor coordinate with 1 - f and f, for both endpoint rules; kernel and "
               "generator to the last bit.",
               ("algorithms/antialias/test_wu_kernel.py",
+               "algorithms/antialias/test_antialias_reference.py",
                "algorithms/antialias/test_antialias_lines.py")))
 LINE_AREA = _method("line-area", "Area-sampled line", "intensity = the area of the pixel square that "
           "the line's rectangle covers", SEGMENT, AREA_OPTIONS, area_code, line_area,
@@ -91,11 +94,11 @@ LINE_AREA = _method("line-area", "Area-sampled line", "intensity = the area of t
           notes=("Areas come from the exact coverage reference (float64, vectorised).",),
           oracle=Oracle(
               "reference",
-              "Only in sums, by plain geometry to 1e-12: each column the rectangle crosses holds "
-              "width times length over the major extent, all columns width times length. Pixel "
-              "by pixel, only the same computation (algorithms/exact/coverage.py) in exact "
-              "arithmetic.",
-              ("algorithms/antialias/test_antialias_lines.py",)))
+              "Pixel by pixel, the area of the pixel square inside the line's rectangle from "
+              "shapely, to 1e-9 (and 16 ulps of the largest coordinate far from the origin); "
+              "in sums, by plain geometry to 1e-12.",
+              ("algorithms/antialias/test_antialias_reference.py",
+               "algorithms/antialias/test_antialias_lines.py")))
 AA_TEMPORAL = _method("aa-temporal", "Temporal aliasing and motion blur", "a spinning wheel or moving "
           "triangle over several frames: one instant per frame, or averaged over the exposure",
           POINTS, TEMPORAL_OPTIONS, temporal_code, temporal,

@@ -25,7 +25,8 @@ BLEND_OVER = AlgorithmSpec(
         "reference",
         "The colour buffer from `over` composited per pixel in the test, coverage and depth order "
         "in exact Fractions, within half a colour level, for the input and back-to-front orders.",
-        ("algorithms/pipeline/test_pipeline_blend.py",)),
+        ("algorithms/pipeline/test_pipeline_reference.py",
+         "algorithms/pipeline/test_pipeline_blend.py")),
 )
 
 # ---------------------------------------------------------------- the 3-D pipeline
@@ -77,8 +78,10 @@ PIPELINE = AlgorithmSpec(
         "reference",
         "Flat, Gouraud and Phong colours equal the shading formulas written in the test within 1.5 "
         "levels; the near clipping keeps exactly the part in front (Fractions), and a clipped run "
-        "equals the unclipped one beyond the near plane.",
-        ("algorithms/pipeline/test_pipeline_stages.py",)),
+        "equals the unclipped one beyond the near plane. A triangle no plane cuts gives exactly "
+        "the fragments of its projection, computed again in the test, with depths to 1e-9.",
+        ("algorithms/pipeline/test_pipeline_reference.py",
+         "algorithms/pipeline/test_pipeline_stages.py")),
 )
 
 # The module's algorithms, in the order they are listed.

@@ -52,10 +52,12 @@ TRIANGLE_TEXTURE = AlgorithmSpec(
     notes=NOTES, explain=explain, uses_grid=True, fragments=FRAGMENTS,
     oracle=Oracle(
         "reference",
-        "uv, its derivatives and lambda equal exact rational values to 1e-12; nearest and bilinear "
-        "colours equal a texel lookup written in the test within half a level; the mip-mapped and "
+        "The covered pixels equal the exact triangle coverage; uv, its derivatives and lambda equal "
+        "exact rational values to 1e-12; nearest and bilinear colours equal a texel lookup at the "
+        "exact uv written in the test within half a level; the mip-mapped and "
         "anisotropic filters only stay within bounds of the module's own reference filter.",
-        ("algorithms/textures/test_textures_mapping.py",
+        ("algorithms/textures/test_textures_reference.py",
+         "algorithms/textures/test_textures_mapping.py",
          "algorithms/textures/test_textures_filters.py")),
 )
 

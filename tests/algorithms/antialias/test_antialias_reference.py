@@ -45,10 +45,9 @@ from hypothesis import example, given, settings
 from hypothesis import strategies as st
 
 from algorithms.antialias import sample_strata, time_samples
-from algorithms.core.errors import InputError
 from algorithms.exact import polygons as exact_polygons
 from algorithms.triangles.interpolate import unpack
-from tests.algorithms.test_stability import CASES
+from tests.support.catalogue import cases_of, recorded
 from tests.support import record
 from tests.support.antialias_oracles import subpixel_counts, wu_oracle
 from tests.support.raster_reference import counter_clockwise, inside, triangle_pixels, twice_area
@@ -56,19 +55,6 @@ from tests.support.raster_reference import counter_clockwise, inside, triangle_p
 UNIT = 512
 WHITE = (255, 255, 255)
 SMALL = (14, 12)
-
-
-def catalogue(name):
-    return [case for case in CASES if case.algorithm == name]
-
-
-def recorded(case):
-    """The case's trace, or None when it is refused (test_stability checks refusals)."""
-    try:
-        return record(case.algorithm, case.points, case.options, case.grid)
-    except InputError:
-        assert case.valid is not True, f"{case}: refused"
-        return None
 
 
 def written(trace) -> dict:
@@ -222,7 +208,7 @@ def check_supersample(points, options, grid, trace):
     assert {p: int(colors[p[1], p[0]]) for p in want} == {p: rgb for p, (_, rgb) in want.items()}
 
 
-@pytest.mark.parametrize("case", catalogue("aa-supersample"), ids=str)
+@pytest.mark.parametrize("case", cases_of("aa-supersample"), ids=str)
 def test_supersample_on_the_catalogue(case):
     trace = recorded(case)
     if trace is not None:
@@ -290,7 +276,7 @@ def check_adaptive(points, options, grid, trace):
     assert written(trace) == want
 
 
-@pytest.mark.parametrize("case", catalogue("aa-adaptive"), ids=str)
+@pytest.mark.parametrize("case", cases_of("aa-adaptive"), ids=str)
 def test_adaptive_on_the_catalogue(case):
     trace = recorded(case)
     if trace is not None:
@@ -339,7 +325,7 @@ def check_filter(points, options, grid, trace):
     assert written(trace) == filter_reference(points, options, grid)
 
 
-@pytest.mark.parametrize("case", catalogue("aa-filter"), ids=str)
+@pytest.mark.parametrize("case", cases_of("aa-filter"), ids=str)
 def test_filter_on_the_catalogue(case):
     trace = recorded(case)
     if trace is not None:
@@ -356,7 +342,7 @@ def test_filter_random_triangles(points, name, sigma, rule):
 
 
 # ============================================================ Wu's line
-@pytest.mark.parametrize("case", catalogue("line-wu"), ids=str)
+@pytest.mark.parametrize("case", cases_of("line-wu"), ids=str)
 def test_wu_on_the_catalogue(case):
     trace = recorded(case)
     if trace is not None:
@@ -395,7 +381,7 @@ def check_area(points, options, trace):
     assert not missing
 
 
-@pytest.mark.parametrize("case", catalogue("line-area"), ids=str)
+@pytest.mark.parametrize("case", cases_of("line-area"), ids=str)
 def test_area_on_the_catalogue(case):
     trace = recorded(case)
     if trace is not None:
@@ -413,7 +399,7 @@ def test_area_random_segments(p, q, width, caps):
 
 
 # ============================================================ subpixels
-@pytest.mark.parametrize("case", catalogue("line-subpixels"), ids=str)
+@pytest.mark.parametrize("case", cases_of("line-subpixels"), ids=str)
 def test_subpixels_on_the_catalogue(case):
     trace = recorded(case)
     if trace is not None:
@@ -484,7 +470,7 @@ def check_temporal(points, options, grid, trace):
         assert np.array_equal(image, temporal_reference(points, options, grid, k)), k
 
 
-@pytest.mark.parametrize("case", catalogue("aa-temporal"), ids=str)
+@pytest.mark.parametrize("case", cases_of("aa-temporal"), ids=str)
 def test_temporal_on_the_catalogue(case):
     trace = recorded(case)
     if trace is not None:

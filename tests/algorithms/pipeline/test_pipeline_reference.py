@@ -27,27 +27,13 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from algorithms.core.errors import InputError
 from algorithms.core.steps import Vars
 from algorithms.exact import triangles as exact_triangles
 from algorithms.triangles.interpolate import unpack
 from algorithms.visibility.zbuffer_painter import PALETTE
-from tests.algorithms.test_stability import CASES
+from tests.support.catalogue import cases_of, recorded
 from tests.support import record
 from tests.support.raster_reference import triangle_pixels
-
-
-def catalogue(name):
-    return [case for case in CASES if case.algorithm == name]
-
-
-def recorded(case):
-    """The case's trace, or None when it is refused (test_stability checks refusals)."""
-    try:
-        return record(case.algorithm, case.points, case.options, case.grid)
-    except InputError:
-        assert case.valid is not True, f"{case}: refused"
-        return None
 
 
 def per_point(values, count):
@@ -103,7 +89,7 @@ def check_blend(points, options, grid, trace):
     assert np.all(want[~drawn] == 255.0)
 
 
-@pytest.mark.parametrize("case", catalogue("blend-over"), ids=str)
+@pytest.mark.parametrize("case", cases_of("blend-over"), ids=str)
 def test_blend_over_on_the_catalogue(case):
     trace = recorded(case)
     if trace is not None:
@@ -224,7 +210,7 @@ def check_pipeline(points, options, grid, trace):
     return checked
 
 
-@pytest.mark.parametrize("case", catalogue("pipeline"), ids=str)
+@pytest.mark.parametrize("case", cases_of("pipeline"), ids=str)
 def test_pipeline_on_the_catalogue(case):
     trace = recorded(case)
     if trace is not None:

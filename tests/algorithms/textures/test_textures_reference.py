@@ -29,20 +29,15 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from algorithms.core.errors import InputError
 from algorithms.exact import triangles as exact_triangles
 from algorithms.textures import texels
-from tests.algorithms.test_stability import CASES
+from tests.support.catalogue import cases_of, recorded
 from tests.support import record
 from tests.support.raster_reference import triangle_pixels
 
 DEFAULTS = {"uv": (0.0, 0.0, 1.0, 0.0, 0.0, 1.0), "w": (), "texture": "checker:8",
             "perspective": True, "filter": "bilinear", "wrap": "repeat",
             "fill_rule": "top-left", "subpixel_bits": 8, "cull": False, "precision": "fixed"}
-
-
-def catalogue():
-    return [case for case in CASES if case.algorithm == "triangle-texture"]
 
 
 def per_point(values, count, size=1):
@@ -132,14 +127,11 @@ def check(points, options, grid, trace):
     return checked
 
 
-@pytest.mark.parametrize("case", catalogue(), ids=str)
+@pytest.mark.parametrize("case", cases_of("triangle-texture"), ids=str)
 def test_textured_pixels_on_the_catalogue(case):
-    try:
-        trace = record(case.algorithm, case.points, case.options, case.grid)
-    except InputError:
-        assert case.valid is not True, f"{case}: refused"
-        return
-    check(case.points, case.options, case.grid, trace)
+    trace = recorded(case)
+    if trace is not None:
+        check(case.points, case.options, case.grid, trace)
 
 
 COORD = st.integers(0, 8 * 14).map(lambda v: v / 8)
@@ -162,6 +154,6 @@ def test_random_triangles(points, uv, w, filter_name, wrap, perspective, texture
 
 def test_the_catalogue_checks_colours():
     """The default options (bilinear) check a colour at most covered pixels."""
-    case = next(c for c in catalogue() if c.name == "plain")
+    case = next(c for c in cases_of("triangle-texture") if c.name == "plain")
     trace = record(case.algorithm, case.points, case.options, case.grid)
     assert check(case.points, case.options, case.grid, trace) > 200

@@ -22,27 +22,13 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from algorithms.core.errors import InputError
 from algorithms.exact import triangles as exact_triangles
 from algorithms.triangles.interpolate import unpack
-from tests.algorithms.test_stability import CASES, TRIANGLES
+from tests.support.catalogue import cases_of, recorded, TRIANGLES
 from tests.support import record
 from tests.support.raster_reference import triangle_pixels
 from tests.support.visibility_oracles import (check_split, fragments, nearest_oracle,
                                               palette_colors, snapped)
-
-
-def catalogue(name):
-    return [case for case in CASES if case.algorithm == name]
-
-
-def recorded(case):
-    """The case's trace, or None when it is refused (test_stability checks refusals)."""
-    try:
-        return record(case.algorithm, case.points, case.options, case.grid)
-    except InputError:
-        assert case.valid is not True, f"{case}: refused"
-        return None
 
 
 def per_point(values, count):
@@ -81,7 +67,7 @@ def check_zbuffer(points, options, grid, trace):
     assert trace.final_variables()["visible"] == kept.sum()
 
 
-@pytest.mark.parametrize("case", catalogue("zbuffer"), ids=str)
+@pytest.mark.parametrize("case", cases_of("zbuffer"), ids=str)
 def test_zbuffer_keeps_the_nearest_fragment_on_the_catalogue(case):
     trace = recorded(case)
     if trace is not None:
@@ -150,7 +136,7 @@ def check_painter(points, options, grid, trace):
                    for shift, c in zip((16, 8, 0), channels)), (i, j)
 
 
-@pytest.mark.parametrize("case", catalogue("painter"), ids=str)
+@pytest.mark.parametrize("case", cases_of("painter"), ids=str)
 def test_painter_shows_the_last_triangle_drawn_on_the_catalogue(case):
     trace = recorded(case)
     if trace is not None:
@@ -166,7 +152,7 @@ def test_painter_random_scenes(scene, key):
 
 
 # ------------------------------------------------------------- painter-split
-@pytest.mark.parametrize("case", catalogue("painter-split"), ids=str)
+@pytest.mark.parametrize("case", cases_of("painter-split"), ids=str)
 def test_painter_split_equals_the_nearest_triangle_on_the_catalogue(case):
     trace = recorded(case)
     if trace is not None:
