@@ -20,10 +20,10 @@ from app.gui.appdata import APP_NAME
 from app.gui.look import ERROR_STYLE, app_icon, apply_look, coverage_rows, legend_rows, recolor
 from app.gui.player import Player
 from app.gui.shortcuts import GESTURES, ShortcutsDialog
-from app.gui.window_depth import DepthAndAccuracy
+from app.gui.window_depth import DepthDisplay
 from app.gui.window_texture import TextureDisplay
-from app.gui.window_layout import WindowLayout
-from app.gui.window_menus import WindowMenus
+from app.gui.window_layout import build_layout
+from app.gui.window_menus import add_action, build_menus
 from app.model.drawing import CONTOURS, point_labels
 from app.model.insight import PixelTally, has_insight, inside_chips, row_tones
 from app.model.notation import shown
@@ -37,7 +37,7 @@ from app.model.branches import decision_branches
 from app.model.tools import (circle_kind, circle_options, clamp_option, drawing_mode,
                              marker_option, placing_message, shape_paths, tool_hint)
 from app.render import frame as frame_view
-from app.render.compose import PALETTE, compose, coverage_counts, error_image
+from app.render.compose import PALETTE, compose, coverage_counts
 from app.render.incremental import StepImages
 # What a frame shows is worked out in app/render/frame.py, shared with export.
 from app.render.frame import step_cells as _step_cells
@@ -54,9 +54,9 @@ def _is_pixel(value) -> bool:
         isinstance(v, int) and not isinstance(v, bool) for v in value)
 
 
-class MainWindow(WindowLayout, WindowMenus, DepthAndAccuracy, TextureDisplay, QMainWindow):
-    """RasterLab's main window. Its layout, menus and depth and accuracy
-    displays are written in the modules of its base classes."""
+class MainWindow(QMainWindow):
+    """RasterLab's main window. Its layout and menus are built by functions
+    of their own modules; the depth and texture displays are parts it owns."""
 
     def __init__(self, algorithm: str | None = None, points=None, options: dict | None = None,
                  grid=DEMO_GRID, parent=None):
@@ -75,18 +75,15 @@ class MainWindow(WindowLayout, WindowMenus, DepthAndAccuracy, TextureDisplay, QM
         self._tally = None
         self._notes: list[int] = []
         self._tables_for = None  # the algorithm the tables dock was last shown for
-        self._depth = None  # (clear, near, far) of a run that keeps a depth buffer
-        self._accuracy = None  # AccuracyCache of the antialiasing run on show
         # Parts a running program adds (see add_file_actions and below).
         self.file_actions = self.report_entry = self.crash_handler = self.recovery = None
         self.bookmarks: list = []  # the scene's bookmarks while there are no file actions
 
-        self._build_centre()
+        build_layout(self)  # app/gui/window_layout.py
         self.guides = WindowGuides(self.grid, PALETTE)
-        self._build_scene_dock()
-        self._build_code_dock()
-        self._build_status()
-        self._build_actions()
+        build_menus(self)  # app/gui/window_menus.py
+        self.depth_display = DepthDisplay(self)  # depth dock, samples, coverage error
+        self.texture_display = TextureDisplay(self)  # texture, outside-view docks
         self._connect()
 
         specs = registry.all_specs()
@@ -136,6 +133,21 @@ class MainWindow(WindowLayout, WindowMenus, DepthAndAccuracy, TextureDisplay, QM
         self.input_guard = InputGuard(self)  # no wheel edits by accident; Ctrl+Z everywhere
         from app.gui.window_view import WindowView
         self.view = WindowView(self)  # screen fit, layout, presentation (F11), zoom, Copy view
+
+    def add_action(self, menu, key, text, shortcut, slot,
+                   context=Qt.ShortcutContext.WindowShortcut, owner=None):
+        """An action in ``menu`` and in ``actions_`` (app/gui/window_menus.py)."""
+        return add_action(self, menu, key, text, shortcut, slot, context, owner)
+
+    def open_texture(self, path: str | None = None) -> None:
+        """Use a PNG as the texture (app/gui/window_texture.py)."""
+        self.texture_display.open_texture(path)
+
+    # The texture display's docks and views, under the window's names.
+    texture_dock = property(lambda self: self.texture_display.dock)
+    texture_view = property(lambda self: self.texture_display.view)
+    outside_dock = property(lambda self: self.texture_display.outside_dock)
+    outside_view = property(lambda self: self.texture_display.outside_view)
 
     # Parts a running program adds (``launch``); tests add them where they need them.
     def add_file_actions(self, settings=None):
@@ -404,8 +416,8 @@ class MainWindow(WindowLayout, WindowMenus, DepthAndAccuracy, TextureDisplay, QM
             trace.value_names) else None
         self._notes = [] if trace is None else trace.steps_of(Note).tolist()
         self._show_tables_dock()
-        self._prepare_depth_and_accuracy()
-        self._prepare_texture()
+        self.depth_display.prepare()
+        self.texture_display.prepare()
         if trace is None:
             self.transport.set_range(-1)
             self.variables.set_series(None)
@@ -459,18 +471,15 @@ class MainWindow(WindowLayout, WindowMenus, DepthAndAccuracy, TextureDisplay, QM
             self.coverage_label.setText("")
             self._update_message()
             return
-        accuracy = self._accuracy if self.error_action.isChecked() else None
-        if accuracy is not None and not self.coverage.isChecked():
-            self.grid.set_image(error_image(accuracy.estimate - accuracy.exact, accuracy.max,
-                                            signed=True))
+        errors = None if self.coverage.isChecked() else self.depth_display.error_map()
+        if errors is not None:
+            self.grid.set_image(errors)
         else:
             image = self._step_images.image(player.trace, state, self.palette_,
                                             coverage=self.coverage.isChecked())
             self.grid.set_image(image, self._step_images.changed)
-        self._show_depth(state)
-        self._show_texture(state)
-        self._show_samples(state)
-        self._show_error_summary()
+        self.depth_display.show(state)
+        self.texture_display.show(state)
         cells, spans = _step_cells(state)
         self.grid.set_highlights(cells, state.candidates, spans)
         self.guides.show(player.trace, state)
@@ -492,7 +501,7 @@ class MainWindow(WindowLayout, WindowMenus, DepthAndAccuracy, TextureDisplay, QM
         colors = (colour,) if colour else ()
         # The trace's own algorithm: a switch may still be recording.
         rows = self.player.trace_spec.panel_rows(trace, index)
-        rows += self._accuracy_rows(state, rows)
+        rows += self.depth_display.accuracy_rows(state, rows)
         tones = row_tones(rows) if self._tally else None
         # Values as a person reads them: five significant figures, ≤, subscripts.
         rows = [(name, text if name in colors else shown(str(text))) for name, text in rows]

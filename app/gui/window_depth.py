@@ -1,88 +1,65 @@
 """The depth buffer, the stochastic samples and the coverage error of the
-step on show (a part of ``MainWindow``): what antialiasing and visibility
-runs show besides the colour buffer."""
+step on show (``MainWindow.depth_display``): what antialiasing and
+visibility runs show besides the colour buffer."""
 from __future__ import annotations
 
 import numpy as np
 
 from app.model.geometry import exact_reference
 from app.render import frame as frame_view
-from app.render.compose import depth_image, depth_range, error_stats
+from app.render.compose import depth_image, depth_range, error_image, error_stats
 
 
-class DepthAndAccuracy:
-    """Depth, samples and coverage error on the grid and in the panels."""
+class DepthDisplay:
+    """The depth dock, the samples on the grid and the coverage error of the
+    run on show: its depth scale and its exact coverage, kept per run."""
 
-    def _prepare_depth_and_accuracy(self) -> None:
+    def __init__(self, window):
+        self.window = window
+        self._scale = None  # (clear, near, far) of a run that keeps a depth buffer
+        self.accuracy = None  # AccuracyCache of the antialiasing run on show
+        window.depth_action.toggled.connect(self._toggled)
+        window.depth_dock.visibilityChanged.connect(self._dock_shown)
+
+    def prepare(self) -> None:
         """Per run: the depth view's scale, and the exact coverage of an
         antialiasing run (worked out when first needed, then kept)."""
-        player, trace = self.player, self.player.trace
-        self._depth = None
-        self._accuracy = None
+        w = self.window
+        player, trace = w.player, w.player.trace
+        self._scale = None
+        self.accuracy = None
         if trace is not None and trace.start.depth_value is not None:
             clear = float(trace.start.constants.get("clear_depth",
                                                     player.options.get("clear_depth", 1.0)))
-            self._depth = (clear, *depth_range(trace.series(trace.start.depth_value), clear))
+            self._scale = (clear, *depth_range(trace.series(trace.start.depth_value), clear))
         if trace is not None and player.spec.family == "antialias" \
                 and trace.start.pixel_value is not None:
-            self._accuracy = AccuracyCache(player.spec, player.points, player.options,
-                                           player.grid, trace)
-            if not self._accuracy.available:
-                self._accuracy = None
-        self.error_action.setEnabled(self._accuracy is not None)
-        self.depth_action.setEnabled(self._depth is not None)
-        self._place_depth_dock()
+            self.accuracy = AccuracyCache(player.spec, player.points, player.options,
+                                          player.grid, trace)
+            if not self.accuracy.available:
+                self.accuracy = None
+        w.error_action.setEnabled(self.accuracy is not None)
+        w.depth_action.setEnabled(self._scale is not None)
+        self._place_dock()
 
-    def _place_depth_dock(self) -> None:
-        want = self._depth is not None and self.depth_action.isChecked()
-        if want != self.depth_dock.isVisibleTo(self):
-            self.depth_dock.setVisible(want)
-
-    def _depth_toggled(self, on: bool) -> None:
-        self._place_depth_dock()
-        self.show_frame()
-
-    def _depth_dock_shown(self, visible: bool) -> None:
-        # Closing the dock by its own button turns the View toggle off.
-        if not visible and self._depth is not None and not self.depth_dock.isVisibleTo(self):
-            self.depth_action.blockSignals(True)
-            self.depth_action.setChecked(False)
-            self.depth_action.blockSignals(False)
-
-    def _show_depth(self, state) -> None:
-        if self._depth is None or not self.depth_dock.isVisibleTo(self):
-            return
-        clear, near, far = self._depth
-        depth = state.raster.depth
-        if depth is None:
-            depth = np.full(state.raster.counts.shape, np.nan)
-        self.depth_view.set_y_down(self.grid.y_down)
-        self.depth_view.set_image(depth_image(depth, clear, near, far), near, far)
-
-    def _show_samples(self, state) -> None:
-        samples = frame_view.pixel_samples(self.player.trace, state.index)
-        if samples is None:
-            self.grid.set_samples()
-        else:
-            self.grid.set_samples(samples.xs, samples.ys, samples.hits, samples.current)
-
-    def _show_error_summary(self) -> None:
-        accuracy = self._accuracy if self.error_action.isChecked() else None
-        self.error_scale.setVisible(accuracy is not None and not self.coverage.isChecked())
+    def error_map(self):
+        """The signed coverage-error image while View > Coverage error is on
+        for an antialiasing run, else None."""
+        accuracy = self._shown_accuracy()
         if accuracy is None:
-            self.error_label.setText("")
-            return
-        self.error_scale.set_range(accuracy.max)
-        self.error_label.setText(f"Coverage error: RMS {accuracy.rms:.4f} \u00b7 "
-                                 f"max {accuracy.max:.4f}")
-        self.error_label.setToolTip("coverage - exact coverage per pixel (blue: too little, "
-                                    "red: too much); the RMS is taken over the pixels the "
-                                    "run or the exact shape covers")
+            return None
+        return error_image(accuracy.estimate - accuracy.exact, accuracy.max, signed=True)
 
-    def _accuracy_rows(self, state, rows) -> list:
+    def show(self, state) -> None:
+        """The step's depth buffer, samples and coverage-error summary."""
+        self._show_depth(state)
+        self._show_samples(state)
+        self._show_error_summary()
+
+    def accuracy_rows(self, state, rows) -> list:
         """Exact coverage and error of the step's pixel, unless the
         algorithm's own explanation already gives them."""
-        accuracy, pixel = self._accuracy, state.pixel
+        accuracy, pixel = self.accuracy, state.pixel
         if accuracy is None or pixel is None or any(name == "exact coverage"
                                                     for name, _ in rows):
             return []
@@ -94,6 +71,59 @@ class DepthAndAccuracy:
         return [("exact coverage", f"{exact:.6f}"),
                 ("error (final)", f"{final - exact:+.6f}")]
 
+    def _shown_accuracy(self):
+        return self.accuracy if self.window.error_action.isChecked() else None
+
+    def _place_dock(self) -> None:
+        w = self.window
+        want = self._scale is not None and w.depth_action.isChecked()
+        if want != w.depth_dock.isVisibleTo(w):
+            w.depth_dock.setVisible(want)
+
+    def _toggled(self, on: bool) -> None:
+        self._place_dock()
+        self.window.show_frame()
+
+    def _dock_shown(self, visible: bool) -> None:
+        # Closing the dock by its own button turns the View toggle off.
+        w = self.window
+        if not visible and self._scale is not None and not w.depth_dock.isVisibleTo(w):
+            w.depth_action.blockSignals(True)
+            w.depth_action.setChecked(False)
+            w.depth_action.blockSignals(False)
+
+    def _show_depth(self, state) -> None:
+        w = self.window
+        if self._scale is None or not w.depth_dock.isVisibleTo(w):
+            return
+        clear, near, far = self._scale
+        depth = state.raster.depth
+        if depth is None:
+            depth = np.full(state.raster.counts.shape, np.nan)
+        w.depth_view.set_y_down(w.grid.y_down)
+        w.depth_view.set_image(depth_image(depth, clear, near, far), near, far)
+
+    def _show_samples(self, state) -> None:
+        w = self.window
+        samples = frame_view.pixel_samples(w.player.trace, state.index)
+        if samples is None:
+            w.grid.set_samples()
+        else:
+            w.grid.set_samples(samples.xs, samples.ys, samples.hits, samples.current)
+
+    def _show_error_summary(self) -> None:
+        w = self.window
+        accuracy = self._shown_accuracy()
+        w.error_scale.setVisible(accuracy is not None and not w.coverage.isChecked())
+        if accuracy is None:
+            w.error_label.setText("")
+            return
+        w.error_scale.set_range(accuracy.max)
+        w.error_label.setText(f"Coverage error: RMS {accuracy.rms:.4f} \u00b7 "
+                              f"max {accuracy.max:.4f}")
+        w.error_label.setToolTip("coverage - exact coverage per pixel (blue: too little, "
+                                 "red: too much); the RMS is taken over the pixels the "
+                                 "run or the exact shape covers")
 
 
 class AccuracyCache:

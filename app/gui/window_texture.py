@@ -1,4 +1,4 @@
-"""The texture panel of the step on show (a part of ``MainWindow``): for runs that look a
+"""The texture panel of the step on show (``MainWindow.texture_display``): for runs that look a
 texture up, the texture level in use with the pixel's footprint and fetched texels, and the
 grid coloured by mip level; for the pipeline, the scene seen from outside with the frustum."""
 from __future__ import annotations
@@ -23,62 +23,69 @@ def level_legend(count: int) -> str:
 
 
 class TextureDisplay:
-    """The texture dock: made on first need, shown for runs with a texture."""
+    """The texture and outside-view docks: made on first need, shown for
+    runs with a texture (the pipeline's, for the outside view)."""
 
-    texture_dock = None
-    outside_dock = None
+    def __init__(self, window):
+        self.window = window
+        self.dock = self.view = None  # the texture dock and its view
+        self.outside_dock = self.outside_view = None
 
-    def _prepare_texture(self) -> None:
+    def prepare(self) -> None:
+        """Per run: each dock shown, made first if need be, or hidden."""
         self._prepare_outside()
-        trace = self.player.trace
+        w = self.window
+        trace = w.player.trace
         wanted = trace is not None and "level" in trace.value_names
-        if wanted and self.texture_dock is None:
-            self.texture_view = TextureView(PALETTE, self)
-            self.texture_view.open_requested.connect(self.open_texture)
-            self.texture_dock = panel_dock("Texture", "textureDock", self.texture_view, self)
-            self.addDockWidget(Qt.DockWidgetArea.RightDockWidgetArea, self.texture_dock)
-            self.texture_dock.show()
+        if wanted and self.dock is None:
+            self.view = TextureView(PALETTE, w)
+            self.view.open_requested.connect(self.open_texture)
+            self.dock = panel_dock("Texture", "textureDock", self.view, w)
+            w.addDockWidget(Qt.DockWidgetArea.RightDockWidgetArea, self.dock)
+            self.dock.show()
             # Room for the pictures: the texture wants about a third of the height.
-            self.resizeDocks([self.texture_dock], [max(300, self.height() // 3)],
-                             Qt.Orientation.Vertical)
-        if self.texture_dock is not None and wanted != self.texture_dock.isVisibleTo(self):
-            self.texture_dock.setVisible(wanted)
+            w.resizeDocks([self.dock], [max(300, w.height() // 3)], Qt.Orientation.Vertical)
+        if self.dock is not None and wanted != self.dock.isVisibleTo(w):
+            self.dock.setVisible(wanted)
 
-    def _show_texture(self, state) -> None:
-        if self.texture_dock is None or not self.texture_dock.isVisibleTo(self):
+    def show(self, state) -> None:
+        """The texture level in use at the step, with the pixel's footprint."""
+        w = self.window
+        if self.dock is None or not self.dock.isVisibleTo(w):
             return
-        trace = self.player.trace
-        picture = texture_picture(trace, state.index, self.player.options)
-        self.texture_view.set_picture(picture)
+        trace = w.player.trace
+        picture = texture_picture(trace, state.index, w.player.options)
+        self.view.set_picture(picture)
         # The legend names the levels of the texture on show (one when there is none).
         levels = 1 if picture is None else picture.levels
-        self.texture_view.set_y_down(self.grid.y_down)
-        self.texture_view.set_levels(level_map(trace, state.index), level_legend(levels))
+        self.view.set_y_down(w.grid.y_down)
+        self.view.set_levels(level_map(trace, state.index), level_legend(levels))
 
     def open_texture(self, path: str | None = None) -> None:
         """Use a PNG as the texture; a file that is no usable texture is a message."""
         if path is None:
-            path, _ = QFileDialog.getOpenFileName(self, "Open texture", "",
+            path, _ = QFileDialog.getOpenFileName(self.window, "Open texture", "",
                                                   "PNG images (*.png);;All files (*)")
             if not path:
                 return
-        self.set_option("texture", path)
+        self.window.set_option("texture", path)
 
     def _prepare_outside(self) -> None:
-        player = self.player
+        w = self.window
+        player = w.player
         wanted = player.spec.name == "pipeline" and player.trace is not None
         if wanted and self.outside_dock is None:
-            self.outside_view = OutsideView(PALETTE, self)
+            self.outside_view = OutsideView(PALETTE, w)
             self.outside_dock = panel_dock("Scene from outside", "outsideDock", self.outside_view,
-                                           self)
-            self.addDockWidget(Qt.DockWidgetArea.RightDockWidgetArea, self.outside_dock)
+                                           w)
+            w.addDockWidget(Qt.DockWidgetArea.RightDockWidgetArea, self.outside_dock)
             self.outside_dock.show()
-            self.resizeDocks([self.outside_dock], [max(260, self.height() // 3)],
-                             Qt.Orientation.Vertical)
+            w.resizeDocks([self.outside_dock], [max(260, w.height() // 3)],
+                          Qt.Orientation.Vertical)
         if self.outside_dock is None:
             return
-        if wanted != self.outside_dock.isVisibleTo(self):
+        if wanted != self.outside_dock.isVisibleTo(w):
             self.outside_dock.setVisible(wanted)
         if wanted:
             self.outside_view.set_view(outside_view(player.points, player.options, player.grid))
-            self.grid.set_shape(projected_paths(player.trace))
+            w.grid.set_shape(projected_paths(player.trace))

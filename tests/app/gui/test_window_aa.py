@@ -142,7 +142,7 @@ def test_coverage_error_overlay_matches_exact_coverage(window):
 
     w.error_action.setChecked(True)
     w.player.to_last()
-    accuracy = w._accuracy
+    accuracy = w.depth_display.accuracy
     assert accuracy.rms == pytest.approx(expected_rms, rel=1e-9, abs=1e-12)
     assert accuracy.max == pytest.approx(expected_max, rel=1e-9, abs=1e-12)
     assert f"RMS {expected_rms:.4f}" in w.error_label.text()
