@@ -3,11 +3,8 @@ undo history of the scene's edits.
 
 Nothing here imports Qt. The window's ``Player`` (app/gui/player.py) adds
 Qt signals and timed play on top; a script or a test drives a ``Session``
-directly. What happens is told through the events the class declares
-(``app/model/events.py``, connected and emitted as Qt's signals are): ``scene_changed``,
-``trace_changed``, ``step_changed(index)``, ``comparison_changed``,
-``recording_started``, ``recording_progress(steps)``,
-``recording_finished(note)`` and ``message(text)``.
+directly. What happens is told through the events ``Session`` declares
+(``app/model/events.py``), connected and emitted as Qt's signals are.
 
 Where the step goes after a re-recording
 ----------------------------------------
