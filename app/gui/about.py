@@ -8,7 +8,7 @@ keys that really work, then the pointer gestures, which no action holds.
 from __future__ import annotations
 
 import platform
-import tomllib
+import re
 from importlib import metadata
 from pathlib import Path
 
@@ -26,10 +26,23 @@ def app_version() -> str:
     except metadata.PackageNotFoundError:
         pass
     try:
-        with PYPROJECT.open("rb") as file:
-            return str(tomllib.load(file)["project"]["version"])
-    except (OSError, KeyError, tomllib.TOMLDecodeError):
+        return declared_version(PYPROJECT.read_text(encoding="utf-8")) or "unknown"
+    except OSError:
         return "unknown"
+
+
+def declared_version(text: str) -> str:
+    """The [project] version pyproject.toml's text declares ("" for none)."""
+    try:
+        import tomllib
+    except ModuleNotFoundError:  # Python 3.10: the table's one version line
+        project = re.search(r"^\[project\]$(.*?)(?=^\[|\Z)", text, re.M | re.S)
+        found = project and re.search(r'^version\s*=\s*"([^"]*)"', project.group(1), re.M)
+        return found.group(1) if found else ""
+    try:
+        return str(tomllib.loads(text)["project"]["version"])
+    except (KeyError, tomllib.TOMLDecodeError):
+        return ""
 
 
 def runtime_versions() -> str:

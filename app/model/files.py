@@ -35,8 +35,11 @@ def write_atomically(path: Path, data: bytes, error=OSError) -> None:
         with stream:
             stream.write(data)
             stream.flush()
-            os.chmod(stream.fileno(), _mode_for(path))  # mkstemp makes it owner-only
             os.fsync(stream.fileno())
+        # mkstemp makes the file owner-only. By its name, not its descriptor:
+        # Windows Pythons before 3.13 refuse a descriptor (and there a mode
+        # only sets or clears read-only).
+        os.chmod(temporary, _mode_for(path))
         os.replace(temporary, path)
     except BaseException as failure:
         Path(temporary).unlink(missing_ok=True)
