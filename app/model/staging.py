@@ -12,6 +12,7 @@ alone, so two exports to one folder do not undo each other.
 """
 from __future__ import annotations
 
+import ctypes
 import json
 import os
 import re
@@ -52,7 +53,6 @@ def _windows_process_alive(pid: int, kernel32=None, last_error=None) -> bool:
     exists; one we may open runs until it has an exit code. ``kernel32`` and
     ``last_error`` stand in for ctypes' in tests."""
     if kernel32 is None:
-        import ctypes
         kernel32 = ctypes.WinDLL("kernel32", use_last_error=True)
         last_error = ctypes.get_last_error
     if not 0 < pid < 2 ** 32:
@@ -61,7 +61,6 @@ def _windows_process_alive(pid: int, kernel32=None, last_error=None) -> bool:
     if not handle:
         return last_error() == ACCESS_DENIED
     try:
-        import ctypes
         code = ctypes.c_ulong()
         if not kernel32.GetExitCodeProcess(handle, ctypes.byref(code)):
             return True  # it could be opened, so it exists

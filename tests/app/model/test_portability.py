@@ -81,7 +81,7 @@ def test_on_windows_no_signal_is_sent_to_probe_a_process(monkeypatch):
     assert asked == [4242]
 
 
-def test_elsewhere_a_process_that_ended_is_not_alive(tmp_path):
+def test_elsewhere_a_process_that_ended_is_not_alive():
     import subprocess
     import sys
     child = subprocess.Popen([sys.executable, "-c", "pass"])
