@@ -25,7 +25,7 @@ sys.path.insert(0, str(ROOT))
 from algorithms import triangles  # noqa: E402
 from algorithms.core import registry  # noqa: E402
 from algorithms.lines.batch import bresenham_lines  # noqa: E402
-from algorithms.circles.batch import draw_midpoint_circles  # noqa: E402
+from algorithms.circles.batch import draw_midpoint_circles, midpoint_circles  # noqa: E402
 from algorithms.antialias.lines import wu  # noqa: E402
 from algorithms.antialias.wu_kernel import draw_wu_lines  # noqa: E402
 from algorithms.antialias.wu_kernel import wu_lines as batched_wu_lines  # noqa: E402

@@ -8,7 +8,6 @@ import pytest
 from PySide6.QtCore import Qt
 from PySide6.QtTest import QTest
 
-from algorithms.core import registry
 from algorithms.core.steps import Note
 from tests.support import ROOT
 from tests.support.bresenham import bresenham_pixels
