@@ -20,6 +20,7 @@ from app.model import budget
 from app.model.fragments import fragment_objects, fragment_table
 from app.progress import TerminalBar
 from app.model.scene import one_line
+from app.model.version import app_version
 
 DEFAULT_GRID = (32, 24)
 
@@ -37,15 +38,19 @@ def build_parser() -> Parser:
     parser = Parser(prog="rasterlab", description=(
         "Step through rasterization algorithms on a magnified pixel grid. "
         "With no command, the window opens."))
+    parser.add_argument("--version", action="version", version=f"rasterlab {app_version()}")
     commands = parser.add_subparsers(dest="command", parser_class=Parser)
-    listing = commands.add_parser("list", help="list the algorithms")
+    listing = commands.add_parser("list", help="list the algorithms, or the shipped scenes")
     listing.add_argument("--json", action="store_true", help="print JSON")
+    listing.add_argument("--scenes", action="store_true",
+                         help="list the scenes RasterLab ships, by the name run and export take")
     run = commands.add_parser("run", help="run an algorithm headless and print its pixels")
     run.add_argument("algorithm", nargs="?", help="algorithm name, as `rasterlab list` shows it")
     run.add_argument("--points", nargs="+", action="append", metavar="X,Y",
                      help="points in pixel coordinates (y up); repeat once per contour")
-    run.add_argument("--scene", metavar="SCENE.json",
-                     help="run a saved scene instead of ALGO --points (options and grid from the file)")
+    run.add_argument("--scene", metavar="SCENE",
+                     help="run a scene file, or a shipped scene by name (`rasterlab list --scenes`), "
+                          "instead of ALGO --points (options and grid from the scene)")
     run.add_argument("--set", action="append", default=[], metavar="KEY=VALUE",
                      help="set an option (numbers, names, true/false, comma lists)")
     run.add_argument("--grid", metavar="W,H",
@@ -139,6 +144,8 @@ def _plain(value: float):
 
 # ----------------------------------------------------------------- commands
 def command_list(args) -> int:
+    if args.scenes:
+        return list_scenes(args)
     specs = registry.all_specs()
     if args.json:
         print(json.dumps([spec.describe() for spec in specs], indent=2))
@@ -149,6 +156,20 @@ def command_list(args) -> int:
         options = ", ".join(_option_text(o) for o in spec.options)
         print(f"{spec.name:<{name_width}}  {spec.family:<{family_width}}  "
               f"{spec.inputs.text():<24}  {spec.summary}" + (f"  [{options}]" if options else ""))
+    return 0
+
+
+def list_scenes(args) -> int:
+    from app.model import scene as scenes
+    from app.model import shipped
+    rows = [(shipped.scene_name(path), scenes.load(path)) for path in shipped.scene_files()]
+    if args.json:
+        print(json.dumps([{"name": name, "algorithm": scene.algorithm, "title": scene.title}
+                          for name, scene in rows], indent=2))
+        return 0
+    width = max(len(name) for name, _ in rows)
+    for name, scene in rows:
+        print(f"{name:<{width}}  {scene.title or scene.algorithm}")
     return 0
 
 
@@ -213,11 +234,12 @@ def _missing_algorithm(points) -> str:
 
 def run_scene(args) -> int:
     from app.model import scene as scenes
+    from app.model import shipped
     if args.algorithm is not None or args.points is not None or args.set or args.grid:
         raise CommandError("--scene takes its algorithm, points, options and grid from the file")
     step_cap = parse_step_cap(args.step_cap)
     try:
-        scene = scenes.load(args.scene)
+        scene = scenes.load(shipped.scene_path(args.scene))
     except scenes.SceneError as error:
         raise InputError(str(error)) from None
     spec = scene.spec
@@ -364,10 +386,13 @@ def write_summary(stream, spec, trace) -> None:
 def add_export_command(commands) -> None:
     """`rasterlab export SCENE.json --gif OUT.gif ...` (see app/render/export.py)."""
     export = commands.add_parser(
-        "export", help="export a scene's run as an animated GIF and/or PNG frames",
+        "export", help="export a scene's run: GIF, PNG or SVG frames, MP4, WebM, PDF or an "
+                       "interactive HTML page",
         description="Draw every step of a scene's run as the window shows it, with an optional "
-                    "caption and side panel, into an animated GIF and/or numbered PNG frames.")
-    export.add_argument("scene", metavar="SCENE.json", help="a scene file saved by RasterLab")
+                    "caption and side panel: an animated GIF, numbered PNG or SVG frames, an MP4 "
+                    "or WebM video, a PDF (with a Beamer include) or an interactive HTML page.")
+    export.add_argument("scene", metavar="SCENE", help="a scene file saved by RasterLab, or a "
+                        "shipped scene by name (`rasterlab list --scenes`)")
     export.add_argument("--gif", metavar="OUT.gif", help="write an animated GIF")
     export.add_argument("--frames-dir", metavar="DIR",
                         help="write frame_0000.png, frame_0001.png, ... into DIR")
@@ -463,6 +488,7 @@ def command_export(args) -> int:
                  else parse_number(args.text_size, "--text-size", integer=True))
     from app.render import export as exporting
     from app.model import scene as scenes
+    from app.model import shipped
     if not exporting.MIN_FPS <= fps <= exporting.MAX_FPS:
         raise InputError(f"--fps must be {exporting.MIN_FPS:g} .. {exporting.MAX_FPS:g}, "
                          f"got {args.fps.strip()}")
@@ -475,7 +501,7 @@ def command_export(args) -> int:
         raise InputError(f"--text-size must be {exporting.MIN_TEXT} .. {exporting.MAX_TEXT} "
                          f"pixels, got {args.text_size.strip()}")
     try:
-        scene = scenes.load(args.scene)
+        scene = scenes.load(shipped.scene_path(args.scene))
     except scenes.SceneError as error:
         raise InputError(str(error)) from None
     settings = exporting.ExportSettings(

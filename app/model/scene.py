@@ -22,6 +22,7 @@ from algorithms.core import registry
 from algorithms.core.raster import MAX_GRID
 from algorithms.core.registry import InputError
 
+from app.model import shipped as shipped_data
 from app.model.files import write_atomically
 from app.model.inputs import complete, flatten, runnable_input, split_contours
 
@@ -29,8 +30,8 @@ VERSION = 1
 ORIGINS = ("bottom-left", "top-left")
 MAX_FILE_BYTES = 8 * 2 ** 20
 MAX_POINTS = 100_000
-RESOURCES = Path(__file__).resolve().parents[2] / "resources"
-SHIPPED = RESOURCES / "scenes"
+RESOURCES = shipped_data.ROOT
+SHIPPED = shipped_data.SCENES
 MAX_MESSAGE = 300  # characters; a message quoting a huge value is cut here
 # Whole numbers in a scene file have at most this many digits: every field
 # is far smaller, and longer ones cannot even become a float to be checked.

@@ -18,6 +18,7 @@ from algorithms.core.trace import DEFAULT_STEP_CAP
 from app.gui import about, appdata, preferences
 from app.gui.preferences import Preferences, apply_theme, default_values
 from app.gui.window import GESTURES, MainWindow, ShortcutsDialog
+from app.model import version
 from tests.support import ROOT
 from tests.support.gui import WAIT_MS
 
@@ -294,10 +295,10 @@ def test_about_names_the_version_and_the_runtime(qtbot, settings_file, monkeypat
 def test_the_version_falls_back_to_pyproject(monkeypatch):
     def missing(name):
         raise metadata.PackageNotFoundError(name)
-    monkeypatch.setattr(about.metadata, "version", missing)
+    monkeypatch.setattr(version.metadata, "version", missing)
     declared = re.search(r'^version\s*=\s*"([^"]+)"', (ROOT / "pyproject.toml").read_text(),
                          re.MULTILINE).group(1)
-    assert about.app_version() == declared
+    assert about.app_version() == version.app_version() == declared
 
 
 CONTROLS = (QAbstractButton, QComboBox, QAbstractSpinBox, QLineEdit, QSlider)

@@ -1,0 +1,6 @@
+"""`python -m rasterlab` is the `rasterlab` command."""
+import sys
+
+from rasterlab import main
+
+sys.exit(main())
