@@ -385,7 +385,7 @@ def _timed(action) -> float:
 def report(results, quick: bool) -> None:
     """The report command end to end, in a child process (its own figure)."""
     with tempfile.TemporaryDirectory() as folder:
-        args = [sys.executable, "-m", "app", "report", "--out", folder] + (["--quick"] if quick
+        args = [sys.executable, "-m", "rasterlab", "report", "--out", folder] + (["--quick"] if quick
                                                                           else [])
         seconds = _timed(lambda: subprocess.run(args, cwd=ROOT, env=_env(), check=True,
                                                 capture_output=True))

@@ -63,7 +63,7 @@ def case_lines():
 
 
 def command_lines():
-    command = [sys.executable, "-m", "app"]
+    command = [sys.executable, "-m", "rasterlab"]
     scenes = sorted((ROOT / "resources" / "scenes").rglob("*.json"))
     for scene in scenes:
         done = subprocess.run(command + ["run", "--scene", str(scene), "--json"],

@@ -112,12 +112,12 @@ def test_bad_input_exits_2_with_one_line(run_cli, argv, words):
 
 
 def test_entry_point_in_a_subprocess():
-    """`python -m app` really exits 2 with one line, and 0 with JSON."""
-    bad = subprocess.run([sys.executable, "-m", "app", "run", "line-dda", "--points", "0,0"],
+    """`python -m rasterlab` really exits 2 with one line, and 0 with JSON."""
+    bad = subprocess.run([sys.executable, "-m", "rasterlab", "run", "line-dda", "--points", "0,0"],
                          cwd=ROOT, capture_output=True, text=True, timeout=60)
     assert bad.returncode == 2
     assert len(bad.stderr.strip().splitlines()) == 1 and "Traceback" not in bad.stderr
-    good = subprocess.run([sys.executable, "-m", "app", "run", "line-bresenham", "--points",
+    good = subprocess.run([sys.executable, "-m", "rasterlab", "run", "line-bresenham", "--points",
                            "2,3", "-0,0", "--json"], cwd=ROOT, capture_output=True, text=True,
                           timeout=60)
     assert good.returncode == 0, good.stderr

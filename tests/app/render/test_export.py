@@ -503,7 +503,7 @@ def test_the_command_runs_headless(line_scene, tmp_path):
     env = {k: v for k, v in os.environ.items() if k not in ("DISPLAY", "WAYLAND_DISPLAY",
                                                            "QT_QPA_PLATFORM")}
     gif = tmp_path / "slide.gif"
-    done = subprocess.run([sys.executable, "-m", "app", "export", str(line_scene), "--gif",
+    done = subprocess.run([sys.executable, "-m", "rasterlab", "export", str(line_scene), "--gif",
                            str(gif), "--scale", "4"], cwd=ROOT, env=env, capture_output=True,
                           text=True, timeout=120)
     assert done.returncode == 0, done.stderr
