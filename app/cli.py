@@ -71,6 +71,7 @@ def build_parser() -> Parser:
     output.add_argument("--csv", action="store_true", help="with --steps: print the steps as CSV")
     add_export_command(commands)
     add_report_command(commands)
+    cli_teaching.add_template_command(commands)
     cli_teaching.add_check_command(commands)
     cli_teaching.add_worksheet_command(commands)
     return parser
@@ -607,7 +608,7 @@ def main(argv: list[str] | None = None) -> int:
             return launch()
         return {"list": command_list, "run": command_run,
                 "export": command_export, "report": command_report,
-                "check": cli_teaching.command_check,
+                "template": cli_teaching.command_template, "check": cli_teaching.command_check,
                 "worksheet": cli_teaching.command_worksheet}[args.command](args)
     except (CommandError, InputError) as error:
         print(f"rasterlab: {one_line(str(error))}", file=sys.stderr)

@@ -1,5 +1,6 @@
-"""The commands for teaching: `rasterlab check` grades a student's own
-algorithm, `rasterlab worksheet` writes a worksheet and its answer key.
+"""The commands for teaching: `rasterlab template` hands out the starting
+file of a student's own algorithm, `rasterlab check` grades it, `rasterlab
+worksheet` writes a worksheet and its answer key.
 
 check's exit status: 0 when every case passes, 1 when some fail, 2 for bad
 input (raised as InputError, which app/cli.py turns into one line).
@@ -13,7 +14,7 @@ from typing import TYPE_CHECKING
 
 from algorithms.core import registry
 from algorithms.core.registry import InputError, parse_number
-from app.model import budget
+from app.model import budget, shipped
 from app.teaching import worksheet
 from app.model.files import write_atomically
 
@@ -25,7 +26,7 @@ def add_check_command(commands) -> None:
     check = commands.add_parser(
         "check", help="check a student's own algorithm against a built-in one",
         description="Run the generator draw(...) of a student's Python file (see "
-                    "resources/templates/) in a separate process on each case, compare its "
+                    "`rasterlab template`) in a separate process on each case, compare its "
                     "pixels with the reference algorithm and the exact result, and print "
                     "PASS or FAIL per case with the first divergence. Exit status 0 when all "
                     "pass, 1 when some fail, 2 for bad input.")
@@ -81,6 +82,42 @@ def command_check(args) -> int:
     return 0 if all(result.passed for result in results) else 1
 
 
+# ----------------------------------------------------------------- template
+def add_template_command(commands) -> None:
+    template = commands.add_parser(
+        "template", help="write the starting file of a student's own algorithm",
+        description="With no NAME, list the templates. With NAME, print that template, or "
+                    "write it to --out: a Python file with the generator draw(...) to fill in, "
+                    "which `rasterlab check` then grades.")
+    template.add_argument("name", nargs="?", metavar="NAME", help="a template, as the list names it")
+    template.add_argument("--out", metavar="FILE.py", help="write the template into FILE.py")
+    template.add_argument("--force", action="store_true", help="replace FILE.py if it exists")
+
+
+def command_template(args) -> int:
+    found = shipped.templates()
+    if args.name is None:
+        if args.out:
+            raise InputError("--out needs a template NAME")
+        width = max(map(len, found))
+        for name, path in found.items():
+            print(f"{name:<{width}}  {shipped.template_title(path)}")
+        return 0
+    if args.name not in found:
+        raise InputError(f"no template {args.name!r}; there are: {', '.join(found)}")
+    text = found[args.name].read_text(encoding="utf-8")
+    if args.out is None:
+        sys.stdout.write(text)
+        return 0
+    out = Path(args.out)
+    if out.exists() and not args.force:
+        raise InputError(f"{out}: exists; add --force to replace it")
+    write_atomically(out, text.encode("utf-8"), error=OSError)
+    print(f"{out}: the {args.name} template; check it with `rasterlab check {out.name} "
+          f"--against ...` (the file says which algorithms)")
+    return 0
+
+
 # ---------------------------------------------------------------- worksheet
 def add_worksheet_command(commands) -> None:
     sheet = commands.add_parser(
@@ -88,7 +125,8 @@ def add_worksheet_command(commands) -> None:
         description="Write the step table of a scene's run (the steps that plot, branch or "
                     "fill a span) with chosen columns left blank, a grid with the ideal shape "
                     "to shade, and the answer key: worksheet.FORMAT and answers.FORMAT in DIR.")
-    sheet.add_argument("scene", metavar="SCENE.json", help="a scene file saved by RasterLab")
+    sheet.add_argument("scene", metavar="SCENE", help="a scene file saved by RasterLab, or a "
+                       "shipped scene by name (`rasterlab list --scenes`)")
     sheet.add_argument("--out", required=True, metavar="DIR", help="the folder to write into")
     sheet.add_argument("--format", choices=worksheet.FORMATS, default="pdf",
                        help="pdf, md (with PNG grids), tex (a tabular) or csv (default %(default)s)")
@@ -99,7 +137,7 @@ def add_worksheet_command(commands) -> None:
 def command_worksheet(args) -> int:
     from app.model import scene as scenes
     try:
-        scene = scenes.load(args.scene)
+        scene = scenes.load(shipped.scene_path(args.scene))
     except scenes.SceneError as error:
         raise InputError(str(error)) from None
     blank = [name.strip() for name in args.blank.split(",") if name.strip()]

@@ -1,6 +1,8 @@
-"""File > Open algorithm…, File > Export worksheet… and Run > First divergence (D).
+"""File > Save algorithm template…, File > Open algorithm…, File > Export
+worksheet… and Run > First divergence (D).
 
-A student's file (the protocol of resources/templates/) joins the algorithm
+A template is the starting file of a student's own algorithm. A student's
+file (a filled-in template) joins the algorithm
 list as "FILE (yours)" and runs on the scene like a built-in algorithm, in
 a separate process. The algorithm on show before it becomes its reference:
 the grid's "compare with previous algorithm" marks the cells that differ,
@@ -9,12 +11,16 @@ first step where its pixels part from the reference's or the exact ones.
 """
 from __future__ import annotations
 
+from pathlib import Path
+
 from PySide6.QtCore import QObject, Qt
 from PySide6.QtGui import QAction, QKeySequence
 from PySide6.QtWidgets import QFileDialog, QInputDialog
 
 from algorithms.core import registry
 from algorithms.core.errors import InputError
+from app.model import shipped
+from app.model.files import write_atomically
 
 
 
@@ -41,15 +47,21 @@ class StudentActions(QObject):
         super().__init__(window)
         self.window = window
         self.against: dict[str, str] = {}  # student algorithm -> its reference
+        self.template_action = QAction("Save algorithm &template…", window)
+        self.template_action.setToolTip("Save the starting file of your own line, circle, fill, "
+                                        "... algorithm: a draw() generator to fill in")
+        self.template_action.triggered.connect(lambda: self.save_template())
         self.open_action = QAction("Open &algorithm…", window)
-        self.open_action.setToolTip("Run your own draw() generator (see resources/templates/) "
-                                    "on the scene and compare it with a built-in algorithm")
+        self.open_action.setToolTip("Run your own draw() generator (File > Save algorithm "
+                                    "template… gives a start) on the scene and compare it with "
+                                    "a built-in algorithm")
         self.open_action.triggered.connect(lambda: self.open())
         self.worksheet_action = QAction("Export &worksheet…", window)
         self.worksheet_action.setToolTip("Write the run's step table with blank columns, a grid "
                                          "to shade and the answer key (PDF, Markdown, LaTeX, CSV)")
         self.worksheet_action.triggered.connect(lambda: self.export_worksheet())
         quit_action = window.menus["file"].actions()[-1]
+        window.menus["file"].insertAction(quit_action, self.template_action)
         window.menus["file"].insertAction(quit_action, self.open_action)
         window.menus["file"].insertAction(quit_action, self.worksheet_action)
         self.divergence_action = QAction("First &divergence", window)
@@ -60,6 +72,30 @@ class StudentActions(QObject):
         self.divergence_action.triggered.connect(lambda: self.first_divergence())
         window.menus["run"].addAction(self.divergence_action)
         window.addAction(self.divergence_action)
+
+    def save_template(self, name: str | None = None, path: str | None = None) -> str | None:
+        """Save a template where the student chooses; returns the path (None: cancelled)."""
+        window = self.window
+        found = shipped.templates()
+        if name is None:
+            titles = [f"{key}: {shipped.template_title(file)}" for key, file in found.items()]
+            chosen, ok = QInputDialog.getItem(window, "Save algorithm template",
+                                              "Template:", titles, 0, False)
+            if not ok:
+                return None
+            name = chosen.split(":")[0]
+        if path is None:
+            path, _ = QFileDialog.getSaveFileName(window, "Save the template as", f"{name}.py",
+                                                  "Python files (*.py)")
+            if not path:
+                return None
+        try:
+            write_atomically(Path(path), found[name].read_bytes())
+        except OSError as error:
+            window.say_error(f"Could not save the template: {error}")
+            return None
+        window.statusBar().showMessage(f"Saved the {name} template as {path}", 8000)
+        return path
 
     def open(self, path: str | None = None, against: str | None = None) -> str | None:
         """Load a student's file; returns the new algorithm's name (None: cancelled or refused)."""

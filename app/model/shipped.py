@@ -37,6 +37,20 @@ def scene_name(path: Path) -> str:
     return path.relative_to(SCENES).with_suffix("").as_posix()
 
 
+def templates() -> dict[str, Path]:
+    """The starting files of a student's own algorithm, by name ("line", "fill", ...)."""
+    return {path.stem: path for path in sorted(TEMPLATES.glob("*.py"))}
+
+
+def template_title(path: Path) -> str:
+    """A template's docstring title ("A line algorithm of your own, ...")."""
+    for line in path.read_text(encoding="utf-8").splitlines():
+        text = line.strip().strip('"').strip()
+        if text:
+            return text
+    return ""
+
+
 def scene_path(text: str) -> Path:
     """A scene given on the command line: a file that exists, else the
     shipped scene of that name (with or without .json). A text that is

@@ -71,3 +71,18 @@ def test_the_compare_view_puts_the_file_beside_its_reference(window, qtbot):
     # At the end, the reference's last pixel, Q, is the one cell only it has.
     assert len(compare.current_diff.cells()) == 1 and compare.next_difference() == LINE[1]
     compare.close()
+
+
+def test_save_template_writes_the_shipped_file(window, tmp_path):
+    target = tmp_path / "my_fill.py"
+    assert window.student_actions.save_template("fill", str(target)) == str(target)
+    assert target.read_bytes() == (ROOT / "resources" / "templates" / "fill.py").read_bytes()
+    names = [a.text() for a in window.menus["file"].actions()]
+    assert names.index("Save algorithm &template…") < names.index("Open &algorithm…")
+
+
+def test_save_template_into_a_missing_folder_says_why(window, tmp_path, monkeypatch):
+    said = []
+    monkeypatch.setattr(window, "say_error", said.append)
+    assert window.student_actions.save_template("line", str(tmp_path / "no" / "x.py")) is None
+    assert len(said) == 1 and "does not exist" in said[0]
