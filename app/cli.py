@@ -6,7 +6,6 @@ from __future__ import annotations
 
 import argparse
 import json
-import math
 import os
 import re
 import sys
@@ -16,13 +15,11 @@ from algorithms.core.raster import MAX_GRID
 from algorithms.core.registry import InputError, parse_number
 from algorithms.core.trace import DEFAULT_STEP_CAP, MAX_STEP_CAP, TraceError
 from app import cli_teaching
-from app.model import budget
-from app.model.fragments import fragment_objects, fragment_table
+from app.model import budget, runs
+from app.model.runs import DEFAULT_GRID, Rows, check_grid, fit_grid, run_result, save_new
 from app.progress import TerminalBar
 from app.model.scene import one_line
 from app.model.version import app_version
-
-DEFAULT_GRID = (32, 24)
 
 
 class CommandError(Exception):
@@ -44,7 +41,8 @@ def build_parser() -> Parser:
     listing.add_argument("--json", action="store_true", help="print JSON")
     listing.add_argument("--scenes", action="store_true",
                          help="list the scenes RasterLab ships, by the name run and export take")
-    run = commands.add_parser("run", help="run an algorithm headless and print its pixels")
+    run = commands.add_parser("run", help="run an algorithm headless and print its pixels, or "
+                                          "save its scene")
     run.add_argument("algorithm", nargs="?", help="algorithm name, as `rasterlab list` shows it")
     run.add_argument("--points", nargs="+", action="append", metavar="X,Y",
                      help="points in pixel coordinates (y up); repeat once per contour")
@@ -69,6 +67,12 @@ def build_parser() -> Parser:
     output.add_argument("--json", action="store_true", help="print one JSON object")
     output.add_argument("--ascii", action="store_true", help="print the grid as text")
     output.add_argument("--csv", action="store_true", help="with --steps: print the steps as CSV")
+    run.add_argument("--save", metavar="SCENE.json",
+                     help="also write the run's scene to a file the window, export and run "
+                          "--scene open; prints one line instead of the pixels unless --json, "
+                          "--ascii or --steps asks for an output")
+    run.add_argument("--force", action="store_true",
+                     help="with --save: replace a file that exists")
     add_export_command(commands)
     add_report_command(commands)
     cli_teaching.add_template_command(commands)
@@ -91,10 +95,7 @@ def parse_grid(text: str) -> tuple[int, int]:
     parts = text.split(",")
     if len(parts) != 2:
         raise InputError(f"grid {text!r} must be W,H")
-    width, height = (parse_number(part, f"grid {text!r}", integer=True) for part in parts)
-    if not (1 <= width <= MAX_GRID and 1 <= height <= MAX_GRID):
-        raise InputError(f"grid {width}x{height} is outside 1x1 .. {MAX_GRID}x{MAX_GRID}")
-    return width, height
+    return check_grid(*(parse_number(part, f"grid {text!r}", integer=True) for part in parts))
 
 
 def parse_step_cap(text: str) -> int:
@@ -112,35 +113,6 @@ def parse_settings(spec, settings: list[str]) -> dict:
             raise InputError(f"--set {setting!r} must be KEY=VALUE")
         options[key.strip()] = spec.option(key.strip()).parse(value)
     return options
-
-
-def fit_grid(points, grid_text: str | None, integer: bool = True) -> tuple[int, int]:
-    """The given grid, or the smallest default-or-larger grid holding the points.
-
-    Integer points name pixels, so they lie in 0..W-1; real points are
-    positions, which may lie anywhere in [0, W] x [0, H].
-    """
-    def extent(v):
-        return math.floor(v) + 1 if integer else math.ceil(v)
-
-    if grid_text is not None:
-        width, height = parse_grid(grid_text)
-    else:
-        width = max([DEFAULT_GRID[0]] + [extent(x) for x, _ in points])
-        height = max([DEFAULT_GRID[1]] + [extent(y) for _, y in points])
-        if width > MAX_GRID or height > MAX_GRID:
-            raise InputError(f"the points need a grid larger than {MAX_GRID}x{MAX_GRID}")
-    for x, y in points:
-        inside_x = 0 <= x < width if integer else 0 <= x <= width
-        inside_y = 0 <= y < height if integer else 0 <= y <= height
-        if not (inside_x and inside_y):
-            raise InputError(f"point ({_plain(x)}, {_plain(y)}) lies outside the "
-                             f"{width}x{height} grid")
-    return width, height
-
-
-def _plain(value: float):
-    return int(value) if float(value).is_integer() else value
 
 
 # ----------------------------------------------------------------- commands
@@ -195,6 +167,8 @@ def command_run(args) -> int:
         raise CommandError("--csv prints the table of steps: add --steps")
     if args.steps and args.ascii:
         raise CommandError("--steps prints a table: use it alone, with --json or with --csv")
+    if args.force and args.save is None:
+        raise CommandError("--force replaces the file of --save: give --save SCENE.json too")
     if args.scene is not None:
         return run_scene(args)
     if args.algorithm is None or args.points is None:
@@ -209,11 +183,15 @@ def command_run(args) -> int:
         points = groups[0]
     options = parse_settings(spec, args.set)
     step_cap = parse_step_cap(args.step_cap)
-    spec.inputs.check(points)
-    grid = fit_grid(spec.inputs.flat(points), args.grid, spec.inputs.integer)
-    budget.check_budget(spec, points, options, grid, step_cap,
-                        memory_limit=_memory_limit(args))
-    trace = spec.record(points, options, grid=grid, step_cap=step_cap)
+    points = spec.inputs.check(points)
+    grid = parse_grid(args.grid) if args.grid is not None else None
+    grid = fit_grid(spec.inputs.flat(points), grid, spec.inputs.integer)
+    trace = runs.record(spec, points, options, grid, step_cap, _memory_limit(args))
+    if args.save is not None:
+        from app.model.scene import Scene
+        scene = Scene(algorithm=spec.name, points=points, options=options,
+                      width=grid[0], height=grid[1])
+        return save_run(args, scene, trace)
     return print_run(args, spec, trace, options)
 
 
@@ -243,12 +221,25 @@ def run_scene(args) -> int:
         scene = scenes.load(shipped.scene_path(args.scene))
     except scenes.SceneError as error:
         raise InputError(str(error)) from None
-    spec = scene.spec
-    budget.check_budget(spec, scene.points, scene.options, (scene.width, scene.height), step_cap,
-                        memory_limit=_memory_limit(args))
-    trace = spec.record(scene.points, scene.options, grid=(scene.width, scene.height),
-                        step_cap=step_cap)
-    return print_run(args, spec, trace, scene.options)
+    trace = runs.record(scene.spec, scene.points, scene.options, scene.grid, step_cap,
+                        _memory_limit(args))
+    if args.save is not None:
+        return save_run(args, scene, trace)
+    return print_run(args, scene.spec, trace, scene.options)
+
+
+def save_run(args, scene, trace) -> int:
+    """`run ... --save SCENE.json`: the scene is written once its run has
+    worked; then the output asked for (--json, --ascii, --steps), or else
+    one line saying what was saved in place of the pixels."""
+    save_new(scene, args.save, args.force, "give --force to replace it")
+    if args.json or args.ascii or args.steps:
+        return print_run(args, scene.spec, trace, scene.options)
+    if trace.truncated:
+        print(f"rasterlab: {trace.message}", file=sys.stderr)
+    print(f"{args.save}: a scene of {scene.algorithm} on a {scene.width}x{scene.height} grid "
+          f"({len(trace.written_pixels())} pixels written in {len(trace)} steps)")
+    return 0
 
 
 def print_run(args, spec, trace, options) -> int:
@@ -282,48 +273,6 @@ def print_steps(args, spec, trace, options) -> int:
     return 0
 
 
-def run_result(spec, trace, options) -> dict:
-    """The JSON object of `run --json`; its per-pixel lists are Rows, which
-    write_json prints in parts."""
-    result = {
-        "algorithm": spec.name,
-        "grid": [trace.width, trace.height],
-        "pixels": Rows(trace.written_pixels(), lambda part: part.tolist()),
-        "steps": len(trace),
-        "final": _jsonable(trace.final_variables()),
-        "options": _jsonable(spec.resolve(options)),
-    }
-    values = trace.pixel_values()
-    if values is not None:
-        name = trace.start.pixel_value
-        result["values"] = Rows(values, lambda part: _pixel_values(name, part))
-    if spec.fragments:
-        layout, table = fragment_table(trace, spec.fragments)
-        result["fragments"] = Rows(table, lambda part: fragment_objects(layout, part))
-    if trace.truncated:
-        result["truncated"] = True
-        result["message"] = trace.message
-    return result
-
-
-class Rows:
-    """A per-pixel array that is printed a part at a time: as one list of
-    Python objects, a full grid's pixels took gigabytes beside the trace,
-    which the step cap bounds."""
-
-    PART = 1 << 16
-
-    def __init__(self, array, convert):
-        self.array, self.convert = array, convert
-
-    def tolist(self) -> list:
-        return self.convert(self.array)
-
-    def parts(self):
-        for start in range(0, len(self.array), self.PART):
-            yield self.convert(self.array[start:start + self.PART])
-
-
 def write_json(stream, result: dict) -> None:
     """``print(json.dumps(result))``, byte for byte, with each Rows written
     in parts instead of being made one list."""
@@ -337,30 +286,6 @@ def write_json(stream, result: dict) -> None:
             stream.write((", " if n else "") + json.dumps(part, allow_nan=False)[1:-1])
         stream.write("]")
     stream.write(text + "\n")
-
-
-def _pixel_values(name: str, values) -> list:
-    # A pixel written without a value (NaN) or with a value that is not a
-    # colour gets null: strict JSON has no NaN, and "#-00001" is no colour.
-    if name == "rgb":
-        return [f"#{int(v):06x}" if 0 <= v <= 0xFFFFFF else None for v in values]
-    return [_jsonable(float(v)) for v in values]
-
-
-def _jsonable(value):
-    """The value as strict JSON takes it: lists for tuples and arrays, plain
-    numbers for numpy scalars, null for NaN and infinities, at any depth."""
-    if isinstance(value, dict):
-        return {str(key): _jsonable(item) for key, item in value.items()}
-    if isinstance(value, (tuple, list)):
-        return [_jsonable(item) for item in value]
-    if hasattr(value, "tolist"):  # numpy scalars and arrays
-        return _jsonable(value.tolist())
-    if isinstance(value, float) and not math.isfinite(value):
-        return None
-    if value is None or isinstance(value, (bool, int, float, str)):
-        return value
-    return str(value)
 
 
 def ascii_grid(trace) -> str:

@@ -10,16 +10,11 @@ from __future__ import annotations
 import json
 import sys
 from pathlib import Path
-from typing import TYPE_CHECKING
 
-from algorithms.core import registry
-from algorithms.core.registry import InputError, parse_number
-from app.model import budget, shipped
+from algorithms.core.registry import InputError
+from app.model import shipped
 from app.teaching import worksheet
 from app.model.files import write_atomically
-
-if TYPE_CHECKING:
-    from app.teaching import student
 
 
 def add_check_command(commands) -> None:
@@ -48,36 +43,19 @@ def add_check_command(commands) -> None:
     check.add_argument("--junit", metavar="OUT.xml", help="also write JUnit XML for a grader")
 
 
-def _limits(args) -> student.Limits:
-    from app.teaching import student
-    seconds = parse_number(args.time_limit, "--time-limit")
-    if not 0.1 <= seconds <= 60:
-        raise InputError(f"--time-limit must be 0.1 .. 60 seconds, got {args.time_limit!r}")
-    memory = budget.parse_size(args.memory_limit)
-    if not 64 << 20 <= memory <= 8 << 30:
-        raise InputError(f"--memory-limit must be 64M .. 8G, got {args.memory_limit!r}")
-    return student.Limits(seconds=seconds, memory=memory)
-
-
 def command_check(args) -> int:
     # Loaded here: the window and the other commands import this module too.
-    from app.teaching import check_report, checking, student
-    path = student.check_file(args.file)
-    spec = registry.get(args.against)
-    checking.kind_of(spec)
-    selectors = checking.parse_selectors(args.cases)
-    seed = parse_number(args.seed, "--seed", integer=True)
-    limits = _limits(args)
-    cases = checking.make_cases(spec, selectors, seed)  # bad scenes are refused before any run
-    results = checking.check(path, spec.name, cases, limits=limits)
-    shown = Path(args.file).name
+    from app.teaching import check_report
+    from app.teaching.check_run import run_check
+    results, shown, against = run_check(args.file, args.against, args.cases, args.seed,
+                                        args.time_limit, args.memory_limit)
     if args.junit:
-        write_atomically(Path(args.junit), check_report.junit_xml(results, shown, spec.name),
+        write_atomically(Path(args.junit), check_report.junit_xml(results, shown, against),
                          error=OSError)
     if args.json:
-        print(json.dumps(check_report.as_json(results, shown, spec.name), indent=2))
+        print(json.dumps(check_report.as_json(results, shown, against), indent=2))
     else:
-        print("\n".join(check_report.text_lines(results, shown, spec.name)))
+        print("\n".join(check_report.text_lines(results, shown, against)))
     sys.stdout.flush()
     return 0 if all(result.passed for result in results) else 1
 

@@ -10,6 +10,9 @@ overwriting the other. Importing this package puts that folder first on
 own packages before a same-named folder in the current directory. The
 price, stated in the docs: in a process that imported ``rasterlab``,
 ``import algorithms`` means RasterLab's.
+
+``rasterlab.run``, ``open_scene``, ``export``, ``check``, ``Run`` and
+``CheckResult`` are the Python API (app/api.py, docs/reference/api.md).
 """
 from __future__ import annotations
 
@@ -38,3 +41,20 @@ def main(argv: list[str] | None = None) -> int:
     """The `rasterlab` command."""
     from app.cli import main as command_line
     return command_line(argv)
+
+
+# The Python API (app/api.py), loaded on first use (PEP 562) so that the
+# command's start-up does not import it.
+_API = ("run", "open_scene", "export", "check", "Run", "CheckResult")
+__all__ = ["main", *_API]
+
+
+def __getattr__(name: str):
+    if name in _API:
+        from app import api
+        return getattr(api, name)
+    raise AttributeError(f"module 'rasterlab' has no attribute {name!r}")
+
+
+def __dir__() -> list[str]:
+    return sorted(set(globals()) | set(_API))

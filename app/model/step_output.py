@@ -38,3 +38,17 @@ def write_aligned(table: StepTable, stream) -> int:
 
 def _line(cells: list[str], widths: list[int]) -> str:
     return "  ".join(text.ljust(width) for text, width in zip(cells, widths)).rstrip() + "\n"
+
+
+def json_step(table: StepTable, i: int) -> dict:
+    """Step i as one dict of the cells `run --steps --json` gives: the fixed
+    columns (step, line, code, pixel, choice) by key, then the variables and
+    the tables known at that step under "variables" and "tables"."""
+    cells = table.row(i)
+    step, variables, tables = {}, {}, {}
+    groups = {"fixed": step, "variable": variables, "table": tables}
+    for column in table.columns:
+        if column.key in cells:  # a variable not set yet is left out
+            groups[column.kind][column.key] = cell_to_json(cells[column.key])
+    step["variables"], step["tables"] = variables, tables
+    return step

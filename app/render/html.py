@@ -51,6 +51,13 @@ def write_page(scene, trace, path, settings, force: bool = False) -> int:
     """Write the page for ``scene``'s run ``trace`` to ``path`` (atomically);
     its size in bytes. A page over its size budget is refused unless
     ``force``."""
+    page = page_bytes(scene, trace, settings, force)
+    write_atomically(Path(path), page, ExportError)
+    return len(page)
+
+
+def page_bytes(scene, trace, settings, force: bool = False) -> bytes:
+    """The page for ``scene``'s run ``trace``, UTF-8 (see ``write_page``)."""
     data = page_data(scene, trace, settings)
     text = TEMPLATE.read_text(encoding="utf-8")
     payload = json.dumps(data, separators=(",", ":"), allow_nan=False)
@@ -61,8 +68,7 @@ def write_page(scene, trace, path, settings, force: bool = False) -> int:
         raise ExportError(f"the page would take {len(page) / 2 ** 20:.1f} MB for {len(trace):,} "
                           f"steps, over its budget of {budget / 2 ** 20:g} MB: export a shorter "
                           "run, or give --force")
-    write_atomically(Path(path), page, ExportError)
-    return len(page)
+    return page
 
 
 def page_data(scene, trace, settings) -> dict:

@@ -1,0 +1,49 @@
+"""A check as a person asks for it: the student's file, the reference
+algorithm, the cases, the seed and the limits, as the words of
+`rasterlab check` give them, checked and run. The command prints the
+results (app/cli_teaching.py); the Python API returns them (app/api.py).
+"""
+from __future__ import annotations
+
+from pathlib import Path
+from typing import NamedTuple
+
+from algorithms.core import registry
+from algorithms.core.registry import InputError, parse_number
+from app.model import budget
+from app.teaching import checking, student
+
+
+class Checked(NamedTuple):
+    """Every case's result, the file's name as reports show it, and the reference's name."""
+
+    results: list
+    file: str
+    against: str
+
+
+def run_check(file, against: str, cases: list[str], seed: str = "0", time_limit: str = "2",
+              memory_limit: str = "256M") -> Checked:
+    """Check ``file`` against the algorithm ``against`` on ``cases`` (hard,
+    random N and SCENE.json words). Bad input raises InputError before any
+    case runs; each case runs the student's code in its own process."""
+    path = student.check_file(file)
+    spec = registry.get(against)
+    checking.kind_of(spec)
+    selectors = checking.parse_selectors(cases)
+    number = parse_number(seed, "--seed", integer=True)
+    case_limits = limits(time_limit, memory_limit)
+    made = checking.make_cases(spec, selectors, number)  # bad scenes are refused before any run
+    results = checking.check(path, spec.name, made, limits=case_limits)
+    return Checked(results, Path(file).name, spec.name)
+
+
+def limits(time_limit: str, memory_limit: str) -> student.Limits:
+    """The limits per case, from the texts of --time-limit and --memory-limit."""
+    seconds = parse_number(time_limit, "--time-limit")
+    if not 0.1 <= seconds <= 60:
+        raise InputError(f"--time-limit must be 0.1 .. 60 seconds, got {time_limit!r}")
+    memory = budget.parse_size(memory_limit)
+    if not 64 << 20 <= memory <= 8 << 30:
+        raise InputError(f"--memory-limit must be 64M .. 8G, got {memory_limit!r}")
+    return student.Limits(seconds=seconds, memory=memory)
