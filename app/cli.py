@@ -342,7 +342,8 @@ def add_export_command(commands) -> None:
     export.add_argument("--fps", default="4", metavar="N",
                         help="frames per second, 0.1 .. 50 (default %(default)s)")
     export.add_argument("--scale", default=None, metavar="N",
-                        help="pixels per grid cell, 1 .. 64 (default: the grid fits 640 pixels)")
+                        help="pixels per grid cell, 1 .. 64 (default: as large as fits the grid's "
+                             "longer side in 640 pixels, at most 32)")
     export.add_argument("--from", dest="first", metavar="I",
                         help="first step: a number or a bookmark name (default 0)")
     export.add_argument("--to", dest="last", metavar="J",
@@ -487,8 +488,8 @@ def add_report_command(commands) -> None:
                     "exact oracles, times) and write report.md, measurements.csv/.json and "
                     "one PNG of cost against error per family into DIR.")
     report.add_argument("--quick", action="store_true",
-                        help="smaller sweeps: about ten seconds on a 2-core machine, where the full "
-                             "report takes one to two minutes")
+                        help="smaller sweeps: about a tenth of the full report's work, "
+                             "seconds where the full report takes minutes")
     report.add_argument("--out", default="rasterlab-report", metavar="DIR",
                         help="the folder to write into, made if needed (default %(default)s)")
     report.add_argument("--memory-limit", metavar="SIZE",

@@ -34,7 +34,7 @@ def add_check_command(commands) -> None:
     check.add_argument("--cases", nargs="+", default=["hard"], metavar="CASE",
                        help="hard (the hard-case catalogue), random N (N seeded random "
                             "inputs) and SCENE.json files, in any mix (default: hard)")
-    check.add_argument("--seed", default="0", metavar="N", help="seed of the random cases")
+    check.add_argument("--seed", default="0", metavar="N", help="seed of the random cases (default %(default)s)")
     check.add_argument("--time-limit", default="2", metavar="SECONDS",
                        help="CPU time per case, 0.1 .. 60 (default %(default)s)")
     check.add_argument("--memory-limit", default="256M", metavar="SIZE",

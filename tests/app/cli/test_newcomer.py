@@ -43,14 +43,14 @@ def test_list_shows_the_choices_of_every_choice_option(run_cli):
                 assert f"{option.name}=" in lines[spec.name] and f"({shown})" in lines[spec.name]
 
 
-def test_report_help_and_readme_promise_the_same_time(run_cli):
+def test_report_help_and_the_guide_promise_the_same_time(run_cli):
     status, out, _ = run_cli("report", "--help", child=True)
-    readme = (ROOT / "README.md").read_text()
+    guide = (ROOT / "docs" / "guides" / "lecturers.md").read_text(encoding="utf-8")
     assert status == 0
     help_text = " ".join(out.split())
-    assert "about ten seconds" in help_text and "one to two minutes" in help_text
-    assert re.search(r"`--quick` runs smaller sweeps in about ten seconds", readme)
-    assert "one to two minutes" in " ".join(readme.split())
+    assert "about a tenth of the full report's work" in help_text
+    assert re.search(r"`--quick` runs smaller sweeps, about a tenth of the full report's work",
+                     " ".join(guide.split()))
 
 
 @pytest.fixture
