@@ -155,6 +155,7 @@ def test_every_python_example_prints_what_it_shows(page, tmp_path, monkeypatch):
     for content, line in blocks:
         test = parser.get_doctest(content, globs, where(page, line), str(page), line)
         runner.run(test, out=report.append, clear_globs=False)
+        globs = test.globs  # a DocTest runs in a copy: the next block goes on from this one
     assert runner.failures == 0, "".join(report)
 
 
