@@ -40,9 +40,11 @@ def add_check_command(commands) -> None:
                             "inputs) and SCENE.json files, in any mix (default: hard)")
     check.add_argument("--seed", default="0", metavar="N", help="seed of the random cases")
     check.add_argument("--time-limit", default="2", metavar="SECONDS",
-                       help="CPU time per case, 0.1 .. 60 (default %(default)s)")
+                       help="CPU time per case, 0.1 .. 60 (default %(default)s); the process "
+                            "is ended 1 s after it on the wall clock")
     check.add_argument("--memory-limit", default="256M", metavar="SIZE",
-                       help="memory per case, 64M .. 8G (default %(default)s)")
+                       help="memory per case, 64M .. 8G (default %(default)s); the report "
+                            "says which limits this system enforces")
     check.add_argument("--json", action="store_true", help="print one JSON object")
     check.add_argument("--junit", metavar="OUT.xml", help="also write JUnit XML for a grader")
 
@@ -69,14 +71,15 @@ def command_check(args) -> int:
     limits = _limits(args)
     cases = checking.make_cases(spec, selectors, seed)  # bad scenes are refused before any run
     results = checking.check(path, spec.name, cases, limits=limits)
+    held = student.limits_record(limits, student.limits_in_force(limits))
     shown = Path(args.file).name
     if args.junit:
-        write_atomically(Path(args.junit), check_report.junit_xml(results, shown, spec.name),
-                         error=OSError)
+        write_atomically(Path(args.junit),
+                         check_report.junit_xml(results, shown, spec.name, held), error=OSError)
     if args.json:
-        print(json.dumps(check_report.as_json(results, shown, spec.name), indent=2))
+        print(json.dumps(check_report.as_json(results, shown, spec.name, held), indent=2))
     else:
-        print("\n".join(check_report.text_lines(results, shown, spec.name)))
+        print("\n".join(check_report.text_lines(results, shown, spec.name, held)))
     sys.stdout.flush()
     return 0 if all(result.passed for result in results) else 1
 
