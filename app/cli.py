@@ -5,6 +5,7 @@ Bad input of any kind ends with exit status 2 and one line on stderr.
 from __future__ import annotations
 
 import argparse
+import codecs
 import json
 import os
 import re
@@ -523,8 +524,26 @@ def _shield_negative_points(argv: list[str]) -> list[str]:
 _NEGATIVE_POINT = re.compile(r"^-(?!-).*,", re.DOTALL)
 
 
+def utf8_streams(streams=None) -> None:
+    """Make stdout and stderr write UTF-8 where they do not: Windows gives
+    redirected output its code page (cp1252, ...), a C locale gives ASCII,
+    and neither can write ≤, ≈ or dᵢ₊₁. Their error handlers stay."""
+    for stream in (sys.stdout, sys.stderr) if streams is None else streams:
+        if _is_utf8(getattr(stream, "encoding", None)) or not hasattr(stream, "reconfigure"):
+            continue  # already UTF-8, or not a text stream Python made (None under pythonw)
+        stream.reconfigure(encoding="utf-8", errors=stream.errors)
+
+
+def _is_utf8(encoding: str | None) -> bool:
+    try:
+        return codecs.lookup(encoding or "").name == "utf-8"
+    except LookupError:
+        return False
+
+
 def main(argv: list[str] | None = None) -> int:
     argv = sys.argv[1:] if argv is None else list(argv)
+    utf8_streams()
     args = argparse.Namespace(command=None)
     try:
         args = build_parser().parse_args(_shield_negative_points(argv))

@@ -36,9 +36,11 @@ def add_check_command(commands) -> None:
                             "inputs) and SCENE.json files, in any mix (default: hard)")
     check.add_argument("--seed", default="0", metavar="N", help="seed of the random cases (default %(default)s)")
     check.add_argument("--time-limit", default="2", metavar="SECONDS",
-                       help="CPU time per case, 0.1 .. 60 (default %(default)s)")
+                       help="CPU time per case, 0.1 .. 60 (default %(default)s); the process "
+                            "is ended 1 s after it on the wall clock")
     check.add_argument("--memory-limit", default="256M", metavar="SIZE",
-                       help="memory per case, 64M .. 8G (default %(default)s)")
+                       help="memory per case, 64M .. 8G (default %(default)s); the report "
+                            "says which limits this system enforces")
     check.add_argument("--json", action="store_true", help="print one JSON object")
     check.add_argument("--junit", metavar="OUT.xml", help="also write JUnit XML for a grader")
 
@@ -47,17 +49,16 @@ def command_check(args) -> int:
     # Loaded here: the window and the other commands import this module too.
     from app.teaching import check_report
     from app.teaching.check_run import run_check
-    results, shown, against = run_check(args.file, args.against, args.cases, args.seed,
-                                        args.time_limit, args.memory_limit)
+    checked = run_check(args.file, args.against, args.cases, args.seed, args.time_limit,
+                        args.memory_limit)
     if args.junit:
-        write_atomically(Path(args.junit), check_report.junit_xml(results, shown, against),
-                         error=OSError)
+        write_atomically(Path(args.junit), check_report.junit_xml(*checked), error=OSError)
     if args.json:
-        print(json.dumps(check_report.as_json(results, shown, against), indent=2))
+        print(json.dumps(check_report.as_json(*checked), indent=2))
     else:
-        print("\n".join(check_report.text_lines(results, shown, against)))
+        print("\n".join(check_report.text_lines(*checked)))
     sys.stdout.flush()
-    return 0 if all(result.passed for result in results) else 1
+    return 0 if all(result.passed for result in checked.results) else 1
 
 
 # ----------------------------------------------------------------- template

@@ -14,6 +14,8 @@ from dataclasses import dataclass, field
 
 from PIL import Image, ImageDraw, ImageFont
 
+from app.model.shipped import FONTS
+
 PALETTE = ("#1f77b4", "#d62728", "#2ca02c", "#ff7f0e", "#9467bd", "#8c564b", "#e377c2",
            "#17becf", "#7f7f7f", "#bcbd22", "#393b79", "#637939", "#843c39", "#7b4173")
 BACKGROUND = "#ffffff"
@@ -21,16 +23,9 @@ INK = "#222222"
 GRID = "#e4e4e4"
 
 
-def font(size: int):
-    for name in ("DejaVuSans.ttf", "Arial.ttf", "LiberationSans-Regular.ttf"):
-        try:
-            return ImageFont.truetype(name, size)
-        except OSError:
-            continue
-    try:
-        return ImageFont.load_default(size=size)
-    except TypeError:  # Pillow before 10.1
-        return ImageFont.load_default()
+def font(size: int) -> ImageFont.FreeTypeFont:
+    """DejaVu Sans as RasterLab ships it: the same charts on every system."""
+    return ImageFont.truetype(str(FONTS / "DejaVuSans.ttf"), size)
 
 
 @dataclass

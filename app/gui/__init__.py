@@ -21,6 +21,7 @@ def launch(argv=None) -> int:
     from PySide6.QtWidgets import QApplication
 
     from app.gui.appdata import APP_NAME, open_settings
+    from app.gui.fonts import register_shipped_fonts
     from app.gui.look import app_icon
     from app.gui.preferences import reopen_last_scene
     from app.gui.window import MainWindow
@@ -30,6 +31,7 @@ def launch(argv=None) -> int:
         app = QApplication(list(argv) if argv is not None else sys.argv[:1])
         app.setApplicationName(APP_NAME)
         app.setStyle("Fusion")
+    register_shipped_fonts()
     app.setWindowIcon(app_icon())
     window = MainWindow()
     window.add_file_actions()

@@ -132,7 +132,7 @@ class MainWindow(QMainWindow):
         from app.gui.input_guard import InputGuard
         self.input_guard = InputGuard(self)  # no wheel edits by accident; Ctrl+Z everywhere
         from app.gui.window_view import WindowView
-        self.view = WindowView(self)  # screen fit, layout, presentation (F11), zoom, Copy view
+        self.view = WindowView(self)  # screen fit, layout, presentation, zoom, Copy view
 
     def add_action(self, menu, key, text, shortcut, slot,
                    context=Qt.ShortcutContext.WindowShortcut, owner=None):

@@ -1,13 +1,16 @@
 """How the main window sits on the screen: a size that fits the screen it
 opens on (a 1280 x 720 projector too), the dock layout kept between runs
-and View > Reset layout, presentation mode (F11), the zoom of the whole
-window (Ctrl+= / Ctrl+- / Ctrl+0) and Edit > Copy view as image.
+and View > Reset layout, presentation mode (F11; Ctrl+Cmd+F on macOS), the
+zoom of the whole window (Ctrl+= / Ctrl+- / Ctrl+0) and Edit > Copy view
+as image.
 
 ``WindowView(window)`` adds them; ``remember(settings)`` (the running
 program; tests with a settings file of their own) restores the layout and
 zoom a previous run left and saves them when the window closes.
 """
 from __future__ import annotations
+
+import sys
 
 from PySide6.QtCore import QByteArray, QEvent, QObject, Qt
 from PySide6.QtGui import QFont, QKeySequence, QShortcut
@@ -19,6 +22,23 @@ GEOMETRY_KEY, STATE_KEY, ZOOM_KEY = "window/geometry", "window/state", "window/z
 ZOOMS = (0.8, 0.9, 1.0, 1.1, 1.25, 1.5, 1.75, 2.0)
 PRESENTING = 1.6  # the pseudo-code and variables in presentation mode, on top of the zoom
 SIDE_WIDTH = 395  # the pseudo-code column's width when there is room for it
+
+
+def standard_full_screen_keys() -> list[QKeySequence]:
+    """Qt's full-screen keys of the running system (its platform theme's)."""
+    return QKeySequence.keyBindings(QKeySequence.StandardKey.FullScreen)
+
+
+def presentation_keys(standard=None, platform: str | None = None) -> list[QKeySequence]:
+    """The keys of presentation mode: the system's standard full-screen keys
+    (Ctrl+Cmd+F on macOS, where F11 shows the desktop), with F11 first on the
+    other systems even where their standard is another (KDE's Ctrl+Shift+F)."""
+    keys = list(standard_full_screen_keys() if standard is None else standard)
+    mac = (platform or sys.platform) == "darwin"
+    f11 = QKeySequence(Qt.Key.Key_F11)
+    if not mac and f11 not in keys:
+        keys.insert(0, f11)
+    return keys or [f11]
 
 
 class WindowView(QObject):
@@ -44,10 +64,12 @@ class WindowView(QObject):
     def _build_actions(self) -> None:
         w, view = self.window, self.window.menus["view"]
         view.addSeparator()
-        self.present_action = w.add_action(view, "present", "&Presentation", "F11", self.toggle)
+        self.present_action = w.add_action(view, "present", "&Presentation", None, self.toggle)
+        self.present_action.setShortcuts(presentation_keys())
         self.present_action.setCheckable(True)
+        key = self.present_action.shortcut().toString(QKeySequence.SequenceFormat.NativeText)
         self.present_action.setToolTip("Full screen: the grid, the pseudo-code and the "
-                                       "variables in large type (F11; Esc leaves)")
+                                       f"variables in large type ({key}; Esc leaves)")
         self.leave = QShortcut(QKeySequence("Esc"), w)
         self.leave.activated.connect(self.toggle)
         self.leave.setEnabled(False)  # Esc is the grid's and the inspector's otherwise

@@ -1,6 +1,7 @@
 """A worksheet (app/teaching/worksheet.py) as a PDF, drawn with Qt's QPdfWriter.
 
-A4 pages: the title, the pseudo-code and the constants, then the step table
+A4 pages in DejaVu Sans and Sans Mono (the shipped files, app/gui/fonts.py):
+the title, the pseudo-code and the constants, then the step table
 (ROWS_PER_PAGE rows a page, headings repeated), then one page with the grid
 and the ideal shape (shaded where the run plots, on the answer key). The
 command line imports this module only when it writes a PDF.
@@ -13,6 +14,8 @@ from PySide6.QtCore import QMarginsF, QPointF, QRectF, Qt
 from PySide6.QtGui import (QColor, QFont, QPageLayout, QPageSize, QPainter,
                            QPdfWriter, QPen)
 from PySide6.QtWidgets import QApplication
+
+from app.gui.fonts import register_shipped_fonts
 
 ROWS_PER_PAGE = 30
 DPI = 150
@@ -36,6 +39,7 @@ def page_count(sheet) -> int:
 
 def write_pdf(sheet, path, answers: bool) -> None:
     application()
+    register_shipped_fonts()  # the window's launch() has, but the command line has not
     temporary = f"{path}.part"
     writer = QPdfWriter(temporary)
     writer.setResolution(DPI)

@@ -1,8 +1,9 @@
 """The text of an exported frame, drawn with Pillow: the caption strip under
 the grid and the side panel with the pseudo-code and the variables.
 
-The fonts are DejaVu Sans and DejaVu Sans Mono (the system's, from
-fonts-dejavu-core); where they are missing, Pillow's own font stands in.
+The fonts are DejaVu Sans and DejaVu Sans Mono, shipped with RasterLab
+(resources/fonts/), so a frame's text is the same on every system and has
+every glyph the frames draw (≤, dᵢ₊₁, ▶).
 Text is antialiased; its edge colours take the nearest entry of the
 export's palette, which holds shades between each text colour and its
 background.
@@ -18,6 +19,7 @@ from PIL import Image, ImageDraw, ImageFont
 from algorithms.core.trace import FrameState
 
 from app.model.notation import shown
+from app.model.shipped import FONTS
 from app.model.tables import TableIndex
 from app.render.frame import key_values, step_caption
 
@@ -25,22 +27,19 @@ ELLIPSIS = "\u2026"
 VALUE_SEPARATOR = "   \u00b7   "
 VALUE_SAMPLES = 512   # steps looked at to size the caption
 MAX_VALUE_LINES = 6   # the caption's value lines at most
-_FONT_FILES = {"sans": "DejaVuSans.ttf", "sans_bold": "DejaVuSans-Bold.ttf",
-               "mono": "DejaVuSansMono.ttf", "mono_bold": "DejaVuSansMono-Bold.ttf"}
-_FONT_FOLDERS = ("/usr/share/fonts/truetype/dejavu", "/usr/share/fonts/TTF",
-                 "/usr/share/fonts/dejavu", "/usr/local/share/fonts")
+FONT_FILES = {"sans": "DejaVuSans.ttf", "sans_bold": "DejaVuSans-Bold.ttf",
+              "mono": "DejaVuSansMono.ttf", "mono_bold": "DejaVuSansMono-Bold.ttf"}
+
+
+def font_path(kind: str) -> str:
+    """The shipped font file of ``kind`` (sans, sans_bold, mono, mono_bold)."""
+    return str(FONTS / FONT_FILES[kind])
 
 
 @lru_cache(maxsize=None)
 def font(kind: str, pixels: int) -> ImageFont.FreeTypeFont:
-    """The font of ``kind`` (sans, sans_bold, mono, mono_bold), ``pixels`` high."""
-    name = _FONT_FILES[kind]
-    for candidate in (name, *(f"{folder}/{name}" for folder in _FONT_FOLDERS)):
-        try:
-            return ImageFont.truetype(candidate, pixels)
-        except OSError:
-            continue
-    return ImageFont.load_default(pixels)
+    """The shipped font of ``kind``, ``pixels`` high."""
+    return ImageFont.truetype(font_path(kind), pixels)
 
 
 class _Font:

@@ -27,6 +27,7 @@ from app.render.compose import OUTLINE_STYLE, compose
 from app.render.frame import frame_marks, key_values, step_caption
 from app.render.reasoning import step_guides
 from app.render.settings import ExportError
+from app.render.text import font_path
 from app.render.writers import PngFolderWriter, temporary_beside
 
 CELL = 20        # units per cell
@@ -224,6 +225,7 @@ def _svg_shape(shape) -> str:
         return (f'<{tag} points="{coords}" fill="none" stroke="{stroke}" '
                 f'stroke-width="{width:g}" stroke-linejoin="round"/>')
     _, x, y, text, colour, mono, bold, size = shape
+    # An SVG names its fonts: a viewer without DejaVu uses its own sans-serif or monospace.
     family = "DejaVu Sans Mono, monospace" if mono else "DejaVu Sans, sans-serif"
     weight = ' font-weight="bold"' if bold else ""
     return (f'<text x="{x:g}" y="{y:g}" font-family={quoteattr(family)} font-size="{size:g}" '
@@ -260,26 +262,13 @@ def _pdf_page(pdf, drawing: Drawing) -> None:
 def _new_pdf():
     from fpdf import FPDF  # loaded only when a PDF is written
 
-    from app.render.text import _FONT_FILES, _FONT_FOLDERS
-
     pdf = FPDF(unit="pt")
     pdf.set_auto_page_break(False)
     pdf.set_margins(0, 0, 0)
     for family, style, kind in (("sans", "", "sans"), ("sans", "B", "sans_bold"),
                                 ("mono", "", "mono"), ("mono", "B", "mono_bold")):
-        path = _font_path(_FONT_FILES[kind], _FONT_FOLDERS)
-        if path is None:
-            raise ExportError(f"a PDF needs the font {_FONT_FILES[kind]} (fonts-dejavu-core), "
-                              "which is not installed")
-        pdf.add_font(family, style, path)
+        pdf.add_font(family, style, font_path(kind))  # shipped: no system font is asked for
     return pdf
-
-
-def _font_path(name: str, folders) -> str | None:
-    for folder in folders:
-        if os.path.isfile(os.path.join(folder, name)):
-            return os.path.join(folder, name)
-    return None
 
 
 # ------------------------------------------------------------------ writers

@@ -4,12 +4,16 @@ from __future__ import annotations
 import xml.etree.ElementTree as ET
 
 from app.teaching.checking import CaseResult, Divergence
+from app.teaching.student import limits_text
 
 
-def text_lines(results: list[CaseResult], file: str, against: str) -> list[str]:
+def text_lines(results: list[CaseResult], file: str, against: str,
+               limits: dict | None = None) -> list[str]:
     """PASS or FAIL per case with why, the student's traceback where there is one,
-    then the count."""
+    then the count. ``limits`` (student.limits_record) adds the line on the limits."""
     lines = [f"checking {file} against {against}: {len(results)} cases"]
+    if limits is not None:
+        lines.append(limits_text(limits))
     for result in results:
         if result.passed:
             lines.append(f"PASS  {result.case.name}")
@@ -28,7 +32,8 @@ def _divergence(divergence: Divergence | None):
     return {"step": divergence.step, "expected": divergence.expected, "got": divergence.got}
 
 
-def as_json(results: list[CaseResult], file: str, against: str) -> dict:
+def as_json(results: list[CaseResult], file: str, against: str,
+            limits: dict | None = None) -> dict:
     cases = [{"name": r.case.name, "args": list(r.case.args), "passed": r.passed,
               "outcome": r.outcome.kind, "error": r.outcome.error or None,
               "message": r.message() or None, "steps": len(r.outcome.steps),
@@ -37,13 +42,15 @@ def as_json(results: list[CaseResult], file: str, against: str) -> dict:
               "variables_compared": list(r.compared), "seconds": round(r.outcome.seconds, 3)}
              for r in results]
     passed = sum(r.passed for r in results)
-    return {"file": file, "against": against, "cases": cases, "passed": passed,
-            "failed": len(results) - passed}
+    return {"file": file, "against": against, "limits": limits, "cases": cases,
+            "passed": passed, "failed": len(results) - passed}
 
 
-def junit_xml(results: list[CaseResult], file: str, against: str) -> bytes:
+def junit_xml(results: list[CaseResult], file: str, against: str,
+              limits: dict | None = None) -> bytes:
     """One testsuite, one testcase per case: a failure for wrong pixels, an error
-    for code that raised, looped, crashed or yielded the wrong shape."""
+    for code that raised, looped, crashed or yielded the wrong shape; the
+    limits as the suite's property "limits"."""
     failures = sum(1 for r in results if r.outcome.ok and not r.passed)
     errors = sum(1 for r in results if not r.outcome.ok)
     seconds = sum(r.outcome.seconds for r in results)
@@ -52,6 +59,9 @@ def junit_xml(results: list[CaseResult], file: str, against: str) -> bytes:
     suite = ET.SubElement(suites, "testsuite", name=f"{file} against {against}",
                           tests=str(len(results)), failures=str(failures), errors=str(errors),
                           skipped="0", time=f"{seconds:.3f}")
+    if limits is not None:
+        properties = ET.SubElement(suite, "properties")
+        ET.SubElement(properties, "property", name="limits", value=limits_text(limits))
     for result in results:
         case = ET.SubElement(suite, "testcase", classname=f"rasterlab.check.{against}",
                              name=result.case.name, time=f"{result.outcome.seconds:.3f}")

@@ -15,11 +15,13 @@ from app.teaching import checking, student
 
 
 class Checked(NamedTuple):
-    """Every case's result, the file's name as reports show it, and the reference's name."""
+    """Every case's result, the file's name as reports show it, the
+    reference's name and the limits that held (student.limits_record)."""
 
     results: list
     file: str
     against: str
+    limits: dict
 
 
 def run_check(file, against: str, cases: list[str], seed: str = "0", time_limit: str = "2",
@@ -35,7 +37,8 @@ def run_check(file, against: str, cases: list[str], seed: str = "0", time_limit:
     case_limits = limits(time_limit, memory_limit)
     made = checking.make_cases(spec, selectors, number)  # bad scenes are refused before any run
     results = checking.check(path, spec.name, made, limits=case_limits)
-    return Checked(results, Path(file).name, spec.name)
+    held = student.limits_record(case_limits, student.limits_in_force(case_limits))
+    return Checked(results, Path(file).name, spec.name, held)
 
 
 def limits(time_limit: str, memory_limit: str) -> student.Limits:

@@ -4,8 +4,11 @@ The protocol (see resources/templates/): a plain Python file defines a
 generator function that takes the family's inputs and yields each pixel as
 ``x, y`` or ``x, y, {"d": d}``. RasterLab never imports that file: every
 case runs in a fresh ``python -I -S`` process (student_child.py) with a
-memory limit (RLIMIT_AS) and a CPU-time limit (RLIMIT_CPU), and a wall-clock
-timeout here as well. Whatever the student's code does (raises, loops,
+wall-clock timeout here, after which the process is ended, on every system;
+where the system lets a process limit itself, also a CPU-time limit
+(RLIMIT_CPU) and a memory limit (RLIMIT_AS, or RLIMIT_DATA on a macOS that
+refuses it). Windows has neither: ``limits_in_force`` asks the child which
+hold, and the check's report says so. Whatever the student's code does (raises, loops,
 crashes, allocates without bound, yields garbage), the case ends as an
 ``Outcome`` with a message, never as an exception in RasterLab.
 """
@@ -60,6 +63,16 @@ class Outcome:
         return self.kind == "ok"
 
 
+def cpu_limit_statuses(signals=signal) -> frozenset:
+    """The return codes of a child ended by its CPU-time limit: SIGXCPU at
+    the soft limit, SIGKILL at the hard one (neither exists on Windows)."""
+    return frozenset(-getattr(signals, name) for name in ("SIGXCPU", "SIGKILL")
+                     if hasattr(signals, name))
+
+
+CPU_LIMIT_STATUSES = cpu_limit_statuses()
+
+
 def check_file(path) -> Path:
     """The student's file, if it is a readable regular .py file (else InputError)."""
     path = Path(path)
@@ -75,18 +88,57 @@ def check_file(path) -> Path:
     return path.resolve()
 
 
+def wall_seconds(limits: Limits) -> float:
+    """The wall-clock time after which a case's process is ended."""
+    return limits.seconds + 1.0
+
+
+def _child(request: dict, limits: Limits) -> subprocess.CompletedProcess:
+    request = {**request, "memory": limits.memory, "cpu_seconds": max(1, math.ceil(limits.seconds))}
+    return subprocess.run([sys.executable, "-I", "-S", str(CHILD)], input=json.dumps(request),
+                          capture_output=True, encoding="utf-8", errors="replace",
+                          timeout=wall_seconds(limits))
+
+
+def limits_in_force(limits: Limits = Limits()) -> dict:
+    """Which limits hold for a case on this system, as the child sets them:
+    {"cpu": bool, "memory": "address space", "data segment" or None}."""
+    try:
+        held = json.loads(_child({"probe": True}, limits).stdout)
+        return {"cpu": bool(held["cpu"]), "memory": held["memory"]}
+    except (subprocess.TimeoutExpired, ValueError, KeyError, TypeError):
+        return {"cpu": False, "memory": None}  # unknown is stated as not enforced
+
+
+def limits_record(limits: Limits, held: dict) -> dict:
+    """The limits of each case as plain data; None where this system does not enforce one."""
+    return {"wall_clock_seconds": wall_seconds(limits),
+            "cpu_seconds": limits.seconds if held["cpu"] else None,
+            "memory_bytes": limits.memory if held["memory"] else None,
+            "memory_limits": held["memory"]}
+
+
+def limits_text(record: dict) -> str:
+    """One line on the limits of each case, naming those this system does not enforce."""
+    parts = [f"wall clock {record['wall_clock_seconds']:g} s (then the process is ended)"]
+    cpu, memory = record["cpu_seconds"], record["memory_bytes"]
+    parts.append(f"CPU time {cpu:g} s" if cpu is not None
+                 else "CPU-time limit not enforced on this system")
+    parts.append(f"memory {memory >> 20} MiB ({record['memory_limits']})" if memory is not None
+                 else "memory limit not enforced on this system")
+    return "limits per case: " + "; ".join(parts)
+
+
 def run_student(path, args, limits: Limits = Limits(), function: str = FUNCTION,
                 value_name: str | None = None) -> Outcome:
     """Run ``function(*args)`` of the file in a child process and collect its pixels.
     With ``value_name``, a step may also be ``x, y, number``: the number is
     kept under that name (an antialiased line's ``x, y, intensity``)."""
     request = {"file": str(path), "function": function, "args": list(args), "value": value_name,
-               "max_steps": limits.max_steps, "memory": limits.memory,
-               "cpu_seconds": max(1, math.ceil(limits.seconds))}
+               "max_steps": limits.max_steps}
     started = time.perf_counter()
     try:
-        done = subprocess.run([sys.executable, "-I", "-S", str(CHILD)], input=json.dumps(request),
-                              capture_output=True, text=True, timeout=limits.seconds + 1.0)
+        done = _child(request, limits)
     except subprocess.TimeoutExpired as expired:
         return Outcome("time", error=f"no result within {limits.seconds:g} s: does the loop end?",
                        seconds=time.perf_counter() - started, output=_text(expired.stderr))
@@ -96,7 +148,7 @@ def run_student(path, args, limits: Limits = Limits(), function: str = FUNCTION,
 
 def _outcome(done: subprocess.CompletedProcess, limits: Limits, seconds: float) -> Outcome:
     printed = done.stderr or ""
-    if done.returncode == -signal.SIGXCPU or done.returncode == -signal.SIGKILL:
+    if done.returncode in CPU_LIMIT_STATUSES:
         return Outcome("time", error=f"the CPU-time limit of {limits.seconds:g} s was reached: "
                                      "does the loop end?", seconds=seconds, output=printed)
     try:

@@ -6,13 +6,23 @@ script with ``python -I -S`` and sends one request as JSON on stdin
 limits on itself before it reads the student's code, runs the generator and
 writes one JSON object on its own stdout: the steps, or the error. The
 student's own prints go to stderr. Standard library only.
+
+Which limits a system lets a process set differs: Windows has no
+``resource`` module (no CPU-time or memory limit here; the parent's
+wall-clock timeout still ends the process), and macOS may refuse
+RLIMIT_AS, where the data segment (RLIMIT_DATA) is limited instead. A
+request with ``"probe": true`` only sets the limits and answers which hold.
 """
 import json
 import math
 import os
-import resource
 import sys
 import traceback
+
+try:
+    import resource
+except ImportError:  # Windows
+    resource = None
 
 
 FILE_LIMIT = 16 << 20  # the largest file the student's code may write
@@ -22,11 +32,36 @@ class Shape(Exception):
     """A yielded item that is not ``x, y`` or ``x, y, {name: number}``."""
 
 
-def set_limits(memory: int, cpu_seconds: int) -> None:
-    resource.setrlimit(resource.RLIMIT_AS, (memory, memory))
-    resource.setrlimit(resource.RLIMIT_CPU, (cpu_seconds, cpu_seconds + 1))
-    resource.setrlimit(resource.RLIMIT_CORE, (0, 0))
-    resource.setrlimit(resource.RLIMIT_FSIZE, (FILE_LIMIT, FILE_LIMIT))
+def set_limits(memory: int, cpu_seconds: int, rlimits=resource) -> dict:
+    """Set on this process the limits that ``rlimits`` (the ``resource``
+    module, None where there is none) lets it set, and say which hold:
+    {"cpu": bool, "memory": "address space", "data segment" or None}."""
+    if rlimits is None:
+        return {"cpu": False, "memory": None}
+    held = {"cpu": _limit(rlimits, "RLIMIT_CPU", cpu_seconds, cpu_seconds + 1), "memory": None}
+    for name, what in (("RLIMIT_AS", "address space"), ("RLIMIT_DATA", "data segment")):
+        if _limit(rlimits, name, memory, memory):
+            held["memory"] = what
+            break
+    _limit(rlimits, "RLIMIT_CORE", 0, 0)
+    _limit(rlimits, "RLIMIT_FSIZE", FILE_LIMIT, FILE_LIMIT)
+    return held
+
+
+def _limit(rlimits, name: str, soft: int, hard: int) -> bool:
+    """Set one limit, kept within a lower hard limit already in force (a
+    process cannot raise its own); False where the system has or allows none."""
+    number = getattr(rlimits, name, None)
+    if number is None:
+        return False
+    try:
+        current = rlimits.getrlimit(number)[1]
+        if current != rlimits.RLIM_INFINITY:
+            hard = min(hard, current)
+        rlimits.setrlimit(number, (min(soft, hard), hard))
+    except (ValueError, OSError):  # macOS refuses RLIMIT_AS so
+        return False
+    return True
 
 
 def whole(value) -> bool:
@@ -96,9 +131,14 @@ def run(request: dict) -> dict:
 
 def main() -> None:
     request = json.loads(sys.stdin.read())
-    set_limits(request["memory"], request["cpu_seconds"])
-    out = os.fdopen(os.dup(1), "w")
+    held = set_limits(request["memory"], request["cpu_seconds"])
+    if request.get("probe"):
+        print(json.dumps(held))
+        return
+    out = os.fdopen(os.dup(1), "w", encoding="utf-8")
     os.dup2(2, 1)  # the student's prints go to stderr, not into the result
+    # UTF-8 whatever the locale (a Windows pipe's is a code page): print("≤") works.
+    sys.stderr.reconfigure(encoding="utf-8", errors="backslashreplace")
     sys.stdout = sys.stderr
     try:
         result = run(request)

@@ -18,6 +18,10 @@ def test_the_correct_sample_passes_every_hard_case(run_cli):
                                "line-bresenham")
     assert status == 0, err
     lines = out.splitlines()
+    # The limits line names each limit, enforced or not (which hold: tests/app/test_platforms.py).
+    assert lines[1].startswith("limits per case: wall clock 3 s (then the process is ended); ")
+    assert ("CPU time 2 s" in lines[1]) != ("CPU-time limit not enforced" in lines[1])
+    assert ("memory 256 MiB" in lines[1]) != ("memory limit not enforced" in lines[1])
     assert sum(line.startswith("PASS ") for line in lines) == len(LINE_CASES)
     assert lines[-1] == f"{len(LINE_CASES)} of {len(LINE_CASES)} cases pass"
 
@@ -29,6 +33,9 @@ def test_failures_exit_1_with_json(run_cli):
     assert status == 1
     assert [case["name"] for case in result["cases"]][0] == "line-reversed.json"
     assert result["failed"] == sum(not case["passed"] for case in result["cases"]) >= 1
+    assert result["limits"]["wall_clock_seconds"] == 3
+    assert result["limits"]["cpu_seconds"] in (2, None)
+    assert result["limits"]["memory_bytes"] in (256 << 20, None)
     failed = next(case for case in result["cases"] if not case["passed"])
     assert failed["reference_divergence"]["got"] == "the end"
     assert failed["reference_divergence"]["step"] == failed["steps"]
@@ -56,7 +63,11 @@ def test_junit_xml_validates(run_cli, tmp_path):
     assert root.tag == "testsuites"
     (suite,) = root
     assert suite.tag == "testsuite"
-    cases = list(suite)
+    properties, *cases = list(suite)
+    assert properties.tag == "properties"  # first, as the JUnit schema has it
+    (limits,) = properties
+    assert limits.attrib["name"] == "limits"
+    assert limits.attrib["value"].startswith("limits per case: wall clock 3 s")
     assert {case.tag for case in cases} == {"testcase"} and len(cases) == len(LINE_CASES)
     assert all(JUNIT_CASE_ATTRIBUTES <= set(case.attrib) for case in cases)
     for case in cases:

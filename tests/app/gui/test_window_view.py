@@ -1,10 +1,16 @@
 """The window on a lecture hall's screen: presentation mode, the zoom of the
 whole window, the layout kept and reset, a 1280 x 720 projector, Copy view."""
+import sys
+from functools import partial
+
 import pytest
 from PySide6.QtCore import QRect, QSettings, Qt
+from PySide6.QtGui import QKeySequence
 from PySide6.QtTest import QTest
 from PySide6.QtWidgets import QApplication
 
+from app.gui import window_view
+from app.gui.about import shortcut_rows
 from app.gui.window import MainWindow
 from app.gui.window_view import MIN_SIZE
 from tests.support.gui import WAIT_MS
@@ -18,6 +24,11 @@ def inside(window, widget) -> bool:
     return widget.isVisible() and window.rect().contains(QRect(top_left, widget.size()))
 
 
+def press_present(window) -> None:
+    """The presentation key of this system (F11; Cmd+Ctrl+F on macOS)."""
+    QTest.keySequence(window.grid, window.actions_["present"].shortcut())
+
+
 def point_size(widget) -> float:
     return widget.font().pointSizeF()
 
@@ -27,7 +38,7 @@ def test_presentation_hides_the_docks_and_esc_restores_them(window, qtbot):
     docks = [d for d in (window.scene_dock, window.inspector.dock) if d.isVisible()]
     assert len(docks) == 2
     code_size = point_size(window.code.lines)
-    QTest.keyClick(window.grid, Qt.Key.Key_F11)
+    press_present(window)
     qtbot.waitUntil(window.isFullScreen, timeout=WAIT_MS)
     assert window.view.presenting
     for hidden in (*docks, window.toolbar, window.menuBar(), window.statusBar()):
@@ -43,14 +54,46 @@ def test_presentation_hides_the_docks_and_esc_restores_them(window, qtbot):
     assert point_size(window.code.lines) == code_size
 
 
-def test_f11_and_the_view_menu_toggle_presentation(window, qtbot):
+def test_the_key_and_the_view_menu_toggle_presentation(window, qtbot):
     action = window.actions_["present"]
     assert action in window.menus["view"].actions()
     action.trigger()
     qtbot.waitUntil(window.isFullScreen, timeout=WAIT_MS)
-    QTest.keyClick(window.grid, Qt.Key.Key_F11)
+    press_present(window)
     qtbot.waitUntil(lambda: not window.isFullScreen(), timeout=WAIT_MS)
     assert window.scene_dock.isVisible()
+
+
+def test_on_macos_the_standard_key_presents_and_the_sheet_names_it(make_window, qtbot,
+                                                                    monkeypatch):
+    # macOS's Qt theme gives Ctrl+Meta+F (Cmd+Ctrl+F) as the full-screen key;
+    # the window, its tooltip and the shortcuts sheet must take that, not F11.
+    mac = QKeySequence("Ctrl+Meta+F")
+    monkeypatch.setattr(window_view, "presentation_keys",
+                        partial(window_view.presentation_keys, [mac], "darwin"))
+    window = make_window()
+    action = window.actions_["present"]
+    assert action.shortcuts() == [mac]
+    named = mac.toString(QKeySequence.SequenceFormat.NativeText)
+    assert (named, "Presentation") in shortcut_rows(window)
+    assert f"({named}; Esc leaves)" in action.toolTip()
+    QTest.keyClick(window.grid, Qt.Key.Key_F11)  # the system's key on macOS, not ours
+    qtbot.wait(50)
+    assert not window.view.presenting
+    QTest.keyClick(window.grid, Qt.Key.Key_F, Qt.KeyboardModifier.ControlModifier
+                   | Qt.KeyboardModifier.MetaModifier)
+    qtbot.waitUntil(lambda: window.view.presenting, timeout=WAIT_MS)
+    QTest.keyClick(window.grid, Qt.Key.Key_Escape)
+    qtbot.waitUntil(lambda: not window.view.presenting, timeout=WAIT_MS)
+
+
+@pytest.mark.skipif(sys.platform == "darwin", reason="macOS takes F11 for itself")
+def test_elsewhere_f11_comes_first_in_the_sheet(window):
+    keys = window.actions_["present"].shortcuts()
+    assert keys[0] == QKeySequence("F11")
+    row = dict((text, named) for named, text in shortcut_rows(window))["Presentation"]
+    assert row.startswith("F11")
+    assert "(F11; Esc leaves)" in window.actions_["present"].toolTip()
 
 
 def test_a_1280_by_720_window_shows_the_transport_and_its_parts_apart(window, qtbot):
@@ -198,7 +241,7 @@ def test_the_marked_code_line_takes_the_presentation_type_too(window, qtbot):
     def marked_size():
         return window.code.lines.item(row, 1).font().pointSizeF()
     before = marked_size()
-    QTest.keyClick(window.grid, Qt.Key.Key_F11)
+    press_present(window)
     qtbot.waitUntil(lambda: window.view.presenting, timeout=WAIT_MS)
     assert marked_size() == point_size(window.code.lines) >= 1.5 * before
     # A line marked before is plain again: no font of its own, so it is
@@ -222,7 +265,7 @@ def test_the_words_on_the_grid_grow_when_presenting(window, qtbot):
     window.player.seek(step)
     qtbot.wait(10)
     (before,) = window.guides.item.label_sizes()
-    QTest.keyClick(window.grid, Qt.Key.Key_F11)
+    press_present(window)
     qtbot.waitUntil(lambda: window.view.presenting, timeout=WAIT_MS)
     (presenting,) = window.guides.item.label_sizes()
     assert presenting >= 1.3 * before
