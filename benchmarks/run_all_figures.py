@@ -23,7 +23,7 @@ ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 
 from algorithms import triangles  # noqa: E402
-from algorithms.core import registry  # noqa: E402
+from algorithms.core import compiled, registry  # noqa: E402
 from algorithms.lines.batch import bresenham_lines  # noqa: E402
 from algorithms.circles.batch import draw_midpoint_circles, midpoint_circles  # noqa: E402
 from algorithms.antialias.lines import wu  # noqa: E402
@@ -46,6 +46,8 @@ def _cv2():
 # ------------------------------------------------------------------ kernels
 def kernels(results, quick: bool) -> None:
     repeats = 5 if quick else 11
+    # numba is optional (rasterlab[fast]): the figures say which loops they timed.
+    print(f"compiled loops: {compiled.path()} (algorithms/core/compiled.py)")
     rng = np.random.default_rng(7)
     _triangle_figures(results, rng, repeats)
     _polygon_figures(results, rng, repeats, 2000 if quick else 10_000)

@@ -8,7 +8,7 @@
 ``keyframes``    the compact rasters a trace replays from
 ``raster``       the framebuffer state a trace replays into
 ``monitor``      progress, cancellation and the work a run may do
-``compiled``     numba-compiled loops, compiled on first use
+``compiled``     loops compiled with numba on first use when it is installed, plain otherwise
 ``errors``       the errors the families share
 ``cases``        the hard-case catalogue (tests and ``rasterlab check``)
 """

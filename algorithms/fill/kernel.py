@@ -4,7 +4,7 @@ Every order of the seed fill (stack, queue, spans) fills the same pixels,
 those joined to the seed through pixels of the seed's state, so the kernel
 needs no order. It marks the outline's pixels that lie on the grid and
 fills the seed's component with the scan-line seed fill, a run of a row at
-a time; both loops are compiled (see ``compiled.py``). The seed is found
+a time; both loops are compiled where numba is installed (see ``compiled.py``). The seed is found
 and checked as the generator does it, with the same messages.
 
 The result is the grid's states, indexed [y, x]: 0 untouched, 1 boundary,
