@@ -28,8 +28,44 @@ class CommandError(Exception):
 
 
 class Parser(argparse.ArgumentParser):
+    """argparse's parser, raising CommandError instead of exiting, that keeps
+    what it was given (``arguments``, ``commands``, ``summary``) so that the
+    reference pages are made from it through public attributes only."""
+
+    def __init__(self, *args, summary: str = "", **kwargs):
+        self.arguments: list[argparse.Action] = []  # in the order they were added
+        self.commands: dict[str, Parser] = {}
+        self.summary = summary  # the one line `rasterlab --help` gives a command
+        super().__init__(*args, **kwargs)
+
     def error(self, message):
         raise CommandError(message)
+
+    def add_argument(self, *args, **kwargs):
+        action = super().add_argument(*args, **kwargs)
+        self.arguments.append(action)
+        return action
+
+    def add_mutually_exclusive_group(self, **kwargs):
+        return _Recorded(super().add_mutually_exclusive_group(**kwargs), self.arguments)
+
+    def add_command(self, commands, name: str, help: str, **kwargs) -> Parser:
+        """A command of ``commands`` (what add_subparsers gave), kept in ``self.commands``."""
+        command = commands.add_parser(name, help=help, summary=help, **kwargs)
+        self.commands[name] = command
+        return command
+
+
+class _Recorded:
+    """A group of mutually exclusive options whose arguments are kept with the parser's."""
+
+    def __init__(self, group, arguments: list):
+        self.group, self.arguments = group, arguments
+
+    def add_argument(self, *args, **kwargs):
+        action = self.group.add_argument(*args, **kwargs)
+        self.arguments.append(action)
+        return action
 
 
 def build_parser() -> Parser:
@@ -38,12 +74,13 @@ def build_parser() -> Parser:
         "With no command, the window opens."))
     parser.add_argument("--version", action="version", version=f"rasterlab {app_version()}")
     commands = parser.add_subparsers(dest="command", parser_class=Parser)
-    listing = commands.add_parser("list", help="list the algorithms, or the shipped scenes")
+    listing = parser.add_command(commands, "list",
+                                 help="list the algorithms, or the shipped scenes")
     listing.add_argument("--json", action="store_true", help="print JSON")
     listing.add_argument("--scenes", action="store_true",
                          help="list the scenes RasterLab ships, by the name run and export take")
-    run = commands.add_parser("run", help="run an algorithm headless and print its pixels, or "
-                                          "save its scene")
+    run = parser.add_command(commands, "run", help="run an algorithm headless and print its "
+                                                   "pixels, or save its scene")
     run.add_argument("algorithm", nargs="?", help="algorithm name, as `rasterlab list` shows it")
     run.add_argument("--points", nargs="+", action="append", metavar="X,Y",
                      help="points in pixel coordinates (y up); repeat once per contour")
@@ -74,11 +111,11 @@ def build_parser() -> Parser:
                           "--ascii or --steps asks for an output")
     run.add_argument("--force", action="store_true",
                      help="with --save: replace a file that exists")
-    add_export_command(commands)
-    add_report_command(commands)
-    cli_teaching.add_template_command(commands)
-    cli_teaching.add_check_command(commands)
-    cli_teaching.add_worksheet_command(commands)
+    add_export_command(parser, commands)
+    add_report_command(parser, commands)
+    cli_teaching.add_template_command(parser, commands)
+    cli_teaching.add_check_command(parser, commands)
+    cli_teaching.add_worksheet_command(parser, commands)
     return parser
 
 
@@ -310,10 +347,10 @@ def write_summary(stream, spec, trace) -> None:
 
 
 # ------------------------------------------------------------------- export
-def add_export_command(commands) -> None:
+def add_export_command(parser, commands) -> None:
     """`rasterlab export SCENE.json --gif OUT.gif ...` (see app/render/export.py)."""
-    export = commands.add_parser(
-        "export", help="export a scene's run: GIF, PNG or SVG frames, MP4, WebM, PDF or an "
+    export = parser.add_command(
+        commands, "export", help="export a scene's run: GIF, PNG or SVG frames, MP4, WebM, PDF or an "
                        "interactive HTML page",
         description="Draw every step of a scene's run as the window shows it, with an optional "
                     "caption and side panel: an animated GIF, numbered PNG or SVG frames, an MP4 "
@@ -481,10 +518,10 @@ class _ProgressBar(TerminalBar):
 
 
 # ------------------------------------------------------------------- report
-def add_report_command(commands) -> None:
+def add_report_command(parser, commands) -> None:
     """`rasterlab report [--quick] [--out DIR]` (see app/analysis/report.py)."""
-    report = commands.add_parser(
-        "report", help="measure speed against error and write a report",
+    report = parser.add_command(
+        commands, "report", help="measure speed against error and write a report",
         description="Measure every algorithm family (operation counts, errors against the "
                     "exact oracles, times) and write report.md, measurements.csv/.json and "
                     "one PNG of cost against error per family into DIR.")

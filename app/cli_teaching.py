@@ -17,9 +17,9 @@ from app.teaching import worksheet
 from app.model.files import write_atomically
 
 
-def add_check_command(commands) -> None:
-    check = commands.add_parser(
-        "check", help="check a student's own algorithm against a built-in one",
+def add_check_command(parser, commands) -> None:
+    check = parser.add_command(
+        commands, "check", help="check a student's own algorithm against a built-in one",
         description="Run the generator draw(...) of a student's Python file (see "
                     "`rasterlab template`) in a separate process on each case, compare its "
                     "pixels with the reference algorithm and the exact result, and print "
@@ -62,9 +62,9 @@ def command_check(args) -> int:
 
 
 # ----------------------------------------------------------------- template
-def add_template_command(commands) -> None:
-    template = commands.add_parser(
-        "template", help="write the starting file of a student's own algorithm",
+def add_template_command(parser, commands) -> None:
+    template = parser.add_command(
+        commands, "template", help="write the starting file of a student's own algorithm",
         description="With no NAME, list the templates. With NAME, print that template, or "
                     "write it to --out: a Python file with the generator draw(...) to fill in, "
                     "which `rasterlab check` then grades.")
@@ -98,9 +98,9 @@ def command_template(args) -> int:
 
 
 # ---------------------------------------------------------------- worksheet
-def add_worksheet_command(commands) -> None:
-    sheet = commands.add_parser(
-        "worksheet", help="write a worksheet and its answer key for a scene",
+def add_worksheet_command(parser, commands) -> None:
+    sheet = parser.add_command(
+        commands, "worksheet", help="write a worksheet and its answer key for a scene",
         description="Write the step table of a scene's run (the steps that plot, branch or "
                     "fill a span) with chosen columns left blank, a grid with the ideal shape "
                     "to shade, and the answer key: worksheet.FORMAT and answers.FORMAT in DIR.")

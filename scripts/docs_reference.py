@@ -108,8 +108,9 @@ def _text(text: str) -> str:
 
 
 # ------------------------------------------------------------- command line
-# Made from the parser's actions rather than argparse's --help text, whose
-# layout changes between Python versions.
+# Made from the arguments the parser was given (app.cli.Parser keeps them)
+# rather than argparse's --help text, whose layout changes between Python
+# versions.
 def command_line_page() -> str:
     parser = cli.build_parser()
     commands = _commands(parser)
@@ -131,14 +132,12 @@ def command_line_page() -> str:
 
 def _commands(parser) -> dict:
     """Each command's name: (one-line help, its parser)."""
-    group = next(action for action in parser._actions
-                 if isinstance(action, argparse._SubParsersAction))
-    about = {choice.dest: choice.help for choice in group._choices_actions}
-    return {name: (about[name], command) for name, command in group.choices.items()}
+    return {name: (command.summary, command) for name, command in parser.commands.items()}
 
 
 def _arguments(command) -> list:
-    return [action for action in command._actions if not isinstance(action, argparse._HelpAction)]
+    """The command's arguments as it was given them (app.cli.Parser keeps them), --help aside."""
+    return [action for action in command.arguments if action.dest != "help"]
 
 
 def _synopsis(name: str, command) -> str:
