@@ -176,14 +176,18 @@ CIRCLE_POLAR = AlgorithmSpec(
 # ----------------------------------------- midpoint circle as printed
 def printed_listing(points, options) -> Code:
     code = Code()
-    code.add("setup", "x = 0;  y = r;  d = 5 / 4 - r   (integer division: 5 / 4 is 1)",
+    code.add("setup", "x = 0;  y = r;  d = 5 / 4 - r   (integer division: 5 / 4 is 1.  The "
+                      "summary slide calls this F(0, R), which is 0: started there, d < 0 fails "
+                      "and the first step goes SE; 5/4 - R is F(1, R - 1/2), the first midpoint)",
              ops={"int_add": 1, "div": 1})
     code.add("plot_axes", "DisplayPixel (0, r), (0, -r), (r, 0), (-r, 0)", PLOT, ops=PLOT_OPS)
     code.add("loop", "while y > x:", ops={"compare": 1})
     code.add("east", "    if d < 0:  d = d + 2x + 3;  x = x + 1", branch="E",
              ops={"compare": 1, "int_add": 3})
     code.add("south_east", "    else:  d = d + 2(x - y) +   <- the 5 is missing;  x = x + 1;  "
-                           "y = y - 1", branch="SE", ops={"compare": 1, "int_add": 4})
+                           "y = y - 1   (the slides write SE as (x_{i+1}, y_{i-1}): read as "
+                           "indices, y_{i-1} is the row before, which would climb back; "
+                           "y_i - 1 is meant)", branch="SE", ops={"compare": 1, "int_add": 4})
     code.add("plot_mirrors", "    DisplayCirclePoints: all eight mirrors of (x, y)", PLOT,
              ops=PLOT_OPS)
     code.add("done", "done")
@@ -243,6 +247,9 @@ CIRCLE_MIDPOINT_PRINTED = AlgorithmSpec(
            "(as C the two lines do not even compile; this runs the evident reading). After "
            "each SE step d is 5 too small, so the next tests choose E too often: the arc "
            "stays outside the circle and the outline turns square-ish.",
+           "Two slips of the slides before the code are flagged in the listing: the summary's "
+           "d0 = F(0, R) (which is 0, not 5/4 - R, and would send the first step SE) and SE "
+           "written as (x_{i+1}, y_{i-1}) (y_{i-1} is the previous row; y_i - 1 is meant).",
            "The loop also plots after a step that crossed the diagonal and plots all eight "
            "mirrors on the axes and the diagonal, so pixels repeat (duplicates).",
            "off_circle and missing count the pixels unlike circle-midpoint's; "

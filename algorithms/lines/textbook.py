@@ -1,8 +1,9 @@
 """Line code as the lecture notes print it, beside the corrected forms.
 
 Each variant reproduces one printed listing or rule on purpose, faults
-included, so a class can see what the fault does: the DDA that truncates or
-that always steps in x, Bresenham with ties sent to NE, the sign-reversed
+included, so a class can see what the fault does: the DDA that truncates,
+that always steps in x, that adds the slope before it writes, or that steps
+in x and truncates, Bresenham with ties sent to NE, the sign-reversed
 formulation (with the printed initial value and with the corrected one), and
 the midpoint line derived from the implicit form. The plain, corrected
 algorithms are line-dda and line-bresenham.
@@ -22,7 +23,7 @@ from .common import COLORS, NAN, SEGMENT, Octant, color_ramp, colored, round_hal
 
 
 # ------------------------------------------------------- DDA as printed
-DDA_VARIANTS = ("truncate", "x-only")
+DDA_VARIANTS = ("truncate", "x-only", "add-first", "x-truncate")
 
 
 def dda_printed_listing(points, options) -> Code:
@@ -36,12 +37,27 @@ def dda_printed_listing(points, options) -> Code:
         code.add("plot_step", "    x += x_inc;  y += y_inc;  DisplayPixel((int) x, (int) y)   "
                               "(the cast truncates toward zero)", PLOT,
                  ops={"float_add": 2, "round": 2, "int_add": 1, "compare": 1})
-    else:
+    elif options["variant"] == "x-only":
         code.add("setup", "m = (y2 - y1) / (x2 - x1)  (0 when x1 = x2);  y = y1",
                  ops={"int_add": 2, "div": 1})
         code.add("loop", "for i = x1 .. x2:   (always along x, whatever the slope)")
         code.add("plot_step", "    write_pixel(i, round(y));  y += m", PLOT,
                  ops={"float_add": 1, "round": 1, "int_add": 1, "compare": 1})
+    elif options["variant"] == "add-first":
+        code.add("setup", "m = (y2 - y1) / (x2 - x1)  (0 when x1 = x2);  y = y1",
+                 ops={"int_add": 2, "div": 1})
+        code.add("loop", "for (i = x1; i <= x2; i++)   (counts up only: nothing when x2 < x1)")
+        code.add("plot_step", "    y += m;  write_pixel(i, round(y))   (as printed: adds before "
+                              "it writes, so every pixel is one step of m late)", PLOT,
+                 ops={"float_add": 1, "round": 1, "int_add": 1, "compare": 1})
+    else:
+        code.add("setup", "dx = x2 - x1;  dy = y2 - y1;  m = dy / (float) dx;  x = x1;  y = y1",
+                 ops={"int_add": 2, "div": 1})
+        code.add("plot_first", "DisplayPixel(x1, y1)", PLOT)
+        code.add("loop", "for k = 1 .. dx:   (counts up only: P alone when x2 <= x1)")
+        code.add("plot_step", "    x += 1;  y += m;  DisplayPixel(x, y)   (the float y is cut "
+                              "to an int: truncated toward zero; x-only for every slope)", PLOT,
+                 ops={"float_add": 1, "round": 1, "int_add": 2, "compare": 1})
     code.add("done", "done")
     return code
 
@@ -56,9 +72,9 @@ def dda_printed(points, options):
         frames = _truncate_frames(points, steps, at)
         constants = {"dx": x2 - x1, "dy": y2 - y1, "steps": steps}
     else:
-        steps = abs(x2 - x1)
+        steps = abs(x2 - x1) if options["variant"] == "x-only" else max(0, x2 - x1)
         m = (y2 - y1) / (x2 - x1) if x2 != x1 else 0.0
-        frames = _x_only_frames(points, m, at)
+        frames = _X_FRAMES[options["variant"]](points, m, at)
         constants = {"dx": x2 - x1, "dy": y2 - y1, "m": m, "rows_missed": _rows_missed(points)}
     constants["variant"] = options["variant"]
     start = Start(line=at["setup"], values=with_color(ramp, ("x", "y")), constants=constants,
@@ -91,6 +107,40 @@ def _x_only_frames(points, m, at):
     yield (at["done"], NO_PIXEL, NO_PIXEL, float(x2), y)
 
 
+def _add_first_frames(points, m, at):
+    """002's loop as printed: for i = x1 .. x2 (upward only), y += m, then write."""
+    (x1, y1), (x2, _) = points
+    y = float(y1)
+    step = at["plot_step"]
+    for i in range(x1, x2 + 1):
+        y += m
+        yield (step, i, round_half_away(y), float(i), y)
+    yield (at["done"], NO_PIXEL, NO_PIXEL, float(max(x1, x2)), y)
+
+
+def _x_truncate_frames(points, m, at):
+    """000's LineDDA as printed: P, then dx steps of x += 1, y += m, the
+    float y cut to an int (toward zero); no steps when x2 <= x1."""
+    (x1, y1), (x2, _) = points
+    x, y = x1, float(y1)
+    yield (at["plot_first"], x1, y1, float(x), y)
+    step = at["plot_step"]
+    for _ in range(x2 - x1):
+        x += 1
+        y += m
+        yield (step, x, math.trunc(y), float(x), y)
+    yield (at["done"], NO_PIXEL, NO_PIXEL, float(x), y)
+
+
+def round_half_away(value: float) -> int:
+    """C's round(): the nearest integer, halves away from zero."""
+    return int(math.copysign(math.floor(abs(value) + 0.5), value))
+
+
+_X_FRAMES = {"x-only": _x_only_frames, "add-first": _add_first_frames,
+             "x-truncate": _x_truncate_frames}
+
+
 def _rows_missed(points) -> int:
     """Rows the ideal segment crosses that an x-stepping loop leaves empty
     (one pixel per column cannot fill more rows than there are columns)."""
@@ -109,25 +159,34 @@ LINE_DDA_PRINTED = AlgorithmSpec(
     name="line-dda-printed",
     title="DDA as printed",
     family="lines",
-    summary="the lecture listings: a DDA that truncates, or one that always steps in x",
+    summary="the lecture listings: a DDA that truncates, steps only in x, or adds before it writes",
     inputs=SEGMENT,
     options=(Option("variant", "choice", "truncate",
                     "truncate: the C cast (int) y instead of rounding; x-only: y += m along x "
-                    "for every slope, so steep lines have gaps", choices=DDA_VARIANTS), COLORS),
+                    "for every slope, so steep lines have gaps; add-first: that loop exactly as "
+                    "printed, adding m before it writes; x-truncate: the LineDDA listing, "
+                    "x-only steps and the cast together", choices=DDA_VARIANTS), COLORS),
     code=listing(dda_printed_listing),
     generator=dda_printed,
     kernel=dda_printed_pixels,
     notes=("truncate differs from line-dda only in the conversion: (int) drops the fraction, "
            "so the line sits up to a whole pixel below (or, left of zero, above) the ideal one.",
            "x-only is the slide's loop without the slope cases: one pixel per column, so a line "
-           "steeper than 45 degrees leaves rows empty (rows_missed counts them). The slide adds "
-           "m before it writes; here y starts at y1 and is written first, so P is plotted.",
+           "steeper than 45 degrees leaves rows empty (rows_missed counts them). It writes y "
+           "before it adds m, so P is plotted, and it runs right to left as well.",
+           "add-first is that slide's loop exactly as printed: y += m comes before write_pixel, "
+           "so column i gets the height of column i + 1 (0,0 -> 10,7 gives (0, 1) ... (10, 8)), "
+           "and the loop counts up only, so a line with x2 < x1 draws nothing.",
+           "x-truncate is the other lecture's LineDDA: x-only stepping for every slope and the "
+           "float y truncated when it is passed as an int, so a steep line has gaps and sits "
+           "low; it also counts up only (P alone when x2 <= x1).",
            "Float additions can land just under a whole number, which the cast then drops."),
     oracle=Oracle(
         "exact",
         "truncate: the exact truncation of P + k (Q - P) / n in Fractions, on slopes whose float "
         "sums are exact; x-only: one pixel per column at the rounded exact y, and the rows it "
-        "misses counted.",
+        "misses counted; add-first and x-truncate: the two listings ported in the tests in "
+        "Fractions.",
         ("algorithms/lines/test_line_textbook.py",)),
 )
 
@@ -147,8 +206,10 @@ def bresenham_textbook_listing(points, options) -> Code:
         code.add("plot_first", "d = 2*dy - dx;  x, y = x1, y1;  plot(x, y)", PLOT,
                  ops={"int_add": 2})
         code.add("loop", "while x < x2:     (d = dx*(s - n): s below the line, n above)")
-        code.add("plot_e", "    if d < 0:  d += incrE;  x += 1;  plot(x, y)", PLOT, "E",
-                 ops={"int_add": 2, "compare": 2})
+        code.add("plot_e", "    if d < 0:  d += incrE;  x += 1;  plot(x, y)   (the printed "
+                           "code tests d <= 0, ties to E, and sets x = x + 1 after the closing "
+                           "brace, before else: C refuses that else; x = x + 1 belongs inside)",
+                 PLOT, "E", ops={"int_add": 2, "compare": 2})
         code.add("plot_ne", "    else (d >= 0, ties too):  d += incrNE;  x += 1;  y += 1;  "
                             "plot(x, y)", PLOT, "NE", ops={"int_add": 3, "compare": 2})
     else:
@@ -156,7 +217,10 @@ def bresenham_textbook_listing(points, options) -> Code:
             "D = dx/2 - dy   (= Dx*(a - b) at the first column)"
         code.add("setup", "dx = 2*(x2 - x1);  dy = 2*(y2 - y1);  dydx = dy - dx",
                  ops={"int_add": 5, "compare": 3})
-        code.add("plot_first", f"{first};  x, y = x1, y1;  write_pixel(x, y)", PLOT,
+        start = "y = y1   (printed: y = y0, which is no parameter of draw_line(x1, y1, x2, "\
+            "y2): C refuses it, and a y0 from elsewhere would put the line on y0's row)" \
+            if variant == "as-printed" else "y = y1"
+        code.add("plot_first", f"{first};  x = x1;  {start};  write_pixel(x, y)", PLOT,
                  ops={"int_add": 2})
         code.add("loop", "for x = x1 + 1 .. x2:   (D = Dx*(a - b): a above the line, b below)")
         code.add("plot_e", "    if D > 0:  D -= dy;  write_pixel(x, y)", PLOT, "E",
@@ -281,6 +345,9 @@ LINE_BRESENHAM_TEXTBOOK = AlgorithmSpec(
            "as-printed starts D at (dy - dx)/2, which is <= 0 for any slope up to 1, so the first "
            "step always goes up and every later test is shifted; first_difference says where "
            "it leaves the corrected line.",
+           "The listings' other slips are flagged in the pseudo-code: one lecture's code tests "
+           "d <= 0 where its text says d < 0, and prints the E branch's x = x + 1 outside its "
+           "braces; the other starts y at y0, a name draw_line does not have (y1 is meant).",
            "s and n are the distances from the ideal line to the lower and the upper candidate "
            "(the slides' b and a); d = dx*(s - n)."),
     oracle=Oracle(

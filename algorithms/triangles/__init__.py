@@ -109,8 +109,9 @@ from .run import BASE, Run, Traversal, drive, mesh_flaws, ops_sum
 from .traversals import (BACKTRACK, BARYCENTRIC, BBOX, HALFPLANE, INCREMENTAL, LINEWISE, PINEDA,
                          SCAN, linewise_rows, top_start)
 from .specs import NOTES, make_kernel
-from . import specs, variants, span_interpolation  # noqa: E402
+from . import specs, variants, span_interpolation, printed  # noqa: E402
 
 # The family's algorithms, in the order they are listed: the traversals, then
-# the other views of a triangle (barycentric, Cramer's plane, linewise interpolation).
-SPECS = specs.SPECS + variants.SPECS + span_interpolation.SPECS
+# the other views of a triangle (barycentric, Cramer's plane, linewise interpolation),
+# then two listings as printed.
+SPECS = specs.SPECS + variants.SPECS + span_interpolation.SPECS + printed.SPECS

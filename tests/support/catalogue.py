@@ -82,7 +82,8 @@ LINE_OPTIONS = {
     "line-parametric": [{}, {"dt": "auto"}, {"dt": 0.5}, {"dt": 1.0}],
     "line-wu": [{}],
     "line-area": [{}],
-    "line-dda-printed": [{}, {"variant": "x-only"}],
+    "line-dda-printed": [{}, {"variant": "x-only"}, {"variant": "add-first"},
+                         {"variant": "x-truncate"}],
     "line-parametric-printed": [{}, {"dt": 0.1}],
     "line-bresenham-textbook": [{}, {"variant": "sign-reversed"}, {"variant": "as-printed"}],
 }
@@ -281,6 +282,8 @@ TRIANGLE_OPTIONS = [{}, {"fill_rule": "inclusive"}, {"fill_rule": "strict"},
 SPECIAL_TRIANGLE_OPTIONS = {
     "triangle-cramer": [{}], "triangle-trilinear": [{}], "triangle-wireframe": [{}],
     "triangle-columns": [{}, {"swap": "printed"}], "triangle-span-interpolate": [{}],
+    "triangle-barycentric-printed": [{}, {"distance": "signed"}],
+    "triangle-lininterp": [{}, {"listing": "corrected"}],
     "painter-split": [{}],
     "triangle-plane": [{}, {"colors": ("#ff0000", "#00ff00", "#0000ff"), "z": (0.0, 1e300, -1e300)},
                        {"precision": "float32", "s": (0.0, 1.0, 0.5)}, {"subpixel_bits": 0}],

@@ -132,3 +132,19 @@ def test_bresenham_circle_candidates_are_e_and_se_of_the_pixel_decided_from():
         assert tuple(step.pixel) in trace.candidates_at(i)
         checked += 1
     assert checked >= 5
+
+
+def test_the_summary_slides_slips_are_flagged_with_what_they_would_do():
+    from fractions import Fraction
+
+    from algorithms.core import registry
+    spec = registry.get("circle-midpoint-printed")
+    text = " ".join(line.text for line in spec.code(((10, 10),), spec.resolve({"radius": 8})))
+    assert "F(0, R)" in text and "y_{i-1}" in text
+    for r in range(1, 30):
+        def f(x, y):
+            return x * x + y * y - r * r
+        # d0 = F(0, R) is 0, so the first test d < 0 fails and the step goes SE ...
+        assert f(0, r) == 0 and not f(0, r) < 0
+        # ... while the first midpoint, F(1, R - 1/2), is 5/4 - R.
+        assert f(1, Fraction(2 * r - 1, 2)) == Fraction(5, 4) - r

@@ -10,9 +10,12 @@ import math
 from fractions import Fraction
 
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from algorithms.core import registry
 from algorithms.exact import lines as exact
+from tests.support.linecases import NAMED_CASES, segments
 
 SEGMENTS = [((0, 0), (8, 3)), ((0, 0), (6, 3)), ((2, 1), (14, 7)), ((20, 3), (4, 18)),
             ((5, 20), (1, 2)), ((-7, -3), (9, -11)), ((3, 3), (3, 3)), ((0, 5), (9, 5)),
@@ -203,6 +206,118 @@ def test_dda_x_only_has_one_pixel_per_column_and_misses_rows(p, q):
 
 
 
+def c_round(value: Fraction) -> int:
+    """C's round(): halves away from zero."""
+    whole = math.floor(abs(value) + Fraction(1, 2))
+    return whole if value >= 0 else -whole
+
+
+def add_first_listing(x1, y1, x2, y2):
+    """The slide's DDA loop as printed, in Fractions: y += m, then write."""
+    m = Fraction(y2 - y1, x2 - x1) if x2 != x1 else Fraction(0)
+    y, out = Fraction(y1), []
+    for i in range(x1, x2 + 1):
+        y += m
+        out.append((i, c_round(y)))
+    return out
+
+
+def line_dda_listing(x1, y1, x2, y2):
+    """LineDDA as printed, in Fractions: DisplayPixel takes the float y as an
+    int, which truncates toward zero."""
+    dx, dy = x2 - x1, y2 - y1
+    m = Fraction(dy, dx) if dx else Fraction(0)
+    x, y = x1, Fraction(y1)
+    out = [(x1, y1)]
+    for _ in range(1, dx + 1):
+        x += 1
+        y += m
+        out.append((x, math.trunc(y)))
+    return out
+
+
+DDA_LISTINGS = {"add-first": add_first_listing, "x-truncate": line_dda_listing}
+
+
+def dyadic_segments():
+    """Segments whose x extent is a power of two: m and its sums are exact in floats."""
+    p = st.tuples(st.integers(-30, 30), st.integers(-30, 30))
+    return st.builds(lambda p, k, dy, back: (p, (p[0] + (-1 if back else 1) * 2 ** k, p[1] + dy)),
+                     p, st.integers(0, 5), st.integers(-60, 60), st.booleans())
+
+
+def test_dda_add_first_gives_the_listings_pixels_on_the_slides_line():
+    _, pixels = run("line-dda-printed", ((0, 0), (10, 7)), variant="add-first")
+    assert pixels[0] == (0, 1) and pixels[-1] == (10, 8)
+    assert len(pixels) == 11
+
+
+@pytest.mark.parametrize("variant", sorted(DDA_LISTINGS))
+@settings(max_examples=200, deadline=None)
+@given(segment=dyadic_segments())
+def test_dda_listings_as_printed_on_exact_slopes(variant, segment):
+    p, q = segment
+    _, pixels = run("line-dda-printed", (p, q), variant=variant)
+    assert pixels == DDA_LISTINGS[variant](*p, *q)
+
+
+@pytest.mark.parametrize("variant", sorted(DDA_LISTINGS))
+@settings(max_examples=200, deadline=None)
+@given(segment=segments())
+def test_dda_listings_as_printed_on_random_segments(variant, segment):
+    assert_as_listed(variant, *segment)
+
+
+def assert_as_listed(variant, p, q):
+    """The pixels of the listing, but that float sums of m can land a hair off
+    a whole number (or a half), where the cast (or the rounding) may go either
+    way: there a pixel may differ by one."""
+    _, pixels = run("line-dda-printed", (p, q), variant=variant)
+    listed = DDA_LISTINGS[variant](*p, *q)
+    assert [x for x, _ in pixels] == [x for x, _ in listed]
+    for (x, y), (_, expected) in zip(pixels, listed):
+        exact_y = y_of_listing(variant, p, q, x)
+        edge = exact_y.denominator == (1 if variant == "x-truncate" else 2)
+        assert y == expected or (edge and abs(y - expected) == 1), (x, y, expected)
+
+
+def y_of_listing(variant, p, q, x):
+    """The exact y the listing holds when it writes column x."""
+    m = Fraction(q[1] - p[1], q[0] - p[0]) if q[0] != p[0] else Fraction(0)
+    steps = x - p[0] + (1 if variant == "add-first" else 0)
+    return p[1] + steps * m
+
+
+@pytest.mark.parametrize("p, q", NAMED_CASES)
+@pytest.mark.parametrize("variant", sorted(DDA_LISTINGS))
+def test_dda_listings_as_printed_on_the_hard_cases(variant, p, q):
+    assert_as_listed(variant, p, q)
+
+
+def test_line_dda_float_sums_fall_short_of_a_whole_number():
+    # Seven float additions of 3/7 give 2.9999999999999996, which the cast makes 2.
+    _, pixels = run("line-dda-printed", ((0, 0), (7, 3)), variant="x-truncate")
+    assert line_dda_listing(0, 0, 7, 3)[-1] == (7, 3)
+    assert pixels[-1] == (7, 2)
+
+
+def test_line_dda_as_printed_leaves_gaps_and_sits_low_when_steep():
+    p, q = (0, 0), (3, 7)
+    _, pixels = run("line-dda-printed", (p, q), variant="x-truncate")
+    assert pixels == [(0, 0), (1, 2), (2, 4), (3, 7)]
+    nearest = exact.nearest_pixel_line(p, q, "up")
+    assert len(nearest) == 8 > len(pixels)
+    # Truncation sits at or below the rounded exact x-stepping line, never above.
+    for x, y in pixels:
+        assert y <= exact.round_half_up_exact(exact.y_at(p, q, x))
+
+
+@pytest.mark.parametrize("variant", sorted(DDA_LISTINGS))
+def test_dda_listings_count_up_only(variant):
+    _, pixels = run("line-dda-printed", ((9, 2), (1, 5)), variant=variant)
+    assert pixels == ([] if variant == "add-first" else [(9, 2)])
+
+
 # ------------------------------------------------ the unbounded implicit form
 def near_infinite_line(p, q, x, y):
     """Squared distance from (x, y) to its foot on the line PQ, below 1/4."""
@@ -256,3 +371,43 @@ def test_parametric_printed_reproduces_the_loop_and_counts_what_it_misses(p, q, 
     assert (tuple(q) in pixels) == (trace.final_variables()["Q_plotted"] == "yes")
     if (p, q, dt) == ((0, 0), (1000, 3), 0.001):
         assert ts[-1] < 1.0 and missed == {(1000, 3)}, "the printed loop never reaches t = 1"
+
+
+# --------------------------------------------- the slips flagged in the panels
+def panel(name, points, **options):
+    spec = registry.get(name)
+    return " ".join(line.text for line in spec.code(points, spec.resolve(options)))
+
+
+def line_bresenham_000(x1, y1, x2, y2):
+    """The lecture's LineBresenham, with x = x + 1 put back inside the E branch."""
+    dx, dy = x2 - x1, y2 - y1
+    d, incr_e, incr_ne = 2 * dy - dx, 2 * dy, 2 * (dy - dx)
+    x, y = x1, y1
+    out = [(x, y)]
+    while x < x2:
+        if d <= 0:
+            d = d + incr_e
+            x = x + 1
+        else:
+            d = d + incr_ne
+            x = x + 1
+            y = y + 1
+        out.append((x, y))
+    return out
+
+
+def test_the_bresenham_panels_flag_the_printed_slips():
+    ties_ne = panel("line-bresenham-textbook", ((0, 0), (8, 3)), variant="ties-ne")
+    assert "d <= 0" in ties_ne and "x = x + 1" in ties_ne and "else" in ties_ne
+    printed = panel("line-bresenham-textbook", ((0, 0), (8, 3)), variant="as-printed")
+    assert "y = y0" in printed and "draw_line" in printed
+
+
+@pytest.mark.parametrize("p, q", [((0, 0), (28, 14)), ((0, 0), (8, 3)), ((2, 1), (14, 7)),
+                                  ((0, 0), (6, 6)), ((0, 0), (4, 2))])
+def test_the_printed_d_le_0_sends_ties_to_e_as_line_bresenham_does(p, q):
+    # What the panel says of the printed test d <= 0: line-bresenham's pixels,
+    # which differ from ties-ne's exactly where the line passes half-way.
+    _, bresenham = run("line-bresenham", (p, q))
+    assert line_bresenham_000(*p, *q) == bresenham
