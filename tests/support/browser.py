@@ -1,7 +1,10 @@
-"""A real browser for the interactive page's tests: Debian's Chromium,
-headless, driven by Selenium through chromedriver, with the network off."""
+"""A real browser for the interactive page's tests: Debian's Chromium
+(scripts/setup.sh --test installs it) or, where it is absent, the Chrome that
+Selenium finds with its driver (as on CI's Windows and macOS machines);
+headless, with the network off."""
 from __future__ import annotations
 
+import os
 import time
 
 from selenium import webdriver
@@ -12,11 +15,13 @@ CHROMIUM, DRIVER = "/usr/bin/chromium", "/usr/bin/chromedriver"
 
 def start_browser():
     options = webdriver.ChromeOptions()
-    options.binary_location = CHROMIUM
+    debian = os.path.exists(CHROMIUM) and os.path.exists(DRIVER)
+    if debian:
+        options.binary_location = CHROMIUM
     for argument in ("--headless=new", "--no-sandbox", "--disable-gpu", "--disable-dev-shm-usage",
                      "--window-size=1400,900", "--force-device-scale-factor=1"):
         options.add_argument(argument)
-    driver = webdriver.Chrome(service=Service(DRIVER), options=options)
+    driver = webdriver.Chrome(service=Service(DRIVER if debian else None), options=options)
     driver.set_network_conditions(offline=True, latency=0, download_throughput=0,
                                   upload_throughput=0)
     return driver

@@ -12,10 +12,10 @@ import pytest
 from algorithms.core import registry
 from tests.support import ROOT
 
-# scripts/setup.sh is for Debian and Ubuntu: bash and coreutils' sha256sum.
+# The stand-ins of the set-up tests are shell scripts.
 needs_setup_tools = pytest.mark.skipif(
-    shutil.which("bash") is None or shutil.which("sha256sum") is None,
-    reason="scripts/setup.sh runs where bash and sha256sum are (Debian, Ubuntu)")
+    os.name != "posix" or shutil.which("bash") is None,
+    reason="the stand-ins for apt-get, dpkg and the venv's Python are shell scripts")
 
 
 @pytest.mark.parametrize("platform", [None, "xcb"])
@@ -55,24 +55,30 @@ def test_report_help_and_the_guide_promise_the_same_time(run_cli):
 
 @pytest.fixture
 def setup_copy(tmp_path):
-    """scripts/setup.sh and pyproject.toml in a folder of their own, with a
-    stand-in for every command that would install something: ``dpkg``
-    finds each system package, and ``.venv/bin/python`` only notes its
-    arguments in calls.txt. Returns (folder, run)."""
+    """scripts/setup.sh, pyproject.toml and requirements/ in a folder of their
+    own, with a stand-in for every command that would install something:
+    ``apt-get`` and ``.venv/bin/python`` only note their arguments in
+    calls.txt, and ``dpkg`` finds every system package once apt-get has
+    run. Returns (folder, run)."""
     (tmp_path / "scripts").mkdir()
     shutil.copy(ROOT / "scripts" / "setup.sh", tmp_path / "scripts" / "setup.sh")
     shutil.copy(ROOT / "pyproject.toml", tmp_path / "pyproject.toml")
+    shutil.copytree(ROOT / "requirements", tmp_path / "requirements")
     tools = tmp_path / "tools"
     tools.mkdir()
-    stand_in(tools / "dpkg", "exit 0")
+    # No system package is there until apt-get has run once.
+    stand_in(tools / "dpkg", f'test -f "{tmp_path / "apt-done"}"')
+    stand_in(tools / "id", "echo 0")
+    stand_in(tools / "apt-get", f'echo "apt-get $*" >> "{tmp_path / "calls.txt"}"; '
+                                f'touch "{tmp_path / "apt-done"}"')
     venv = tmp_path / ".venv" / "bin"
     venv.mkdir(parents=True)
     stand_in(venv / "python", f'echo "$*" >> "{tmp_path / "calls.txt"}"')
     stand_in(venv / "rasterlab", "exit 0")
     environment = os.environ | {"PATH": f"{tools}{os.pathsep}{os.environ['PATH']}"}
 
-    def run():
-        return subprocess.run(["bash", "scripts/setup.sh"], cwd=tmp_path, env=environment,
+    def run(*args):
+        return subprocess.run(["bash", "scripts/setup.sh", *args], cwd=tmp_path, env=environment,
                               capture_output=True, text=True, timeout=120)
     return tmp_path, run
 
@@ -87,22 +93,51 @@ def calls(folder) -> list:
     return path.read_text().splitlines() if path.exists() else []
 
 
+def installs(folder) -> list:
+    return [call for call in calls(folder) if " install " in f" {call} "]
+
+
 @needs_setup_tools
-def test_setup_installs_when_pyproject_changed_and_keeps_its_checksum(setup_copy):
+def test_setup_installs_the_program_from_the_lock_and_keeps_its_checksum(setup_copy):
     folder, run = setup_copy
     done = run()
     assert done.returncode == 0 and done.stderr == ""
-    assert any('install --quiet -e .[test]' in call for call in calls(folder))
-    wanted = hashlib.sha256((folder / "pyproject.toml").read_bytes()).hexdigest()
-    assert (folder / ".venv" / ".rasterlab-installed").read_text().strip() == wanted
+    pip = [call for call in installs(folder) if call.startswith("-m pip")]
+    assert "--require-hashes -r requirements/app.txt" in pip[0]
+    assert pip[1].endswith("--no-deps -e .") and len(pip) == 2
+    apt = " ".join(call for call in installs(folder) if call.startswith("apt-get"))
+    assert "libegl1" in apt and "chromium" not in apt
+    wanted = hashlib.sha256((folder / "requirements" / "app.txt").read_bytes()
+                            + (folder / "pyproject.toml").read_bytes()).hexdigest()
+    assert (folder / ".venv" / ".rasterlab-app").read_text().strip() == wanted
+
+
+@needs_setup_tools
+def test_setup_for_the_tests_installs_the_test_lock(setup_copy):
+    folder, run = setup_copy
+    assert run("--test").returncode == 0
+    pip = [call for call in installs(folder) if call.startswith("-m pip")]
+    assert "--require-hashes -r requirements/test.txt" in pip[0]
+    assert (folder / ".venv" / ".rasterlab-test").is_file()
 
 
 @needs_setup_tools
 def test_setup_run_again_changes_nothing_and_says_one_line(setup_copy):
     folder, run = setup_copy
     run()
-    before = calls(folder)
+    before = installs(folder)
     done = run()
     assert done.returncode == 0 and done.stderr == ""
     assert done.stdout.count("\n") == 1 and "set up in .venv" in done.stdout
-    assert calls(folder) == before, "set-up installed again with pyproject.toml unchanged"
+    assert installs(folder) == before, "set-up installed again with nothing changed"
+    run("--test")
+    after_test = installs(folder)
+    assert "requirements/test.txt" in after_test[-2]
+    run()  # the test install holds the program's
+    assert installs(folder) == after_test
+
+
+@needs_setup_tools
+def test_setup_refuses_an_unknown_option_in_one_line(setup_copy):
+    done = setup_copy[1]("--tests")
+    assert done.returncode == 2 and done.stderr.count("\n") == 1 and "usage" in done.stderr
