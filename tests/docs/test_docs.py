@@ -183,3 +183,12 @@ def test_console_blocks_split_into_commands_and_their_output():
     block = "$ rasterlab list --scenes\na  A\n...\n$ rasterlab --version\nrasterlab 0.1.0\n"
     assert console_examples(block) == [("rasterlab list --scenes", "a  A\n...\n"),
                                        ("rasterlab --version", "rasterlab 0.1.0\n")]
+
+
+def test_the_algorithm_counts_the_docs_give_are_current():
+    from algorithms.core import registry
+    count = len(registry.all_specs())
+    readme = (ROOT / "README.md").read_text(encoding="utf-8")
+    changelog = (ROOT / "docs" / "developers" / "changelog.md").read_text(encoding="utf-8")
+    assert f"It covers {count} algorithms" in readme
+    assert f"**Algorithms** ({count}, in" in changelog
