@@ -11,7 +11,6 @@ with the one line the command would print; nothing here imports Qt.
 """
 from __future__ import annotations
 
-import html
 import os
 import warnings
 from dataclasses import fields
@@ -24,6 +23,7 @@ from algorithms.core.trace import DEFAULT_STEP_CAP, MAX_STEP_CAP
 from app.model import budget, runs
 from app.model import scene as scenes
 from app.model import shipped
+from app.model.escape import html_text
 
 __all__ = ["run", "open_scene", "export", "check", "Run", "CheckResult"]
 
@@ -206,12 +206,12 @@ class Run:
         try:
             text = page.page_bytes(self._scene, self._trace, settings).decode("utf-8")
         except ExportError as error:
-            return f"<p>{html.escape(str(error))}</p>"
+            return f"<p>{html_text(str(error))}</p>"
         return (f'<div style="position:relative;height:{PLAYER_HEIGHT}px">'
                 '<p style="position:absolute;margin:8px">RasterLab\'s player shows here when '
                 'the notebook is trusted.</p>'
-                f'<iframe srcdoc="{html.escape(text, quote=True)}" sandbox="allow-scripts" '
-                f'title="RasterLab: {html.escape(self.algorithm)}" style="position:absolute;'
+                f'<iframe srcdoc="{html_text(text)}" sandbox="allow-scripts" '
+                f'title="RasterLab: {html_text(self.algorithm)}" style="position:absolute;'
                 'width:100%;height:100%;border:1px solid #d5dbe3"></iframe></div>')
 
     def __repr__(self) -> str:

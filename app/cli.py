@@ -442,6 +442,12 @@ def _overlays(text: str) -> tuple:
 def command_export(args) -> int:
     if args.beamer is not None and args.pdf is None:
         raise CommandError("--beamer includes the pages of the PDF: give --pdf OUT.pdf too")
+    if args.beamer is not None:
+        from app.render.formats import beamer_reference
+        try:
+            beamer_reference(args.pdf, args.beamer)
+        except ValueError as error:
+            raise InputError(str(error)) from None
     outputs = (args.gif, args.frames_dir, args.mp4, args.webm, args.svg_dir, args.pdf, args.html)
     if all(output is None for output in outputs):
         raise CommandError("export needs an output: --gif, --frames-dir, --mp4, --webm, "

@@ -20,6 +20,7 @@ from PySide6.QtWidgets import QFileDialog, QMessageBox
 from widgets.docks import panel_dock
 from widgets.steps_table import StepsView
 
+from app.model.escape import csv_row
 from app.model.files import write_atomically
 from app.model.steptable import StepTable, write_csv
 
@@ -78,9 +79,9 @@ class StepsDock:
         """The heading and the given rows as CSV, put on the clipboard."""
         text = io.StringIO()
         writer = csv.writer(text, lineterminator="\n")
-        writer.writerow([column.title for column in self.table.columns])
+        writer.writerow(csv_row(column.title for column in self.table.columns))
         for row in rows:
-            writer.writerow(self.table.text_row(row))
+            writer.writerow(csv_row(self.table.text_row(row)))
         QGuiApplication.clipboard().setText(text.getvalue())
         return text.getvalue()
 

@@ -21,6 +21,7 @@ from dataclasses import dataclass
 
 from algorithms.core.steps import Span, Table, Vars
 
+from app.model.escape import csv_row
 from app.model.tables import cell_text
 
 CHECKPOINT = 4096  # steps between saved variable states
@@ -156,12 +157,13 @@ def cell_to_json(value):
 
 
 def write_csv(table: StepTable, stream, lo: int = 0, hi: int | None = None) -> int:
-    """Write the heading and rows lo .. hi - 1 as CSV to a text stream; the row count."""
+    """Write the heading and rows lo .. hi - 1 as CSV to a text stream (text
+    cells guarded against spreadsheet formulas: ``escape.csv_row``); the row count."""
     writer = csv.writer(stream, lineterminator="\n")
-    writer.writerow([column.title for column in table.columns])
+    writer.writerow(csv_row(column.title for column in table.columns))
     hi = len(table) if hi is None else min(hi, len(table))
     for i in range(max(lo, 0), hi):
-        writer.writerow(table.text_row(i))
+        writer.writerow(csv_row(table.text_row(i)))
     return max(hi - max(lo, 0), 0)
 
 

@@ -8,6 +8,7 @@ import os
 from pathlib import Path
 from typing import NamedTuple
 
+from app.model.escape import latex_file_name
 from app.model.files import write_atomically
 from app.render.settings import ExportError
 
@@ -93,11 +94,20 @@ def finish(args, scene, done_writers) -> None:
         return
     from app.render.vector import PdfWriter, beamer_snippet
     pdf = next(w for w in done_writers if isinstance(w, PdfWriter))
-    beamer = Path(args.beamer)
-    reference = os.path.relpath(Path(args.pdf).resolve(), beamer.resolve().parent)
     title = scene.title or f"{scene.algorithm}"
-    text = beamer_snippet(Path(reference).as_posix(), pdf.pages, title)
-    write_atomically(beamer, text.encode("utf-8"), ExportError)
+    text = beamer_snippet(beamer_reference(args.pdf, args.beamer), pdf.pages, title)
+    write_atomically(Path(args.beamer), text.encode("utf-8"), ExportError)
+
+
+def beamer_reference(pdf, beamer) -> str:
+    """The PDF as the Beamer snippet names it, relative to the snippet's
+    folder; ExportError when LaTeX could not read that name (a %, a brace,
+    a line end ...), which the command line checks before any work."""
+    reference = os.path.relpath(Path(pdf).resolve(), Path(beamer).resolve().parent)
+    try:
+        return latex_file_name(Path(reference).as_posix())
+    except ValueError as error:
+        raise ExportError(f"--beamer: {error} ({reference!r}): rename the PDF") from None
 
 
 class Page(NamedTuple):

@@ -12,7 +12,10 @@ ink or overdraw, a written colour wins, darkened where written again. So a
 100,000-step run stays small, and the page shows what the GIF shows.
 
 The player itself (``player.html`` beside this module) is plain JavaScript
-and CSS in one template; ``write_page`` puts the data into it.
+and CSS in one template; ``write_page`` puts the data into it as JSON that
+cannot end or comment out its script element (``app.model.escape.script_json``);
+the player sets every text of the scene (title, bookmark names) as text, never
+as HTML.
 """
 from __future__ import annotations
 
@@ -29,6 +32,7 @@ import numpy as np
 from algorithms.core import registry
 from algorithms.core.steps import NO_PIXEL, Note, Span, Table, Vars
 
+from app.model.escape import script_json
 from app.model.files import write_atomically
 from app.model.geometry import scene_paths
 from app.render.frame import colour_name
@@ -60,9 +64,7 @@ def page_bytes(scene, trace, settings, force: bool = False) -> bytes:
     """The page for ``scene``'s run ``trace``, UTF-8 (see ``write_page``)."""
     data = page_data(scene, trace, settings)
     text = TEMPLATE.read_text(encoding="utf-8")
-    payload = json.dumps(data, separators=(",", ":"), allow_nan=False)
-    # "</" would end the script element early.
-    page = text.replace(DATA_MARK, payload.replace("</", "<\\/"), 1).encode("utf-8")
+    page = text.replace(DATA_MARK, script_json(data), 1).encode("utf-8")
     budget = page_budget(len(trace))
     if not force and len(page) > budget:
         raise ExportError(f"the page would take {len(page) / 2 ** 20:.1f} MB for {len(trace):,} "

@@ -19,10 +19,9 @@ from __future__ import annotations
 import os
 from dataclasses import dataclass, field
 from pathlib import Path
-from xml.sax.saxutils import escape, quoteattr
-
 import numpy as np
 
+from app.model.escape import latex_comment, latex_file_name, latex_text, xml_text
 from app.render.compose import OUTLINE_STYLE, compose
 from app.render.frame import frame_marks, key_values, step_caption
 from app.render.reasoning import step_guides
@@ -44,6 +43,7 @@ class Drawing:
     height: float
     background: str
     shapes: list = field(default_factory=list)
+    title: str = ""  # the scene's title: the SVG's <title>
 
     def rect(self, x, y, w, h, fill=None, stroke=None, width=0.0):
         self.shapes.append(("rect", x, y, w, h, fill, stroke, width))
@@ -72,7 +72,8 @@ def draw_frame(renderer, index: int) -> Drawing:
     code_h = len(trace.code) * (FONT + 4) + 2 * PAD if code else 0
     rows_h = (len(rows) + 1) * (FONT + 4) + 2 * PAD if rows else 0
     body_h = max(grid_h, code_h + rows_h)
-    drawing = Drawing(grid_w + panel_width, body_h + caption_h, palette.outside)
+    drawing = Drawing(grid_w + panel_width, body_h + caption_h, palette.outside,
+                      title=renderer.scene.title)
     y_of = (lambda y: y) if renderer.y_down else (lambda y: trace.height - y)
     _cells(drawing, state.raster, palette, y_of, trace.height)
     if renderer.grid_lines:
@@ -202,8 +203,10 @@ def _caption(drawing, trace, state, top, theme) -> None:
 def to_svg(drawing: Drawing) -> str:
     """The drawing as a standalone SVG document."""
     out = [f'<svg xmlns="http://www.w3.org/2000/svg" width="{drawing.width:g}" '
-           f'height="{drawing.height:g}" viewBox="0 0 {drawing.width:g} {drawing.height:g}">',
-           f'<rect width="100%" height="100%" fill="{drawing.background}"/>']
+           f'height="{drawing.height:g}" viewBox="0 0 {drawing.width:g} {drawing.height:g}">']
+    if drawing.title:
+        out.append(f"<title>{xml_text(drawing.title)}</title>")
+    out.append(f'<rect width="100%" height="100%" fill="{drawing.background}"/>')
     for shape in drawing.shapes:
         out.append(_svg_shape(shape))
     out.append("</svg>")
@@ -228,8 +231,8 @@ def _svg_shape(shape) -> str:
     # An SVG names its fonts: a viewer without DejaVu uses its own sans-serif or monospace.
     family = "DejaVu Sans Mono, monospace" if mono else "DejaVu Sans, sans-serif"
     weight = ' font-weight="bold"' if bold else ""
-    return (f'<text x="{x:g}" y="{y:g}" font-family={quoteattr(family)} font-size="{size:g}" '
-            f'fill="{colour}" xml:space="preserve"{weight}>{escape(text)}</text>')
+    return (f'<text x="{x:g}" y="{y:g}" font-family="{xml_text(family)}" font-size="{size:g}" '
+            f'fill="{colour}" xml:space="preserve"{weight}>{xml_text(text)}</text>')
 
 
 # ---------------------------------------------------------------------- PDF
@@ -327,20 +330,15 @@ class PdfWriter:
 
 
 def beamer_snippet(pdf_name: str, pages: int, title: str) -> str:
-    """A Beamer frame showing page k of the PDF on overlay k."""
-    lines = [f"% RasterLab: {pages} frames of {pdf_name}; needs \\usepackage{{graphicx}}",
-             f"\\begin{{frame}}{{{_tex_escape(title)}}}", "  \\centering"]
+    """A Beamer frame showing page k of the PDF on overlay k. ``pdf_name``
+    must be one LaTeX can read (``latex_file_name``): ValueError if not."""
+    pdf_name = latex_file_name(pdf_name)
+    lines = [latex_comment(f"RasterLab: {pages} frames of {pdf_name}; "
+                           "needs \\usepackage{graphicx}"),
+             f"\\begin{{frame}}{{{latex_text(title)}}}", "  \\centering"]
     for page in range(1, pages + 1):
         lines.append(f"  \\only<{page}>{{\\includegraphics[page={page},width=\\linewidth,"
                      f"height=0.85\\textheight,keepaspectratio]{{{pdf_name}}}}}")
     lines.append("\\end{frame}")
     return "\n".join(lines) + "\n"
 
-
-def _tex_escape(text: str) -> str:
-    for char, replacement in (("\\", r"\textbackslash{}"), ("&", r"\&"), ("%", r"\%"),
-                              ("$", r"\$"), ("#", r"\#"), ("_", r"\_"), ("{", r"\{"),
-                              ("}", r"\}"), ("~", r"\textasciitilde{}"),
-                              ("^", r"\textasciicircum{}")):
-        text = text.replace(char, replacement)
-    return text

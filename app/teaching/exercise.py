@@ -27,6 +27,8 @@ from dataclasses import dataclass
 from algorithms.core.registry import format_value
 from algorithms.core.steps import PLOT, VISIT, Span
 
+from app.model.escape import csv_row
+
 FREQUENCIES = ("step", "decision", "scanline", "random")
 MAX_SCAN = 20_000  # steps looked at for questions: an exercise is a few hundred at most
 ANSWER_WITH = ("auto", "value")
@@ -226,14 +228,15 @@ class Exercise:
                 "seconds": round(self.clock() - self.started, 1)}
 
     def csv_text(self) -> str:
-        """One row per answer, then the totals."""
+        """One row per answer, then the totals; an answer typed as a formula
+        (=, +, -, @) is written as text (``escape.csv_row``)."""
         out = io.StringIO()
         writer = csv.writer(out, lineterminator="\n")
         writer.writerow(["step", "kind", "answer", "given", "right", "seconds"])
         for grade in self.grades:
-            writer.writerow([grade.question.step, grade.question.kind, show(grade.question.answer),
-                             show(grade.given), "yes" if grade.right else "no",
-                             f"{grade.seconds:.1f}"])
+            writer.writerow(csv_row([grade.question.step, grade.question.kind,
+                                     show(grade.question.answer), show(grade.given),
+                                     "yes" if grade.right else "no", f"{grade.seconds:.1f}"]))
         summary = self.summary()
         writer.writerow(["total", "", "", "", f"{summary['right']}/{summary['asked']}",
                          f"{summary['seconds']:.1f}"])

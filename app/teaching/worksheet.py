@@ -5,7 +5,8 @@ Qt-free. ``build(scene, blank)`` picks the steps worth working by hand (those
 that plot a pixel, take a branch or fill a span; the first MAX_ROWS of them)
 from the step table (steptable.py) and keeps their cells as text. Writers
 here give CSV, Markdown (with PNG grids drawn by Pillow) and LaTeX (a
-``tabular`` to paste); the PDF is drawn by app/gui/worksheet_pdf.py.
+``tabular`` to paste), escaping the title and cells with app/model/escape.py;
+the PDF is drawn by app/gui/worksheet_pdf.py.
 """
 from __future__ import annotations
 
@@ -17,6 +18,7 @@ from pathlib import Path
 from algorithms.core.errors import InputError
 from algorithms.core.steps import Span
 
+from app.model.escape import csv_row, latex_comment, latex_text, markdown_text
 from app.model.files import write_atomically
 from app.model.geometry import scene_paths
 from app.model.steptable import StepTable, cell_to_text
@@ -89,44 +91,37 @@ def build(scene, blank=None) -> Worksheet:
 def csv_text(sheet: Worksheet, answers: bool) -> str:
     out = io.StringIO()
     writer = csv.writer(out, lineterminator="\n")
-    writer.writerow(sheet.columns)
-    writer.writerows(sheet.cells(answers))
+    writer.writerow(csv_row(sheet.columns))
+    writer.writerows(csv_row(row) for row in sheet.cells(answers))
     return out.getvalue()
 
 
 def markdown(sheet: Worksheet, answers: bool, grid_image: str) -> str:
     kind = "Answer key" if answers else "Worksheet"
-    lines = [f"# {kind}: {sheet.title}", "", f"Algorithm: `{sheet.algorithm}`", "",
+    md = markdown_text
+    lines = [f"# {kind}: {md(sheet.title)}", "", f"Algorithm: `{sheet.algorithm}`", "",
              "```", *sheet.code, "```", ""]
     if sheet.constants:
-        lines += ["Constants: " + ", ".join(f"{n} = {v}" for n, v in sheet.constants), ""]
+        lines += ["Constants: " + ", ".join(f"{md(n)} = {md(v)}" for n, v in sheet.constants), ""]
     if not answers:
-        lines += [f"Fill in the columns {', '.join(sorted(sheet.blank))} and shade the pixels "
-                  "the algorithm plots.", ""]
-    lines += ["| " + " | ".join(sheet.columns) + " |",
+        lines += [f"Fill in the columns {md(', '.join(sorted(sheet.blank)))} and shade the "
+                  "pixels the algorithm plots.", ""]
+    lines += ["| " + " | ".join(md(column) for column in sheet.columns) + " |",
               "|" + "|".join("---" for _ in sheet.columns) + "|"]
-    lines += ["| " + " | ".join(cell.replace("|", "\\|") for cell in row) + " |"
-              for row in sheet.cells(answers)]
+    lines += ["| " + " | ".join(md(cell) for cell in row) + " |" for row in sheet.cells(answers)]
     if sheet.note:
         lines += ["", sheet.note]
     lines += ["", f"![grid]({grid_image})", ""]
     return "\n".join(lines)
 
 
-_TEX = {"\\": r"\textbackslash{}", "&": r"\&", "%": r"\%", "$": r"\$", "#": r"\#", "_": r"\_",
-        "{": r"\{", "}": r"\}", "~": r"\textasciitilde{}", "^": r"\textasciicircum{}"}
-
-
-def tex_escape(text: str) -> str:
-    return "".join(_TEX.get(ch, ch) for ch in text)
-
-
 def latex(sheet: Worksheet, answers: bool) -> str:
     """A tabular to paste into a lecturer's document; blanks are left empty."""
-    lines = [f"% {'Answer key' if answers else 'Worksheet'}: {sheet.title} ({sheet.algorithm})",
+    kind = "Answer key" if answers else "Worksheet"
+    lines = [latex_comment(f"{kind}: {sheet.title} ({sheet.algorithm})"),
              r"\begin{tabular}{" + "|".join("l" for _ in sheet.columns) + "}", r"\hline",
-             " & ".join(tex_escape(c) for c in sheet.columns) + r" \\", r"\hline"]
-    lines += [" & ".join(tex_escape(cell) for cell in row) + r" \\" for row in sheet.cells(answers)]
+             " & ".join(latex_text(c) for c in sheet.columns) + r" \\", r"\hline"]
+    lines += [" & ".join(latex_text(cell) for cell in row) + r" \\" for row in sheet.cells(answers)]
     lines += [r"\hline", r"\end{tabular}", ""]
     return "\n".join(lines)
 
