@@ -184,9 +184,11 @@ class Run:
         path: the file to write; its suffix picks the format: .gif, .mp4,
             .webm, .pdf or .html. A folder of numbered frames takes
             format="png" or format="svg". A file is written whole or not at
-            all; an existing one is replaced.
+            all; an existing one of the format written is replaced (another
+            only with force=True), a link's target is written.
         settings: format (one of gif, mp4, webm, pdf, html, png, svg), force
-            (write a page over its size budget), and those of `rasterlab
+            (replace a file RasterLab did not write; write a page over its
+            size budget), and those of `rasterlab
             export`, by their Python names: first, last (steps or bookmark
             names), fps, hold, scale, caption, panel, unit, text_size,
             theme, loop, per, axes, vertex_labels, overlays ("all" or a
@@ -329,6 +331,7 @@ def _export(scene, trace, path, settings: dict) -> str:
     force = bool(settings.pop("force", False))
     outputs = formats.Outputs(**{{"png": "frames_dir", "svg": "svg_dir"}.get(kind, kind):
                                  os.fspath(path)}, force=force)
+    formats.check(outputs, scene)
     chosen = _settings(settings)
     done = formats.export_all(outputs, scene, chosen, exporting.MAX_FRAMES_BYTES, trace=trace,
                               names=("first", "last"))

@@ -17,6 +17,7 @@ from algorithms.core.registry import InputError, parse_number
 from algorithms.core.trace import DEFAULT_STEP_CAP, MAX_STEP_CAP, TraceError
 from app import cli_teaching
 from app.model import budget, runs
+from app.model.files import Output, OutputRefused, check_outputs
 from app.model.runs import DEFAULT_GRID, Rows, check_grid, fit_grid, run_result, save_new
 from app.progress import TerminalBar
 from app.model.scene import one_line
@@ -222,6 +223,7 @@ def command_run(args) -> int:
     options = parse_settings(spec, args.set)
     step_cap = parse_step_cap(args.step_cap)
     points = spec.inputs.check(points)
+    _check_save(args, options)
     grid = parse_grid(args.grid) if args.grid is not None else None
     grid = fit_grid(spec.inputs.flat(points), grid, spec.inputs.integer)
     trace = runs.record(spec, points, options, grid, step_cap, _memory_limit(args))
@@ -255,15 +257,27 @@ def run_scene(args) -> int:
     if args.algorithm is not None or args.points is not None or args.set or args.grid:
         raise CommandError("--scene takes its algorithm, points, options and grid from the file")
     step_cap = parse_step_cap(args.step_cap)
+    scene_path = shipped.scene_path(args.scene)
     try:
-        scene = scenes.load(shipped.scene_path(args.scene))
+        scene = scenes.load(scene_path)
     except scenes.SceneError as error:
         raise InputError(str(error)) from None
+    _check_save(args, scene.options, scene_path)
     trace = runs.record(scene.spec, scene.points, scene.options, scene.grid, step_cap,
                         _memory_limit(args))
     if args.save is not None:
         return save_run(args, scene, trace)
     return print_run(args, scene.spec, trace, scene.options)
+
+
+def _check_save(args, options, scene_path=None) -> None:
+    """The output policy for --save, before the run: never the scene file
+    read, a texture, a folder or a device (``check_outputs``)."""
+    if args.save is None:
+        return
+    texture = options.get("texture")
+    texture = texture if isinstance(texture, str) and os.path.isfile(texture) else None
+    check_outputs([Output("--save", args.save)], [scene_path, texture])
 
 
 def save_run(args, scene, trace) -> int:
@@ -376,7 +390,11 @@ def add_export_command(parser, commands) -> None:
                         help="write an interactive page: one self-contained file that replays "
                              "the run in a browser")
     export.add_argument("--force", action="store_true",
-                        help="write a page even when it is over its size budget")
+                        help="write what is otherwise refused as possibly unwanted: replace a "
+                             "file that is not of the format written (a GIF by --gif, ...) or a "
+                             "frame file a folder's earlier export did not write, and write a "
+                             "page over its size budget. An output that is an input or another "
+                             "output, a folder, device or FIFO, is refused all the same")
     export.add_argument("--fps", default="4", metavar="N",
                         help="frames per second, 0.1 .. 50 (default %(default)s)")
     export.add_argument("--scale", default=None, metavar="N",
@@ -471,10 +489,13 @@ def command_export(args) -> int:
     if text_size is not None and not exporting.MIN_TEXT <= text_size <= exporting.MAX_TEXT:
         raise InputError(f"--text-size must be {exporting.MIN_TEXT} .. {exporting.MAX_TEXT} "
                          f"pixels, got {args.text_size.strip()}")
+    scene_path = shipped.scene_path(args.scene)
     try:
-        scene = scenes.load(shipped.scene_path(args.scene))
+        scene = scenes.load(scene_path)
     except scenes.SceneError as error:
         raise InputError(str(error)) from None
+    from app.render import formats
+    formats.check(args, scene, scene_path)
     settings = exporting.ExportSettings(
         first=args.first, last=args.last, fps=fps, hold=hold, scale=scale,
         grid_lines=not args.no_grid, primitive=not args.no_primitive,
@@ -485,8 +506,6 @@ def command_export(args) -> int:
     frames_limit = (exporting.MAX_FRAMES_BYTES if args.frames_limit is None
                     else budget.parse_size(args.frames_limit, "--frames-limit"))
     bar = _ProgressBar(sys.stderr)
-
-    from app.render import formats
 
     def work():
         return formats.export_all(args, scene, settings, frames_limit,
@@ -570,11 +589,18 @@ _NEGATIVE_POINT = re.compile(r"^-(?!-).*,", re.DOTALL)
 def utf8_streams(streams=None) -> None:
     """Make stdout and stderr write UTF-8 where they do not: Windows gives
     redirected output its code page (cp1252, ...), a C locale gives ASCII,
-    and neither can write ≤, ≈ or dᵢ₊₁. Their error handlers stay."""
+    and neither can write ≤, ≈ or dᵢ₊₁. A strict error handler becomes
+    backslashreplace: a file name with a byte that is not UTF-8 (a lone
+    surrogate, as os.fsdecode gives it) prints as \\udcff instead of
+    raising; a lenient handler (surrogateescape, ...) stays."""
     for stream in (sys.stdout, sys.stderr) if streams is None else streams:
-        if _is_utf8(getattr(stream, "encoding", None)) or not hasattr(stream, "reconfigure"):
-            continue  # already UTF-8, or not a text stream Python made (None under pythonw)
-        stream.reconfigure(encoding="utf-8", errors=stream.errors)
+        if not hasattr(stream, "reconfigure"):
+            continue  # not a text stream Python made (None under pythonw)
+        errors = "backslashreplace" if stream.errors == "strict" else stream.errors
+        if not _is_utf8(getattr(stream, "encoding", None)):
+            stream.reconfigure(encoding="utf-8", errors=errors)
+        elif errors != stream.errors:
+            stream.reconfigure(errors=errors)
 
 
 def _is_utf8(encoding: str | None) -> bool:
@@ -598,7 +624,7 @@ def main(argv: list[str] | None = None) -> int:
                 "export": command_export, "report": command_report,
                 "template": cli_teaching.command_template, "check": cli_teaching.command_check,
                 "worksheet": cli_teaching.command_worksheet}[args.command](args)
-    except (CommandError, InputError) as error:
+    except (CommandError, InputError, OutputRefused) as error:
         print(f"rasterlab: {one_line(str(error))}", file=sys.stderr)
         return 2
     except TraceError as error:

@@ -14,7 +14,7 @@ from pathlib import Path
 from algorithms.core.registry import InputError
 from app.model import shipped
 from app.teaching import worksheet
-from app.model.files import write_atomically
+from app.model.files import Output, check_outputs, not_ours, write_atomically
 
 
 def add_check_command(parser, commands) -> None:
@@ -42,13 +42,20 @@ def add_check_command(parser, commands) -> None:
                        help="memory per case, 64M .. 8G (default %(default)s); the report "
                             "says which limits this system enforces")
     check.add_argument("--json", action="store_true", help="print one JSON object")
-    check.add_argument("--junit", metavar="OUT.xml", help="also write JUnit XML for a grader")
+    check.add_argument("--junit", metavar="OUT.xml", help="also write JUnit XML for a grader; "
+                       "never over the student's file or a case's scene")
+    check.add_argument("--force", action="store_true",
+                       help="with --junit: replace a file that is not XML")
 
 
 def command_check(args) -> int:
     # Loaded here: the window and the other commands import this module too.
     from app.teaching import check_report
     from app.teaching.check_run import run_check
+    if args.junit:
+        cases = [word for word in args.cases if Path(word).is_file()]
+        check_outputs([Output("--junit", args.junit, foreign=not_ours("xml"))],
+                      [args.file, *cases], args.force)
     checked = run_check(args.file, args.against, args.cases, args.seed, args.time_limit,
                         args.memory_limit)
     if args.junit:
@@ -115,10 +122,15 @@ def add_worksheet_command(parser, commands) -> None:
 
 def command_worksheet(args) -> int:
     from app.model import scene as scenes
+    scene_path = shipped.scene_path(args.scene)
     try:
-        scene = scenes.load(shipped.scene_path(args.scene))
+        scene = scenes.load(scene_path)
     except scenes.SceneError as error:
         raise InputError(str(error)) from None
+    out = Path(args.out)
+    check_outputs([Output("--out", out, folder=True)]
+                  + [Output("--out", out / name) for name in worksheet.file_names(args.format)],
+                  [scene_path])
     blank = [name.strip() for name in args.blank.split(",") if name.strip()]
     sheet = worksheet.build(scene, blank)
     pdf_writer = None

@@ -9,13 +9,15 @@ command line imports this module only when it writes a PDF.
 from __future__ import annotations
 
 import os
+from pathlib import Path
 
-from PySide6.QtCore import QMarginsF, QPointF, QRectF, Qt
+from PySide6.QtCore import QBuffer, QIODevice, QMarginsF, QPointF, QRectF, Qt
 from PySide6.QtGui import (QColor, QFont, QPageLayout, QPageSize, QPainter,
                            QPdfWriter, QPen)
 from PySide6.QtWidgets import QApplication
 
 from app.gui.fonts import register_shipped_fonts
+from app.model.files import write_atomically
 
 ROWS_PER_PAGE = 30
 DPI = 150
@@ -38,15 +40,21 @@ def page_count(sheet) -> int:
 
 
 def write_pdf(sheet, path, answers: bool) -> None:
+    """Draw the PDF into memory, then write it atomically
+    (``write_atomically``): Qt never opens the file, so a folder that cannot
+    be written gives one line (OSError) instead of QPainter's warnings."""
     application()
     register_shipped_fonts()  # the window's launch() has, but the command line has not
-    temporary = f"{path}.part"
-    writer = QPdfWriter(temporary)
+    buffer = QBuffer()
+    buffer.open(QIODevice.OpenModeFlag.WriteOnly)
+    writer = QPdfWriter(buffer)
     writer.setResolution(DPI)
     writer.setPageLayout(QPageLayout(QPageSize(QPageSize.PageSizeId.A4),
                                      QPageLayout.Orientation.Portrait, QMarginsF(15, 15, 15, 15)))
     writer.setTitle(f"{'Answer key' if answers else 'Worksheet'}: {sheet.title}")
     painter = QPainter(writer)
+    if not painter.isActive():
+        raise OSError(f"{path}: Qt cannot draw the PDF")
     try:
         area = QRectF(writer.pageLayout().paintRectPixels(DPI))
         area.moveTo(0, 0)
@@ -59,7 +67,7 @@ def write_pdf(sheet, path, answers: bool) -> None:
         _grid(painter, sheet, answers, area)
     finally:
         painter.end()
-    os.replace(temporary, path)
+    write_atomically(Path(path), bytes(buffer.data()), OSError)
 
 
 def _font(painter, size: float, bold: bool = False, mono: bool = False) -> float:

@@ -1,12 +1,32 @@
-"""Writing a file so that a failure never leaves half of it: the data goes to
-a temporary file in the target's folder, which is renamed over the target
-once it is complete and on disk."""
+"""Where the program writes, and how.
+
+``write_atomically``: a failure never leaves half a file; the data goes to a
+temporary file in the target's folder, which is renamed over the target once
+it is complete and on disk.
+
+``check_outputs``: the one output policy every command checks before it does
+any work (``OutputRefused``, one line):
+
+- an existing target must be a regular file (a folder where a folder is
+  written); a device, FIFO or socket is never written;
+- no output is an input of the command or another of its outputs, compared
+  after resolving links (and hard links, by device and inode);
+- a symbolic link is written through: its target gets the new content and
+  the link stays (``target_of``, used by every writer);
+- a file the program did not write is replaced only with ``force``: an
+  existing non-empty file that is not of the format written, and in a frames
+  folder a frame the export would write over that the folder's manifest
+  does not list (``app.render.writers.foreign_frames``; the frames writer
+  checks it once it knows the frame count, before drawing a frame).
+"""
 from __future__ import annotations
 
 import os
 import stat
 import tempfile
+from dataclasses import dataclass
 from pathlib import Path
+from typing import Callable, Iterable
 
 
 def write_atomically(path: Path, data: bytes, error=OSError) -> None:
@@ -15,9 +35,10 @@ def write_atomically(path: Path, data: bytes, error=OSError) -> None:
     Failures raise ``error`` (an exception class taking one message) with a
     one-line reason that names the file. A file that exists keeps its
     permissions; a new one gets those the umask allows, as a plain ``open``
-    would give it. A symbolic link stays: its target is replaced.
+    would give it. A symbolic link stays: its target is replaced. A target
+    that is not a regular file is refused (``target_of``).
     """
-    path = _through_links(Path(path), error)
+    path = target_of(path, error)
     directory = path.parent if str(path.parent) else Path(".")
     if not directory.is_dir():
         raise error(f"{path}: the folder {directory} does not exist")
@@ -49,6 +70,30 @@ def write_atomically(path: Path, data: bytes, error=OSError) -> None:
         raise
 
 
+def target_of(path, error=OSError) -> Path:
+    """The file a write to ``path`` replaces: ``path`` itself, or the final
+    target of a symbolic link (the link stays). Refused (``error``) when it
+    exists and is not a regular file: a folder, device, FIFO or socket."""
+    path = Path(path)
+    target = _through_links(path, error)
+    try:
+        mode = os.stat(target).st_mode
+    except OSError:  # no file yet (or no folder for it: the write says so)
+        return target
+    if not stat.S_ISREG(mode):
+        raise error(f"{path}: {_not_a_file(mode)}")
+    return target
+
+
+def _not_a_file(mode: int) -> str:
+    if stat.S_ISDIR(mode):
+        return "is a folder, not a file name"
+    kind = ("a device" if stat.S_ISCHR(mode) or stat.S_ISBLK(mode) else
+            "a FIFO" if stat.S_ISFIFO(mode) else
+            "a socket" if stat.S_ISSOCK(mode) else "not a regular file")
+    return f"is {kind}; RasterLab writes only regular files"
+
+
 def _through_links(path: Path, error) -> Path:
     """The file a save replaces: a link's target, so that the link stays."""
     if not path.is_symlink():
@@ -70,3 +115,111 @@ def _umask() -> int:
     mask = os.umask(0)
     os.umask(mask)
     return mask
+
+
+# ------------------------------------------------------------ output policy
+class OutputRefused(ValueError):
+    """An output the policy refuses; the message is the one line to print."""
+
+
+# The first bytes of each format the program writes: an existing file that
+# does not start so was not written by it (see ``not_ours``).
+SIGNATURES = {
+    "gif": (b"GIF87a", b"GIF89a"),
+    "mp4": (b"ftyp",),  # after the first box's 4-byte size
+    "webm": (b"\x1a\x45\xdf\xa3",),
+    "pdf": (b"%PDF-",),
+    "html": (b"<!DOCTYPE html", b"<!doctype html"),
+    "tex": (b"% RasterLab",),
+    "xml": (b"<?xml",),
+}
+
+
+@dataclass(frozen=True)
+class Output:
+    """One output of a command: the option that names it (for messages),
+    its path, whether it is a folder, and ``foreign(path)``: why an
+    existing target was not written by the program (None: it was, or may
+    be replaced); it may raise OutputRefused for what no ``force`` allows."""
+
+    option: str
+    path: str | os.PathLike
+    folder: bool = False
+    foreign: Callable[[Path], str | None] | None = None
+
+
+def not_ours(kind: str) -> Callable[[Path], str | None]:
+    """``Output.foreign`` for a file of format ``kind`` (a SIGNATURES key):
+    an empty file, or one of that format, may be replaced."""
+    def foreign(path: Path) -> str | None:
+        with open(path, "rb") as stream:
+            head = stream.read(16)
+        if not head:
+            return None
+        start = head[4:] if kind == "mp4" else head
+        if any(start.startswith(mark) for mark in SIGNATURES[kind]):
+            return None
+        return f"is not a {kind.upper()} file RasterLab wrote"
+    return foreign
+
+
+def check_outputs(outputs: Iterable[Output], inputs: Iterable = (), force: bool = False) -> None:
+    """Refuse (OutputRefused) what the policy of this module's text forbids,
+    before any work: the first problem, in one line. ``inputs`` are the
+    files the command reads (None entries are skipped)."""
+    read = {_identity(path): path for path in inputs if path is not None}
+    written: dict = {}
+    for output in outputs:
+        if output.path is None:
+            continue
+        path = Path(output.path)
+        _check_kind(output, path)
+        identity = _identity(path)
+        if identity in read:
+            raise OutputRefused(f"{output.option} {path}: is the input {read[identity]} of this "
+                                "command; write the output to another name")
+        if identity in written:
+            raise OutputRefused(f"{output.option} {path}: is also the output of "
+                                f"{written[identity].option}; give each output its own name")
+        written[identity] = output
+    for output in written.values():
+        _check_foreign(output, Path(output.path), force)
+
+
+def _check_kind(output: Output, path: Path) -> None:
+    where = f"{output.option} {path}"
+    if path.is_symlink() and not path.exists():
+        if Path(os.path.realpath(path)).is_symlink():
+            raise OutputRefused(f"{where}: a loop of symbolic links")
+        return  # a dangling link: its target is made
+    try:
+        mode = os.stat(path).st_mode
+    except OSError:
+        return  # nothing there yet (a missing folder is the writer's to report)
+    if output.folder:
+        if not stat.S_ISDIR(mode):
+            raise OutputRefused(f"{where}: is not a folder")
+    elif not stat.S_ISREG(mode):
+        raise OutputRefused(f"{where}: {_not_a_file(mode)}")
+
+
+def _check_foreign(output: Output, path: Path, force: bool) -> None:
+    where = f"{output.option} {path}"
+    if output.foreign is None or not path.exists():
+        return
+    try:
+        reason = output.foreign(path)  # may refuse whatever force says
+    except OSError as error:
+        raise OutputRefused(f"{where}: cannot be read ({error.strerror or error})") from None
+    if reason and not force:
+        raise OutputRefused(f"{where}: {reason}; give --force to replace it")
+
+
+def _identity(path) -> tuple:
+    """What two names of one file share: the device and inode of a file that
+    exists (links and hard links alike), else the resolved path."""
+    try:
+        found = os.stat(path)
+    except OSError:
+        return ("path", os.path.normcase(os.path.realpath(path)))
+    return ("file", found.st_dev, found.st_ino)

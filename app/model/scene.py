@@ -473,6 +473,18 @@ def _bookmarks(bookmarks) -> list:
 
 # ------------------------------------------------------------------ writing
 def save(scene: Scene, path: str | os.PathLike) -> None:
-    """Write the scene atomically: the old file survives any failure."""
-    text = json.dumps(scene.to_json(), indent=2, allow_nan=False) + "\n"
-    write_atomically(Path(path), text.encode("utf-8"), SceneError)
+    """Write the scene atomically: the old file survives any failure.
+
+    Never a file ``load`` refuses: a scene whose indented text would be
+    over MAX_FILE_BYTES is written without indentation, and one that is
+    over even so is refused (SceneError) with the old file left as it was."""
+    data = scene.to_json()
+    text = json.dumps(data, indent=2, allow_nan=False) + "\n"
+    if len(text.encode("utf-8")) > MAX_FILE_BYTES:
+        text = json.dumps(data, separators=(",", ":"), allow_nan=False) + "\n"
+    encoded = text.encode("utf-8")
+    if len(encoded) > MAX_FILE_BYTES:
+        raise SceneError(f"{path}: the scene would take {len(encoded):,} bytes, more than the "
+                         f"{MAX_FILE_BYTES:,} a scene file may hold: not saved (shorten its "
+                         "description, bookmarks or points)")
+    write_atomically(Path(path), encoded, SceneError)

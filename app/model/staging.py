@@ -17,6 +17,7 @@ import json
 import os
 import re
 import shutil
+import stat
 import sys
 import tempfile
 from pathlib import Path
@@ -127,9 +128,10 @@ class StagedFolder:
         for name in names + remove:
             if Path(name).name != name or name.startswith(self.prefix):
                 raise ValueError(f"not a plain file name: {name!r}")
-        blocked = [name for name in names if (self.target / name).is_dir()]
+        blocked = [name for name in names if _taken(self.target / name)]
         if blocked:  # found now, before anything has moved
-            raise self.error(f"{self.target / blocked[0]} is a folder: cannot put a file there")
+            raise self.error(f"{self.target / blocked[0]} is a folder, link, device or FIFO: "
+                             "files are moved into the folder only over regular files")
         plan = json.dumps({"names": names, "remove": remove}).encode("utf-8")
         try:
             write_atomically(self.stage / JOURNAL, plan, self.error)
@@ -154,3 +156,12 @@ class StagedFolder:
             path = self.target / name
             if path.is_file() and not path.is_symlink():
                 path.unlink()
+
+
+def _taken(path: Path) -> bool:
+    """Whether ``path`` is there and not a regular file: a set of files is
+    renamed into place, which would replace a link or a device itself."""
+    try:
+        return not stat.S_ISREG(os.lstat(path).st_mode)
+    except OSError:
+        return False

@@ -297,7 +297,7 @@ def export(scene, settings: ExportSettings = ExportSettings(), gif=None, frames_
            names: tuple[str, str] = NAMES, trace=None,
            differences: np.ndarray | None = None,
            writers: Sequence[FrameWriter] = (),
-           frames_limit: int = MAX_FRAMES_BYTES) -> ExportResult:
+           frames_limit: int = MAX_FRAMES_BYTES, replace: bool = False) -> ExportResult:
     """Export the scene's run as a GIF at ``gif``, as PNGs in ``frames_dir``,
     into further ``writers``, or any of them together (each frame is drawn
     once). ``trace`` and ``differences`` are as FrameRenderer takes them.
@@ -307,7 +307,8 @@ def export(scene, settings: ExportSettings = ExportSettings(), gif=None, frames_
     leaves nothing behind. Bad settings, sizes and paths raise ExportError;
     ``names`` are what its messages call the range's ends. PNG frames
     estimated to take more than ``frames_limit`` bytes are refused before
-    anything is written.
+    anything is written. ``replace``: frames the folder's manifest does not
+    list (a user's own) may be replaced, else they are refused.
     """
     if gif is None and frames_dir is None and not writers:
         raise ExportError("nothing to write: give a GIF file, a folder for frames, or both")
@@ -319,7 +320,7 @@ def export(scene, settings: ExportSettings = ExportSettings(), gif=None, frames_
         check_frames_size(renderer, steps, frames_limit)
     durations = frame_durations(len(steps), settings.fps, settings.hold)
     outputs = ([GifWriter(gif, durations, settings.loop)] if gif is not None else []) \
-        + ([PngFolderWriter(frames_dir)] if frames_dir is not None else []) + list(writers)
+        + ([PngFolderWriter(frames_dir, replace)] if frames_dir is not None else []) + list(writers)
     try:
         with saving(outputs, renderer.size, len(steps), renderer.palette_bytes,
                     renderer.colours.transparent):

@@ -10,7 +10,9 @@ from typing import NamedTuple
 
 from app.model.escape import latex_file_name
 from app.model.files import write_atomically
+from app.model.files import Output, check_outputs, not_ours, write_atomically
 from app.render.settings import ExportError
+from app.render.writers import foreign_frames
 
 
 class Outputs(NamedTuple):
@@ -24,7 +26,24 @@ class Outputs(NamedTuple):
     pdf: str | None = None
     beamer: str | None = None
     html: str | None = None
-    force: bool = False  # a page over its size budget is written all the same
+    # Replace files RasterLab did not write, and write a page over its size budget.
+    force: bool = False
+
+
+def check(args, scene, scene_path=None) -> None:
+    """The output policy (``app.model.files.check_outputs``) for the outputs
+    ``args`` names, the scene file ``scene_path`` and a texture file the
+    scene reads being the inputs; OutputRefused before any work."""
+    files = [("--gif", args.gif, "gif"), ("--mp4", args.mp4, "mp4"),
+             ("--webm", args.webm, "webm"), ("--pdf", args.pdf, "pdf"),
+             ("--beamer", args.beamer, "tex"), ("--html", args.html, "html")]
+    folders = [("--frames-dir", args.frames_dir, ".png"), ("--svg-dir", args.svg_dir, ".svg")]
+    outputs = [Output(option, path, foreign=not_ours(kind)) for option, path, kind in files] \
+        + [Output(option, path, folder=True, foreign=foreign_frames(suffix))
+           for option, path, suffix in folders]
+    texture = scene.options.get("texture")
+    texture = texture if isinstance(texture, str) and os.path.isfile(texture) else None
+    check_outputs(outputs, [scene_path, texture], args.force)
 
 
 def export_all(args, scene, settings, frames_limit: int, progress=None, cancelled=None,
@@ -41,7 +60,7 @@ def export_all(args, scene, settings, frames_limit: int, progress=None, cancelle
         result = exporting.export(scene, settings, gif=args.gif, frames_dir=args.frames_dir,
                                   progress=progress, cancelled=cancelled, names=names,
                                   frames_limit=frames_limit, writers=more, trace=trace,
-                                  differences=differences)
+                                  differences=differences, replace=args.force)
         finish(args, scene, more)
     page = write_html(args, scene, settings, trace) if args.html is not None else None
     return result, page
@@ -75,7 +94,8 @@ def writers(args, settings, scene) -> list:
     if args.svg_dir is not None or args.pdf is not None:
         from app.render.vector import PdfWriter, SvgFolderWriter
         only = bookmark_steps(scene) if getattr(args, "pages", "frames") == "bookmarks" else None
-        out += [SvgFolderWriter(args.svg_dir, only)] if args.svg_dir is not None else []
+        out += [SvgFolderWriter(args.svg_dir, only, args.force)] if args.svg_dir is not None \
+            else []
         out += [PdfWriter(args.pdf, only)] if args.pdf is not None else []
     return out
 

@@ -27,6 +27,7 @@ from app.render.frame import frame_marks, key_values, step_caption
 from app.render.reasoning import step_guides
 from app.render.settings import ExportError
 from app.render.text import font_path
+from app.model.files import target_of
 from app.render.writers import PngFolderWriter, temporary_beside
 
 CELL = 20        # units per cell
@@ -280,8 +281,10 @@ class SvgFolderWriter(PngFolderWriter):
     place together as the PNG frames are (see PngFolderWriter). With
     ``only``, just the frames of those steps (the scene's bookmarks, say)."""
 
-    def __init__(self, directory, only=None):
-        super().__init__(directory)
+    SUFFIX = ".svg"
+
+    def __init__(self, directory, only=None, replace: bool = False):
+        super().__init__(directory, replace)
         self.only = None if only is None else set(only)
 
     def grab_step(self, renderer, index: int) -> None:
@@ -308,7 +311,8 @@ class PdfWriter:
 
     def setup(self, size, count, palette, transparent) -> None:
         self.pdf = _new_pdf()
-        self.temporary = temporary_beside(self.path)
+        self.target = target_of(self.path, ExportError)
+        self.temporary = temporary_beside(self.target)
 
     def grab_step(self, renderer, index: int) -> None:
         if self.only is not None and index not in self.only:
@@ -319,7 +323,7 @@ class PdfWriter:
     def finish(self) -> None:
         try:
             self.pdf.output(str(self.temporary))
-            os.replace(self.temporary, self.path)
+            os.replace(self.temporary, self.target)
         except OSError as error:
             self.abort()
             raise ExportError(f"cannot write {self.path} ({error.strerror or error})") from None

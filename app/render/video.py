@@ -26,6 +26,7 @@ from pathlib import Path
 import numpy as np
 
 from app.render.settings import ExportError
+from app.model.files import target_of
 from app.render.writers import temporary_beside
 
 # (container, codec, options) per kind. CRF 18 keeps the flat cells and thin
@@ -61,7 +62,8 @@ class VideoWriter:
             raise ExportError(f"frames of {size[0]}x{size[1]} pixels are too large for a video "
                               f"slides can play (at most {MAX_SIDE} pixels a side and "
                               f"{MAX_AREA:,} pixels): export at a smaller scale")
-        self.temporary = temporary_beside(self.path)
+        self.target = target_of(self.path, ExportError)
+        self.temporary = temporary_beside(self.target)
         self.size = (width, height)
         self._background = np.frombuffer(palette[:3], np.uint8) if palette else np.zeros(3, np.uint8)
         container, codec, options = KINDS[self.kind]
@@ -90,7 +92,7 @@ class VideoWriter:
             self._mux(self._stream.encode(None))
             self._container.close()
             self._container = None
-            os.replace(self.temporary, self.path)
+            os.replace(self.temporary, self.target)
         except (OSError, self._av.error.FFmpegError) as error:
             self.abort()
             raise ExportError(f"cannot write {self.path} ({_reason(error)})") from None

@@ -29,6 +29,7 @@ from typing import Iterator, Protocol, Sequence
 import numpy as np
 from PIL import Image
 
+from app.model.files import OutputRefused, target_of
 from app.model.staging import StagedFolder, owner_pid, process_alive
 from app.render.gif_stream import GifStream
 from app.render.settings import ExportError
@@ -94,7 +95,8 @@ class GifWriter:
         self._count = 0
 
     def setup(self, size, count, palette, transparent) -> None:
-        self.temporary = temporary_beside(self.path)
+        self.target = target_of(self.path, ExportError)  # a link stays; its target is written
+        self.temporary = temporary_beside(self.target)
         try:
             self._file = open(self.temporary, "wb")
             self._gif = GifStream(self._file, size, palette, transparent, self.loop)
@@ -115,7 +117,7 @@ class GifWriter:
             self._file.flush()
             os.fsync(self._file.fileno())
             self._file.close()
-            os.replace(self.temporary, self.path)
+            os.replace(self.temporary, self.target)
         except OSError as error:
             raise self._failed(error) from None
 
@@ -137,11 +139,17 @@ class PngFolderWriter:
 
     The folder's manifest (MANIFEST) lists the frames the last export
     wrote; frames of that export beyond this one's last are removed, and
-    nothing else: files the program did not write stay.
+    nothing else: files the program did not write stay. A frame this export
+    would write over that the manifest does not list (a user's own) is
+    refused before any frame is drawn (``foreign_frames``) unless
+    ``replace``.
     """
 
-    def __init__(self, directory):
+    SUFFIX = ".png"
+
+    def __init__(self, directory, replace: bool = False):
         self.directory = Path(directory)
+        self.replace = replace
         self.names: list[str] = []
         self.created = False
         self.staged: StagedFolder | None = None
@@ -162,6 +170,14 @@ class PngFolderWriter:
                 raise ExportError(f"cannot make the folder {self.directory} in {parent} "
                                   f"({error.strerror or error})") from None
             self.created = True
+        names = [FRAME_NAME.format(k, width=self.width).replace(".png", self.SUFFIX)
+                 for k in range(count)]
+        try:
+            foreign = foreign_frames(self.SUFFIX, names)(self.directory)
+        except OutputRefused as error:
+            raise ExportError(str(error)) from None
+        if foreign and not self.replace:
+            raise ExportError(f"{self.directory}: {foreign}; give --force to replace it")
         self.staged = StagedFolder(self.directory, "frames", ExportError)
         self.staged.open()
 
@@ -194,6 +210,32 @@ class PngFolderWriter:
     def _failed(self, error: OSError) -> ExportError:
         return ExportError(f"cannot write the frames in the folder {self.directory} "
                            f"({error.strerror or error})")
+
+
+def foreign_frames(suffix: str, names=None):
+    """``app.model.files.Output.foreign`` for a frames folder of ``suffix``
+    (.png, .svg): the first of ``names`` (the frames an export writes;
+    None: not known yet) that is there and that the folder's manifest does
+    not list, as a reason. A frame name that is a link or not a regular
+    file is refused whatever ``--force`` says (OutputRefused): frames are
+    moved into place as a set, never written through a link."""
+    def foreign(directory: Path) -> str | None:
+        directory = Path(directory)
+        if not directory.is_dir():
+            return None
+        with os.scandir(directory) as entries:
+            found = {entry.name: entry.is_file(follow_symlinks=False) for entry in entries
+                     if _FRAME_FILE.match(entry.name) and entry.name.endswith(suffix)}
+        for name in sorted(found):
+            if not found[name]:
+                raise OutputRefused(f"{directory / name}: is a link or not a regular file; "
+                                    "frames are written only over regular files")
+        ours = set(written_frames(directory))
+        for name in names or ():
+            if name in found and name not in ours:
+                return f"{name} was not written by RasterLab"
+        return None
+    return foreign
 
 
 def written_frames(directory: Path) -> list[str]:
@@ -248,12 +290,10 @@ def remove_leftovers(path: Path) -> list[Path]:
 def temporary_beside(path: Path) -> Path:
     """A new empty temporary file beside ``path`` (named so that
     ``remove_leftovers`` finds it once its process is gone), after removing
-    what killed exports to ``path`` left; refused when ``path`` is a folder
-    or its folder cannot be written."""
-    path = Path(path)
+    what killed exports to ``path`` left; refused when ``path`` is not a
+    regular file (``target_of``) or its folder cannot be written."""
+    path = target_of(path, ExportError)
     directory = _folder_of(path)
-    if path.is_dir():
-        raise ExportError(f"{path}: is a folder, not a file name")
     remove_leftovers(path)
     try:
         handle, name = tempfile.mkstemp(prefix=f".{path.name}.{os.getpid()}.", suffix=".tmp",

@@ -152,10 +152,30 @@ def grid_png(sheet: Worksheet, answers: bool, cell: int = 24) -> bytes:
     return out.getvalue()
 
 
+def file_names(fmt: str) -> list[str]:
+    """The names ``write`` gives the files of format ``fmt`` in its folder."""
+    grids = ["worksheet-grid.png", "answers-grid.png"] if fmt == "md" else []
+    return [f"worksheet.{fmt}", f"answers.{fmt}"] + grids
+
+
 def write(sheet: Worksheet, folder, fmt: str, pdf_writer=None) -> list[Path]:
-    """Write the worksheet and its answer key into ``folder``; the files written."""
+    """Write the worksheet and its answer key into ``folder``; the files
+    written. A write that fails removes the folders it made."""
     folder = Path(folder)
+    made = [parent for parent in [folder, *folder.parents] if not parent.exists()]
     folder.mkdir(parents=True, exist_ok=True)
+    try:
+        return _write_files(sheet, folder, fmt, pdf_writer)
+    except BaseException:
+        for parent in made:  # deepest first; a folder that holds anything stays
+            try:
+                parent.rmdir()
+            except OSError:
+                break
+        raise
+
+
+def _write_files(sheet: Worksheet, folder: Path, fmt: str, pdf_writer) -> list[Path]:
     written = []
     for answers, stem in ((False, "worksheet"), (True, "answers")):
         path = folder / f"{stem}.{fmt}"

@@ -243,7 +243,7 @@ def test_an_error_line_keeps_its_glyphs_on_a_code_page():
     assert done.stderr.decode("utf-8").startswith("rasterlab: \u2264d\u1d62\u208a\u2081\u25b6: ")
 
 
-def test_only_streams_that_are_not_utf8_are_reconfigured():
+def test_streams_write_utf8_and_never_raise_on_a_name():
     code_page = io.TextIOWrapper(io.BytesIO(), encoding="cp1252", errors="strict")
     ascii_stream = io.TextIOWrapper(io.BytesIO(), encoding="ascii", errors="backslashreplace")
     utf8 = io.TextIOWrapper(io.BytesIO(), encoding="UTF8")
@@ -252,8 +252,13 @@ def test_only_streams_that_are_not_utf8_are_reconfigured():
         stream.write("\u2264 d\u1d62\u208a\u2081 \u25b6")
         stream.flush()
         assert stream.buffer.getvalue() == "\u2264 d\u1d62\u208a\u2081 \u25b6".encode("utf-8")
-    assert (code_page.errors, ascii_stream.errors) == ("strict", "backslashreplace")
+    # strict becomes backslashreplace: a lone surrogate (os.fsdecode of a
+    # byte that is not UTF-8) is written as text instead of raising
+    assert (code_page.errors, ascii_stream.errors, utf8.errors) == ("backslashreplace",) * 3
     assert utf8.encoding == "UTF8"  # left as it was
+    utf8.write("\udcff.gif")
+    utf8.flush()
+    assert utf8.buffer.getvalue() == b"\\udcff.gif"
 
 
 # ------------------------------------------------------------------------- fonts

@@ -174,7 +174,7 @@ def old_folder(tmp_path):
     old_export(folder, 5)
     (folder / "notes.txt").write_text("keep")
     gif = tmp_path / "out.gif"
-    gif.write_bytes(b"old gif")
+    gif.write_bytes(b"GIF89a old")  # a GIF an earlier export wrote
     scene_path = tmp_path / "scene.json"
     save(line_scene(), scene_path)
     before = {name: (folder / name).read_bytes() for name in frames_in(folder)}
@@ -188,7 +188,7 @@ def test_a_kill_while_drawing_keeps_the_old_export_and_the_next_run_cleans_up(
     assert killed_export(tmp_path, "frames", how, scene_path, folder, gif) == -how
     # The old frames are untouched; the debris is there until the next run.
     assert {name: (folder / name).read_bytes() for name in frames_in(folder)} == before
-    assert gif.read_bytes() == b"old gif"
+    assert gif.read_bytes() == b"GIF89a old"
     assert list(folder.glob(".rasterlab-frames-*"))
     assert list(tmp_path.glob(".out.gif.*.tmp"))
     result = ex.export(line_scene(), ex.ExportSettings(scale=2), gif=gif, frames_dir=folder)
@@ -229,7 +229,7 @@ def test_cleaning_up_follows_no_link_and_a_folder_in_the_way_stops_before_moving
     folder.mkdir()
     (folder / ".rasterlab-frames-999999999-x").symlink_to(elsewhere)
     (folder / "frame_0001.png").mkdir()
-    with pytest.raises(ex.ExportError, match="frame_0001.png is a folder"):
+    with pytest.raises(ex.ExportError, match="frame_0001.png: is a link or not a regular file"):
         ex.export(line_scene(), ex.ExportSettings(scale=2, first=0, last=2), frames_dir=folder)
     assert (elsewhere / "precious.txt").read_text() == "keep"
     assert not (folder / "precious.txt").exists()
