@@ -9,7 +9,6 @@ from pathlib import Path
 from typing import NamedTuple
 
 from app.model.escape import latex_file_name
-from app.model.files import write_atomically
 from app.model.files import Output, check_outputs, not_ours, write_atomically
 from app.render.settings import ExportError
 from app.render.writers import foreign_frames
