@@ -16,7 +16,8 @@ OPTIONS = BASE_OPTIONS + (
     Option("w", "numbers", (), "a clip-space w per vertex (or three, shared), all > 0; "
            "none: w = 1 everywhere"),
     Option("texture", "text", "checker:8", "checker:N (N squares per unit of uv, N a power of "
-           "two up to 32), zoneplate (rings that alias), or a PNG file (sides powers of two)",
+           "two up to 32), zoneplate (rings that alias), or a PNG file (sides powers of two up to "
+           "1024; in a scene file, a path from the scene's folder)",
            choices=texels.BUILTIN),
     Option("perspective", "bool", True, "interpolate u/w, v/w and 1/w and divide "
            "(perspective-correct); off: interpolate u and v in screen space (affine)"),

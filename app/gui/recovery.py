@@ -285,7 +285,7 @@ class Recovery(QObject):
         if answer != RESTORE:
             return False
         try:
-            scene = scenes.load(item.path)
+            scene = scenes.load(item.path, confine=False)  # written by this program
             self.files.apply_scene(scene)
         except (SceneError, InputError) as error:
             aside = set_aside(item.path)

@@ -16,11 +16,12 @@ import reprlib
 import stat
 from dataclasses import dataclass, field
 from functools import cached_property
-from pathlib import Path
+from pathlib import Path, PurePosixPath, PureWindowsPath
 
 from algorithms.core import registry
 from algorithms.core.raster import MAX_GRID
 from algorithms.core.registry import InputError
+from algorithms.textures import texels
 
 from app.model import shipped as shipped_data
 from app.model.files import write_atomically
@@ -32,6 +33,7 @@ MAX_FILE_BYTES = 8 * 2 ** 20
 MAX_POINTS = 100_000
 RESOURCES = shipped_data.ROOT
 SHIPPED = shipped_data.SCENES
+TEXTURES = shipped_data.TEXTURES
 MAX_MESSAGE = 300  # characters; a message quoting a huge value is cut here
 # Whole numbers in a scene file have at most this many digits: every field
 # is far smaller, and longer ones cannot even become a float to be checked.
@@ -249,8 +251,14 @@ def shipped(folder: Path = SHIPPED) -> list[tuple[Path, Scene]]:
 
 
 # ------------------------------------------------------------------ reading
-def load(path: str | os.PathLike) -> Scene:
-    """Read and check a scene file; SceneError names what is wrong."""
+def load(path: str | os.PathLike, *, confine: bool = True) -> Scene:
+    """Read and check a scene file; SceneError names what is wrong.
+
+    A texture file the scene names is found relative to the scene file's
+    folder, else among the shipped textures, and must lie inside the one it
+    is found in (links resolved): a scene cannot pull in any other picture.
+    ``confine=False`` is for files this program wrote itself (the window's
+    recovery copies), whose textures the person chose anywhere."""
     path = Path(path)
     name = path.name or str(path)
     data = _read_regular_file(path, name)
@@ -259,7 +267,52 @@ def load(path: str | os.PathLike) -> Scene:
         text = data.decode("utf-8-sig")
     except UnicodeDecodeError:
         raise SceneError(f"{name}: not a text file (not UTF-8)") from None
-    return parse(text, name)
+    scene = parse(text, name)
+    texture = _texture_file(scene)
+    if texture is None:
+        return scene
+    try:
+        found = texture_path(texture, path.parent, confine)
+    except SceneError as error:
+        raise SceneError(f"{name}: options.texture: {error}") from None
+    return scene.replace(options={**scene.options, "texture": found})
+
+
+def _texture_file(scene: Scene) -> str | None:
+    """The texture file the scene's options name; None for none or a built-in texture."""
+    text = scene.options.get("texture")
+    return text.strip() if isinstance(text, str) and texels.is_file_name(text) else None
+
+
+def texture_path(text: str, folder: Path, confine: bool = True) -> str:
+    """Where a scene in ``folder`` finds the texture file ``text`` (see ``load``)."""
+    if _absolute(text):
+        if confine:
+            raise SceneError(f"{show(text)} is an absolute path; name a texture file by its "
+                             "path from the scene's folder")
+        return text
+    for base in (folder, TEXTURES):
+        found = os.path.realpath(os.path.join(base, text))
+        if _within(found, base) and os.path.exists(found):
+            return found
+    if confine and not _within(os.path.realpath(os.path.join(folder, text)), folder):
+        raise SceneError(f"{show(text)} lies outside the scene's folder; put the texture "
+                         "beside the scene")
+    return os.path.join(os.path.realpath(folder), text)  # missing: reading it says so
+
+
+def _absolute(text: str) -> bool:
+    # Either system's form, whichever runs: C:\x and \\server\x are paths on Windows.
+    windows = PureWindowsPath(text)
+    return PurePosixPath(text).is_absolute() or bool(windows.drive or windows.root)
+
+
+def _within(path: str, folder: Path) -> bool:
+    folder = os.path.normcase(os.path.realpath(folder))
+    try:
+        return os.path.commonpath([os.path.normcase(path), folder]) == folder
+    except ValueError:  # on another drive (Windows)
+        return False
 
 
 def _read_regular_file(path: Path, name: str) -> bytes:
@@ -477,8 +530,10 @@ def save(scene: Scene, path: str | os.PathLike) -> None:
 
     Never a file ``load`` refuses: a scene whose indented text would be
     over MAX_FILE_BYTES is written without indentation, and one that is
-    over even so is refused (SceneError) with the old file left as it was."""
-    data = scene.to_json()
+    over even so is refused (SceneError) with the old file left as it was.
+    A texture file inside the scene's folder or among the shipped textures
+    is written as its path from there, which ``load`` finds again."""
+    data = _relative_texture(scene, Path(path).parent).to_json()
     text = json.dumps(data, indent=2, allow_nan=False) + "\n"
     if len(text.encode("utf-8")) > MAX_FILE_BYTES:
         text = json.dumps(data, separators=(",", ":"), allow_nan=False) + "\n"
@@ -488,3 +543,15 @@ def save(scene: Scene, path: str | os.PathLike) -> None:
                          f"{MAX_FILE_BYTES:,} a scene file may hold: not saved (shorten its "
                          "description, bookmarks or points)")
     write_atomically(Path(path), encoded, SceneError)
+
+
+def _relative_texture(scene: Scene, folder: Path) -> Scene:
+    texture = _texture_file(scene)
+    if texture is None or not os.path.isabs(texture):
+        return scene
+    found = os.path.realpath(texture)
+    for base in (folder, TEXTURES):
+        if _within(found, base):
+            relative = Path(os.path.relpath(found, os.path.realpath(base))).as_posix()
+            return scene.replace(options={**scene.options, "texture": relative})
+    return scene  # elsewhere: opening the file again refuses it, naming the texture

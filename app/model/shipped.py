@@ -24,6 +24,7 @@ SCENES = ROOT / "scenes"
 FONTS = ROOT / "fonts"
 TEMPLATES = ROOT / "templates"
 STUDENTS = ROOT / "students"
+TEXTURES = ROOT / "textures"
 
 
 def scene_files() -> list[Path]:

@@ -9,6 +9,12 @@ killed before the journal leaves a staging folder without one, which the
 next run for the same folder deletes; killed after it, the next run
 finishes the moves. A staging folder whose process is still alive is left
 alone, so two exports to one folder do not undo each other.
+
+Anyone who can write in the target folder can plant a staging folder, so
+recovery trusts a journal only when it is a regular file carrying this
+program's marker and naming plain file names (no folder, no ``..``, no
+drive): then every move and removal stays inside the target folder. Any
+other journal is left where it is, with one line on stderr.
 """
 from __future__ import annotations
 
@@ -26,6 +32,8 @@ from typing import Iterable
 from app.model.files import write_atomically
 
 JOURNAL = ".commit.json"
+MARKER = {"rasterlab": "staging", "version": 1}  # what every journal of ours carries
+MAX_JOURNAL_BYTES = 16 * 2 ** 20  # far above the names of the largest export
 
 
 def process_alive(pid: int) -> bool:
@@ -102,23 +110,54 @@ class StagedFolder:
 
     def recover(self) -> list[Path]:
         """Finish or delete the staging folders of runs that were killed;
-        returns the ones handled."""
-        handled = []
+        returns the ones handled. One whose journal is not ours or is
+        damaged is left as it is, and said once on stderr."""
+        handled, foreign = [], []
         for leftover in sorted(self.target.glob(self.prefix + "*")):
             pid = owner_pid(leftover.name, self.prefix)
             if (leftover.is_symlink() or not leftover.is_dir()
                     or (pid is not None and process_alive(pid))):
                 continue
             journal = leftover / JOURNAL
-            if journal.is_file():
+            if os.path.lexists(journal):
+                plan = self._plan(journal)
+                if plan is None:
+                    foreign.append(leftover)
+                    continue
                 try:
-                    plan = json.loads(journal.read_text(encoding="utf-8"))
-                    self._move(leftover, plan["names"], plan["remove"])
-                except (OSError, ValueError, KeyError, TypeError):
-                    pass  # a damaged journal: the staged files are dropped below
+                    self._move(leftover, *plan)
+                except OSError:
+                    pass  # a file in the way: dropped below, as later it could undo newer files
             shutil.rmtree(leftover, ignore_errors=True)
             handled.append(leftover)
+        if foreign:
+            print(f"rasterlab: left alone {len(foreign)} staging folder(s) whose journal is "
+                  f"foreign or damaged: {str(foreign[0])!r}", file=sys.stderr)
         return handled
+
+    def _plan(self, journal: Path) -> tuple[list, list] | None:
+        """The names to move and to remove of a journal of ours; None for
+        any other file (not ours, damaged, or naming what it may not)."""
+        try:
+            plan = json.loads(_read_journal(journal).decode("utf-8"))
+        except (OSError, ValueError):
+            return None
+        if not isinstance(plan, dict) or any(plan.get(k) != v for k, v in MARKER.items()):
+            return None
+        names, remove = plan.get("names"), plan.get("remove")
+        if not isinstance(names, list) or not isinstance(remove, list):
+            return None
+        if not all(self._plain(name) for name in names + remove):
+            return None
+        return names, remove
+
+    def _plain(self, name) -> bool:
+        """Whether ``name`` is a file name of the target folder itself: no
+        separator of any system, not ``.`` or ``..``, no drive or stream
+        (``:``), not a staging folder or journal."""
+        return (isinstance(name, str) and name not in ("", ".", "..", JOURNAL)
+                and not any(char in name for char in "/\\:\0")
+                and Path(name).name == name and not name.startswith(self.prefix))
 
     def commit(self, names: Iterable[str], remove: Iterable[str] = ()) -> None:
         """Move ``names`` (files in the staging folder) into the target and
@@ -126,13 +165,13 @@ class StagedFolder:
         next ``open`` or ``recover`` finishes it."""
         names, remove = list(names), [name for name in remove if name not in set(names)]
         for name in names + remove:
-            if Path(name).name != name or name.startswith(self.prefix):
+            if not self._plain(name):
                 raise ValueError(f"not a plain file name: {name!r}")
         blocked = [name for name in names if _taken(self.target / name)]
         if blocked:  # found now, before anything has moved
             raise self.error(f"{self.target / blocked[0]} is a folder, link, device or FIFO: "
                              "files are moved into the folder only over regular files")
-        plan = json.dumps({"names": names, "remove": remove}).encode("utf-8")
+        plan = json.dumps({**MARKER, "names": names, "remove": remove}).encode("utf-8")
         try:
             write_atomically(self.stage / JOURNAL, plan, self.error)
             self._move(self.stage, names, remove)
@@ -165,3 +204,19 @@ def _taken(path: Path) -> bool:
         return not stat.S_ISREG(os.lstat(path).st_mode)
     except OSError:
         return False
+
+
+def _read_journal(path: Path) -> bytes:
+    """A journal's bytes: a regular file (not a link, FIFO or device, which
+    could hang or mislead the read) of at most MAX_JOURNAL_BYTES."""
+    flags = os.O_RDONLY | getattr(os, "O_NONBLOCK", 0) | getattr(os, "O_NOFOLLOW", 0)
+    if os.path.islink(path):
+        raise OSError(f"{path} is a link")
+    handle = os.open(path, flags)
+    try:
+        status = os.fstat(handle)
+        if not stat.S_ISREG(status.st_mode) or status.st_size > MAX_JOURNAL_BYTES:
+            raise OSError(f"{path} is not a journal")
+        return os.read(handle, MAX_JOURNAL_BYTES + 1)
+    finally:
+        os.close(handle)

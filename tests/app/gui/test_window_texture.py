@@ -3,6 +3,7 @@ on the grid, and a bad texture as a message."""
 from __future__ import annotations
 
 import math
+import os
 
 import numpy as np
 import pytest
@@ -10,6 +11,7 @@ import pytest
 from algorithms.core.steps import PLOT
 from app.render.texture_frame import LEVEL_COLOURS
 from tests.support.gui import WAIT_MS
+from tests.support.textures import huge_png
 
 FLOOR = [(0, 0), (24, 0), (13.2, 15), (0, 0), (13.2, 15), (10.8, 15)]
 OPTIONS = {"uv": (0, 0, 2, 0, 2, 9, 0, 0, 2, 9, 0, 9), "w": (1, 1, 10, 1, 10, 10),
@@ -47,7 +49,12 @@ def test_an_unreadable_texture_is_a_message(window, qtbot, tmp_path):
     qtbot.waitUntil(lambda: window.player.trace is not None, timeout=WAIT_MS)
     fake = tmp_path / "fake.png"
     fake.write_text("no picture")
-    for name, words in (("/no/such/texture.png", "cannot read"), (str(fake), "not an image")):
+    cases = [("/no/such/texture.png", "cannot read"), (str(fake), "not an image"),
+             (str(huge_png(tmp_path / "huge.png")), "larger than 1024 x 1024")]
+    if hasattr(os, "mkfifo"):  # a FIFO with no writer: reading it would hang the recording
+        os.mkfifo(tmp_path / "pipe.png")
+        cases.append((str(tmp_path / "pipe.png"), "not a regular file"))
+    for name, words in cases:
         window.open_texture(name)
         qtbot.waitUntil(lambda: words in window._error, timeout=WAIT_MS)
         assert window.player.options["texture"] == "checker:8"
