@@ -96,6 +96,7 @@ def build_parser() -> Parser:
     run.add_argument("--memory-limit", default=None, metavar="SIZE",
                      help="refuse a run whose estimated memory exceeds this (e.g. 512M, 4G; "
                           "default 2G)")
+    add_time_limit(run)
     run.add_argument("--step-cap", type=str, default=str(DEFAULT_STEP_CAP), metavar="N",
                      help=f"stop recording after N steps, 1 .. {MAX_STEP_CAP:,}: the cap bounds the "
                           "memory a run takes (default %(default)s)")
@@ -226,7 +227,8 @@ def command_run(args) -> int:
     _check_save(args, options)
     grid = parse_grid(args.grid) if args.grid is not None else None
     grid = fit_grid(spec.inputs.flat(points), grid, spec.inputs.integer)
-    trace = runs.record(spec, points, options, grid, step_cap, _memory_limit(args))
+    trace = runs.record(spec, points, options, grid, step_cap, _memory_limit(args),
+                        _time_limit(args))
     if args.save is not None:
         from app.model.scene import Scene
         scene = Scene(algorithm=spec.name, points=points, options=options,
@@ -236,9 +238,21 @@ def command_run(args) -> int:
 
 
 def _memory_limit(args) -> int:
-    if args.memory_limit is None:
+    if getattr(args, "memory_limit", None) is None:
         return budget.DEFAULT_MEMORY_LIMIT
     return budget.parse_size(args.memory_limit)
+
+
+def add_time_limit(command) -> None:
+    command.add_argument("--time-limit", default=None, metavar="SECONDS",
+                         help="refuse a run estimated to take longer than this, before it "
+                              f"starts (default {budget.DEFAULT_TIME_LIMIT:g})")
+
+
+def _time_limit(args) -> float:
+    if args.time_limit is None:
+        return budget.DEFAULT_TIME_LIMIT
+    return budget.parse_seconds(args.time_limit)
 
 
 def _missing_algorithm(points) -> str:
@@ -264,7 +278,7 @@ def run_scene(args) -> int:
         raise InputError(str(error)) from None
     _check_save(args, scene.options, scene_path)
     trace = runs.record(scene.spec, scene.points, scene.options, scene.grid, step_cap,
-                        _memory_limit(args))
+                        _memory_limit(args), _time_limit(args))
     if args.save is not None:
         return save_run(args, scene, trace)
     return print_run(args, scene.spec, trace, scene.options)
@@ -445,6 +459,7 @@ def add_export_command(parser, commands) -> None:
     export.add_argument("--memory-limit", metavar="SIZE",
                         help="memory the run may need, e.g. 512M or 4G (default 2G); a larger "
                              "request is refused before it starts")
+    add_time_limit(export)
     export.add_argument("--frames-limit", metavar="SIZE",
                         help="disk space the PNG frames may take (default 1G)")
 
@@ -501,6 +516,7 @@ def command_export(args) -> int:
         grid_lines=not args.no_grid, primitive=not args.no_primitive,
         highlight=not args.no_highlight, caption=args.caption, panel=args.panel,
         theme=args.theme, loop=not args.once, per=args.per, memory_limit=_memory_limit(args),
+        time_limit=_time_limit(args),
         unit=args.unit, reasoning=not args.no_reasoning, text_size=text_size, axes=args.axes,
         vertex_labels=args.vertex_labels, overlays=_overlays(args.overlays))
     frames_limit = (exporting.MAX_FRAMES_BYTES if args.frames_limit is None
@@ -611,11 +627,17 @@ def _is_utf8(encoding: str | None) -> bool:
 
 
 def main(argv: list[str] | None = None) -> int:
-    argv = sys.argv[1:] if argv is None else list(argv)
+    """The command line; ``argv`` None: the program's own (sys.argv), when
+    the process is the command's alone and also gets the address-space
+    backstop of the memory budget (see ``_backstop``)."""
+    own = argv is None
+    argv = sys.argv[1:] if own else list(argv)
     utf8_streams()
     args = argparse.Namespace(command=None)
     try:
         args = build_parser().parse_args(_shield_negative_points(argv))
+        if own and args.command in BUDGETED:
+            _backstop(args)
         if args.command is None:
             _check_display()
             from app.gui import launch
@@ -631,6 +653,13 @@ def main(argv: list[str] | None = None) -> int:
         print(f"rasterlab: the algorithm broke its step protocol: {one_line(str(error))}",
               file=sys.stderr)
         return 1
+    except MemoryError:
+        # the address-space backstop (or the system) refused an allocation
+        # the estimate did not foresee
+        print(f"rasterlab: the run needed more memory than its budget (--memory-limit "
+              f"{budget.size_text(_memory_limit(args))}); give a smaller scene or a lower "
+              "--step-cap", file=sys.stderr)
+        return 2
     except BrokenPipeError:
         sys.stderr.close()  # the reader went away (`| head`); nothing to report
         return 0
@@ -644,6 +673,18 @@ def main(argv: list[str] | None = None) -> int:
         what = f"{args.command} interrupted" if args.command else "interrupted"
         print(f"rasterlab: {what}", file=sys.stderr)
         return 130
+
+
+# The commands that run scenes, held to the address-space backstop.
+BUDGETED = ("run", "export", "report", "worksheet", "check")
+
+
+def _backstop(args) -> None:
+    """Limit the address space a little above the memory budget (app/model/
+    budget.py, limit_address_space). check's own --memory-limit is per case
+    of the student's code, which runs in processes with their own limits."""
+    memory = budget.DEFAULT_MEMORY_LIMIT if args.command == "check" else _memory_limit(args)
+    budget.limit_address_space(memory)
 
 
 def _check_display() -> None:

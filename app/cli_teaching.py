@@ -116,6 +116,12 @@ def add_worksheet_command(parser, commands) -> None:
     sheet.add_argument("--out", required=True, metavar="DIR", help="the folder to write into")
     sheet.add_argument("--format", choices=worksheet.FORMATS, default="pdf",
                        help="pdf, md (with PNG grids), tex (a tabular) or csv (default %(default)s)")
+    sheet.add_argument("--memory-limit", metavar="SIZE",
+                       help="memory the scene's run may need, e.g. 512M (default 2G); a larger "
+                            "request is refused before it starts")
+    sheet.add_argument("--time-limit", default=None, metavar="SECONDS",
+                       help="refuse a run estimated to take longer than this, before it "
+                            "starts (default 120)")
     sheet.add_argument("--blank", default=",".join(worksheet.DEFAULT_BLANK), metavar="COLUMNS",
                        help="columns the student fills in, comma-separated (default %(default)s)")
 
@@ -132,7 +138,12 @@ def command_worksheet(args) -> int:
                   + [Output("--out", out / name) for name in worksheet.file_names(args.format)],
                   [scene_path])
     blank = [name.strip() for name in args.blank.split(",") if name.strip()]
-    sheet = worksheet.build(scene, blank)
+    from app.model import budget
+    memory = budget.DEFAULT_MEMORY_LIMIT if args.memory_limit is None \
+        else budget.parse_size(args.memory_limit)
+    seconds = budget.DEFAULT_TIME_LIMIT if args.time_limit is None \
+        else budget.parse_seconds(args.time_limit)
+    sheet = worksheet.build(scene, blank, memory, seconds)
     pdf_writer = None
     if args.format == "pdf":
         from app.gui.worksheet_pdf import write_pdf

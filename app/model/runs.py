@@ -56,10 +56,12 @@ def _plain(value: float):
 
 
 def record(spec, points, options: dict, grid: tuple[int, int], step_cap: int,
-           memory_limit: int = budget.DEFAULT_MEMORY_LIMIT):
+           memory_limit: int = budget.DEFAULT_MEMORY_LIMIT,
+           time_limit: float = budget.DEFAULT_TIME_LIMIT):
     """The run's trace; a run over the memory or time budget is refused
     (BudgetError, an InputError) before it starts."""
-    budget.check_budget(spec, points, options, grid, step_cap, memory_limit=memory_limit)
+    budget.check_budget(spec, points, options, grid, step_cap, memory_limit=memory_limit,
+                        time_limit=time_limit)
     return spec.record(points, options, grid=grid, step_cap=step_cap)
 
 

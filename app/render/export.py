@@ -55,6 +55,10 @@ MARGIN = 1.25      # the estimate's allowance for frames larger than the samples
 
 
 # ---------------------------------------------------------------- renderer
+def _recorded(scene, settings: ExportSettings):
+    return record(scene, memory_limit=settings.memory_limit, time_limit=settings.time_limit)
+
+
 class FrameRenderer:
     """Draws the exported frames of a scene's run as palette-index arrays.
 
@@ -70,8 +74,7 @@ class FrameRenderer:
                  differences: np.ndarray | None = None, incremental: bool = True):
         self.scene = scene
         self.spec = registry.get(scene.algorithm)
-        self.trace = trace = record(scene, memory_limit=settings.memory_limit) if trace is None \
-            else trace
+        self.trace = trace = _recorded(scene, settings) if trace is None else trace
         self.differences = differences
         self.y_down = scene.origin == "top-left"
         self.settings = settings = settings.for_grid(trace.width, trace.height)
@@ -312,7 +315,7 @@ def export(scene, settings: ExportSettings = ExportSettings(), gif=None, frames_
     """
     if gif is None and frames_dir is None and not writers:
         raise ExportError("nothing to write: give a GIF file, a folder for frames, or both")
-    trace = record(scene, memory_limit=settings.memory_limit) if trace is None else trace
+    trace = _recorded(scene, settings) if trace is None else trace
     settings = settings.for_grid(trace.width, trace.height)
     steps, chosen = chosen_frames(scene, trace, settings, names)
     renderer = FrameRenderer(scene, settings, trace, differences)

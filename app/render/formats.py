@@ -143,7 +143,8 @@ def write_html(args, scene, settings, trace=None) -> Page:
     from app.render.settings import record
 
     if trace is None:
-        trace = record(scene, memory_limit=settings.memory_limit)
+        trace = record(scene, memory_limit=settings.memory_limit,
+                       time_limit=settings.time_limit)
     size = write_page(scene, trace, args.html, settings.for_grid(trace.width, trace.height),
                       force=args.force)
     return Page(len(trace), size)

@@ -21,7 +21,7 @@ from algorithms.antialias import animation_frame_steps
 from algorithms.core.registry import InputError
 from algorithms.core.trace import DEFAULT_STEP_CAP
 
-from app.model.budget import DEFAULT_MEMORY_LIMIT, check_budget
+from app.model.budget import DEFAULT_MEMORY_LIMIT, DEFAULT_TIME_LIMIT, check_budget
 from app.model.scene import one_line
 from app.render.overlays import OVERLAYS
 from app.render.palette import THEMES
@@ -79,6 +79,7 @@ class ExportSettings:
     unit: str = "auto"       # one of units.UNITS: what a frame stands for
     text_size: int | None = None  # pixels of the caption's text; None: text_pixels()
     memory_limit: int = DEFAULT_MEMORY_LIMIT  # bytes the run may need (app/model/budget.py)
+    time_limit: float = DEFAULT_TIME_LIMIT  # seconds the run may take, as estimated
     overlays: tuple = ()     # names from app/render/overlays.py's OVERLAYS
 
     def checked(self) -> "ExportSettings":
@@ -145,13 +146,14 @@ def frame_durations(count: int, fps: float, hold: float = 0.0) -> list[int]:
 
 
 # ------------------------------------------------------------------ steps
-def record(scene, step_cap: int = DEFAULT_STEP_CAP, memory_limit: int = DEFAULT_MEMORY_LIMIT):
+def record(scene, step_cap: int = DEFAULT_STEP_CAP, memory_limit: int = DEFAULT_MEMORY_LIMIT,
+           time_limit: float = DEFAULT_TIME_LIMIT):
     """The scene's run, recorded: the trace an export draws. A run over the
     memory or time budget is refused before it starts."""
     spec = registry.get(scene.algorithm)
     try:
         check_budget(spec, scene.points, scene.options, (scene.width, scene.height), step_cap,
-                     memory_limit=memory_limit)
+                     memory_limit=memory_limit, time_limit=time_limit)
         return spec.record(scene.points, scene.options, grid=(scene.width, scene.height),
                            step_cap=step_cap)
     except InputError as error:

@@ -18,11 +18,13 @@ from pathlib import Path
 from algorithms.core import cases as catalogue
 from algorithms.core import registry
 from algorithms.core.errors import InputError
+from algorithms.core.trace import DEFAULT_STEP_CAP
 from algorithms.exact import circles as exact_circles
 from algorithms.exact import lines as exact_lines
 from algorithms.exact import polygons as exact_polygons
 from algorithms.exact import triangles as exact_triangles
 
+from app.model import budget
 from app.teaching import check_families as families
 from app.teaching.student import Limits, Outcome, run_student
 
@@ -242,7 +244,10 @@ def scene_case(spec, kind: str, path: str) -> Case:
 # --------------------------------------------------------------- comparing
 def reference_steps(spec, case: Case) -> list:
     """(x, y, {variables}) per pixel the reference writes, in order."""
-    trace = spec.record(case.points, case.options, grid=ORACLE_GRID)
+    # the reference's own run is held to the default budget (a case's scene
+    # may be any size); over it, the check is refused before it starts
+    budget.check_budget(spec, case.points, case.options, ORACLE_GRID, DEFAULT_STEP_CAP)
+    trace = spec.record(case.points, case.options, grid=ORACLE_GRID, step_cap=DEFAULT_STEP_CAP)
     if kind_of(spec) in families.SIGNATURES:
         return families.reference(spec, trace, kind_of(spec))
     writes = trace.written()
