@@ -5,6 +5,7 @@ Bad input of any kind ends with exit status 2 and one line on stderr.
 from __future__ import annotations
 
 import argparse
+import dataclasses
 import codecs
 import json
 import os
@@ -19,7 +20,7 @@ from app import cli_teaching
 from app.model import budget, runs
 from app.model.files import Output, OutputRefused, check_outputs
 from app.model.runs import DEFAULT_GRID, Rows, check_grid, fit_grid, run_result, save_new
-from app.progress import TerminalBar
+from app.progress import TerminalBar, recording_bar
 from app.model.scene import one_line
 from app.model.version import app_version
 
@@ -227,8 +228,7 @@ def command_run(args) -> int:
     _check_save(args, options)
     grid = parse_grid(args.grid) if args.grid is not None else None
     grid = fit_grid(spec.inputs.flat(points), grid, spec.inputs.integer)
-    trace = runs.record(spec, points, options, grid, step_cap, _memory_limit(args),
-                        _time_limit(args))
+    trace = _record(spec, points, options, grid, step_cap, args)
     if args.save is not None:
         from app.model.scene import Scene
         scene = Scene(algorithm=spec.name, points=points, options=options,
@@ -277,11 +277,20 @@ def run_scene(args) -> int:
     except scenes.SceneError as error:
         raise InputError(str(error)) from None
     _check_save(args, scene.options, scene_path)
-    trace = runs.record(scene.spec, scene.points, scene.options, scene.grid, step_cap,
-                        _memory_limit(args), _time_limit(args))
+    trace = _record(scene.spec, scene.points, scene.options, scene.grid, step_cap, args)
     if args.save is not None:
         return save_run(args, scene, trace)
     return print_run(args, scene.spec, trace, scene.options)
+
+
+def _record(spec, points, options, grid, step_cap: int, args):
+    """The run recorded within the command's budgets, its progress on a terminal."""
+    bar = recording_bar(spec, points, options, grid, step_cap)
+    try:
+        return runs.record(spec, points, options, grid, step_cap, _memory_limit(args),
+                           _time_limit(args), bar if bar.active else None)
+    finally:
+        bar.clear()
 
 
 def _check_save(args, options, scene_path=None) -> None:
@@ -519,6 +528,9 @@ def command_export(args) -> int:
         time_limit=_time_limit(args),
         unit=args.unit, reasoning=not args.no_reasoning, text_size=text_size, axes=args.axes,
         vertex_labels=args.vertex_labels, overlays=_overlays(args.overlays))
+    recording = recording_bar(scene.spec, scene.points, scene.options, scene.grid)
+    if recording.active:
+        settings = dataclasses.replace(settings, recording=recording)
     frames_limit = (exporting.MAX_FRAMES_BYTES if args.frames_limit is None
                     else budget.parse_size(args.frames_limit, "--frames-limit"))
     bar = _ProgressBar(sys.stderr)
@@ -526,8 +538,11 @@ def command_export(args) -> int:
     def work():
         return formats.export_all(args, scene, settings, frames_limit,
                                   bar.show if bar.active else None)
-    done = _with_progress(bar, work, exporting.ExportError,
-                          "export interrupted; nothing was written")
+    try:
+        done = _with_progress(bar, work, exporting.ExportError,
+                              "export interrupted; nothing was written")
+    finally:
+        recording.clear()
     if done is None:
         return 130
     for line in formats.summary(args, *done):

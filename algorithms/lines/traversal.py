@@ -125,6 +125,17 @@ def _axis(a0, a1):
     return cell, step, (boundary - a0) / (a1 - a0), 1 / abs(a1 - a0)
 
 
+def _shown(t) -> float:
+    """An exact tMax as the panel shows it: NaN for an axis never crossed,
+    infinity for one beyond any float (a sub-normal step along the axis)."""
+    if t is None:
+        return math.nan
+    try:
+        return float(t)
+    except OverflowError:
+        return math.inf
+
+
 def woo(points, options):
     """Amanatides and Woo's traversal: always cross the nearer grid line.
     Each frame carries tMaxX and tMaxY, the t of the next crossings (NaN on
@@ -138,7 +149,7 @@ def woo(points, options):
                 constants={"steps": count, "stepX": sx, "stepY": sy})
 
     def values():
-        return (math.nan if tx is None else float(tx), math.nan if ty is None else float(ty))
+        return _shown(tx), _shown(ty)
 
     yield (at["plot_first"], cx, cy, *values())
     end_x, end_y = _floor(x1), _floor(y1)

@@ -10,6 +10,7 @@ from __future__ import annotations
 import math
 from pathlib import Path
 
+from algorithms.core.monitor import RecordMonitor
 from algorithms.core.raster import MAX_GRID
 from algorithms.core.registry import InputError
 
@@ -57,12 +58,15 @@ def _plain(value: float):
 
 def record(spec, points, options: dict, grid: tuple[int, int], step_cap: int,
            memory_limit: int = budget.DEFAULT_MEMORY_LIMIT,
-           time_limit: float = budget.DEFAULT_TIME_LIMIT):
+           time_limit: float = budget.DEFAULT_TIME_LIMIT, progress=None):
     """The run's trace; a run over the memory or time budget is refused
-    (BudgetError, an InputError) before it starts."""
+    (BudgetError, an InputError) before it starts. ``progress`` (if given)
+    is called with the steps recorded so far, every RecordMonitor chunk."""
     budget.check_budget(spec, points, options, grid, step_cap, memory_limit=memory_limit,
                         time_limit=time_limit)
-    return spec.record(points, options, grid=grid, step_cap=step_cap)
+    monitor = None if progress is None else RecordMonitor(progress)
+    return spec.record(points, options, grid=grid, step_cap=step_cap, monitor=monitor)
+
 
 
 def save_new(scene, path, replace: bool, hint: str) -> None:

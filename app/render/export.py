@@ -56,7 +56,8 @@ MARGIN = 1.25      # the estimate's allowance for frames larger than the samples
 
 # ---------------------------------------------------------------- renderer
 def _recorded(scene, settings: ExportSettings):
-    return record(scene, memory_limit=settings.memory_limit, time_limit=settings.time_limit)
+    return record(scene, memory_limit=settings.memory_limit, time_limit=settings.time_limit,
+                  progress=settings.recording)
 
 
 class FrameRenderer:

@@ -144,7 +144,7 @@ def write_html(args, scene, settings, trace=None) -> Page:
 
     if trace is None:
         trace = record(scene, memory_limit=settings.memory_limit,
-                       time_limit=settings.time_limit)
+                       time_limit=settings.time_limit, progress=settings.recording)
     size = write_page(scene, trace, args.html, settings.for_grid(trace.width, trace.height),
                       force=args.force)
     return Page(len(trace), size)

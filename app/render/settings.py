@@ -12,7 +12,7 @@ viewers slow down frames shorter than 20 ms.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, replace
+from dataclasses import dataclass, field, replace
 
 import numpy as np
 
@@ -21,7 +21,8 @@ from algorithms.antialias import animation_frame_steps
 from algorithms.core.registry import InputError
 from algorithms.core.trace import DEFAULT_STEP_CAP
 
-from app.model.budget import DEFAULT_MEMORY_LIMIT, DEFAULT_TIME_LIMIT, check_budget
+from app.model import runs
+from app.model.budget import DEFAULT_MEMORY_LIMIT, DEFAULT_TIME_LIMIT
 from app.model.scene import one_line
 from app.render.overlays import OVERLAYS
 from app.render.palette import THEMES
@@ -81,6 +82,9 @@ class ExportSettings:
     memory_limit: int = DEFAULT_MEMORY_LIMIT  # bytes the run may need (app/model/budget.py)
     time_limit: float = DEFAULT_TIME_LIMIT  # seconds the run may take, as estimated
     overlays: tuple = ()     # names from app/render/overlays.py's OVERLAYS
+    # Called with the steps recorded so far while the run is recorded (the
+    # command line's terminal bar); not a setting of the picture.
+    recording: object = field(default=None, compare=False, repr=False)
 
     def checked(self) -> "ExportSettings":
         fps = _real(self.fps, "frames per second")
@@ -147,15 +151,14 @@ def frame_durations(count: int, fps: float, hold: float = 0.0) -> list[int]:
 
 # ------------------------------------------------------------------ steps
 def record(scene, step_cap: int = DEFAULT_STEP_CAP, memory_limit: int = DEFAULT_MEMORY_LIMIT,
-           time_limit: float = DEFAULT_TIME_LIMIT):
+           time_limit: float = DEFAULT_TIME_LIMIT, progress=None):
     """The scene's run, recorded: the trace an export draws. A run over the
-    memory or time budget is refused before it starts."""
+    memory or time budget is refused before it starts. ``progress`` hears
+    the recording's steps."""
     spec = registry.get(scene.algorithm)
     try:
-        check_budget(spec, scene.points, scene.options, (scene.width, scene.height), step_cap,
-                     memory_limit=memory_limit, time_limit=time_limit)
-        return spec.record(scene.points, scene.options, grid=(scene.width, scene.height),
-                           step_cap=step_cap)
+        return runs.record(spec, scene.points, scene.options, (scene.width, scene.height),
+                           step_cap, memory_limit, time_limit, progress)
     except InputError as error:
         raise ExportError(f"the scene cannot run: {error}") from None
 

@@ -19,7 +19,7 @@ from algorithms.core.errors import InputError
 from algorithms.core.steps import Span
 from algorithms.core.trace import DEFAULT_STEP_CAP
 
-from app.model import budget
+from app.model import budget, runs
 from app.model.escape import csv_row, latex_comment, latex_text, markdown_text
 from app.model.files import write_atomically
 from app.model.geometry import scene_paths
@@ -65,14 +65,12 @@ def worked_steps(trace, limit: int | None = None) -> list[int]:
 
 
 def build(scene, blank=None, memory_limit: int = budget.DEFAULT_MEMORY_LIMIT,
-          time_limit: float = budget.DEFAULT_TIME_LIMIT) -> Worksheet:
+          time_limit: float = budget.DEFAULT_TIME_LIMIT, progress=None) -> Worksheet:
     """The worksheet of the scene's run; a run over the budget is refused
-    (BudgetError) before it starts."""
+    (BudgetError) before it starts. ``progress`` hears the recording's steps."""
     spec = scene.spec
-    grid = (scene.width, scene.height)
-    budget.check_budget(spec, scene.points, scene.options, grid, DEFAULT_STEP_CAP,
-                        memory_limit=memory_limit, time_limit=time_limit)
-    trace = spec.record(scene.points, scene.options, grid=grid, step_cap=DEFAULT_STEP_CAP)
+    trace = runs.record(spec, scene.points, scene.options, (scene.width, scene.height),
+                        DEFAULT_STEP_CAP, memory_limit, time_limit, progress)
     table = StepTable(trace)
     keys = [c.key for c in table.columns if c.key in FIXED or (
         c.kind == "variable" and c.key not in table.constants)]

@@ -127,3 +127,13 @@ def test_diamond_exit_draws_a_shared_end_pixel_once():
     first, second = set(run("line-diamond-exit", a, b)), set(run("line-diamond-exit", b, c))
     assert (6, 3) in second and (6, 3) not in first
     assert not first & second
+
+
+def test_woo_with_a_subnormal_step_shows_an_infinite_tmax():
+    """1 / 5e-324 is beyond any float: the panel shows infinity, not an OverflowError."""
+    import math
+
+    from algorithms.core import registry
+    trace = registry.get("line-amanatides-woo").record([(0.0, 0.0), (0.0, 5e-324)])
+    assert trace.variables_at(len(trace) - 1)["tMaxY"] == math.inf  # NaN tMaxX is not shown
+    assert trace.written(0, len(trace)).pixels.tolist() == [[0, 0]]
