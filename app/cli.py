@@ -23,51 +23,7 @@ from app.model.runs import DEFAULT_GRID, Rows, check_grid, fit_grid, run_result,
 from app.progress import TerminalBar, recording_bar
 from app.model.scene import one_line
 from app.model.version import app_version
-
-
-class CommandError(Exception):
-    """Bad command-line input; the message is the one line printed."""
-
-
-class Parser(argparse.ArgumentParser):
-    """argparse's parser, raising CommandError instead of exiting, that keeps
-    what it was given (``arguments``, ``commands``, ``summary``) so that the
-    reference pages are made from it through public attributes only."""
-
-    def __init__(self, *args, summary: str = "", **kwargs):
-        self.arguments: list[argparse.Action] = []  # in the order they were added
-        self.commands: dict[str, Parser] = {}
-        self.summary = summary  # the one line `rasterlab --help` gives a command
-        super().__init__(*args, **kwargs)
-
-    def error(self, message):
-        raise CommandError(message)
-
-    def add_argument(self, *args, **kwargs):
-        action = super().add_argument(*args, **kwargs)
-        self.arguments.append(action)
-        return action
-
-    def add_mutually_exclusive_group(self, **kwargs):
-        return _Recorded(super().add_mutually_exclusive_group(**kwargs), self.arguments)
-
-    def add_command(self, commands, name: str, help: str, **kwargs) -> Parser:
-        """A command of ``commands`` (what add_subparsers gave), kept in ``self.commands``."""
-        command = commands.add_parser(name, help=help, summary=help, **kwargs)
-        self.commands[name] = command
-        return command
-
-
-class _Recorded:
-    """A group of mutually exclusive options whose arguments are kept with the parser's."""
-
-    def __init__(self, group, arguments: list):
-        self.group, self.arguments = group, arguments
-
-    def add_argument(self, *args, **kwargs):
-        action = self.group.add_argument(*args, **kwargs)
-        self.arguments.append(action)
-        return action
+from app.cli_parser import CommandError, Parser
 
 
 def build_parser() -> Parser:

@@ -108,7 +108,7 @@ def _text(text: str) -> str:
 
 
 # ------------------------------------------------------------- command line
-# Made from the arguments the parser was given (app.cli.Parser keeps them)
+# Made from the arguments the parser was given (app/cli_parser.py keeps them)
 # rather than argparse's --help text, whose layout changes between Python
 # versions.
 def command_line_page() -> str:
@@ -136,7 +136,7 @@ def _commands(parser) -> dict:
 
 
 def _arguments(command) -> list:
-    """The command's arguments as it was given them (app.cli.Parser keeps them), --help aside."""
+    """The command's arguments as it was given them (app/cli_parser.py keeps them), --help aside."""
     return [action for action in command.arguments if action.dest != "help"]
 
 

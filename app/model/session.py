@@ -453,9 +453,8 @@ class Session:
         """Record ``spec`` on runnable ``points``; any failure of the run
         becomes an InputError."""
         try:
-            # no time limit: the window shows the recording's progress and Cancel
             check_budget(spec, points, options, grid, self.step_cap, self.memory_limit,
-                         time_limit=math.inf)
+                         time_limit=math.inf)  # the window shows progress and Cancel instead
             trace = spec.record(points, options, grid, step_cap=self.step_cap, monitor=monitor)
         except (InputError, Cancelled):
             raise
