@@ -545,11 +545,14 @@ def add_report_command(parser, commands) -> None:
     report.add_argument("--memory-limit", metavar="SIZE",
                         help="memory the report may need, e.g. 512M (default 2G); a report "
                              "estimated to need more is refused before it starts")
+    report.add_argument("--force", action="store_true",
+                        help="replace files in DIR that an earlier report did not write")
 
 
 def command_report(args) -> int:
     from app.analysis import measure, report, report_budget
 
+    check_outputs(report.outputs(args.out), force=args.force)
     report_budget.check_report(measure.settings(args.quick), _memory_limit(args))
     bar = report.ProgressBar(sys.stderr)
     result = _with_progress(bar, lambda: report.write_report(args.out, quick=args.quick,

@@ -14,7 +14,7 @@ from pathlib import Path
 from algorithms.core.registry import InputError
 from app.model import shipped
 from app.teaching import worksheet
-from app.model.files import Output, check_outputs, not_ours, write_atomically
+from app.model.files import Output, check_outputs, listed, not_ours, write_atomically
 
 
 def add_check_command(parser, commands) -> None:
@@ -124,6 +124,8 @@ def add_worksheet_command(parser, commands) -> None:
                             "starts (default 120)")
     sheet.add_argument("--blank", default=",".join(worksheet.DEFAULT_BLANK), metavar="COLUMNS",
                        help="columns the student fills in, comma-separated (default %(default)s)")
+    sheet.add_argument("--force", action="store_true",
+                       help="replace files in DIR that an earlier worksheet did not write")
 
 
 def command_worksheet(args) -> int:
@@ -135,8 +137,9 @@ def command_worksheet(args) -> int:
         raise InputError(str(error)) from None
     out = Path(args.out)
     check_outputs([Output("--out", out, folder=True)]
-                  + [Output("--out", out / name) for name in worksheet.file_names(args.format)],
-                  [scene_path])
+                  + [Output("--out", out / name, foreign=listed(worksheet.MANIFEST))
+                     for name in worksheet.file_names(args.format)],
+                  [scene_path], force=args.force)
     blank = [name.strip() for name in args.blank.split(",") if name.strip()]
     from app.model import budget
     memory = budget.DEFAULT_MEMORY_LIMIT if args.memory_limit is None \

@@ -30,7 +30,7 @@ from pathlib import Path
 import numpy as np
 
 from app.analysis import measure
-from app.model.files import write_atomically
+from app.model.files import Output, listed, manifest_bytes, write_atomically
 from app.model.staging import StagedFolder
 
 from app.progress import TerminalBar
@@ -42,6 +42,8 @@ from .report_sections import (section_antialias, section_circles, section_fill,
                               section_interpolation, section_lines, section_precision)
 
 DEFAULT_OUT = "rasterlab-report"
+DOCUMENTS = ("report.md", "measurements.csv", "measurements.json")
+MANIFEST = ".rasterlab-report.json"  # the files the last report wrote into its folder
 
 
 class ReportError(Exception):
@@ -120,6 +122,14 @@ def write_report(out=DEFAULT_OUT, quick: bool = False, progress=None) -> dict:
     return write_files(folder, config, rows.rows, seconds, started)
 
 
+def outputs(out) -> list[Output]:
+    """Every file a report may write into ``out``, for the output policy's
+    check before the measuring (app.model.files.check_outputs)."""
+    names = DOCUMENTS + tuple(f"{family}.png" for family in FIGURE_ORDER)
+    return [Output("--out", out, folder=True)] + [
+        Output("--out", Path(out) / name, foreign=listed(MANIFEST)) for name in names]
+
+
 def write_files(out, config, rows: list, seconds: dict, started: float | None = None) -> dict:
     """Write the files of a report from measurements already made."""
     folder = check_folder(out)
@@ -142,8 +152,10 @@ def write_files(out, config, rows: list, seconds: dict, started: float | None = 
         buffer = io.BytesIO()
         image.save(buffer, format="PNG", optimize=True)
         documents[f"{family}.png"] = buffer.getvalue()
+    names = sorted(documents)
+    documents[MANIFEST] = manifest_bytes(names)
     replace_together(folder, documents)
-    return {"folder": str(folder), "files": sorted(documents), "rows": len(rows),
+    return {"folder": str(folder), "files": names, "rows": len(rows),
             "seconds": time.perf_counter() - started}
 
 

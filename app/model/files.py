@@ -21,6 +21,7 @@ any work (``OutputRefused``, one line):
 """
 from __future__ import annotations
 
+import json
 import os
 import stat
 import tempfile
@@ -146,6 +147,27 @@ class Output:
     path: str | os.PathLike
     folder: bool = False
     foreign: Callable[[Path], str | None] | None = None
+
+
+def listed(manifest: str) -> Callable[[Path], str | None]:
+    """``Output.foreign`` for one of the files a command writes together into
+    a folder (a report, a worksheet), with the folder's ``manifest``: the
+    JSON list of the names the program last wrote there. A file it does not
+    list was not written by RasterLab."""
+    def foreign(path: Path) -> str | None:
+        try:
+            names = json.loads((Path(path).parent / manifest).read_text(encoding="utf-8"))
+        except (OSError, ValueError):
+            names = []
+        if isinstance(names, list) and Path(path).name in names:
+            return None
+        return "was not written by RasterLab"
+    return foreign
+
+
+def manifest_bytes(names: Iterable[str]) -> bytes:
+    """The text of a folder's manifest (see ``listed``)."""
+    return (json.dumps(sorted(names)) + "\n").encode("utf-8")
 
 
 def not_ours(kind: str) -> Callable[[Path], str | None]:

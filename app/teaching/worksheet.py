@@ -21,7 +21,7 @@ from algorithms.core.trace import DEFAULT_STEP_CAP
 
 from app.model import budget, runs
 from app.model.escape import csv_row, latex_comment, latex_text, markdown_text
-from app.model.files import write_atomically
+from app.model.files import manifest_bytes, write_atomically
 from app.model.geometry import scene_paths
 from app.model.steptable import StepTable, cell_to_text
 
@@ -158,6 +158,9 @@ def grid_png(sheet: Worksheet, answers: bool, cell: int = 24) -> bytes:
     return out.getvalue()
 
 
+MANIFEST = ".rasterlab-worksheet.json"  # the files the last worksheet wrote into its folder
+
+
 def file_names(fmt: str) -> list[str]:
     """The names ``write`` gives the files of format ``fmt`` in its folder."""
     grids = ["worksheet-grid.png", "answers-grid.png"] if fmt == "md" else []
@@ -171,7 +174,9 @@ def write(sheet: Worksheet, folder, fmt: str, pdf_writer=None) -> list[Path]:
     made = [parent for parent in [folder, *folder.parents] if not parent.exists()]
     folder.mkdir(parents=True, exist_ok=True)
     try:
-        return _write_files(sheet, folder, fmt, pdf_writer)
+        written = _write_files(sheet, folder, fmt, pdf_writer)
+        write_atomically(folder / MANIFEST, manifest_bytes(file_names(fmt)))
+        return written
     except BaseException:
         for parent in made:  # deepest first; a folder that holds anything stays
             try:

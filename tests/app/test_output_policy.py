@@ -311,3 +311,73 @@ def test_a_worksheet_pdf_over_the_file_size_limit_is_one_line_and_no_folder(tmp_
     assert done.returncode == 2
     assert _one_line(done.stderr).startswith("rasterlab: ")
     assert list(tmp_path.iterdir()) == []
+
+
+# ------------------------------------------- folders written together: report, worksheet
+class _NoRows:
+    rows = []
+
+
+def _no_measuring(monkeypatch):
+    """The report is written from no rows: the measuring is not what is tested."""
+    from app.analysis import measure
+    monkeypatch.setattr(measure, "run", lambda config, progress=None: (_NoRows, {}))
+
+
+def _measuring_refused(monkeypatch):
+    """A refusal must come before any measuring: measuring fails the test."""
+    from app.analysis import measure
+
+    def never(config, progress=None):
+        raise AssertionError("the report measured before its outputs were checked")
+    monkeypatch.setattr(measure, "run", never)
+
+
+def test_a_report_keeps_a_users_file_before_any_measuring(run_cli, tmp_path, monkeypatch):
+    out = tmp_path / "out"
+    out.mkdir()
+    (out / "report.md").write_text("my own notes\n")
+    _measuring_refused(monkeypatch)
+    err = _refused(run_cli, "report", "--quick", "--out", out)
+    assert "report.md" in err and "--force" in err
+    assert (out / "report.md").read_text() == "my own notes\n"
+    _no_measuring(monkeypatch)
+    status, _, err = run_cli("report", "--quick", "--out", out, "--force")
+    assert status == 0, err
+    assert (out / "report.md").read_text() != "my own notes\n"
+
+
+def test_a_report_replaces_its_own_files(run_cli, tmp_path, monkeypatch):
+    out = tmp_path / "out"
+    _no_measuring(monkeypatch)
+    for _ in range(2):
+        status, _, err = run_cli("report", "--quick", "--out", out)
+        assert status == 0, err
+    assert json.loads((out / ".rasterlab-report.json").read_text()) == sorted(
+        ["report.md", "measurements.csv", "measurements.json"])
+
+
+@pytest.mark.skipif(not hasattr(os, "mkfifo"), reason="FIFOs are a POSIX facility")
+def test_a_fifo_in_the_report_folder_is_refused_before_any_measuring(run_cli, tmp_path,
+                                                                      monkeypatch):
+    out = tmp_path / "out"
+    out.mkdir()
+    os.mkfifo(out / "measurements.csv")
+    _measuring_refused(monkeypatch)
+    err = _refused(run_cli, "report", "--quick", "--out", out, "--force")
+    assert "measurements.csv" in err
+
+
+def test_a_worksheet_keeps_a_users_file_unless_forced(run_cli, scene_file, tmp_path):
+    out = tmp_path / "sheet"
+    out.mkdir()
+    (out / "answers.csv").write_text("my answers\n")
+    err = _refused(run_cli, "worksheet", scene_file, "--out", out, "--format", "csv")
+    assert "answers.csv" in err and "--force" in err
+    assert (out / "answers.csv").read_text() == "my answers\n"
+    status, _, err = run_cli("worksheet", scene_file, "--out", out, "--format", "csv",
+                             "--force")
+    assert status == 0, err
+    assert (out / "answers.csv").read_text() != "my answers\n"
+    status, _, err = run_cli("worksheet", scene_file, "--out", out, "--format", "csv")
+    assert status == 0, err  # its own files, as the folder's manifest lists them

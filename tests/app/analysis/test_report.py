@@ -66,12 +66,15 @@ def test_the_run_succeeds_quietly_off_a_terminal(report):
 def test_every_file_is_written(report):
     folder = report[0]
     names = {p.name for p in folder.iterdir()}
-    expected = {"report.md", "measurements.csv", "measurements.json"}
+    expected = {"report.md", "measurements.csv", "measurements.json", ".rasterlab-report.json"}
     expected |= {f"{name}.png" for name in PICTURES}
     if measure.antialias_available() == "":
         expected.add("antialiasing.png")
     assert names == expected  # no temporary files left behind
-    for name in expected - {"report.md", "measurements.csv", "measurements.json"}:
+    assert json.loads((folder / ".rasterlab-report.json").read_text()) == sorted(
+        expected - {".rasterlab-report.json"})  # the manifest lists what the report wrote
+    for name in expected - {"report.md", "measurements.csv", "measurements.json",
+                            ".rasterlab-report.json"}:
         with Image.open(folder / name) as image:
             image.verify()
         with Image.open(folder / name) as image:
@@ -269,7 +272,7 @@ def test_a_killed_report_is_cleaned_up_by_the_next(old_report):
     reporting.write_files(folder, measure.settings(True), [], {"lines": 0.1})
     names = {p.name for p in folder.iterdir()}
     assert names == {"report.md", "measurements.csv", "measurements.json", "lines.png",
-                     "notes.txt"}
+                     "notes.txt", ".rasterlab-report.json"}
     assert (folder / "report.md").read_bytes() != old["report.md"]
 
 
