@@ -56,8 +56,13 @@ def command_check(args) -> int:
         cases = [word for word in args.cases if Path(word).is_file()]
         check_outputs([Output("--junit", args.junit, foreign=not_ours("xml"))],
                       [args.file, *cases], args.force)
-    checked = run_check(args.file, args.against, args.cases, args.seed, args.time_limit,
-                        args.memory_limit)
+    from app.progress import CasesBar
+    bar = CasesBar(sys.stderr)
+    try:
+        checked = run_check(args.file, args.against, args.cases, args.seed, args.time_limit,
+                            args.memory_limit, bar if bar.active else None)
+    finally:
+        bar.clear()
     if args.junit:
         write_atomically(Path(args.junit), check_report.junit_xml(*checked), error=OSError)
     if args.json:

@@ -38,6 +38,24 @@ class TerminalBar:
             self.shown = False
 
 
+class CasesBar(TerminalBar):
+    """The cases of a check done so far, ``(done, total)``: drawn only once
+    the check has taken ``AFTER`` seconds, so a quick check prints nothing."""
+
+    AFTER = 2.0
+
+    def __init__(self, stream=sys.stderr, clock=time.monotonic):
+        super().__init__(stream)
+        self.clock = clock
+        self.started = clock()
+
+    def __call__(self, done: int, total: int) -> None:
+        elapsed = self.clock() - self.started
+        if elapsed >= self.AFTER:
+            left = elapsed * (total - done) / max(1, done)
+            self.draw("checking", done, total, f"cases, about {left:.0f} s left ")
+
+
 class RecordingBar(TerminalBar):
     """A recording's progress, as ``RecordMonitor`` reports it (the steps so
     far): drawn only once the run has taken ``AFTER`` seconds, so a quick

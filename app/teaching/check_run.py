@@ -25,7 +25,7 @@ class Checked(NamedTuple):
 
 
 def run_check(file, against: str, cases: list[str], seed: str = "0", time_limit: str = "2",
-              memory_limit: str = "256M") -> Checked:
+              memory_limit: str = "256M", progress=None) -> Checked:
     """Check ``file`` against the algorithm ``against`` on ``cases`` (hard,
     random N and SCENE.json words). Bad input raises InputError before any
     case runs; each case runs the student's code in its own process."""
@@ -36,7 +36,7 @@ def run_check(file, against: str, cases: list[str], seed: str = "0", time_limit:
     number = parse_number(seed, "--seed", integer=True)
     case_limits = limits(time_limit, memory_limit)
     made = checking.make_cases(spec, selectors, number)  # bad scenes are refused before any run
-    results = checking.check(path, spec.name, made, limits=case_limits)
+    results = checking.check(path, spec.name, made, limits=case_limits, progress=progress)
     held = student.limits_record(case_limits, student.limits_in_force(case_limits))
     return Checked(results, Path(file).name, spec.name, held)
 

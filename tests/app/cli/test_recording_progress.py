@@ -9,6 +9,7 @@ import pytest
 
 from app import progress
 from app.progress import RecordingBar
+from tests.support import ROOT
 
 # A flood fill of 296 x 296 pixels: more steps than one monitor report (65,536).
 FILL = ["flood-fill", "--points", "1,1", "298,1", "298,298", "1,298", "--grid", "300,300"]
@@ -79,3 +80,27 @@ def test_the_worksheet_and_export_record_with_the_bar(tmp_path, monkeypatch):
     terminal.seek(0), terminal.truncate()
     assert cli.main(["export", str(path), "--html", str(tmp_path / "fill.html")]) == 0
     assert "recording [" in terminal.getvalue() and terminal.getvalue().endswith("\r\033[K")
+
+
+def test_a_long_check_shows_its_cases_on_a_terminal(monkeypatch):
+    from app import cli
+    from app.progress import CasesBar
+    terminal = Terminal()
+    monkeypatch.setattr(CasesBar, "AFTER", 0.0)
+    monkeypatch.setattr(progress.sys, "stderr", terminal)
+    sample = ROOT / "resources" / "students" / "bresenham_correct.py"
+    assert cli.main(["check", str(sample), "--against", "line-bresenham"]) == 0
+    shown = terminal.getvalue()
+    assert "checking [" in shown and "cases, about" in shown
+    assert shown.endswith("\r\033[K")
+
+
+def test_the_cases_bar_waits_two_seconds():
+    stream, clock = Terminal(), Clock()
+    bar = progress.CasesBar(stream, clock)
+    clock.now += 1.0
+    bar(1, 4)
+    assert stream.getvalue() == ""
+    clock.now += 1.0  # 2 s for 2 of 4 cases: about 2 s left
+    bar(2, 4)
+    assert "2/4 cases, about 2 s left" in stream.getvalue()
