@@ -10,6 +10,7 @@ U+FFFD or a space, so the UTF-8 writers never fail on them.
     html_text       HTML text and quoted attribute values
     script_json     a value as JSON inside a <script> element
     xml_text        XML (SVG) text and quoted attribute values
+    xml_chars       text an XML library (ElementTree) escapes: what XML cannot hold as U+FFFD
     latex_text      LaTeX text: every special character as its command
     latex_comment   LaTeX ``%`` comment lines, one per line of the text
     latex_file_name a file name LaTeX can be given, or ValueError
@@ -52,9 +53,17 @@ def script_json(value) -> str:
     return text.replace("<", "\\u003c").replace(">", "\\u003e").replace("&", "\\u0026")
 
 
+def xml_chars(text: str) -> str:
+    """``text`` with each character XML 1.0 cannot hold (controls, lone
+    surrogates) as U+FFFD, for a library that escapes the rest itself:
+    ElementTree writes them as they are, or as character references, and
+    the file no longer parses."""
+    return _NOT_XML.sub("\ufffd", _encodable(text))
+
+
 def xml_text(text: str) -> str:
     """XML text, also safe inside a double-quoted attribute value."""
-    text = _NOT_XML.sub("\ufffd", _encodable(text))
+    text = xml_chars(text)
     return _xml_escape(text, {'"': "&quot;", "\r": "&#13;", "\t": "&#9;", "\n": "&#10;"})
 
 

@@ -3,6 +3,7 @@ from __future__ import annotations
 
 import xml.etree.ElementTree as ET
 
+from app.model.escape import xml_chars
 from app.teaching.checking import CaseResult, Divergence
 from app.teaching.student import limits_text
 
@@ -50,13 +51,14 @@ def junit_xml(results: list[CaseResult], file: str, against: str,
               limits: dict | None = None) -> bytes:
     """One testsuite, one testcase per case: a failure for wrong pixels, an error
     for code that raised, looped, crashed or yielded the wrong shape; the
-    limits as the suite's property "limits"."""
+    limits as the suite's property "limits". Names (a file may be called
+    anything) pass through xml_chars, so the file always parses."""
     failures = sum(1 for r in results if r.outcome.ok and not r.passed)
     errors = sum(1 for r in results if not r.outcome.ok)
     seconds = sum(r.outcome.seconds for r in results)
     suites = ET.Element("testsuites", tests=str(len(results)), failures=str(failures),
                         errors=str(errors), time=f"{seconds:.3f}")
-    suite = ET.SubElement(suites, "testsuite", name=f"{file} against {against}",
+    suite = ET.SubElement(suites, "testsuite", name=xml_chars(f"{file} against {against}"),
                           tests=str(len(results)), failures=str(failures), errors=str(errors),
                           skipped="0", time=f"{seconds:.3f}")
     if limits is not None:
@@ -64,7 +66,7 @@ def junit_xml(results: list[CaseResult], file: str, against: str,
         ET.SubElement(properties, "property", name="limits", value=limits_text(limits))
     for result in results:
         case = ET.SubElement(suite, "testcase", classname=f"rasterlab.check.{against}",
-                             name=result.case.name, time=f"{result.outcome.seconds:.3f}")
+                             name=xml_chars(result.case.name), time=f"{result.outcome.seconds:.3f}")
         if result.passed:
             continue
         tag = "failure" if result.outcome.ok else "error"

@@ -2,6 +2,7 @@
 from __future__ import annotations
 
 import json
+import os
 import xml.etree.ElementTree as ET
 
 import pytest
@@ -100,3 +101,17 @@ def test_bad_input_exits_2_with_one_line(run_cli, argv, words):
     status, out, err = run_cli("check", *argv)
     assert status == 2 and out == ""
     assert len(err.strip().splitlines()) == 1 and words in err
+
+
+def test_junit_xml_parses_whatever_the_file_is_called(run_cli, tmp_path):
+    # Control characters (and, on POSIX, an undecodable byte) in the student's
+    # file name: XML cannot hold them, the report names them as U+FFFD.
+    name = "a\x01\x1b" + ("\udcff" if os.name == "posix" else "") + ".py"
+    student = tmp_path / name
+    student.write_bytes((SAMPLES / "bresenham_correct.py").read_bytes())
+    out_file = tmp_path / "report.xml"
+    status, _, err = run_cli("check", student, "--against", "line-bresenham",
+                             "--cases", "hard", "--junit", out_file)
+    assert status == 0, err
+    (suite,) = ET.parse(out_file).getroot()
+    assert suite.attrib["name"].startswith("a\ufffd\ufffd")
