@@ -29,7 +29,7 @@ from hypothesis import strategies as st
 from app.model.scene import Scene, SceneError, save
 from app.model.shipped import STUDENTS
 from tests.app.cli.test_fuzz_cli import fuzz_settings
-from tests.app.test_escaping import ESCAPES, LINES, tex_tokens
+from tests.app.test_escaping import ESCAPES, LINES, Html, render_commonmark, tex_tokens
 
 DANGEROUS = ["<!--<script>", "</script>", "]]>", "\\input{x}", "\\write18{ls}", "\n", "\r\n",
              "%", "![a](http://x/y.png)", "=cmd|' /C calc'!A0", "<img src=x>", "&", "\x00",
@@ -129,6 +129,13 @@ def worksheet_tex_parses(folder: Path):
         assert all(line.startswith("% ") or line == "%" for line in LINES.split(head)[:-1])
 
 
+def markdown_renders_as_text(folder: Path):
+    page = Html(render_commonmark((folder / "worksheet.md").read_text(encoding="utf-8")))
+    tags = {tag for tag, _ in page.tags}
+    assert tags <= {"h1", "p", "code", "pre", "table", "thead", "tbody", "tr", "th", "td", "img"}
+    assert [attrs["src"] for tag, attrs in page.tags if tag == "img"] == ["worksheet-grid.png"]
+
+
 def csv_reads_back(folder: Path):
     for path in folder.glob("*.csv"):
         with open(path, encoding="utf-8", newline="") as stream:
@@ -146,6 +153,8 @@ def check_outputs(kind: str, out: str, template):
                                                   "includegraphics", "linewidth", "textheight"})
     elif kind == "worksheet-tex":
         worksheet_tex_parses(Path(out))
+    elif kind == "worksheet-md":
+        markdown_renders_as_text(Path(out))
     elif kind == "worksheet-csv":
         csv_reads_back(Path(out))
     elif kind == "check-junit":
