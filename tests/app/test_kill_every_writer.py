@@ -196,13 +196,13 @@ def killed_run(work: Path, command, outputs, first: float, took: float, share: f
     deadline = began + first + share * (took - first)
     while child.poll() is None:
         now = time.monotonic()
-        if (share == 0 and set(leftovers(work, outputs)) - known) or (share > 0 and now >= deadline):
+        seen = share == 0 and set(leftovers(work, outputs)) - known
+        if seen or (share > 0 and now >= deadline):
             hard_kill(child)
             break
         assert now < began + START_TIMEOUT, "the child never got going"
         time.sleep(0.002)
-    code = finish(child)
-    return code != 0
+    return finish(child) != 0
 
 
 def describe(before: dict, after: dict) -> str:
