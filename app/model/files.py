@@ -21,13 +21,17 @@ any work (``OutputRefused``, one line):
 """
 from __future__ import annotations
 
+import glob
 import json
 import os
+import re
 import stat
 import tempfile
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Callable, Iterable
+
+from app.model.processes import owner_pid, process_alive
 
 
 def write_atomically(path: Path, data: bytes, error=OSError) -> None:
@@ -43,8 +47,12 @@ def write_atomically(path: Path, data: bytes, error=OSError) -> None:
     directory = path.parent if str(path.parent) else Path(".")
     if not directory.is_dir():
         raise error(f"{path}: the folder {directory} does not exist")
+    remove_leftovers(path)
     try:
-        handle, temporary = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=directory)
+        # Named with our process id, so that a write killed half-way is
+        # removed by the next one (remove_leftovers).
+        handle, temporary = tempfile.mkstemp(prefix=f".{path.name}.{os.getpid()}.",
+                                             suffix=".tmp", dir=directory)
     except OSError as failure:
         raise error(f"{path}: cannot write in {directory} "
                     f"({failure.strerror or failure})") from None
@@ -69,6 +77,23 @@ def write_atomically(path: Path, data: bytes, error=OSError) -> None:
             # An OSError made in code may carry a message but no strerror.
             raise error(f"{path}: cannot write the file ({failure.strerror or failure})") from None
         raise
+
+
+def remove_leftovers(path: Path) -> list[Path]:
+    """Delete the temporary files that killed writes to ``path`` left beside
+    it (``.NAME.<pid>.<random>.tmp`` of a process that is gone, or
+    ``.NAME.<random>.tmp`` from before names carried the process id)."""
+    prefix = f".{path.name}."
+    pattern = re.compile(re.escape(prefix) + r"(\d+\.)?[a-z0-9_]{8}\.tmp$")
+    directory = path.parent if str(path.parent) else Path(".")
+    removed = []
+    for leftover in directory.glob(glob.escape(prefix) + "*.tmp"):
+        pid = owner_pid(leftover.name, prefix)
+        if (pattern.match(leftover.name) and leftover.is_file() and not leftover.is_symlink()
+                and (pid is None or not process_alive(pid))):
+            leftover.unlink(missing_ok=True)
+            removed.append(leftover)
+    return removed
 
 
 def target_of(path, error=OSError) -> Path:

@@ -17,7 +17,6 @@ leftovers.
 """
 from __future__ import annotations
 
-import glob
 import json
 import os
 import re
@@ -29,8 +28,8 @@ from typing import Iterator, Protocol, Sequence
 import numpy as np
 from PIL import Image
 
-from app.model.files import OutputRefused, target_of
-from app.model.staging import StagedFolder, owner_pid, process_alive
+from app.model.files import OutputRefused, remove_leftovers, target_of
+from app.model.staging import StagedFolder
 from app.render.gif_stream import GifStream
 from app.render.settings import ExportError
 
@@ -269,22 +268,6 @@ class NullWriter:
 
     def abort(self) -> None:
         self.aborted = True
-
-
-def remove_leftovers(path: Path) -> list[Path]:
-    """Delete the temporary files that killed exports to ``path`` left
-    beside it (``.NAME.<pid>.<random>.tmp`` of a process that is gone, or
-    ``.NAME.<random>.tmp`` from before names carried the process id)."""
-    prefix = f".{path.name}."
-    pattern = re.compile(re.escape(prefix) + r"(\d+\.)?[a-z0-9_]{8}\.tmp$")
-    removed = []
-    for leftover in _folder_of(path).glob(glob.escape(prefix) + "*.tmp"):
-        pid = owner_pid(leftover.name, prefix)
-        if (pattern.match(leftover.name) and leftover.is_file() and not leftover.is_symlink()
-                and (pid is None or not process_alive(pid))):
-            leftover.unlink(missing_ok=True)
-            removed.append(leftover)
-    return removed
 
 
 def temporary_beside(path: Path) -> Path:

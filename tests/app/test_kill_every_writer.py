@@ -69,11 +69,6 @@ SLOW_WRITERS = {
     "report --quick": (["-m", "rasterlab", "report", "--quick", "--out", "rep"], ["rep/"]),
 }
 
-# The writers that write through app.model.files.write_atomically: its
-# temporary file (``.NAME.<random>.tmp``, no process id) stays beside the
-# output when the process is killed, and no later run removes it.
-KEEPS_TEMPORARIES = {"worksheet pdf", "worksheet csv", "worksheet md", "check --junit",
-                     "run --save", "scene save", "export --html"}
 
 OUTCOMES = []  # (writer, kill point, outcome), printed when the module ends
 
@@ -247,11 +242,7 @@ def kill_writer(tmp_path, writer, command, outputs) -> list[str]:
 
 
 def no_leftovers(writer, kept):
-    if kept and writer in KEEPS_TEMPORARIES:
-        # Not strict: a kill outside the moment the temporary file exists
-        # leaves nothing to find.
-        pytest.xfail(f"write_atomically's temporary file is never removed: {kept}")
-    assert not kept
+    assert not kept, f"{writer}: the next run left {kept}"
 
 
 @pytest.mark.parametrize("writer", sorted(WRITERS))
