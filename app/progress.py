@@ -38,9 +38,10 @@ class TerminalBar:
             self.shown = False
 
 
-class CasesBar(TerminalBar):
-    """The cases of a check done so far, ``(done, total)``: drawn only once
-    the check has taken ``AFTER`` seconds, so a quick check prints nothing."""
+class DelayedBar(TerminalBar):
+    """A bar drawn only once its work has taken ``AFTER`` seconds, so that
+    quick work prints nothing; ``show`` draws ``done`` of ``total`` with the
+    time left at the rate so far."""
 
     AFTER = 2.0
 
@@ -49,38 +50,38 @@ class CasesBar(TerminalBar):
         self.clock = clock
         self.started = clock()
 
+    def due(self) -> bool:
+        return self.clock() - self.started >= self.AFTER
+
+    def show(self, what: str, done: int, total: int, label: str) -> None:
+        left = (self.clock() - self.started) * (total - done) / max(1, done)
+        self.draw(what, done, total, f"{label} {left:.0f} s left ")
+
+
+class CasesBar(DelayedBar):
+    """The cases of a check done so far, ``(done, total)``."""
+
     def __call__(self, done: int, total: int) -> None:
-        elapsed = self.clock() - self.started
-        if elapsed >= self.AFTER:
-            left = elapsed * (total - done) / max(1, done)
-            self.draw("checking", done, total, f"cases, about {left:.0f} s left ")
+        if self.due():
+            self.show("checking", done, total, "cases, about")
 
 
-class RecordingBar(TerminalBar):
+class RecordingBar(DelayedBar):
     """A recording's progress, as ``RecordMonitor`` reports it (the steps so
-    far): drawn only once the run has taken ``AFTER`` seconds, so a quick
-    run prints nothing, against ``bound()``, the most steps the budget
-    expects, with the time left at the rate so far (an upper estimate, as the
-    bound is). The bound is asked for at the first drawing, when the run's
-    inputs have been checked."""
-
-    AFTER = 2.0
+    far), against ``bound()``, the most steps the budget expects, so the
+    time left is an upper estimate. The bound is asked for at the first
+    drawing, when the run's inputs have been checked."""
 
     def __init__(self, bound, stream=sys.stderr, clock=time.monotonic):
-        super().__init__(stream)
+        super().__init__(stream, clock)
         self.bound = bound
-        self.clock = clock
-        self.started = clock()
 
     def __call__(self, steps: int) -> None:
-        elapsed = self.clock() - self.started
-        if elapsed < self.AFTER:
+        if not self.due():
             return
         if callable(self.bound):
             self.bound = max(1, int(self.bound()))
-        done = min(int(steps), self.bound)
-        left = elapsed * (self.bound - done) / max(1, done)
-        self.draw("recording", done, self.bound, f"steps, at most {left:.0f} s left ")
+        self.show("recording", min(int(steps), self.bound), self.bound, "steps, at most")
 
 
 def recording_bar(spec, points, options, grid, step_cap: int = DEFAULT_STEP_CAP) -> RecordingBar:
