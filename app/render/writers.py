@@ -213,11 +213,14 @@ class PngFolderWriter:
 
 def foreign_frames(suffix: str, names=None):
     """``app.model.files.Output.foreign`` for a frames folder of ``suffix``
-    (.png, .svg): the first of ``names`` (the frames an export writes;
-    None: not known yet) that is there and that the folder's manifest does
-    not list, as a reason. A frame name that is a link or not a regular
-    file is refused whatever ``--force`` says (OutputRefused): frames are
-    moved into place as a set, never written through a link."""
+    (.png, .svg): the first of ``names`` (the frames an export writes) that
+    is there and that the folder's manifest does not list, as a reason.
+    With ``names`` None (the check before the run is recorded, when the
+    count of frames is not known yet) any such frame counts, so that a
+    user's frame is found before the work rather than after it. A frame
+    name that is a link or not a regular file is refused whatever
+    ``--force`` says (OutputRefused): frames are moved into place as a set,
+    never written through a link."""
     def foreign(directory: Path) -> str | None:
         directory = Path(directory)
         if not directory.is_dir():
@@ -230,9 +233,10 @@ def foreign_frames(suffix: str, names=None):
                 raise OutputRefused(f"{directory / name}: is a link or not a regular file; "
                                     "frames are written only over regular files")
         ours = set(written_frames(directory))
-        for name in names or ():
+        for name in sorted(found) if names is None else names:
             if name in found and name not in ours:
-                return f"{name} was not written by RasterLab"
+                return f"{name} was not written by RasterLab" + (
+                    " and the export's frames may replace it" if names is None else "")
         return None
     return foreign
 

@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import csv
 import io
+import json
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -23,6 +24,7 @@ from app.model import budget, runs
 from app.model.escape import csv_row, latex_comment, latex_text, markdown_text
 from app.model.files import manifest_bytes, write_atomically
 from app.model.geometry import scene_paths
+from app.model.staging import StagedFolder
 from app.model.steptable import StepTable, cell_to_text
 
 MAX_ROWS = 60
@@ -169,15 +171,25 @@ def file_names(fmt: str) -> list[str]:
 
 def write(sheet: Worksheet, folder, fmt: str, pdf_writer=None) -> list[Path]:
     """Write the worksheet and its answer key into ``folder``; the files
-    written. A write that fails removes the folders it made."""
+    written. They are staged and moved in together (app/model/staging.py),
+    so a failure or a kill never leaves a new sheet beside an old key; a
+    write that fails removes the folders it made."""
     folder = Path(folder)
     made = [parent for parent in [folder, *folder.parents] if not parent.exists()]
     folder.mkdir(parents=True, exist_ok=True)
+    staged = StagedFolder(folder, "worksheet")
     try:
-        written = _write_files(sheet, folder, fmt, pdf_writer)
-        write_atomically(folder / MANIFEST, manifest_bytes(file_names(fmt)))
-        return written
+        stage = staged.open()
+        try:
+            _write_files(sheet, stage, fmt, pdf_writer)
+        except OSError as error:  # named where the person will look for the file
+            raise OSError(str(error).replace(str(stage), str(folder))) from None
+        names = file_names(fmt)
+        (stage / MANIFEST).write_bytes(manifest_bytes(set(names) | set(_listed(folder))))
+        staged.commit(names + [MANIFEST])
+        return [folder / name for name in names]
     except BaseException:
+        staged.discard()
         for parent in made:  # deepest first; a folder that holds anything stays
             try:
                 parent.rmdir()
@@ -186,8 +198,17 @@ def write(sheet: Worksheet, folder, fmt: str, pdf_writer=None) -> list[Path]:
         raise
 
 
-def _write_files(sheet: Worksheet, folder: Path, fmt: str, pdf_writer) -> list[Path]:
-    written = []
+def _listed(folder: Path) -> list[str]:
+    """The names the folder's manifest lists (the worksheets of other
+    formats written there before), so that they stay the program's."""
+    try:
+        names = json.loads((folder / MANIFEST).read_text(encoding="utf-8"))
+    except (OSError, ValueError):
+        return []
+    return [name for name in names if isinstance(name, str)] if isinstance(names, list) else []
+
+
+def _write_files(sheet: Worksheet, folder: Path, fmt: str, pdf_writer) -> None:
     for answers, stem in ((False, "worksheet"), (True, "answers")):
         path = folder / f"{stem}.{fmt}"
         if fmt == "csv":
@@ -198,8 +219,5 @@ def _write_files(sheet: Worksheet, folder: Path, fmt: str, pdf_writer) -> list[P
             image = folder / f"{stem}-grid.png"
             write_atomically(image, grid_png(sheet, answers))
             write_atomically(path, markdown(sheet, answers, image.name).encode("utf-8"))
-            written.append(image)
         else:
             pdf_writer(sheet, path, answers)
-        written.append(path)
-    return written

@@ -64,6 +64,10 @@ WRITERS = {
                          ["svg/"]),
     "export --mp4": (["-m", "rasterlab", "export", "demo-bresenham", "--mp4", "a.mp4"],
                      ["a.mp4"]),
+    "export --webm": (["-m", "rasterlab", "export", "demo-bresenham", "--webm", "a.webm"],
+                      ["a.webm"]),
+    "export --beamer": (["-m", "rasterlab", "export", "demo-bresenham", "--pdf", "a.pdf",
+                         "--beamer", "a.tex"], ["a.pdf", "a.tex"]),
 }
 SLOW_WRITERS = {
     "report --quick": (["-m", "rasterlab", "report", "--quick", "--out", "rep"], ["rep/"]),
@@ -103,6 +107,34 @@ def final_files(work: Path, outputs) -> dict[str, bytes]:
 
 
 # ------------------------------------------------------------ validity
+def ebml_number(data: bytes, at: int, keep_marker: bool) -> tuple[int, int]:
+    """An EBML variable-length number at ``at``: (value, where it ends). The
+    count of leading zero bits of the first byte gives the length; an
+    element ID keeps its marker bit, a size drops it."""
+    first = data[at]
+    assert first, "an EBML number longer than 8 bytes"
+    length = 9 - first.bit_length()
+    assert at + length <= len(data), "an EBML number cut short"
+    value = first if keep_marker else first & (0xFF >> length)
+    for byte in data[at + 1:at + length]:
+        value = value << 8 | byte
+    return value, at + length
+
+
+def webm_elements(data: bytes) -> list[int]:
+    """The top-level EBML element IDs; each declared size must fit, and the
+    sizes must add up to the file's (a finished WebM's Segment has its
+    size written in; one cut short does not)."""
+    ids, at = [], 0
+    while at < len(data):
+        element, at = ebml_number(data, at, keep_marker=True)
+        size, at = ebml_number(data, at, keep_marker=False)
+        assert at + size <= len(data), "an element cut short"
+        ids.append(element)
+        at += size
+    return ids
+
+
 def mp4_boxes(data: bytes) -> list[bytes]:
     """The top-level box types; the sizes must add up to the file's."""
     kinds, at = [], 0
@@ -131,11 +163,15 @@ def check_complete(name: str, data: bytes) -> None:
         rows = list(csv.reader(io.StringIO(data.decode("utf-8"))))
         assert len(rows) > 1 and len({len(row) for row in rows}) == 1, name
     elif suffix in (".md", ".tex"):
-        assert data.decode("utf-8").endswith("\n"), name
+        text = data.decode("utf-8")
+        assert text.endswith("\n"), name
+        assert text.count("\\begin{") == text.count("\\end{"), name
     elif suffix == ".html":
         assert data.decode("utf-8").rstrip().endswith("</html>"), name
     elif suffix == ".png":
         Image.open(io.BytesIO(data)).verify()
+    elif suffix == ".webm":
+        assert webm_elements(data) == [0x1A45DFA3, 0x18538067], name  # EBML header, Segment
     elif suffix == ".mp4":
         kinds = mp4_boxes(data)
         assert kinds[0] == b"ftyp" and b"moov" in kinds and b"mdat" in kinds, (name, kinds)
@@ -270,3 +306,43 @@ def figures(request):
     capture = request.config.pluginmanager.getplugin("capturemanager")
     with capture.global_and_fixture_disabled():  # shown without -s, as capsys.disabled does
         print("\n" + "\n".join(lines))
+
+
+# A worksheet is two files (and a manifest); a kill between the sheet and its
+# key must not leave a new sheet beside the old key. The PDF writer is the
+# writer's own parameter, so the child dies exactly between the two: os._exit
+# skips every cleanup, as a kill does, on every system.
+KILL_BETWEEN = """
+import os, sys
+from app.model import scene as scenes, shipped
+from app.teaching import worksheet
+
+def pdf_writer(sheet, path, answers):
+    if answers and sys.argv[2] == "kill":
+        os._exit(9)
+    path.write_bytes(sheet.title.encode("utf-8"))
+
+sheet = worksheet.build(scenes.load(shipped.scene_path(sys.argv[1])),
+                        list(worksheet.DEFAULT_BLANK))
+worksheet.write(sheet, "ws", "pdf", pdf_writer)
+"""
+
+
+def test_a_worksheet_killed_between_sheet_and_key_keeps_the_earlier_pair(tmp_path):
+    def write(scene, how):
+        env = dict(os.environ, PYTHONPATH=str(ROOT))
+        return subprocess.run([sys.executable, "-c", KILL_BETWEEN, scene, how], cwd=tmp_path,
+                              env=env, capture_output=True, timeout=START_TIMEOUT).returncode
+
+    def pair():
+        return [(tmp_path / "ws" / name).read_bytes() for name in ("worksheet.pdf",
+                                                                    "answers.pdf")]
+    assert write("demo-bresenham", "whole") == 0
+    earlier = pair()
+    assert earlier[0] == earlier[1] != b""
+    assert write("line-midpoint", "kill") == 9
+    assert pair() == earlier
+    assert write("line-midpoint", "whole") == 0  # and the next run cleans up
+    assert pair()[0] == pair()[1] != earlier[0]
+    assert sorted(p.name for p in (tmp_path / "ws").iterdir()) == [
+        ".rasterlab-worksheet.json", "answers.pdf", "worksheet.pdf"]
