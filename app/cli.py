@@ -20,7 +20,7 @@ from app import cli_teaching
 from app.model import budget, runs
 from app.model.files import Output, OutputRefused, check_outputs
 from app.model.runs import DEFAULT_GRID, Rows, check_grid, fit_grid, run_result, save_new
-from app.progress import TerminalBar, recording_bar
+from app.progress import TerminalBar, drawn, recording_bar
 from app.model.scene import one_line
 from app.model.version import app_version
 from app.cli_parser import CommandError, Parser
@@ -241,12 +241,9 @@ def run_scene(args) -> int:
 
 def _record(spec, points, options, grid, step_cap: int, args):
     """The run recorded within the command's budgets, its progress on a terminal."""
-    bar = recording_bar(spec, points, options, grid, step_cap)
-    try:
+    with drawn(recording_bar(spec, points, options, grid, step_cap)) as progress:
         return runs.record(spec, points, options, grid, step_cap, _memory_limit(args),
-                           _time_limit(args), bar if bar.active else None)
-    finally:
-        bar.clear()
+                           _time_limit(args), progress)
 
 
 def _check_save(args, options, scene_path=None) -> None:
@@ -484,21 +481,14 @@ def command_export(args) -> int:
         time_limit=_time_limit(args),
         unit=args.unit, reasoning=not args.no_reasoning, text_size=text_size, axes=args.axes,
         vertex_labels=args.vertex_labels, overlays=_overlays(args.overlays))
-    recording = recording_bar(scene.spec, scene.points, scene.options, scene.grid)
-    if recording.active:
-        settings = dataclasses.replace(settings, recording=recording)
     frames_limit = (exporting.MAX_FRAMES_BYTES if args.frames_limit is None
                     else budget.parse_size(args.frames_limit, "--frames-limit"))
     bar = _ProgressBar(sys.stderr)
-
-    def work():
-        return formats.export_all(args, scene, settings, frames_limit,
-                                  bar.show if bar.active else None)
-    try:
-        done = _with_progress(bar, work, exporting.ExportError,
-                              "export interrupted; nothing was written")
-    finally:
-        recording.clear()
+    with drawn(recording_bar(scene.spec, scene.points, scene.options, scene.grid)) as recording:
+        settings = dataclasses.replace(settings, recording=recording)
+        done = _with_progress(bar, lambda: formats.export_all(
+            args, scene, settings, frames_limit, bar.show if bar.active else None),
+            exporting.ExportError, "export interrupted; nothing was written")
     if done is None:
         return 130
     for line in formats.summary(args, *done):

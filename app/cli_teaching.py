@@ -151,12 +151,9 @@ def command_worksheet(args) -> int:
         else budget.parse_size(args.memory_limit)
     seconds = budget.DEFAULT_TIME_LIMIT if args.time_limit is None \
         else budget.parse_seconds(args.time_limit)
-    from app.progress import recording_bar
-    bar = recording_bar(scene.spec, scene.points, scene.options, scene.grid)
-    try:
-        sheet = worksheet.build(scene, blank, memory, seconds, bar if bar.active else None)
-    finally:
-        bar.clear()
+    from app.progress import drawn, recording_bar
+    with drawn(recording_bar(scene.spec, scene.points, scene.options, scene.grid)) as progress:
+        sheet = worksheet.build(scene, blank, memory, seconds, progress)
     pdf_writer = None
     if args.format == "pdf":
         from app.gui.worksheet_pdf import write_pdf

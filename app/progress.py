@@ -3,6 +3,7 @@ from __future__ import annotations
 
 import sys
 import time
+from contextlib import contextmanager
 
 from algorithms.core.trace import DEFAULT_STEP_CAP
 from app.model import budget
@@ -88,3 +89,14 @@ def recording_bar(spec, points, options, grid, step_cap: int = DEFAULT_STEP_CAP)
     """A terminal bar for a recording that takes more than two seconds (nothing otherwise)."""
     return RecordingBar(lambda: budget.step_bound(spec, points, options, grid, step_cap),
                         sys.stderr)
+
+
+@contextmanager
+def drawn(bar: TerminalBar):
+    """``bar`` as the work's progress callback while the block runs (None
+    when stderr is not a terminal, so the work skips the calls), wiped from
+    the terminal at the end however the block ends."""
+    try:
+        yield bar if bar.active else None
+    finally:
+        bar.clear()
