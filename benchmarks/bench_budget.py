@@ -5,12 +5,17 @@ recorded up to CAP steps (once; in this process), printed as microseconds
 per step and rich-table rows per step, the figures app/model/budget.py's
 time model is calibrated from (the largest of each family, rounded up).
 
+``--ratios``: for every algorithm, its example scene on a GRID x GRID grid
+recorded in full (those estimated above a minute skipped), printed as the
+seconds taken against the time estimate; a ratio above 1 is an estimate
+that is too low.
+
 ``--peaks``: for a few scenes (among them star polygons of 4,000 and 20,000
 vertices, made by ``star_scene``), `rasterlab run --scene` in a fresh child
 process: its resident peak (``os.wait4``'s rusage of that child alone)
 against the budget's estimate.
 
-    python benchmarks/bench_budget.py [--steps] [--peaks] [--grid 1024] [--cap 100000]
+    python benchmarks/bench_budget.py [--steps] [--ratios] [--peaks] [--grid 1024] [--cap 100000]
 """
 from __future__ import annotations
 
@@ -73,6 +78,22 @@ def step_costs(grid: int, cap: int) -> None:
               f"{1e6 * seconds / len(trace):>8.1f} {rows / len(trace):>9.1f}")
 
 
+def time_ratios(grid: int, cap: int) -> None:
+    print(f"{'algorithm':<28} {'steps':>8} {'seconds':>8} {'estimate':>9} {'ratio':>6}")
+    for spec in registry.all_specs():
+        points, breaks, options = default_scene(spec, (grid, grid))
+        points = runnable_input(spec, points, breaks)
+        estimate = budget.estimate_seconds(spec, points, options, (grid, grid), cap)
+        if estimate > 60:
+            print(f"{spec.name:<28} skipped: estimated {estimate:.0f} s")
+            continue
+        start = time.perf_counter()
+        trace = spec.record(points, options, (grid, grid), step_cap=cap)
+        seconds = time.perf_counter() - start
+        print(f"{spec.name:<28} {len(trace):>8} {seconds:>8.2f} {estimate:>9.2f} "
+              f"{seconds / estimate:>6.2f}")
+
+
 def child_peak(argv: list[str]) -> tuple[int, int, float]:
     """(exit status, resident peak in bytes, seconds) of a fresh child."""
     start = time.perf_counter()
@@ -106,12 +127,15 @@ def peaks() -> None:
 def main() -> None:
     parser = argparse.ArgumentParser()
     parser.add_argument("--steps", action="store_true")
+    parser.add_argument("--ratios", action="store_true")
     parser.add_argument("--peaks", action="store_true")
     parser.add_argument("--grid", type=int, default=1024)
     parser.add_argument("--cap", type=int, default=100_000)
     args = parser.parse_args()
     if args.steps:
         step_costs(args.grid, args.cap)
+    if args.ratios:
+        time_ratios(args.grid, args.cap)
     if args.peaks:
         peaks()
 

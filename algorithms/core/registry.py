@@ -316,6 +316,13 @@ class AlgorithmSpec:
     # The generator also takes the grid (width, height) as a third argument:
     # a flood fill is bounded by the grid's edges.
     uses_grid: bool = False
+    # What a run's steps walk over, for the budget (app/model/budget.py):
+    # the primitive's own pixels ("path"), every pixel of its bounding box
+    # ("box") or of the grid ("grid").
+    visits: str = "path"
+    # Seconds a recorded step takes, where that is well above its family's
+    # figure in the budget (benchmarks/bench_budget.py --steps measures it).
+    step_seconds: float | None = None
     # `run --json`'s "fragments": (key, value column) pairs reported per written pixel.
     fragments: tuple[tuple[str, str], ...] = ()
     # What the tests hold the results to (every shipped algorithm declares

@@ -361,6 +361,7 @@ LINE_IMPLICIT = AlgorithmSpec(
     generator=implicit,
     kernel=implicit_pixels,
     explain=implicit_explain,
+    visits="box",
     notes=("The distance is to the segment, not to the infinite line. Inside the "
            "bounding box the two agree; beyond it every pixel centre is at least 1 "
            "from the segment, so the box misses nothing and the run stops at P and Q.",

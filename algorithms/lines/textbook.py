@@ -476,6 +476,7 @@ LINE_IMPLICIT_INFINITE = AlgorithmSpec(
     code=listing(implicit_line_listing),
     generator=implicit_line,
     uses_grid=True,
+    visits="grid",
     notes=("line-implicit limits the test to P and Q's bounding box; without that box the "
            "implicit form draws the whole line through P and Q, past both ends.",
            "The test is exact in integers: 4 * F^2 < a^2 + b^2."),

@@ -270,6 +270,7 @@ LINE_DIAMOND_EXIT = AlgorithmSpec(
     options=(),
     code=listing(diamond_listing),
     generator=diamond,
+    step_seconds=6e-4,  # exact diamond tests in Fractions: about 300 us a step
     notes=("The rule of OpenGL and Direct3D lines: the diamond |x - cx| + |y - cy| < 1/2 "
            "around each pixel centre; a pixel is drawn when the segment meets it and does not "
            "end inside it.",

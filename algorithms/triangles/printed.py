@@ -116,6 +116,7 @@ TRIANGLE_BARYCENTRIC_PRINTED = AlgorithmSpec(
     code=listing(barycentric_listing),
     generator=barycentric_run,
     uses_grid=True,
+    step_seconds=1e-4,  # three distances a pixel: 35-75 us a step
     notes=("As printed, distance() has no sign: alpha and gamma are never negative, so only "
            "beta = 1 - alpha - gamma can reject a pixel, and every centre with "
            "alpha + gamma <= 1 passes, across BC and AB as well. In the unit triangle "

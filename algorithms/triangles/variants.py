@@ -126,6 +126,7 @@ TRIANGLE_CRAMER = AlgorithmSpec(
     generator=cramer_run,
     explain=cramer_explain,
     uses_grid=True,
+    step_seconds=1.5e-4,  # three exact determinants a pixel: 60-120 us a step
     notes=("Each determinant of Cramer's rule is twice a signed area: D of the triangle, "
            "D_alpha of (p, P1, P2), which is the edge function e0 at p. So the weights from "
            "the linear system, from the edge functions and from the areas are one and the "
@@ -209,6 +210,7 @@ TRIANGLE_TRILINEAR = AlgorithmSpec(
     code=listing(trilinear_listing),
     generator=trilinear_run,
     uses_grid=True,
+    step_seconds=1.5e-4,  # exact distances and side lengths: 60-120 us a step
     notes=("Trilinear coordinates (d_0, d_1, d_2) are p's signed distances to the sides "
            "opposite P0, P1, P2, positive inside whatever the winding. Times the side lengths "
            "they are twice the sub-triangles' "

@@ -8,7 +8,8 @@ fresh processes (benchmarks/bench_budget.py --peaks) stay under them. Memory
 counts what the run keeps per step: the trace's columns, the scan line's
 table snapshots (the ET and AET at every row: rows kept grow as edges x
 steps), sample buffers. Time is the steps the run will record times a cost
-per step of its family, with the work a step cap cannot stop on top (a
+per step of its family (or of the algorithm, where ``spec.step_seconds``
+says it is well above), with the work a step cap cannot stop on top (a
 tessellation's simplicity check, the images of an animation's frames, a
 seed fill's search for its seed); the per-step costs come from
 benchmarks/bench_budget.py --steps.
@@ -121,8 +122,9 @@ def step_bound(spec, points, options, grid, step_cap: int) -> int:
     if spec.name == "aa-temporal":
         bound = options["frames"] * (width * height + 1) + 2
     elif spec.family == "lines":
-        # a few steps per pixel of each segment
-        bound = 8 * _outline_length(spec, points) + 1024
+        # a few steps per pixel of each segment, and one per pixel of the
+        # box or grid an algorithm tests pixel by pixel
+        bound = 8 * _outline_length(spec, points) + 1024 + _visited(spec, points, grid)
     elif spec.name == "flood-fill":
         # two steps a pixel of the grid (measured: 2.0 for a whole square),
         # and the outline drawn pixel by pixel
@@ -130,10 +132,33 @@ def step_bound(spec, points, options, grid, step_cap: int) -> int:
     elif spec.family == "polygons" and spec.name != "polygon-tessellate":
         # a few steps per scan line and a span per pair of edges
         bound = height * (8 + len(spec.inputs.flat(points))) + 1024
+    elif spec.family in ("triangles", "visibility") and spec.inputs.multiple:
+        # each triangle walks its own box, however many overlap: up to 4
+        # steps a pixel of it (measured: scan conversion 2.2-3.9, the
+        # others below 2)
+        count = len(spec.inputs.flat(points))
+        boxes = sum(_box_pixels(group, grid) for group in _groups(spec, points))
+        bound = 4 * boxes + 4 * count + 1024
     else:
         count = len(spec.inputs.flat(points))
         bound = 16 * width * height + 4 * count + 1024
     return min(int(step_cap), bound)
+
+
+def _visited(spec, points, grid) -> int:
+    """Pixels an algorithm tests one by one beyond its path (``spec.visits``)."""
+    if spec.visits == "grid":
+        return int(grid[0]) * int(grid[1])
+    if spec.visits == "box":
+        return _box_pixels(list(spec.inputs.flat(points)), grid)
+    return 0
+
+
+def _groups(spec, points) -> list:
+    """The points of each primitive of a scene of several (three per triangle)."""
+    flat = list(spec.inputs.flat(points))
+    size = max(1, spec.inputs.count or 1)
+    return [flat[k:k + size] for k in range(0, len(flat), size)]
 
 
 def estimate_memory(spec, points, options, grid, step_cap: int) -> int:
@@ -213,7 +238,7 @@ def estimate_seconds(spec, points, options, grid, step_cap: int) -> float:
     measures (an edge table, a simplicity check, the images of an
     animation's frames, a seed fill's search for its seed)."""
     steps = step_bound(spec, points, options, grid, step_cap)
-    seconds = STEP_SECONDS.get(spec.family, 2e-4) * steps
+    seconds = (spec.step_seconds or STEP_SECONDS.get(spec.family, 2e-4)) * steps
     seconds += TABLE_ROW_SECONDS * table_rows(spec, points, options, steps)[0]
     return seconds + _unstepped_seconds(spec, points, options, grid, steps)
 
@@ -238,6 +263,10 @@ def _unstepped_seconds(spec, points, options, grid, steps: int) -> float:
         edges = max(1, math.ceil(math.log2(count + 1))) if options.get("shape") == "polygon" \
             else max(1, count)
         return SAMPLE_SECONDS * steps * options["n"] ** 2 * edges + 3e-8 * count * height
+    if spec.name == "polygon-tessellate-any":
+        # every pixel of the box is tested in exact fractions by the
+        # trapezoids' triangles (measured 25-40 us a pixel of the box)
+        return 8e-5 * _box_pixels([p for c in _contours(spec, points) for p in c], grid)
     if spec.name in SCANLINE_TABLES:
         return 1e-4 * count  # the edge table, in exact fractions
     if spec.name == "flood-fill":

@@ -2,6 +2,7 @@
 snapshots), a time estimate checked before the work starts, every command
 that runs a scene held to them, and the address-space backstop."""
 import os
+import random
 import subprocess
 import sys
 
@@ -181,3 +182,33 @@ def test_the_backstop_keeps_a_lower_hard_limit():
             self.set = limits
     limits = Limits()
     assert budget.limit_address_space(MB, limits) is None and limits.set is None
+
+
+# ------------------------------------------------------- the step bound holds
+def _full_grid_triangles(count: int, size: int) -> list:
+    """``count`` triangles, each covering most of a size x size grid."""
+    return [point for k in range(count)
+            for point in ((0.5, 0.5 + k / 1000), (size - 0.5, 0.7), (size / 2, size - 0.5))]
+
+
+def _random_segments(count: int, size: int, seed: int) -> list:
+    generator = random.Random(seed)
+    return [[(generator.randrange(size), generator.randrange(size)) for _ in range(2)]
+            for _ in range(count)]
+
+
+@pytest.mark.parametrize("name, points, grid", [
+    # 60 overlapping triangles: each walks its own box (the old bound counted the grid once)
+    ("zbuffer", _full_grid_triangles(60, 32), (32, 32)),
+    ("painter", _full_grid_triangles(60, 32), (32, 32)),
+    ("triangle-scan", _full_grid_triangles(30, 40), (40, 40)),
+    ("triangle-barycentric-printed", _full_grid_triangles(30, 40), (40, 40)),
+    # the implicit forms test every pixel of the box, or of the grid
+    *[("line-implicit", segment, (96, 64)) for segment in _random_segments(4, 64, 1)],
+    *[("line-implicit-infinite", segment, (96, 64)) for segment in _random_segments(4, 64, 2)],
+])
+def test_a_run_never_records_more_steps_than_its_bound(name, points, grid):
+    spec = get(name)
+    cap = 10 ** 7
+    recorded = len(spec.record(points, {}, grid, step_cap=cap))
+    assert recorded <= budget.step_bound(spec, points, {}, grid, cap)
