@@ -12,6 +12,7 @@ import sys
 from pathlib import Path
 
 from algorithms.core.registry import InputError
+from app.cli_parser import add_numbers_option
 from app.model import shipped
 from app.teaching import worksheet
 from app.model.files import Output, check_outputs, listed, not_ours, write_atomically
@@ -131,6 +132,7 @@ def add_worksheet_command(parser, commands) -> None:
                        help="columns the student fills in, comma-separated (default %(default)s)")
     sheet.add_argument("--force", action="store_true",
                        help="replace files in DIR that an earlier worksheet did not write")
+    add_numbers_option(sheet, "the sheet and its answer key")
 
 
 def command_worksheet(args) -> int:
@@ -154,7 +156,8 @@ def command_worksheet(args) -> int:
     from app.progress import recording_bar
     bar = recording_bar(scene.spec, scene.points, scene.options, scene.grid)
     try:
-        sheet = worksheet.build(scene, blank, memory, seconds, bar if bar.active else None)
+        sheet = worksheet.build(scene, blank, memory, seconds, bar if bar.active else None,
+                                numbers=args.numbers)
     finally:
         bar.clear()
     pdf_writer = None
