@@ -62,7 +62,7 @@ class StepsDock:
         if trace is None:
             self.view.set_table(None, "No run: place the points first.")
             return
-        numbers = self.window.numbers.numbers  # View > Exact fractions
+        numbers = self.window.numbers_shown  # View > Exact fractions
         if self.table is None or self.table.trace is not trace or self.table.numbers != numbers:
             self.table = StepTable(trace, numbers)
             self.view.set_table(self.table)

@@ -124,8 +124,10 @@ class MainWindow(QMainWindow):
         self.gallery_entry = gallery_entry(self)  # Help > Hard cases…
         self.breakpoints = Breakpoints(self)  # step units, breakpoints, bookmarks
         self.inspector = InspectorDock(self)  # View > Pixel inspector (Ctrl+I)
-        self.numbers = NumbersSetting(self)  # View > Exact fractions
         self.steps = StepsDock(self)  # View > Steps table (Ctrl+T)
+        self.numbers = NumbersSetting(self)  # View > Exact fractions
+        if self.numbers.numbers != "decimal":  # the run on show was shown in decimals
+            self.numbers_changed()
         self.derivation = DerivationOverlay(self)  # s and n of Bresenham's derivation
         self.recording_status = RecordingStatus(self)  # long runs: progress bar and Cancel
         self.exercise_mode = ExerciseMode(self)  # Run > Exercise
@@ -414,7 +416,7 @@ class MainWindow(QMainWindow):
         self.grid.set_shape(shape_paths(spec, player.points, player.options, player.breaks))
         self.guides.run_changed(player)
         self._show_inputs()
-        self._tables = TableIndex(trace, self.numbers.numbers)
+        self._tables = TableIndex(trace, self.numbers_shown)
         self._tally = PixelTally(trace) if trace is not None and has_insight(
             trace.value_names) else None
         self._notes = [] if trace is None else trace.steps_of(Note).tolist()
@@ -462,9 +464,14 @@ class MainWindow(QMainWindow):
     def _frame_changed(self, index: int) -> None:
         self.show_frame()
 
+    @property
+    def numbers_shown(self) -> str:
+        """How the panels show numbers: View > Exact fractions (decimal until it is made)."""
+        return self.numbers.numbers if hasattr(self, "numbers") else "decimal"
+
     def numbers_changed(self) -> None:
         """The numbers setting changed: every panel and the steps table anew."""
-        self._tables = TableIndex(self.player.trace, self.numbers.numbers)
+        self._tables = TableIndex(self.player.trace, self.numbers_shown)
         self.steps.refresh()
         self.show_frame()
 
@@ -509,7 +516,7 @@ class MainWindow(QMainWindow):
         colour = frame_view.colour_name(trace.start)
         colors = (colour,) if colour else ()
         # The trace's own algorithm: a switch may still be recording.
-        rows = shown_rows(self.player.trace_spec, trace, index, self.numbers.numbers)
+        rows = shown_rows(self.player.trace_spec, trace, index, self.numbers_shown)
         rows += self.depth_display.accuracy_rows(state, rows)
         tones = row_tones(rows) if self._tally else None
         # Values as a person reads them: five significant figures, ≤, subscripts.
