@@ -23,7 +23,7 @@ from app.model.runs import DEFAULT_GRID, Rows, check_grid, fit_grid, run_result,
 from app.progress import TerminalBar, drawn, recording_bar
 from app.model.scene import one_line
 from app.model.version import app_version
-from app.cli_parser import CommandError, Parser
+from app.cli_parser import CommandError, Parser, add_numbers_option
 
 
 def build_parser() -> Parser:
@@ -64,6 +64,7 @@ def build_parser() -> Parser:
     output.add_argument("--json", action="store_true", help="print one JSON object")
     output.add_argument("--ascii", action="store_true", help="print the grid as text")
     output.add_argument("--csv", action="store_true", help="with --steps: print the steps as CSV")
+    add_numbers_option(run, "--steps tables (and --json's extra *_exact fields)")
     run.add_argument("--save", metavar="SCENE.json",
                      help="also write the run's scene to a file the window, export and run "
                           "--scene open; prints one line instead of the pixels unless --json, "
@@ -166,6 +167,8 @@ def command_run(args) -> int:
         raise CommandError("--steps prints a table: use it alone, with --json or with --csv")
     if args.force and args.save is None:
         raise CommandError("--force replaces the file of --save: give --save SCENE.json too")
+    if args.numbers != "decimal" and not args.steps:
+        raise CommandError("--numbers sets how the table of steps shows fractions: add --steps")
     if args.scene is not None:
         return run_scene(args)
     if args.algorithm is None or args.points is None:
@@ -287,7 +290,7 @@ def print_run(args, spec, trace, options) -> int:
 def print_steps(args, spec, trace, options) -> int:
     """`run --steps`: the step table, in the output form asked for."""
     from app.model import step_output, steptable
-    table = steptable.StepTable(trace)
+    table = steptable.StepTable(trace, args.numbers)
     if args.json:
         result = run_result(spec, trace, options)
         result["columns"] = step_output.json_columns(table)
@@ -424,6 +427,7 @@ def add_export_command(parser, commands) -> None:
     add_time_limit(export)
     export.add_argument("--frames-limit", metavar="SIZE",
                         help="disk space the PNG frames may take (default 1G)")
+    add_numbers_option(export, "the caption and the panels")
 
 
 def _overlays(text: str) -> tuple:
@@ -480,7 +484,8 @@ def command_export(args) -> int:
         theme=args.theme, loop=not args.once, per=args.per, memory_limit=_memory_limit(args),
         time_limit=_time_limit(args),
         unit=args.unit, reasoning=not args.no_reasoning, text_size=text_size, axes=args.axes,
-        vertex_labels=args.vertex_labels, overlays=_overlays(args.overlays))
+        vertex_labels=args.vertex_labels, overlays=_overlays(args.overlays),
+        numbers=args.numbers)
     frames_limit = (exporting.MAX_FRAMES_BYTES if args.frames_limit is None
                     else budget.parse_size(args.frames_limit, "--frames-limit"))
     bar = _ProgressBar(sys.stderr)

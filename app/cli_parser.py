@@ -48,3 +48,14 @@ class _Recorded:
         action = self.group.add_argument(*args, **kwargs)
         self.arguments.append(action)
         return action
+
+
+def add_numbers_option(parser, what: str) -> None:
+    """``--numbers exact|decimal``: how ``what`` shows fractions
+    (app/model/notation.py)."""
+    from app.model.notation import NUMBERS
+    parser.add_argument("--numbers", choices=NUMBERS, default=NUMBERS[0],
+                        help=f"how {what} show numbers: decimal, or exact: every value the "
+                             "algorithm keeps exactly as a fraction p/q, as the lecture notes "
+                             "print them (an ET's 1/m as -5/2, Bresenham's m, barycentric "
+                             "weights) (default %(default)s)")

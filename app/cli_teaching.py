@@ -12,6 +12,7 @@ import sys
 from pathlib import Path
 
 from algorithms.core.registry import InputError
+from app.cli_parser import add_numbers_option
 from app.model import shipped
 from app.teaching import worksheet
 from app.model.files import Output, check_outputs, listed, not_ours, write_atomically
@@ -131,6 +132,7 @@ def add_worksheet_command(parser, commands) -> None:
                        help="columns the student fills in, comma-separated (default %(default)s)")
     sheet.add_argument("--force", action="store_true",
                        help="replace files in DIR that an earlier worksheet did not write")
+    add_numbers_option(sheet, "the sheet and its answer key")
 
 
 def command_worksheet(args) -> int:
@@ -153,7 +155,7 @@ def command_worksheet(args) -> int:
         else budget.parse_seconds(args.time_limit)
     from app.progress import drawn, recording_bar
     with drawn(recording_bar(scene.spec, scene.points, scene.options, scene.grid)) as progress:
-        sheet = worksheet.build(scene, blank, memory, seconds, progress)
+        sheet = worksheet.build(scene, blank, memory, seconds, progress, numbers=args.numbers)
     pdf_writer = None
     if args.format == "pdf":
         from app.gui.worksheet_pdf import write_pdf

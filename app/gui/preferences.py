@@ -29,6 +29,7 @@ from algorithms.core.raster import MAX_GRID
 from algorithms.core.registry import InputError
 from algorithms.core.trace import DEFAULT_STEP_CAP, MAX_STEP_CAP
 from app.model.budget import DEFAULT_MEMORY_LIMIT
+from app.model.notation import NUMBERS
 from widgets.transport import SPEED_MAX, SPEED_MIN
 
 from app.gui.appdata import open_settings
@@ -105,6 +106,8 @@ SETTINGS = {
     "step_cap": Setting("limits/step_cap", DEFAULT_STEP_CAP, _int_in(*STEP_CAP_RANGE)),
     "max_grid": Setting("limits/max_grid", MAX_GRID, _int_in(MIN_GRID, MAX_GRID)),
     "memory_mb": Setting("limits/memory_mb", DEFAULT_MEMORY_LIMIT // MB, _int_in(*MEMORY_MB_RANGE)),
+    # View > Exact fractions (app/gui/numbers_setting.py)
+    "numbers": Setting("appearance/numbers", NUMBERS[0], _one_of(*NUMBERS)),
 }
 
 

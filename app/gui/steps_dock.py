@@ -62,8 +62,9 @@ class StepsDock:
         if trace is None:
             self.view.set_table(None, "No run: place the points first.")
             return
-        if self.table is None or self.table.trace is not trace:
-            self.table = StepTable(trace)
+        numbers = self.window.numbers_shown  # View > Exact fractions
+        if self.table is None or self.table.trace is not trace or self.table.numbers != numbers:
+            self.table = StepTable(trace, numbers)
             self.view.set_table(self.table)
         self.follow()
 

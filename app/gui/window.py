@@ -32,6 +32,7 @@ from app.gui.window_guides import WindowGuides
 from app.model.inputs import split_contours
 from app.model.examples import default_scene
 from app.model.inputs import group_size, open_ended
+from app.model.exact import shown_rows
 from app.model.tables import TableIndex
 from app.model.branches import decision_branches
 from app.model.tools import (circle_kind, circle_options, clamp_option, drawing_mode,
@@ -116,6 +117,7 @@ class MainWindow(QMainWindow):
         from app.gui.recording import RecordingStatus
         from app.gui.derivation_overlay import DerivationOverlay
         from app.gui.steps_dock import StepsDock
+        from app.gui.numbers_setting import NumbersSetting
         # Stored preferences, Edit > Preferences (Ctrl+,) and View > Grid lines.
         self.preferences = PreferencesController(self, Preferences())
         self.compare_entry = compare_entry(self)  # View > Compare… (Ctrl+K)
@@ -123,6 +125,9 @@ class MainWindow(QMainWindow):
         self.breakpoints = Breakpoints(self)  # step units, breakpoints, bookmarks
         self.inspector = InspectorDock(self)  # View > Pixel inspector (Ctrl+I)
         self.steps = StepsDock(self)  # View > Steps table (Ctrl+T)
+        self.numbers = NumbersSetting(self)  # View > Exact fractions
+        if self.numbers.numbers != "decimal":  # the run on show was shown in decimals
+            self.numbers_changed()
         self.derivation = DerivationOverlay(self)  # s and n of Bresenham's derivation
         self.recording_status = RecordingStatus(self)  # long runs: progress bar and Cancel
         self.exercise_mode = ExerciseMode(self)  # Run > Exercise
@@ -411,7 +416,7 @@ class MainWindow(QMainWindow):
         self.grid.set_shape(shape_paths(spec, player.points, player.options, player.breaks))
         self.guides.run_changed(player)
         self._show_inputs()
-        self._tables = TableIndex(trace)
+        self._tables = TableIndex(trace, self.numbers_shown)
         self._tally = PixelTally(trace) if trace is not None and has_insight(
             trace.value_names) else None
         self._notes = [] if trace is None else trace.steps_of(Note).tolist()
@@ -459,6 +464,17 @@ class MainWindow(QMainWindow):
     def _frame_changed(self, index: int) -> None:
         self.show_frame()
 
+    @property
+    def numbers_shown(self) -> str:
+        """How the panels show numbers: View > Exact fractions (decimal until it is made)."""
+        return self.numbers.numbers if hasattr(self, "numbers") else "decimal"
+
+    def numbers_changed(self) -> None:
+        """The numbers setting changed: every panel and the steps table anew."""
+        self._tables = TableIndex(self.player.trace, self.numbers_shown)
+        self.steps.refresh()
+        self.show_frame()
+
     def show_frame(self) -> None:
         """Bring the grid and the panels to the player's current step."""
         player = self.player
@@ -500,7 +516,7 @@ class MainWindow(QMainWindow):
         colour = frame_view.colour_name(trace.start)
         colors = (colour,) if colour else ()
         # The trace's own algorithm: a switch may still be recording.
-        rows = self.player.trace_spec.panel_rows(trace, index)
+        rows = shown_rows(self.player.trace_spec, trace, index, self.numbers_shown)
         rows += self.depth_display.accuracy_rows(state, rows)
         tones = row_tones(rows) if self._tally else None
         # Values as a person reads them: five significant figures, ≤, subscripts.

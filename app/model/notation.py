@@ -16,6 +16,13 @@ goes through here:
 * ``subscripts`` (for Pillow frames: Unicode) and ``rich`` (for Qt rich
   text: <sub>) set an index written with an underscore, d_i+1 or
   x_{left}, as a subscript.
+
+One setting, ``numbers``, is shared by the window's panels, the steps
+table, exports and worksheets: "decimal" (the default) shows values as
+they have always read; "exact" shows every value the algorithm holds as
+an exact fraction (an ET's 1/m, Bresenham's m, the barycentric weights of
+a triangle with lattice vertices: app/model/exact.py) as p/q, the way the
+lecture notes print them. A float is never turned into a fraction.
 """
 from __future__ import annotations
 
@@ -25,6 +32,7 @@ from fractions import Fraction
 from functools import lru_cache
 
 DIGITS = 5  # significant figures of a shown float
+NUMBERS = ("decimal", "exact")  # the display setting's values, default first
 
 _SUB = str.maketrans("0123456789+-=()aehijklmnoprstuvx",
                      "₀₁₂₃₄₅₆₇₈₉₊₋₌₍₎ₐₑₕᵢⱼₖₗₘₙₒₚᵣₛₜᵤᵥₓ")
@@ -38,16 +46,28 @@ _REPEAT = re.compile(r"= (-?[\w.]+) = \1(?=$|[,;)\s])")
 _PLUS_BRACKET = re.compile(r"([+\-]) \((-?)(\d[\d.]*)\)")
 
 
-def number(value, digits: int = DIGITS) -> str:
+def checked_numbers(numbers: str) -> str:
+    """``numbers`` if it is a value of the setting, else ValueError with one line."""
+    if numbers not in NUMBERS:
+        raise ValueError(f"numbers must be {' or '.join(NUMBERS)}, got {numbers!r}")
+    return numbers
+
+
+def fraction(value: Fraction) -> str:
+    """An exact value as the notes print it: -5/2, 3 (no decimal)."""
+    return str(value.numerator) if value.denominator == 1 else f"{value.numerator}/{value.denominator}"
+
+
+def number(value, digits: int = DIGITS, numbers: str = "decimal") -> str:
     """Short text for a number: whole numbers plain, floats to ``digits``
     significant figures (every digit where that would hide a near miss
-    of a tie),
-    fractions as p/q with their decimal value."""
+    of a tie), fractions as p/q with their decimal value (``numbers``
+    "exact": as p/q alone)."""
     if isinstance(value, bool) or not isinstance(value, (int, float, Fraction)):
         return str(value)
     if isinstance(value, Fraction):
-        if value.denominator == 1:
-            return str(value.numerator)
+        if value.denominator == 1 or numbers == "exact":
+            return fraction(value)
         return f"{value} ({number(float(value), digits)})"
     if isinstance(value, int):
         return str(value)

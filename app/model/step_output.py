@@ -3,9 +3,14 @@
 ``steptable.aligned_text`` builds every row at once, which a million-step
 run cannot afford; here the column widths are measured in a first pass and
 the rows written in a second, so memory stays at one block of rows.
+
+With the table's ``numbers`` "exact", the JSON forms keep every field as it
+is and add the exact values as "p/q" strings: a "<name>_exact" column per
+variable that can have one, and "<column>_exact" in a table's rows.
 """
 from __future__ import annotations
 
+from app.model.notation import fraction
 from app.model.steptable import StepTable, cell_to_json
 
 BLOCK = 4096  # rows made and written at a time
@@ -14,12 +19,18 @@ BLOCK = 4096  # rows made and written at a time
 def json_row(table: StepTable, i: int) -> list:
     """Step i's cells as JSON values, in column order (null where unknown)."""
     cells = table.row(i)
-    return [cell_to_json(cells.get(key)) for key in table.keys]
+    row = [cell_to_json(cells.get(key), table.numbers) for key in table.keys]
+    extra = table.exact_columns()
+    if extra:
+        exact = table.exact_cells(i, cells)
+        row += [fraction(exact[c.key]) if c.key in exact else None for c in extra]
+    return row
 
 
 def json_columns(table: StepTable) -> list[dict]:
     """The columns for a JSON reader: key, heading and kind."""
-    return [{"key": c.key, "title": c.title, "kind": c.kind} for c in table.columns]
+    return [{"key": c.key if c.kind != "exact" else c.title, "title": c.title, "kind": c.kind}
+            for c in table.columns + table.exact_columns()]
 
 
 def write_aligned(table: StepTable, stream) -> int:
@@ -49,6 +60,10 @@ def json_step(table: StepTable, i: int) -> dict:
     groups = {"fixed": step, "variable": variables, "table": tables}
     for column in table.columns:
         if column.key in cells:  # a variable not set yet is left out
-            groups[column.kind][column.key] = cell_to_json(cells[column.key])
+            groups[column.kind][column.key] = cell_to_json(cells[column.key], table.numbers)
+    for column in table.exact_columns():
+        value = table.exact_cells(i, cells).get(column.key)
+        if value is not None:
+            variables[column.title] = fraction(value)
     step["variables"], step["tables"] = variables, tables
     return step

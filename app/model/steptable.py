@@ -6,7 +6,10 @@ pixel it names (or the run a Span writes), the branch taken, every named
 variable as the variables panel shows it at that step, and the latest
 snapshot of each table (edge table, active edge table, ...). The command
 line prints it (``run --steps``), the Steps dock shows it, worksheets leave
-columns of it blank.
+columns of it blank. ``numbers`` (app/model/notation.py) is how its text
+shows fractions; with "exact" the text shows the exact values where the run
+has them (app/model/exact.py), and the JSON form keeps its fields and adds
+the exact values as "p/q" strings (app/model/step_output.py).
 
 Rows are made on demand: a million-step run does not build a million rows
 to show twenty. Every ``CHECKPOINT`` steps the table keeps the variables set
@@ -18,10 +21,13 @@ from __future__ import annotations
 import bisect
 import csv
 from dataclasses import dataclass
+from fractions import Fraction
 
 from algorithms.core.steps import Span, Table, Vars
 
 from app.model.escape import csv_row
+from app.model.exact import EXACT_NAMES, exact_values
+from app.model.notation import checked_numbers, fraction
 from app.model.tables import cell_text
 
 CHECKPOINT = 4096  # steps between saved variable states
@@ -33,7 +39,7 @@ class Column:
 
     key: str
     title: str
-    kind: str = "fixed"  # "fixed", "variable" or "table"
+    kind: str = "fixed"  # "fixed", "variable", "table" or (JSON only) "exact"
 
 
 FIXED_COLUMNS = (
@@ -48,9 +54,12 @@ FIXED_COLUMNS = (
 class StepTable:
     """The rows of one trace's steps, made on demand (see the module text)."""
 
-    def __init__(self, trace):
+    def __init__(self, trace, numbers: str = "decimal"):
         self.trace = trace
+        self.numbers = checked_numbers(numbers)
         self.constants = dict(trace.start.constants)
+        if self.numbers == "exact":
+            self.constants.update(_implied(trace))
         names = list(trace.value_names)
         self._checkpoints: list[tuple[int, dict]] = [(-1, {})]
         state: dict = {}
@@ -99,7 +108,26 @@ class StepTable:
     def text_row(self, i: int) -> list[str]:
         """Step i's cells as text, in column order ("" where nothing is known)."""
         cells = self.row(i)
-        return [cell_to_text(cells.get(column.key)) for column in self.columns]
+        cells.update(self.exact_cells(i, cells))
+        return [cell_to_text(cells.get(column.key), self.numbers) for column in self.columns]
+
+    def exact_cells(self, i: int, cells: dict | None = None) -> dict:
+        """With "exact": step i's values that have an exact form, as
+        Fractions (app/model/exact.py); else {}."""
+        if self.numbers != "exact":
+            return {}
+        cells = self.row(i) if cells is None else cells
+        return {name: value for name, value in exact_values(self.trace, i, cells).items()
+                if name in cells}
+
+    def exact_columns(self) -> tuple[Column, ...]:
+        """With "exact": a column "<name>_exact" for each variable that can
+        have an exact form (its p/q text, null at steps where it has none),
+        for the JSON form; else none."""
+        if self.numbers != "exact":
+            return ()
+        return tuple(Column(c.key, f"{c.key}_exact", "exact") for c in self.columns
+                     if c.kind == "variable" and c.key in EXACT_NAMES)
 
     def _variables(self, i: int) -> dict:
         """The Vars values set at or before step i."""
@@ -126,24 +154,32 @@ def _pixel(step):
     return step.pixel
 
 
-def cell_to_text(value) -> str:
+def _implied(trace) -> dict:
+    """Exact values a run implies without recording them (Bresenham's m)."""
+    return {name: value for name, value in exact_values(trace, 0).items()
+            if name not in trace.start.constants and name not in trace.value_names}
+
+
+def cell_to_text(value, numbers: str = "decimal") -> str:
     """A cell as plain text: tables as rows in brackets, runs as x0..x1."""
     if value is None:
         return ""
     if isinstance(value, Table):
-        rows = ("[" + " ".join(f"{c}={cell_text(v)}" for c, v in zip(value.columns, row)) + "]"
-                for row in value.rows)
+        rows = ("[" + " ".join(f"{c}={cell_text(v, numbers)}" for c, v in zip(value.columns, row))
+                + "]" for row in value.rows)
         return " ".join(rows) or "(empty)"
     if isinstance(value, tuple) and value and value[0] == "span":
         _, x0, x1, y = value
         return f"({x0}..{x1}, {y})"
-    return cell_text(value)
+    return cell_text(value, numbers)
 
 
-def cell_to_json(value):
-    """A cell as a JSON value: numbers stay numbers, tables become lists of rows."""
+def cell_to_json(value, numbers: str = "decimal"):
+    """A cell as a JSON value: numbers stay numbers, tables become lists of
+    rows. With ``numbers`` "exact" a table row gains "<column>_exact": "p/q"
+    beside each cell that holds a fraction; every other field stays as it is."""
     if isinstance(value, Table):
-        return [dict(zip(value.columns, (cell_to_json(v) for v in row))) for row in value.rows]
+        return [_json_table_row(value.columns, row, numbers) for row in value.rows]
     if isinstance(value, tuple) and value and value[0] == "span":
         _, x0, x1, y = value
         return {"x_start": x0, "x_end": x1, "y": y}
@@ -154,6 +190,14 @@ def cell_to_json(value):
     if isinstance(value, (bool, int, float, str)) or value is None:
         return value
     return cell_text(value)  # fractions and anything else: their exact text
+
+
+def _json_table_row(columns, row, numbers: str) -> dict:
+    shown = dict(zip(columns, (cell_to_json(v) for v in row)))
+    if numbers == "exact":
+        shown.update((f"{c}_exact", fraction(v)) for c, v in zip(columns, row)
+                     if isinstance(v, Fraction) and v.denominator != 1)
+    return shown
 
 
 def write_csv(table: StepTable, stream, lo: int = 0, hi: int | None = None) -> int:

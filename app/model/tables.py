@@ -15,6 +15,8 @@ from fractions import Fraction
 from algorithms.core.registry import format_value
 from algorithms.core.steps import Table
 
+from app.model.notation import checked_numbers, fraction
+
 # A fraction is shown as a decimal when that decimal is exact and this short.
 MAX_DECIMALS = 6
 
@@ -43,8 +45,9 @@ class ShownTable:
 class TableIndex:
     """The Table records of one trace, by name, for lookup at any step."""
 
-    def __init__(self, trace):
+    def __init__(self, trace, numbers: str = "decimal"):
         self.trace = trace
+        self.numbers = checked_numbers(numbers)  # app/model/notation.py: decimal or exact
         self.names: list[str] = []  # in the order the tables first appear
         self._steps: dict[str, list[int]] = {}
         # Formatted snapshots by (record step, fresh): playing a long run
@@ -73,15 +76,16 @@ class TableIndex:
             if key not in self._cache:
                 record = self.trace.record_at(steps[k])
                 before = self.trace.record_at(steps[k - 1]) if k > 0 else None
-                self._cache[key] = _shown(record, before, *key)
+                self._cache[key] = _shown(record, before, *key, self.numbers)
             shown.append(self._cache[key])
         return shown
 
 
-def _shown(record: Table, before: Table | None, step: int, fresh: bool) -> ShownTable:
-    rows = tuple(tuple(cell_text(v) for v in row) for row in record.rows)
-    tips = {(r, c): cell_tip(v) for r, row in enumerate(record.rows)
-            for c, v in enumerate(row) if cell_tip(v) != rows[r][c]}
+def _shown(record: Table, before: Table | None, step: int, fresh: bool,
+           numbers: str = "decimal") -> ShownTable:
+    rows = tuple(tuple(cell_text(v, numbers) for v in row) for row in record.rows)
+    tips = {(r, c): cell_tip(v, numbers) for r, row in enumerate(record.rows)
+            for c, v in enumerate(row) if cell_tip(v, numbers) != rows[r][c]}
     changed_rows, changed_cells = changes(record, before)
     return ShownTable(record.name, tuple(record.columns), rows, step, fresh,
                       frozenset(changed_rows), frozenset(changed_cells), tips)
@@ -135,30 +139,31 @@ def _key_column(record: Table, before: Table) -> int | None:
     return None
 
 
-def cell_text(value) -> str:
+def cell_text(value, numbers: str = "decimal") -> str:
     """Short text for a cell.
 
-    A fraction whose decimal is exact and short reads as that decimal
-    (37/16 -> 2.3125); any other as a rounded decimal marked as such
-    (296/15 -> ~19.733), the exact fraction being in the cell's tooltip.
+    With ``numbers`` "decimal", a fraction whose decimal is exact and short
+    reads as that decimal (37/16 -> 2.3125); any other as a rounded decimal
+    marked as such (296/15 -> ~19.733), the exact fraction being in the
+    cell's tooltip. With "exact", every fraction reads as p/q (-5/2).
     """
     if isinstance(value, Fraction):
-        if value.denominator == 1:
-            return str(value.numerator)
+        if value.denominator == 1 or numbers == "exact":
+            return fraction(value)
         decimal = _exact_decimal(value)
         if decimal is not None:
             return decimal
         return f"\u2248{float(value):.5g}"
     if isinstance(value, tuple):
-        return "(" + ", ".join(cell_text(v) for v in value) + ")"
+        return "(" + ", ".join(cell_text(v, numbers) for v in value) + ")"
     return format_value(value)
 
 
-def cell_tip(value) -> str:
-    """The exact value, for a tooltip."""
+def cell_tip(value, numbers: str = "decimal") -> str:
+    """The exact value and its decimal, for a tooltip."""
     if isinstance(value, Fraction) and value.denominator != 1:
-        return f"{value.numerator}/{value.denominator} = {float(value)!r}"
-    return cell_text(value)
+        return f"{fraction(value)} = {float(value)!r}"
+    return cell_text(value, numbers)
 
 
 def _exact_decimal(value: Fraction) -> str | None:

@@ -25,6 +25,7 @@ from algorithms.core import registry
 from algorithms.core.steps import PLOT, VISIT, Span, Vars
 
 from app.model.geometry import final_coverage
+from app.model.exact import exact_values
 from app.model.notation import number
 from app.render import compose as render
 from app.render.compose import PALETTE, Overlay, Palette, compose
@@ -254,10 +255,11 @@ def html_caption(state, last: int) -> str:
     return step_caption(state, last, bold=lambda text: f"<b>{text}</b>")
 
 
-def key_values(trace, state) -> list[tuple[str, str]]:
+def key_values(trace, state, numbers: str = "decimal") -> list[tuple[str, str]]:
     """The values that change from step to step (the decision variable d_i,
     say), as (name, text), decision variable first. Constants of the run
-    (dx, incrE, ...) are left to the variables panel."""
+    (dx, incrE, ...) are left to the variables panel. ``numbers`` "exact":
+    a value with an exact form (app/model/exact.py) reads as p/q."""
     start = trace.start
     names = list(trace.value_names)
     record = state.step.record
@@ -268,16 +270,17 @@ def key_values(trace, state) -> list[tuple[str, str]]:
         names.remove(decision)
         names.insert(0, decision)
     colour = colour_name(start)
+    exact = exact_values(trace, state.index, state.variables) if numbers == "exact" else {}
     rows = []
     for name in names:
         if name not in state.variables:
             continue
-        value = state.variables[name]
+        value = exact.get(name, state.variables[name])
         if name == colour and isinstance(value, (int, float)) and value == value \
                 and 0 <= value <= 0xFFFFFF and float(value).is_integer():
             text = f"#{int(value):06x}"
         else:
-            text = number(value)
+            text = number(value, numbers=numbers)
         rows.append((name, text))
     return rows
 

@@ -95,7 +95,7 @@ def page_data(scene, trace, settings) -> dict:
         "constants": {str(k): _json_value(v) for k, v in start.constants.items()},
         "valueNames": list(trace.value_names),
         "arrays": _arrays(trace),
-        "rich": _pack_json(_rich(trace)),
+        "rich": _pack_json(_rich(trace, settings.numbers)),
         "paths": [[[list(map(float, p)) for p in points], bool(closed)]
                   for points, closed in scene_paths(spec, scene.points, spec.resolve(scene.options))],
         "bookmarks": [{"name": b["name"], "step": int(b["step"])} for b in scene.bookmarks],
@@ -170,15 +170,17 @@ def _pack_json(value) -> dict:
     return {"type": "json", "data": base64.b64encode(zlib.compress(text, 9)).decode("ascii")}
 
 
-def _rich(trace) -> list:
-    """[step, kind, payload] for every Vars, Table, Note and Span record."""
+def _rich(trace, numbers: str = "decimal") -> list:
+    """[step, kind, payload] for every Vars, Table, Note and Span record;
+    table cells as ``numbers`` (decimal or exact) shows them."""
     out = []
     for index, record in trace.records_of(Vars, Table, Note, Span):
         if isinstance(record, Vars):
             out.append([index, "vars", {str(k): _json_value(v) for k, v in record.values.items()}])
         elif isinstance(record, Table):
             out.append([index, "table", {"name": record.name, "columns": list(record.columns),
-                                         "rows": [[_cell(v) for v in row] for row in record.rows]}])
+                                         "rows": [[_cell(v, numbers) for v in row]
+                                                  for row in record.rows]}])
         elif isinstance(record, Note):
             out.append([index, "note", record.text])
         else:
@@ -197,9 +199,9 @@ def _json_value(value):
     return _cell(value)
 
 
-def _cell(value) -> str:
+def _cell(value, numbers: str = "decimal") -> str:
     from app.model.tables import cell_text
-    return cell_text(value) if not isinstance(value, Fraction) or value.denominator != 1 \
+    return cell_text(value, numbers) if not isinstance(value, Fraction) or value.denominator != 1 \
         else str(value.numerator)
 
 

@@ -23,6 +23,7 @@ from algorithms.core.trace import DEFAULT_STEP_CAP
 
 from app.model import runs
 from app.model.budget import DEFAULT_MEMORY_LIMIT, DEFAULT_TIME_LIMIT
+from app.model.notation import NUMBERS
 from app.model.scene import one_line
 from app.render.overlays import OVERLAYS
 from app.render.palette import THEMES
@@ -82,6 +83,7 @@ class ExportSettings:
     memory_limit: int = DEFAULT_MEMORY_LIMIT  # bytes the run may need (app/model/budget.py)
     time_limit: float = DEFAULT_TIME_LIMIT  # seconds the run may take, as estimated
     overlays: tuple = ()     # names from app/render/overlays.py's OVERLAYS
+    numbers: str = "decimal"  # fractions as decimals or exact p/q (app/model/notation.py)
     # Called with the steps recorded so far while the run is recorded (the
     # command line's terminal bar); not a setting of the picture.
     recording: object = field(default=None, compare=False, repr=False)
@@ -113,6 +115,8 @@ class ExportSettings:
                                  or not MIN_TEXT <= text <= MAX_TEXT):
             raise ExportError(f"text size must be a whole number of pixels {MIN_TEXT} .. "
                               f"{MAX_TEXT}, got {text!r}")
+        if self.numbers not in NUMBERS:
+            raise ExportError(f"numbers must be one of {', '.join(NUMBERS)}, got {self.numbers!r}")
         if not set(self.overlays) <= set(OVERLAYS):
             raise ExportError(f"overlays must be among {', '.join(OVERLAYS)}, got "
                               f"{', '.join(map(str, self.overlays))}")

@@ -20,6 +20,7 @@ from algorithms.core.trace import FrameState
 
 from app.model.notation import shown
 from app.model.shipped import FONTS
+from app.model.exact import shown_rows
 from app.model.tables import TableIndex
 from app.render.frame import key_values, step_caption
 
@@ -124,7 +125,8 @@ class TextParts:
         self.panel_height = {"code": self.code_height, "variables": variables_height,
                              "both": self.code_height + variables_height, "none": 0,
                              "tables": shortest}[settings.panel]
-        self._tables = TableIndex(renderer.trace) if settings.panel == "tables" else None
+        self._tables = (TableIndex(renderer.trace, settings.numbers) if settings.panel == "tables"
+                        else None)
         self._code_cache: dict[int | None, np.ndarray] = {}
         self._code_rows: dict[int, Image.Image] = {}
 
@@ -204,7 +206,7 @@ class TextParts:
     def caption_parts(self, state) -> list[str]:
         """The caption's values, each labelled: "name = value" for the
         step's values, "name: text" for what the algorithm explains."""
-        rows = key_values(self.r.trace, state)
+        rows = key_values(self.r.trace, state, self.r.settings.numbers)
         names = {name for name, _ in rows}
         extra = [(n, t) for n, t in self._rows(state.index)[len(state.variables):]
                  if n not in names]
@@ -256,7 +258,7 @@ class TextParts:
         """The variables panel's rows at step ``index``, as a person reads
         them (app/model/notation.py)."""
         return [(shown(name), shown(text)) for name, text in
-                self.r.spec.panel_rows(self.r.trace, index)]
+                shown_rows(self.r.spec, self.r.trace, index, self.r.settings.numbers)]
 
     # -------------------------------------------------------------- panel
     def panel(self, state) -> np.ndarray:

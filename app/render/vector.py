@@ -22,6 +22,7 @@ from pathlib import Path
 import numpy as np
 
 from app.model.escape import latex_comment, latex_file_name, latex_text, xml_text
+from app.model.exact import shown_rows
 from app.render.compose import OUTLINE_STYLE, compose
 from app.render.frame import frame_marks, key_values, step_caption
 from app.render.reasoning import step_guides
@@ -66,7 +67,8 @@ def draw_frame(renderer, index: int) -> Drawing:
     palette = theme.palette
     state = trace.state_at(index)
     code = settings.panel in ("code", "both")
-    rows = renderer.spec.panel_rows(trace, index) if settings.panel in ("variables", "both") else []
+    rows = (shown_rows(renderer.spec, trace, index, settings.numbers)
+            if settings.panel in ("variables", "both") else [])
     panel_width = _code_width(trace) if code else (_rows_width(rows) if rows else 0)
     grid_w, grid_h = trace.width * CELL, trace.height * CELL
     caption_h = 3 * (FONT + 4) + 2 * PAD if settings.caption else 0
@@ -92,10 +94,10 @@ def draw_frame(renderer, index: int) -> Drawing:
     if code:
         _code_panel(drawing, trace, state.step.line, grid_w, panel_width, theme)
     if rows:
-        before = dict(renderer.spec.panel_rows(trace, index - 1)) if index else {}
+        before = dict(shown_rows(renderer.spec, trace, index - 1, settings.numbers)) if index else {}
         _variables(drawing, rows, before, grid_w, code_h, theme)
     if caption_h:
-        _caption(drawing, trace, state, body_h, theme)
+        _caption(drawing, trace, state, body_h, theme, settings.numbers)
     return drawing
 
 
@@ -190,10 +192,10 @@ def _code_panel(drawing, trace, current, left, width, theme) -> None:
                      mono=True, bold=number == current)
 
 
-def _caption(drawing, trace, state, top, theme) -> None:
+def _caption(drawing, trace, state, top, theme, numbers: str) -> None:
     drawing.rect(0, top, drawing.width, drawing.height - top, fill=theme.caption)
     drawing.text(PAD, top + PAD + FONT, step_caption(state, len(trace) - 1), theme.text, bold=True)
-    values = "   ".join(f"{name} = {text}" for name, text in key_values(trace, state))
+    values = "   ".join(f"{name} = {text}" for name, text in key_values(trace, state, numbers))
     if values:
         drawing.text(PAD, top + PAD + 2 * FONT + 4, values, theme.muted)
     line = trace.code[state.step.line].text.strip()

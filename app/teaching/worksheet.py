@@ -67,13 +67,16 @@ def worked_steps(trace, limit: int | None = None) -> list[int]:
 
 
 def build(scene, blank=None, memory_limit: int = budget.DEFAULT_MEMORY_LIMIT,
-          time_limit: float = budget.DEFAULT_TIME_LIMIT, progress=None) -> Worksheet:
+          time_limit: float = budget.DEFAULT_TIME_LIMIT, progress=None,
+          numbers: str = "decimal") -> Worksheet:
     """The worksheet of the scene's run; a run over the budget is refused
-    (BudgetError) before it starts. ``progress`` hears the recording's steps."""
+    (BudgetError) before it starts. ``progress`` hears the recording's steps;
+    ``numbers`` (decimal or exact: app/model/notation.py) is how its
+    values read."""
     spec = scene.spec
     trace = runs.record(spec, scene.points, scene.options, (scene.width, scene.height),
                         DEFAULT_STEP_CAP, memory_limit, time_limit, progress)
-    table = StepTable(trace)
+    table = StepTable(trace, numbers)
     keys = [c.key for c in table.columns if c.key in FIXED or (
         c.kind == "variable" and c.key not in table.constants)]
     blank = tuple(DEFAULT_BLANK if blank is None else blank)
@@ -89,7 +92,8 @@ def build(scene, blank=None, memory_limit: int = budget.DEFAULT_MEMORY_LIMIT,
     return Worksheet(
         title=scene.title or spec.title, algorithm=spec.name,
         code=tuple(f"{n + 1}  {line.text}" for n, line in enumerate(trace.code)),
-        constants=tuple((name, cell_to_text(value)) for name, value in table.constants.items()),
+        constants=tuple((name, cell_to_text(value, numbers))
+                        for name, value in table.constants.items()),
         columns=tuple(keys), rows=rows, blank=frozenset(blank), grid=(scene.width, scene.height),
         paths=tuple(scene_paths(spec, scene.points, spec.resolve(scene.options))),
         pixels=frozenset(map(tuple, writes.pixels.tolist())), note=note)
