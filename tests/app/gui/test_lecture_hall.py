@@ -123,7 +123,7 @@ def test_zoom_at_1280_by_720_keeps_the_layout_whole(window, qtbot, presses):
         QTest.keyClick(window.grid, Qt.Key.Key_Equal, Qt.KeyboardModifier.ControlModifier)
     qtbot.wait(100)
     t = window.transport
-    speed = [w for w in (t.speed_label, t.speed_slider, t.speed_box) if w.isVisible()]
+    speed = [w for w in (t.speed_slider, t.speed_box) if w.isVisible()]
     assert t.counter.geometry().right() < min(w.geometry().left() for w in speed)
     assert t.counter.width() >= t.counter.fontMetrics().horizontalAdvance(t.counter.text())
     for widget in (window.transport, t.counter, t.speed_box, window.code_dock,
@@ -157,8 +157,8 @@ def test_transport_keys_step_after_the_search_and_with_a_clicker(window, qtbot):
 
 def test_b_blanks_the_screen_and_b_brings_it_back(window, qtbot):
     QTest.keyClick(window.grid, Qt.Key.Key_B)
-    blank = window.presenter.blank
-    assert blank.isVisible() and blank.geometry() == window.rect()
+    blank = window.findChild(QWidget, "blankScreen")
+    assert blank is not None and blank.isVisible() and blank.geometry() == window.rect()
     picture = blank.grab().toImage()
     assert picture.pixelColor(picture.width() // 2, picture.height() // 2).name() == "#000000"
     QTest.keyClick(window.grid, Qt.Key.Key_B)
@@ -181,8 +181,8 @@ def test_a_click_on_the_groove_goes_to_that_step(window, qtbot):
     last = timeline.maximum()
     x = timeline.width() * 3 // 4
     QTest.mouseClick(timeline, Qt.MouseButton.LeftButton, pos=QPoint(x, timeline.height() // 2))
-    assert abs(window.player.index - timeline.value_at(x)) <= 1
-    assert window.player.index >= last // 2  # not one page (a twentieth) along
+    # Where the pointer is, give or take the handle's half-width at the ends.
+    assert abs(window.player.index - 0.75 * last) <= max(2, last // 10)
 
 
 def test_a_primitive_drawn_starts_at_its_first_step(window, qtbot):
