@@ -507,10 +507,10 @@ class VariablesPanel(QWidget):
         self.table.setSpan(row, 0, 1, 2)
         group = self._cell(row, 0)
         count = len(constants)
+        # Short: the names' column is as wide as its widest text, this one's too.
         group.setText(("\u25b8 " if self._folded else "\u25be ")
-                      + f"{count} constant{'s' if count != 1 else ''}"
-                      + (": " + ", ".join(constants) if self._folded else ""))
-        group.setToolTip("Values the run never changes: click to "
+                      + f"{count} constant{'s' if count != 1 else ''}")
+        group.setToolTip(", ".join(constants) + ": values the run never changes; click to "
                          + ("show them" if self._folded else "fold them away"))
         group.setForeground(QBrush(LINE_NUMBER))
         value = self._cell(row, 1)
