@@ -29,6 +29,7 @@ CHIP_COLORS = {"positive": ("#d3f9d8", "#1f6b35"), "negative": ("#ffe3e3", "#a61
                "out": ("#868e96", "#ffffff"), "info": ("#e7ecf2", "#3d4754")}
 
 
+ROWS_BEFORE_PLOT = 4  # rows the table keeps in sight before the plot gets room
 SERIES_DOTS = 300  # more steps than this: no dot per step on the plot over the run
 # A decision variable's dots by the branch its step took (E, NE, ...: the
 # k-th branch of a decision takes the k-th colour), and the steps that
@@ -51,9 +52,12 @@ def monospace_font(scale: float = 1.0) -> QFont:
     return font
 
 
-def _value_fonts(scale: float) -> tuple[QFont, QFont]:
-    """The values' type, plain and bold (a value the step changed)."""
-    plain = monospace_font(scale)
+def _value_fonts(like: QFont) -> tuple[QFont, QFont]:
+    """The values' type, plain and bold (a value the step changed): the
+    fixed-width face at the size of ``like``."""
+    plain = monospace_font()
+    if like.pointSizeF() > 0:
+        plain.setPointSizeF(like.pointSizeF())
     bold = QFont(plain)
     bold.setBold(True)
     return plain, bold
@@ -271,11 +275,15 @@ class VariablesPanel(QWidget):
         self.chips.setTextFormat(Qt.TextFormat.RichText)
         self.chips.hide()
         self.table = self._make_table()
-        self._value_fonts = _value_fonts(1.0)
+        self.table.cellClicked.connect(self._clicked)
+        self._value_fonts = _value_fonts(self.font())
 
         self.plot = self._make_plot()
         self.plot_title = QLabel(self)
         self.plot_title.setObjectName("seriesTitle")
+        self.plot_title.setWordWrap(True)  # its length must not set the dock's width
+        self._plot_wanted = False  # a series to plot
+        self._plot_allowed = True  # presentation mode puts the plot aside
 
         layout = QVBoxLayout(self)
         layout.setContentsMargins(6, 6, 6, 6)
@@ -286,6 +294,11 @@ class VariablesPanel(QWidget):
         layout.addWidget(self.plot_title)
         layout.addWidget(self.plot)
         self._rows: list[tuple[str, str]] = []
+        self._names: tuple[str, ...] = ()  # the rows' names as laid out in the table
+        self._row_of: dict[str, int] = {}  # name -> its table row
+        self._group_row = -1  # the constants' group row, if any
+        self._constants: frozenset = frozenset()
+        self._folded = True  # the constants: a lecture needs the step's rows in sight
         self._fitted_width = -1  # the value column's width when the rows were fitted
         self._chips: list[tuple[str, str, str]] = []
         self._series: np.ndarray | None = None
@@ -403,46 +416,129 @@ class VariablesPanel(QWidget):
         return [text for text, _tone, _tip in self._chips]
 
     def set_rows(self, rows, color_names=(), tones=None) -> None:
-        """Rows (name, text) of the step on show. Values that changed since
-        the rows shown before are set in bold and a warmer colour. Rows
-        named in ``color_names`` hold packed 0xRRGGBB colours: they read as
-        #rrggbb, with a swatch. ``tones`` (name -> "positive", "negative" or
-        "zero") colour values whose sign matters."""
+        """Rows (name, text) of the step on show, in the order given, but
+        for the constants (``set_constants``), which follow in a group that
+        folds. Values that changed since the rows shown before are set in
+        bold and a warmer colour. Rows named in ``color_names`` hold packed
+        0xRRGGBB colours: they read as #rrggbb, with a swatch. ``tones``
+        (name -> "positive", "negative" or "zero") colour values whose sign
+        matters."""
         rows = [(str(name), _as_color(text) if name in color_names else str(text))
                 for name, text in rows]
+        rows = ([row for row in rows if row[0] not in self._constants]
+                + [row for row in rows if row[0] in self._constants])
         tones = tones or {}
         before = dict(self._rows)
-        if self.table.rowCount() != len(rows):
-            self.table.setRowCount(len(rows))
+        self._lay_out_rows(rows)
         fitted = []
-        for row, (name, text) in enumerate(rows):
+        for name, text in rows:
+            row = self._row_of[name]
             self._set_text(self._cell(row, 0), name)
             changed = name in before and before[name] != text
             color = TONE_COLORS.get(tones.get(name)) or (CHANGED_VALUE if changed else None)
             swatch = text if name in color_names and QColor.isValidColorName(text) else None
             if self._set_value(row, text, color, changed, swatch):
                 fitted.append(row)
-        self._fit_long_rows(rows, fitted)
         self._rows = rows
+        self._fit_long_rows([self._row_text(row) for row in range(self.table.rowCount())],
+                            fitted)
         # Values whose sign matters stay in sight, wherever they are listed.
-        toned = [row for row, (name, _text) in enumerate(rows) if name in tones]
+        toned = [self._row_of[name] for name, _text in rows if name in tones]
         if toned:
-            self.table.scrollToItem(self.table.item(toned[-1], 1),
+            self.table.scrollToItem(self.table.item(max(toned), 1),
                                     QAbstractItemView.ScrollHint.EnsureVisible)
-            self.table.scrollToItem(self.table.item(toned[0], 1),
+            self.table.scrollToItem(self.table.item(min(toned), 1),
                                     QAbstractItemView.ScrollHint.EnsureVisible)
 
     def rows(self) -> list[tuple[str, str]]:
+        """The rows as listed: the step's, then the constants."""
         return list(self._rows)
 
-    def set_type_scale(self, factor: float) -> None:
-        """Values (and rows) ``factor`` times their usual size: the window's
-        zoom, or presentation mode's large type; the next ``set_rows`` shows
-        them. The caption's two lines fit its type as it is now."""
-        self._value_fonts = _value_fonts(factor)
+    # ------------------------------------------------------ constants
+    def set_constants(self, names) -> None:
+        """The names of the run's constants: listed last, in a group that
+        folds (``set_folded``)."""
+        self._constants = frozenset(names)
+
+    @property
+    def folded(self) -> bool:
+        return self._folded
+
+    def set_folded(self, folded: bool) -> None:
+        """Hide (or show) the constants' rows under their group's row."""
+        self._folded = bool(folded)
+        self._lay_out_rows(self._rows, again=True)
+
+    def shown_names(self) -> list[str]:
+        """The names of the rows in view, top to bottom (the constants'
+        group row is not a name; rows it folds are not in view)."""
+        table, height = self.table, self.table.viewport().height()
+        return [name for name, row in sorted(self._row_of.items(), key=lambda item: item[1])
+                if not table.isRowHidden(row) and 0 <= table.rowViewportPosition(row)
+                and table.rowViewportPosition(row) + table.rowHeight(row) <= height]
+
+    def _lay_out_rows(self, rows, again: bool = False) -> None:
+        """Table rows for ``rows``: the step's, then the constants' group
+        row (across both columns) and the constants, hidden when folded.
+        Laid out only when the names change: this runs on every step."""
+        names = tuple(name for name, _text in rows)
+        if names == self._names and not again:
+            return
+        self._names = names
+        constants = [name for name in names if name in self._constants]
+        step = len(names) - len(constants)
+        count = len(names) + (1 if constants else 0)
+        table = self.table
+        table.clearSpans()
+        if table.rowCount() != count:
+            table.setRowCount(count)
+        self._row_of = {name: k for k, name in enumerate(names[:step])}
+        self._row_of.update({name: step + 1 + k for k, name in enumerate(constants)})
+        self._group_row = step if constants else -1
+        for row in range(count):
+            table.setRowHidden(row, self._folded and row > step)
+            if row != step:  # the group row's grey may have been on this row
+                self._cell(row, 0).setForeground(QBrush())
+        if constants:
+            self._show_group(step, constants)
+
+    def _show_group(self, row: int, constants) -> None:
+        """The constants' group row: a click folds or unfolds them."""
+        self.table.setSpan(row, 0, 1, 2)
+        group = self._cell(row, 0)
+        count = len(constants)
+        # Short: the names' column is as wide as its widest text, this one's too.
+        group.setText(("\u25b8 " if self._folded else "\u25be ")
+                      + f"{count} constant{'s' if count != 1 else ''}")
+        group.setToolTip(", ".join(constants) + ": values the run never changes; click to "
+                         + ("show them" if self._folded else "fold them away"))
+        group.setForeground(QBrush(LINE_NUMBER))
+        value = self._cell(row, 1)
+        value.setText("")
+        value.setData(Qt.ItemDataRole.DecorationRole, None)
+
+    def _row_text(self, row: int) -> str:
+        item = self.table.item(row, 1)
+        return "" if item is None or row == self._group_row else item.text()
+
+    def _clicked(self, row: int, _column: int) -> None:
+        if row == self._group_row >= 0:
+            self.set_folded(not self._folded)
+
+    def changeEvent(self, event):  # noqa: N802
+        super().changeEvent(event)
+        if event.type() == QEvent.Type.FontChange:
+            self.fit_type()
+
+    def fit_type(self) -> None:
+        """The values in the panel's type (its size, a fixed-width face):
+        one size for the header, the names and the values, whatever the
+        window's zoom or presentation mode; the caption's two lines fit it."""
+        self._value_fonts = _value_fonts(self.font())
         self._fit_caption()
         height = max(QFontMetrics(self._value_fonts[0]).height(), self.fontMetrics().height())
         self.table.verticalHeader().setDefaultSectionSize(height + 6)
+        self._fit_plot()
 
     def _fit_long_rows(self, rows, fitted) -> None:
         """A value too long for its cell (a fill's queue, say) wraps onto a
@@ -455,7 +551,7 @@ class VariablesPanel(QWidget):
         metrics = QFontMetrics(self._value_fonts[0])
         default = self.table.verticalHeader().defaultSectionSize()
         for row in fitted:
-            text = rows[row][1]
+            text = rows[row]
             if width > 0 and metrics.horizontalAdvance(text) > width:
                 self.table.resizeRowToContents(row)
             elif self.table.rowHeight(row) != default:
@@ -463,11 +559,8 @@ class VariablesPanel(QWidget):
 
     def value_color(self, name: str) -> QColor | None:
         """The colour a row's value is drawn in (None: the default)."""
-        for row, (row_name, _text) in enumerate(self._rows):
-            if row_name == name:
-                brush = self.table.item(row, 1).foreground()
-                return brush.color() if brush.style() != Qt.BrushStyle.NoBrush else None
-        raise KeyError(name)
+        brush = self.table.item(self._row_of[name], 1).foreground()
+        return brush.color() if brush.style() != Qt.BrushStyle.NoBrush else None
 
     def _cell(self, row: int, column: int) -> QTableWidgetItem:
         item = self.table.item(row, column)
@@ -511,8 +604,8 @@ class VariablesPanel(QWidget):
         decides nothing), as app/model/branches.py works it out.
         """
         finite = values is not None and bool(np.isfinite(values).any())
-        self.plot.setVisible(finite)
-        self.plot_title.setVisible(finite)
+        self._plot_wanted = finite
+        self._fit_plot()
         if not finite:
             self._series = None
             self.curve.setData([], [])
@@ -563,6 +656,30 @@ class VariablesPanel(QWidget):
         brushes = [self._dot_brushes[k] for k in np.asarray(kinds, dtype=np.int64).tolist()]
         self.dots.setData(steps, values, brush=brushes, size=size)
         self.dots.setVisible(len(brushes) > 0)
+
+    def set_plot_allowed(self, allowed: bool) -> None:
+        """Presentation mode gives the plot's room to the rows."""
+        self._plot_allowed = allowed
+        self._fit_plot()
+
+    def resizeEvent(self, event):  # noqa: N802
+        super().resizeEvent(event)
+        self._fit_plot()
+
+    def _fit_plot(self) -> None:
+        """The plot over the run, when there is one, it is allowed and the
+        panel has room for it under the header and ``ROWS_BEFORE_PLOT`` rows:
+        on a short screen or at a large zoom the rows come first."""
+        rows = self.table.horizontalHeader().sizeHint().height() + ROWS_BEFORE_PLOT * (
+            self.table.verticalHeader().defaultSectionSize())
+        above = self.caption_area.height() + (self.chips.sizeHint().height()
+                                              if self.chips.isVisibleTo(self) else 0)
+        room = self.height() - above - self.plot_title.sizeHint().height()
+        show = (self._plot_wanted and self._plot_allowed
+                and room >= rows + self.plot.minimumHeight())
+        if show != self.plot.isVisibleTo(self):
+            self.plot.setVisible(show)
+            self.plot_title.setVisible(show)
 
     def set_marker(self, index: int) -> None:
         self.marker.setValue(index)

@@ -6,8 +6,8 @@ import math
 
 from PySide6.QtCore import QEvent, QSize, Qt, Signal
 from PySide6.QtGui import QFont, QFontMetrics
-from PySide6.QtWidgets import (QHBoxLayout, QLabel, QSizePolicy, QSlider, QSpinBox,
-                               QToolButton, QVBoxLayout, QWidget)
+from PySide6.QtWidgets import (QHBoxLayout, QLabel, QSizePolicy, QSlider, QSpinBox, QStyle,
+                               QStyleOptionSlider, QToolButton, QVBoxLayout, QWidget)
 
 from .dirty import fill_own_background
 from .media_icons import media_icon
@@ -15,6 +15,37 @@ from .media_icons import media_icon
 SPEED_MIN = 1
 SPEED_MAX = 2000
 _SPEED_TICKS = 1000  # resolution of the logarithmic speed slider
+
+
+class Timeline(QSlider):
+    """The scrub slider: a click on the groove goes to the step under the
+    pointer (and a drag goes on from there), not one page towards it."""
+
+    def mousePressEvent(self, event):  # noqa: N802
+        if event.button() == Qt.MouseButton.LeftButton and not self._on_handle(event):
+            self.setValue(self.value_at(event.position().toPoint().x()))
+        super().mousePressEvent(event)  # on the handle now: the drag goes on
+
+    def _on_handle(self, event) -> bool:
+        option = QStyleOptionSlider()
+        self.initStyleOption(option)
+        handle = self.style().subControlRect(QStyle.ComplexControl.CC_Slider, option,
+                                             QStyle.SubControl.SC_SliderHandle, self)
+        return handle.contains(event.position().toPoint())
+
+    def value_at(self, x: int) -> int:
+        """The value under ``x`` (the slider's own coordinates), the handle's
+        half-width taken off each end as the style draws it."""
+        option = QStyleOptionSlider()
+        self.initStyleOption(option)
+        style = self.style()
+        groove = style.subControlRect(QStyle.ComplexControl.CC_Slider, option,
+                                      QStyle.SubControl.SC_SliderGroove, self)
+        handle = style.subControlRect(QStyle.ComplexControl.CC_Slider, option,
+                                      QStyle.SubControl.SC_SliderHandle, self)
+        span = groove.width() - handle.width()
+        return QStyle.sliderValueFromPosition(self.minimum(), self.maximum(),
+                                              x - groove.x() - handle.width() // 2, max(1, span))
 
 
 class TransportBar(QWidget):
@@ -77,10 +108,11 @@ class TransportBar(QWidget):
             self._paint_icons()
         elif event.type() == QEvent.Type.FontChange:
             self._fit_counter()
+            self._fit_speed()
 
     def _make_timeline(self) -> None:
         """The scrub slider and the step counter."""
-        self.timeline = QSlider(Qt.Orientation.Horizontal, self)
+        self.timeline = Timeline(Qt.Orientation.Horizontal, self)
         self.timeline.setToolTip("Drag to scrub through the run")
         self.timeline.setFocusPolicy(Qt.FocusPolicy.NoFocus)
         self.timeline.setRange(0, 0)
@@ -95,7 +127,7 @@ class TransportBar(QWidget):
 
     def _make_speed(self) -> QLabel:
         """The speed slider and the steps-per-second box beside it."""
-        speed_label = QLabel("Speed", self)
+        self.speed_label = speed_label = QLabel("Speed", self)
         self.speed_slider = QSlider(Qt.Orientation.Horizontal, self)
         self.speed_slider.setRange(0, _SPEED_TICKS)
         self.speed_slider.setFixedWidth(110)
@@ -117,7 +149,7 @@ class TransportBar(QWidget):
         top = QHBoxLayout()
         top.setContentsMargins(0, 0, 0, 0)
         top.addWidget(self.timeline, 1)
-        row = QHBoxLayout()
+        self._row = row = QHBoxLayout()
         row.setContentsMargins(0, 0, 0, 0)
         row.setSpacing(2)
         for b in (self.first_button, self.back_button, self.play_button, self.forward_button,
@@ -136,6 +168,31 @@ class TransportBar(QWidget):
         layout.setSpacing(2)
         layout.addLayout(top)
         layout.addLayout(row)
+
+    # ----------------------------------------------------------- narrow
+    def minimumSizeHint(self):  # noqa: N802
+        """Narrow enough without the speed slider and its label: a large
+        zoom on a small screen puts them aside (``resizeEvent``) rather than
+        run the step counter into them or push the window past the screen."""
+        hint = super().minimumSizeHint()
+        if self.speed_slider.isVisibleTo(self):
+            hint.setWidth(hint.width() - self._slider_width())
+        return hint
+
+    def _slider_width(self) -> int:
+        """The width the speed slider and its label take in the row."""
+        return (self.speed_label.sizeHint().width() + self.speed_slider.width()
+                + 2 * self._row.spacing())
+
+    def resizeEvent(self, event):  # noqa: N802
+        super().resizeEvent(event)
+        self._fit_speed()
+
+    def _fit_speed(self) -> None:
+        room = self.width() >= self.minimumSizeHint().width() + self._slider_width()
+        if room != self.speed_slider.isVisibleTo(self):
+            self.speed_label.setVisible(room)
+            self.speed_slider.setVisible(room)
 
     # ------------------------------------------------------------ shown state
     def set_range(self, last: int) -> None:

@@ -97,7 +97,7 @@ class Breakpoints(QObject):
             window.menus["view"].addAction(dock.toggleViewAction())
 
     def _dock(self, title: str, name: str, widget) -> QDockWidget:
-        dock = panel_dock(title, name, widget, self.window)
+        dock = panel_dock(title, name, widget, self.window, scrolls=True)
         dock.visibilityChanged.connect(lambda shown: shown and self._refresh_panel())
         return dock
 

@@ -34,6 +34,7 @@ from app.model.examples import default_scene
 from app.model.inputs import group_size, open_ended
 from app.model.exact import shown_rows
 from app.model.tables import TableIndex
+from app.model.variable_rows import RowOrder
 from app.model.branches import decision_branches
 from app.model.tools import (circle_kind, circle_options, clamp_option, drawing_mode,
                              marker_option, placing_message, shape_paths, tool_hint)
@@ -73,6 +74,7 @@ class MainWindow(QMainWindow):
         self._last_hover = None
         self._error = ""  # the last refusal, shown until the next good change
         self._tables = TableIndex(None)
+        self._row_order = RowOrder()  # the Variables panel's: the step's rows first
         self._tally = None
         self._notes: list[int] = []
         self._tables_for = None  # the algorithm the tables dock was last shown for
@@ -138,6 +140,8 @@ class MainWindow(QMainWindow):
         self.input_guard = InputGuard(self)  # no wheel edits by accident; Ctrl+Z everywhere
         from app.gui.window_view import WindowView
         self.view = WindowView(self)  # screen fit, layout, presentation, zoom, Copy view
+        from app.gui.presenter_keys import PresenterKeys
+        self.presenter = PresenterKeys(self)  # PageUp/PageDown, B; the keys back to the grid
 
     def add_action(self, menu, key, text, shortcut, slot,
                    context=Qt.ShortcutContext.WindowShortcut, owner=None):
@@ -223,6 +227,8 @@ class MainWindow(QMainWindow):
         self.history.clear()
         self.edits.refresh()
         self.follow_scene()
+        if getattr(self, "presenter", None) is not None:  # a scene opened: the keys step it
+            self.presenter.focus_grid()
 
     def set_algorithm(self, name: str) -> None:
         try:
@@ -417,6 +423,8 @@ class MainWindow(QMainWindow):
         self.guides.run_changed(player)
         self._show_inputs()
         self._tables = TableIndex(trace, self.numbers_shown)
+        self._row_order = RowOrder.of(trace)
+        self.variables.set_constants(self._row_order.constants)
         self._tally = PixelTally(trace) if trace is not None and has_insight(
             trace.value_names) else None
         self._notes = [] if trace is None else trace.steps_of(Note).tolist()
@@ -521,7 +529,7 @@ class MainWindow(QMainWindow):
         tones = row_tones(rows) if self._tally else None
         # Values as a person reads them: five significant figures, ≤, subscripts.
         rows = [(name, text if name in colors else shown(str(text))) for name, text in rows]
-        self.variables.set_rows(rows, colors, tones)
+        self.variables.set_rows(self._row_order.arrange(rows), colors, tones)
         chips = []
         if self._tally is not None:
             chips = inside_chips(state.step.values, state.step.kind)

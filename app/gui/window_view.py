@@ -11,17 +11,22 @@ zoom a previous run left and saves them when the window closes.
 from __future__ import annotations
 
 import sys
+from typing import NamedTuple
 
-from PySide6.QtCore import QByteArray, QEvent, QObject, Qt
-from PySide6.QtGui import QFont, QKeySequence, QShortcut
-from PySide6.QtWidgets import QApplication, QDockWidget, QToolBar, QWidget
+from PySide6.QtCore import QByteArray, QEvent, QObject, Qt, QTimer
+from PySide6.QtGui import QKeySequence, QShortcut
+from PySide6.QtWidgets import QApplication, QDockWidget, QToolBar
+
+from app.gui.type_scale import apply_type_scale, base_font
 
 PREFERRED_SIZE = (1280, 800)
 MIN_SIZE = (900, 560)
 GEOMETRY_KEY, STATE_KEY, ZOOM_KEY = "window/geometry", "window/state", "window/zoom"
 ZOOMS = (0.8, 0.9, 1.0, 1.1, 1.25, 1.5, 1.75, 2.0)
-PRESENTING = 1.6  # the pseudo-code and variables in presentation mode, on top of the zoom
+PRESENTING = 1.6  # the type of presentation mode, on top of the zoom
 SIDE_WIDTH = 395  # the pseudo-code column's width when there is room for it
+SIDES = (Qt.DockWidgetArea.LeftDockWidgetArea, Qt.DockWidgetArea.RightDockWidgetArea)
+SIDE_MARGIN = 24  # the docks' separators and frames, beside the grid's minimum width
 
 
 def standard_full_screen_keys() -> list[QKeySequence]:
@@ -41,6 +46,18 @@ def presentation_keys(standard=None, platform: str | None = None) -> list[QKeySe
     return keys or [f11]
 
 
+class Before(NamedTuple):
+    """What presentation mode changed, to put back on leaving it."""
+    state: object  # the docks and bars (QMainWindow.saveState)
+    geometry: object
+    size: object  # restoreGeometry keeps a window within the screen: a larger one is resized
+    maximized: bool
+    shown: list  # the docks and the bars on show
+    bars: list
+    sizes: dict  # dock -> its size
+    folded: bool  # the variables' constants
+
+
 class WindowView(QObject):
     """Screen fit, layout memory, presentation mode, zoom and Copy view."""
 
@@ -52,7 +69,8 @@ class WindowView(QObject):
         self.presenting = False
         self._before = None  # what presentation mode hid, to put back
         self._extras: list = []  # the notes and the plot, hidden while presenting
-        self._fonts: dict = {}  # widget -> its own font at zoom 1
+        self._scaled = 1.0  # the type scale the widgets are at
+        self._widths: dict = {}  # side dock -> its width at zoom 100 %
         window.setMinimumSize(*MIN_SIZE)
         self.default_state = window.saveState()
         self._build_actions()
@@ -114,43 +132,69 @@ class WindowView(QObject):
         self.set_zoom(ZOOMS[max(0, min(len(ZOOMS) - 1, index + direction))])
 
     def set_zoom(self, zoom: float) -> None:
-        self.zoom = float(min(max(zoom, ZOOMS[0]), ZOOMS[-1]))
+        zoom = float(min(max(zoom, ZOOMS[0]), ZOOMS[-1]))
+        if self.zoom == 1.0 and zoom != 1.0 and not self.presenting:
+            self._widths = {d: d.width() for d in self._side_docks()}
+        self.zoom = zoom
         self._apply_fonts()
+        if not self.presenting:
+            self._fit_side_docks()
+            # Again once the window has laid out the new type.
+            QTimer.singleShot(0, self, self._fit_side_docks)
         if self.settings is not None:
             self.settings.setValue(ZOOM_KEY, self.zoom)
         self.window.statusBar().showMessage(f"Zoom {round(self.zoom * 100)} %", 2000)
 
+    @property
+    def scale(self) -> float:
+        """The type scale of the whole window: the zoom, times
+        presentation mode's large type while presenting."""
+        return self.zoom * (PRESENTING if self.presenting else 1.0)
+
+    def _side_docks(self) -> list:
+        w = self.window
+        return [d for d in w.findChildren(QDockWidget) if d.isVisibleTo(w) and not d.isFloating()
+                and w.dockWidgetArea(d) in SIDES]
+
+    def _fit_side_docks(self) -> None:
+        """The side panels' widths at the zoom: those they had at 100 %
+        times the zoom, all of them narrower if the grid and the transport
+        bar would lack room (never past the window's edge); at 100 % the
+        very widths they had."""
+        w = self.window
+        widths = {d: round(width * self.zoom) for d, width in self._widths.items()
+                  if d.isVisibleTo(w) and w.dockWidgetArea(d) in SIDES}
+        if not widths:
+            return
+        columns = {w.dockWidgetArea(d): 0 for d in widths}
+        for d, width in widths.items():
+            columns[w.dockWidgetArea(d)] = max(columns[w.dockWidgetArea(d)], width)
+        room = w.width() - w.centralWidget().minimumSizeHint().width() - SIDE_MARGIN
+        if self.zoom != 1.0 and sum(columns.values()) > room:
+            shrink = max(room, 0) / sum(columns.values())
+            widths = {d: max(1, int(width * shrink)) for d, width in widths.items()}
+        docks = list(widths)
+        w.resizeDocks(docks, [widths[d] for d in docks], Qt.Orientation.Horizontal)
+
     def _new_editors(self) -> None:
-        """Editors made for a new run take the zoom too (nothing to do at 1)."""
-        if self.zoom != 1.0 or self.presenting:
+        """Editors made for a new run take the type scale too (nothing to do at 1)."""
+        if self.scale != 1.0:
             self._apply_fonts(redraw=False)
 
     def _apply_fonts(self, redraw: bool = True) -> None:
-        """Every widget's font at the zoom (larger still beside the grid
-        while presenting); each widget's own font is kept to scale from."""
+        """Every widget's type at the window's scale (app/gui/type_scale.py);
+        the grid's coordinates and words, drawn by pyqtgraph, follow."""
         w = self.window
-        large = {id(x) for dock in (w.code_dock, w.variables_dock)
-                 for x in dock.findChildren(QWidget)}
-        for widget in [w, *w.findChildren(QWidget)]:
-            key = id(widget)
-            if key not in self._fonts:
-                self._fonts[key] = widget.font()
-                widget.destroyed.connect(lambda _o=None, k=key: self._fonts.pop(k, None))
-            factor = self.zoom * (PRESENTING if self.presenting and key in large else 1.0)
-            font = QFont(self._fonts[key])
-            if font.pointSizeF() > 0:
-                font.setPointSizeF(font.pointSizeF() * factor)
-            if widget.font() != font:
-                widget.setFont(font)
-        w.variables.set_type_scale(self.zoom * (PRESENTING if self.presenting else 1.0))
+        apply_type_scale(w, self.scale, self._scaled)
+        self._scaled = self.scale
+        w.variables.fit_type()
         for name in ("bottom", "left"):  # the grid's coordinates, read from the back row too
-            axis = w.grid.axes[name]
-            tick = QFont(self._fonts[id(w)])
+            tick = base_font(w)
             if tick.pointSizeF() > 0:
-                tick.setPointSizeF(tick.pointSizeF() * self.zoom * (1.4 if self.presenting else 1))
-            axis.setStyle(tickFont=tick)
+                tick.setPointSizeF(tick.pointSizeF() * self.scale)
+            w.grid.axes[name].setStyle(tickFont=tick)
         # The words on the grid (M's side, the scan line) grow as the axes do.
-        w.guides.item.set_text_scale(self.zoom * (1.4 if self.presenting else 1))
+        w.guides.item.set_text_scale(self.scale)
         if redraw:
             w.show_frame()
         w.code.restyle()
@@ -164,57 +208,94 @@ class WindowView(QObject):
         else:
             self.present()
 
+    def presentation_docks(self) -> list:
+        """The docks of presentation mode: the pseudo-code, the variables
+        (unless an exercise has put them aside: they give its answers away)
+        and whichever teaching panel is open."""
+        w = self.window
+        exercise = getattr(w, "exercise_mode", None)
+        docks = [w.code_dock]
+        if exercise is None or not exercise.active:
+            docks.append(w.variables_dock)
+        teaching = [w.depth_dock, w.texture_dock, w.outside_dock,
+                    None if exercise is None else exercise.dock]
+        return docks + [d for d in teaching if d is not None and d.isVisibleTo(w)]
+
     def present(self) -> None:
-        """Full screen: the grid and the transport, the pseudo-code and the
-        variables beside them in large type; everything else hidden."""
+        """Full screen, a layout of its own: the grid and the transport, the
+        pseudo-code, the step's rows of the variables (constants folded)
+        and the teaching panel that is open, all in large type; everything
+        else hidden until Esc, which puts back exactly what was there."""
         w = self.window
         if self.presenting:
             return
+        keep = self.presentation_docks()
         shown = [d for d in w.findChildren(QDockWidget) if d.isVisibleTo(w)]
         bars = [b for b in w.findChildren(QToolBar) if b.isVisibleTo(w)]
-        self._before = (w.saveState(), w.saveGeometry(), w.isMaximized(), shown, bars)
+        self._before = Before(w.saveState(), w.saveGeometry(), w.size(), w.isMaximized(),
+                              shown, bars,
+                              {d: d.size() for d in shown}, w.variables.folded)
         self.presenting = True
         for widget in (*shown, *bars, w.menuBar(), w.statusBar()):
-            widget.hide()
-        for dock in (w.code_dock, w.variables_dock):
+            if widget not in keep:
+                widget.hide()
+        for dock in keep:
             dock.show()
         # The notes and the plot over the run give their room to the code and values.
-        self._extras = [x for x in (w.code.notes_area, w.variables.plot, w.variables.plot_title)
-                        if x.isVisibleTo(w)]
+        self._extras = [x for x in (w.code.notes_area,) if x.isVisibleTo(w)]
         for extra in self._extras:
             extra.hide()
+        w.variables.set_plot_allowed(False)
+        w.variables.set_folded(True)
         w.showFullScreen()
         if w.screen() is not None:  # without a window manager to do it
             w.setGeometry(w.screen().geometry())
         self._apply_fonts()
-        third = max(320, w.width() // 3)
-        w.resizeDocks([w.code_dock], [third], Qt.Orientation.Horizontal)
+        self._fit_side()
         self.leave.setEnabled(True)
         self.present_action.setChecked(True)
         w.grid.fit()
+
+    def _fit_side(self) -> None:
+        """The panels' column a third of the screen: the size the screen
+        gives the window comes after showFullScreen, and is fitted again then."""
+        w = self.window
+        w.resizeDocks([w.code_dock], [max(320, w.width() // 3)], Qt.Orientation.Horizontal)
 
     def leave_presentation(self) -> None:
         w = self.window
         if not self.presenting:
             return
-        state, geometry, maximized, shown, bars = self._before
+        before = self._before
         self.presenting = False
         self.leave.setEnabled(False)
         for extra in self._extras:
             extra.show()
+        w.variables.set_plot_allowed(True)
+        w.variables.set_folded(before.folded)
         self._apply_fonts()
         w.menuBar().show()
         w.statusBar().show()
-        if maximized:
+        if before.maximized:
             w.showMaximized()
         else:
             w.showNormal()
-            w.restoreGeometry(geometry)
-        w.restoreState(state)
-        for widget in (*shown, *bars):
+            w.restoreGeometry(before.geometry)
+            w.resize(before.size)
+        w.restoreState(before.state)
+        for widget in (*before.shown, *before.bars):
             widget.show()
+        self._restore_sizes(before.sizes)
         self.present_action.setChecked(False)
         w.grid.fit()
+
+    def _restore_sizes(self, sizes: dict) -> None:
+        """Each dock's width and height as before: restoreState shares the
+        room out again, a pixel or two off after the window's size changed."""
+        w = self.window
+        docks = list(sizes)
+        w.resizeDocks(docks, [sizes[d].width() for d in docks], Qt.Orientation.Horizontal)
+        w.resizeDocks(docks, [sizes[d].height() for d in docks], Qt.Orientation.Vertical)
 
     # ------------------------------------------------------------ layout
     def reset_layout(self) -> None:
@@ -258,7 +339,9 @@ class WindowView(QObject):
         if obj is self.window:
             if event.type() == QEvent.Type.Close:
                 self.save()
-            elif event.type() == QEvent.Type.Resize and not self.presenting:
+            elif event.type() == QEvent.Type.Resize and self.presenting:
+                self._fit_side()
+            elif event.type() == QEvent.Type.Resize:
                 self._give_back_width(event)
         return False
 

@@ -8,9 +8,9 @@ directly. What happens is told through the events ``Session`` declares
 
 Where the step goes after a re-recording
 ----------------------------------------
-* If the old run was shown at its last step (or there was no run), the new
+* If the old run was shown at its last step (or a scene is opened), the new
   run is shown at its last step too: dragging an end point of a finished
-  line shows the finished line for the new position.
+  line shows the finished line. A primitive just drawn starts at step 0.
 * Otherwise the step keeps its relative position in the run (half-way stays
   half-way), so a run being stepped through mid-way stays mid-way.
 
@@ -627,8 +627,8 @@ class Session:
         self._state = outcome.last_state  # used when the step goes to the end
         if trace is None:
             self.index = 0
-        elif at_end or old_len < 2:
-            self.index = len(trace) - 1
+        elif at_end or old_len < 2:  # no run before: a primitive just drawn, from its start
+            self.index = len(trace) - 1 if at_end else 0
         else:
             fraction = old_index / (old_len - 1)
             self.index = min(len(trace) - 1, round(fraction * (len(trace) - 1)))
@@ -642,7 +642,7 @@ class Session:
         self.step_changed.emit(self.index)
 
     def _at_end(self) -> bool:
-        return self.trace is None or self.index >= self.last
+        return self.trace is not None and self.index >= self.last
 
     def _compare(self, emit: bool = True) -> None:
         found = None

@@ -49,8 +49,10 @@ def test_variables_panel_rows_and_changes(qtbot):
 
 
 def test_variables_plot_shows_and_hides(qtbot):
+    """Shown for a series with values, when the panel has room for it."""
     panel = VariablesPanel()
     qtbot.addWidget(panel)
+    panel.resize(320, 520)  # room for the rows and the plot
     panel.show()
     panel.set_series(np.array([np.nan, 1.0, -3.0, 5.0]), "d", decision=True)
     assert panel.plot.isVisible() and panel.zero.isVisible()
@@ -128,7 +130,7 @@ def test_the_caption_shows_two_lines_whole_in_any_type(qtbot, scale):
     font = QFont(panel.caption.font())
     font.setPointSizeF(font.pointSizeF() * scale)
     panel.caption.setFont(font)
-    panel.set_type_scale(scale)  # as the window's zoom does, after the fonts
+    panel.setFont(font)  # as the window's zoom does
     panel.set_caption("<b>Step 12</b> of 90<br>plots (5, 3)")
     panel.resize(320, 420)
     panel.show()

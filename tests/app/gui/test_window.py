@@ -8,6 +8,7 @@ from PySide6.QtWidgets import QApplication
 from algorithms.core import registry
 from algorithms.core.registry import format_value
 from app.model import notation
+from app.model.variable_rows import RowOrder
 from app.gui.window import DEMO_POINTS, MainWindow
 from tests.support import record
 from tests.support.gui import WAIT_MS
@@ -234,8 +235,11 @@ def test_panels_show_the_current_frame(window):
     for index in (0, 1, 5, len(trace) - 1):
         window.transport.timeline.setValue(index)
         rows = window.variables.rows()
-        # The algorithm's rows as a person reads them (app/model/notation.py).
-        assert rows == [(name, notation.shown(text)) for name, text in spec.panel_rows(trace, index)]
+        # The algorithm's rows as a person reads them (app/model/notation.py),
+        # in the panel's order (app/model/variable_rows.py).
+        order = RowOrder.of(window.player.trace)
+        assert rows == order.arrange([(name, notation.shown(text))
+                                      for name, text in spec.panel_rows(trace, index)])
         assert all("<=" not in text and "d_i" not in text for _, text in rows)
         values = trace.variables_at(index)
         shown = dict(rows)
