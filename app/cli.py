@@ -418,9 +418,10 @@ def add_export_command(parser, commands) -> None:
     export.add_argument("--no-primitive", action="store_true", help="no ideal primitive")
     export.add_argument("--no-highlight", action="store_true",
                         help="no outlines on the step's pixel and the candidates")
-    export.add_argument("--overlays", metavar="LIST", default="",
-                        help="triangle runs: geometry of the step drawn over the grid, a comma "
-                             "list of half-planes, sub-triangles, distances, basis, or all")
+    export.add_argument("--overlays", metavar="LIST",
+                        help="geometry drawn over the grid, a comma list of half-planes, "
+                             "sub-triangles, distances, basis (triangle runs), octants (line "
+                             "runs), all or none (default: the scene's view.overlays)")
     export.add_argument("--memory-limit", metavar="SIZE",
                         help="memory the run may need, e.g. 512M or 4G (default 2G); a larger "
                              "request is refused before it starts")
@@ -429,8 +430,10 @@ def add_export_command(parser, commands) -> None:
                         help="disk space the PNG frames may take (default 1G)")
 
 
-def _overlays(text: str) -> tuple:
-    from app.render.overlays import parse_overlays
+def _overlays(text: str | None, scene) -> tuple:
+    from app.render.overlays import parse_overlays, scene_overlays
+    if text is None:
+        return scene_overlays(scene)
     try:
         return parse_overlays(text)
     except ValueError as error:
@@ -483,7 +486,7 @@ def command_export(args) -> int:
         theme=args.theme, loop=not args.once, per=args.per, memory_limit=_memory_limit(args),
         time_limit=_time_limit(args),
         unit=args.unit, reasoning=not args.no_reasoning, text_size=text_size, axes=args.axes,
-        vertex_labels=args.vertex_labels, overlays=_overlays(args.overlays))
+        vertex_labels=args.vertex_labels, overlays=_overlays(args.overlays, scene))
     recording = recording_bar(scene.spec, scene.points, scene.options, scene.grid)
     if recording.active:
         settings = dataclasses.replace(settings, recording=recording)
