@@ -418,9 +418,10 @@ def add_export_command(parser, commands) -> None:
     export.add_argument("--no-primitive", action="store_true", help="no ideal primitive")
     export.add_argument("--no-highlight", action="store_true",
                         help="no outlines on the step's pixel and the candidates")
-    export.add_argument("--overlays", metavar="LIST", default="",
-                        help="triangle runs: geometry of the step drawn over the grid, a comma "
-                             "list of half-planes, sub-triangles, distances, basis, or all")
+    export.add_argument("--overlays", metavar="LIST",
+                        help="geometry drawn over the grid, a comma list of half-planes, "
+                             "sub-triangles, distances, basis (triangle runs), octants (line "
+                             "runs), all or none (default: the scene's view.overlays)")
     export.add_argument("--memory-limit", metavar="SIZE",
                         help="memory the run may need, e.g. 512M or 4G (default 2G); a larger "
                              "request is refused before it starts")
@@ -430,8 +431,10 @@ def add_export_command(parser, commands) -> None:
     add_numbers_option(export, "the caption and the panels")
 
 
-def _overlays(text: str) -> tuple:
-    from app.render.overlays import parse_overlays
+def _overlays(text: str | None, scene) -> tuple:
+    from app.render.overlays import parse_overlays, scene_overlays
+    if text is None:
+        return scene_overlays(scene)
     try:
         return parse_overlays(text)
     except ValueError as error:
@@ -484,7 +487,7 @@ def command_export(args) -> int:
         theme=args.theme, loop=not args.once, per=args.per, memory_limit=_memory_limit(args),
         time_limit=_time_limit(args),
         unit=args.unit, reasoning=not args.no_reasoning, text_size=text_size, axes=args.axes,
-        vertex_labels=args.vertex_labels, overlays=_overlays(args.overlays),
+        vertex_labels=args.vertex_labels, overlays=_overlays(args.overlays, scene),
         numbers=args.numbers)
     frames_limit = (exporting.MAX_FRAMES_BYTES if args.frames_limit is None
                     else budget.parse_size(args.frames_limit, "--frames-limit"))

@@ -2,7 +2,10 @@
 
 Points are integer pixel coordinates; pixel (i, j) is the ideal line's
 sample point at (i + 1/2, j + 1/2), so the ideal segment runs between the
-centres of the two end pixels. Every algorithm plots both end pixels.
+centres of the two end pixels. Every algorithm plots both end pixels but
+the listings shown as printed (line-dda-printed, line-explicit-printed, the
+as-printed variant of line-bresenham-textbook, line-parametric-printed),
+which can miss Q (add-first misses P too); their notes say when.
 """
 from __future__ import annotations
 

@@ -3,6 +3,7 @@ and the mapping of a segment into the first octant."""
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass
 
 from algorithms.core.registry import InputError, Inputs, Option
 from algorithms.core.steps import NO_PIXEL
@@ -45,12 +46,64 @@ def round_half_up(value: float) -> int:
     return math.floor(value + 0.5)
 
 
+@dataclass(frozen=True)
+class OctantMap:
+    """Which octant a direction (dx, dy) lies in, and the mirrors that take it
+    to the first (0 <= dy <= dx), applied in this order: x -> -x when
+    ``flip_x``, y -> -y when ``flip_y``, then x <-> y when ``swap``.
+
+    Octants are numbered 1..8 counter-clockwise from +x. A direction on a
+    boundary belongs to the octant whose mirrors the line algorithms apply
+    to it: x is major at 45 degrees (no swap), and a step of 0 is not
+    mirrored, so +x is octant 1, 45 degrees 1, +y 2, 135 degrees 4, -x 4,
+    225 degrees 5, -y 7, 315 degrees 8. A point (0, 0) is octant 0.
+    """
+
+    number: int
+    flip_x: bool
+    flip_y: bool
+    swap: bool
+
+    def steps(self) -> tuple[str, ...]:
+        """The mirrors in words, in the order they apply."""
+        names = (("flip_x", "mirror x (x -> -x)"), ("flip_y", "mirror y (y -> -y)"),
+                 ("swap", "swap x and y"))
+        return tuple(text for name, text in names if getattr(self, name))
+
+    def apply(self, x, y):
+        """The vector (x, y) after the mirrors."""
+        x, y = (-x if self.flip_x else x), (-y if self.flip_y else y)
+        return (y, x) if self.swap else (x, y)
+
+    def text(self) -> str:
+        """One line: the octant and how it maps to the first."""
+        if self.number == 0:
+            return "P = Q: no direction, no octant"
+        if self.number == 1:
+            return "octant 1: already the first octant, nothing to swap"
+        return f"octant {self.number} -> 1: " + ", then ".join(self.steps())
+
+
+# Octant number by (flip_x, flip_y, swap).
+_NUMBERS = {(False, False, False): 1, (False, False, True): 2, (True, False, True): 3,
+            (True, False, False): 4, (True, True, False): 5, (True, True, True): 6,
+            (False, True, True): 7, (False, True, False): 8}
+
+
+def octant_map(dx, dy) -> OctantMap:
+    """The octant of the direction (dx, dy) and its mirrors into the first."""
+    flip_x, flip_y, swap = dx < 0, dy < 0, abs(dy) > abs(dx)
+    number = 0 if dx == 0 and dy == 0 else _NUMBERS[(flip_x, flip_y, swap)]
+    return OctantMap(number, flip_x, flip_y, swap)
+
+
 class Octant:
     """How a segment maps into the first octant (0 <= slope <= 1, left to right).
 
     The major axis is the one with the larger extent. ``major`` and
     ``minor`` are unit steps in the original grid; the mapped segment runs
-    from (0, 0) to (dx, dy) with 0 <= dy <= dx.
+    from (0, 0) to (dx, dy) with 0 <= dy <= dx. ``number`` is the octant as
+    octant_map numbers it.
     """
 
     def __init__(self, p, q):
@@ -66,20 +119,12 @@ class Octant:
             self.major, self.minor = (sx, 0), (0, sy)
         # +1 when the minor coordinate grows from P towards Q.
         self.minor_sign = self.minor[0] + self.minor[1]
-        self.number = _octant_number(ddx, ddy)
+        self.number = octant_map(ddx, ddy).number
 
     def to_grid(self, p, u, v):
         """Mapped (u, v) back to the original grid, from P."""
         return (p[0] + u * self.major[0] + v * self.minor[0],
                 p[1] + u * self.major[1] + v * self.minor[1])
-
-
-def _octant_number(ddx: int, ddy: int) -> int:
-    """Octant 1..8 counter-clockwise from the +x axis (0 for a point)."""
-    if ddx == 0 and ddy == 0:
-        return 0
-    angle = math.atan2(ddy, ddx) % (2 * math.pi)
-    return min(8, int(angle // (math.pi / 4)) + 1)
 
 
 def with_color(ramp, names):

@@ -343,8 +343,10 @@ LINE_BRESENHAM_TEXTBOOK = AlgorithmSpec(
     notes=("ties-ne differs from line-bresenham only at ties (d = 0): it takes NE, not E.",
            "sign-reversed gives the same pixels as ties-ne: D is -d, and D = 0 chooses NE.",
            "as-printed starts D at (dy - dx)/2, which is <= 0 for any slope up to 1, so the first "
-           "step always goes up and every later test is shifted; first_difference says where "
-           "it leaves the corrected line.",
+           "step always goes up and every later test is shifted: it draws the corrected line "
+           "for the ideal line lifted by 1 - 3m/2 rows (m = dy/dx in octant 1), a whole row when "
+           "flat, none at m = 2/3 (the same pixels), half a row low at m = 1; Q is drawn only "
+           "when m > 1/3. first_difference says where it leaves the corrected line.",
            "The listings' other slips are flagged in the pseudo-code: one lecture's code tests "
            "d <= 0 where its text says d < 0, and prints the E branch's x = x + 1 outside its "
            "braces; the other starts y at y0, a name draw_line does not have (y1 is meant).",

@@ -1,7 +1,8 @@
 """Grid traversal: the cells a segment with real end points meets.
 
 Unlike the pixel-centre lines, these take real points in the plane, where
-pixel (i, j) is the unit square [i, i+1) x [j, j+1), as triangles do. All
+pixel (i, j) is the unit square [i, i+1) x [j, j+1), as triangles do (the
+supercover can take closed cells [i, i+1] x [j, j+1] instead). All
 tests are exact: the points are turned into Fractions (a float is a
 fraction), so a segment through a cell corner is seen to pass through it.
 """
@@ -12,8 +13,8 @@ from fractions import Fraction
 
 from algorithms.core.code import Code, listing
 from algorithms.core.registry import (MAX_INTEGER_COORDINATE, AlgorithmSpec, InputError, Inputs,
-                                     Oracle)
-from algorithms.core.steps import NO_PIXEL, PLOT, VISIT, Start
+                                     Option, Oracle)
+from algorithms.core.steps import NO_PIXEL, PLOT, VISIT, Note, Start
 
 REAL_SEGMENT = Inputs(2, integer=False, names=("P", "Q"))
 NOTHING = (math.nan, math.nan)
@@ -34,38 +35,86 @@ def _floor(value: Fraction) -> int:
 
 
 # ------------------------------------------------------------- supercover
+CELLS = Option("cells", "choice", "half-open",
+               "half-open: pixel (i, j) is [i, i+1) x [j, j+1), so a point on a grid line "
+               "belongs to the cell above or right of it; closed: [i, i+1] x [j, j+1], so "
+               "every cell the segment touches, corners and edges included",
+               choices=("half-open", "closed"))
+
+
 def supercover_listing(points, options) -> Code:
+    closed = options["cells"] == "closed"
+    strip, cell = ("[c, c+1]", "[r, r+1]") if closed else ("[c, c+1)", "[r, r+1)")
     code = Code()
     code.add("setup", "dx = x1 - x0;  dy = y1 - y0   (exact fractions)", ops={"int_add": 2})
-    code.add("column", "for each column c whose closed strip [c, c+1] the segment meets, P to Q:",
+    code.add("column", f"for each column c whose strip {strip} the segment meets, P to Q:",
              ops={"compare": 2})
-    code.add("range", "    [y_lo, y_hi] = the segment's y over that strip",
+    code.add("range", "    [y_lo, y_hi] = the segment's y over that strip"
+             + ("" if closed else "   (an end at x = c+1 left out)"),
              ops={"mul": 2, "div": 2, "float_add": 2, "compare": 2})
-    code.add("plot_cell", "    plot every row r with [r, r+1] meeting [y_lo, y_hi]", PLOT,
+    code.add("plot_cell", f"    plot every row r with {cell} meeting [y_lo, y_hi]", PLOT,
              ops={"compare": 1})
-    code.add("done", "done")
+    code.add("done", "done   (cells outside the grid are not plotted; a note counts them)")
     return code
 
 
-def supercover(points, options):
+def supercover(points, options, grid):
     """Column by column from P to Q: the segment's y-range over the column's
-    closed strip, then every cell of the column that range touches."""
+    strip, then every cell of the column that range meets. Cells are closed
+    or half-open as the option says; cells outside the grid are counted and
+    named in a note instead of plotted."""
     (x0, y0), (x1, y1) = _exact_points(points)
     at = supercover_listing(points, options).at
+    closed = options["cells"] == "closed"
     yield Start(line=at["setup"], values=("y_lo", "y_hi"),
-                constants={"dx": float(x1 - x0), "dy": float(y1 - y0)})
-    lo, hi = min(x0, x1), max(x0, x1)
-    columns = range(math.ceil(lo) - 1, _floor(hi) + 1)
-    if x1 < x0:
-        columns = reversed(columns)
-    for c in columns:
-        y_lo, y_hi = _strip_range(x0, y0, x1, y1, max(lo, Fraction(c)), min(hi, Fraction(c + 1)))
+                constants={"dx": float(x1 - x0), "dy": float(y1 - y0), "cells": options["cells"]})
+    outside = []
+    for c, rows, y_lo, y_hi in _supercover_columns(x0, y0, x1, y1, closed):
         yield (at["column"], NO_PIXEL, NO_PIXEL, *NOTHING)
         yield (at["range"], NO_PIXEL, NO_PIXEL, float(y_lo), float(y_hi))
-        rows = range(math.ceil(y_lo) - 1, _floor(y_hi) + 1)
-        for r in (rows if y1 >= y0 else reversed(rows)):
-            yield (at["plot_cell"], c, r, float(y_lo), float(y_hi))
+        for r in rows:
+            if 0 <= c < grid[0] and 0 <= r < grid[1]:
+                yield (at["plot_cell"], c, r, float(y_lo), float(y_hi))
+            else:
+                outside.append((c, r))
+    if outside:
+        yield Note(line=at["done"], text=_outside_note(outside, grid))
     yield (at["done"], NO_PIXEL, NO_PIXEL, *NOTHING)
+
+
+def _outside_note(cells, grid) -> str:
+    shown = ", ".join(f"({c}, {r})" for c, r in cells[:4]) + (", ..." if len(cells) > 4 else "")
+    noun = "cell" if len(cells) == 1 else "cells"
+    return (f"{len(cells)} {noun} the segment meets lie outside the {grid[0]} x {grid[1]} grid "
+            f"and are not plotted: {shown}")
+
+
+def _supercover_columns(x0, y0, x1, y1, closed):
+    """(column, rows in order P to Q, y_lo, y_hi) for each column the segment meets."""
+    lo, hi = min(x0, x1), max(x0, x1)
+    first = math.ceil(lo) - 1 if closed else _floor(lo)
+    columns = range(first, _floor(hi) + 1)
+    for c in (reversed(columns) if x1 < x0 else columns):
+        a, b = max(lo, Fraction(c)), min(hi, Fraction(c + 1))
+        y_lo, y_hi = _strip_range(x0, y0, x1, y1, a, b)
+        if closed:
+            rows = range(math.ceil(y_lo) - 1, _floor(y_hi) + 1)
+        else:
+            rows = _half_open_rows(x0, y0, x1, y1, a, b, c + 1 <= hi)
+        yield c, (rows if y1 >= y0 else reversed(rows)), y_lo, y_hi
+
+
+def _half_open_rows(x0, y0, x1, y1, a, b, b_left_out):
+    """The rows r whose [r, r+1) meets the segment's y over x in [a, b],
+    or [a, b) when the point at x = b lies in the next column."""
+    if x1 == x0:
+        return range(_floor(min(y0, y1)), _floor(max(y0, y1)) + 1)
+    ya, yb = (y0 + (y1 - y0) * (x - x0) / (x1 - x0) for x in (a, b))
+    top = max(ya, yb)
+    # The top y is not reached when it is the left-out end (and the y's differ).
+    top_left_out = b_left_out and yb > ya
+    last = math.ceil(top) - 1 if top_left_out else _floor(top)
+    return range(_floor(min(ya, yb)), last + 1)
 
 
 def _strip_range(x0, y0, x1, y1, a, b):
@@ -81,18 +130,25 @@ LINE_SUPERCOVER = AlgorithmSpec(
     name="line-supercover",
     title="Supercover",
     family="lines",
-    summary="every cell the segment touches, corners included (real end points)",
+    summary="every cell the segment meets (real end points); cells half-open or closed",
     inputs=REAL_SEGMENT,
-    options=(),
+    options=(CELLS,),
     code=listing(supercover_listing),
     generator=supercover,
-    notes=("Cells are closed here: a segment through a cell corner takes all four cells "
-           "around it, and one along a grid line takes both rows beside it.",
-           "Points are real; pixel (i, j) is the square [i, i+1) x [j, j+1)."),
+    uses_grid=True,
+    notes=("Points are real. With cells half-open (the default, the convention of the "
+           "triangles), pixel (i, j) is the square [i, i+1) x [j, j+1): a segment through a "
+           "cell corner takes the cells it passes into, and one along a grid line takes the "
+           "row above it only.",
+           "With cells closed, [i, i+1] x [j, j+1], a segment through a corner takes all four "
+           "cells around it and one along a grid line takes both rows beside it, so a segment "
+           "from the grid's corner (0, 0) also touches cells at -1.",
+           "Cells outside the grid are not plotted: a note at the end names and counts them."),
     oracle=Oracle(
         "exact",
-        "Every cell the segment meets, corners included, each once: exact Liang-Barsky clipping of "
-        "the segment against each cell, in Fractions written in the test.",
+        "Every cell the segment meets, each once, half-open or closed as the option says: exact "
+        "Liang-Barsky clipping of the segment against each cell (open faces strict), in "
+        "Fractions written in the test; cells outside the grid left out and counted.",
         ("algorithms/lines/test_line_traversal.py",)),
 )
 
@@ -246,10 +302,8 @@ def diamond(points, options):
     p, q = _exact_points(points)
     at = diamond_listing(points, options).at
     yield Start(line=at["setup"], values=("L1",))
-    for frame in supercover(points, options):
-        if isinstance(frame, Start) or frame[1] == NO_PIXEL:
-            continue
-        i, j = frame[1], frame[2]
+    candidates = ((c, r) for c, rows, _, _ in _supercover_columns(*p, *q, closed=True) for r in rows)
+    for i, j in candidates:
         cx, cy = i + HALF, j + HALF
         distance = l1_to_segment(p, q, cx, cy)
         yield (at["visit"], i, j, float(distance))
@@ -279,7 +333,7 @@ LINE_DIAMOND_EXIT = AlgorithmSpec(
            "through a corner takes exactly one of the two pixels that meet there.",
            "The last pixel is left out when Q lies in its diamond, so a strip of segments "
            "draws each shared pixel once.",
-           "Candidates are the supercover's cells, which hold every diamond the segment meets."),
+           "Candidates are the closed supercover's cells, which hold every diamond the segment meets."),
     oracle=Oracle(
         "exact",
         "The cells whose diamond the segment meets, but Q's, each once: the diamond-exit rule "

@@ -142,6 +142,7 @@ class Run:
         self.counts = np.zeros((max(0, y1 - y0), max(0, x1 - x0)), np.int32)
         self.tested = 0
         self.filled = 0
+        self.outside_box = 0  # the backtracking walk's visits outside a triangle's box
 
     # ------------------------------------------------------------ frames
     def start(self, line: int) -> Start:

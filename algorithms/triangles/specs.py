@@ -103,12 +103,25 @@ TRIANGLE_INCREMENTAL = _spec("triangle-incremental", "Incremental edge functions
       notes=("One full evaluation per triangle; then one addition per edge and pixel. Exact "
              "in fixed precision; in floating point the additions accumulate rounding.",),
       oracle=TRAVERSAL)
+BOUNDED = Option("bounded", "bool", False,
+                 "keep the walk inside the triangle's bounding box: its edges count as outside, "
+                 "as the lecture's remark that traversal never needs to leave it implies")
 TRIANGLE_BACKTRACK = _spec("triangle-backtrack", "Backtracking", "from the top vertex down: back up left until "
       "outside, then right until outside", BACKTRACK.code, BACKTRACK.generator, top_down=True,
+      options=OPTIONS + (BOUNDED,),
       notes=("Outside to the left: failing an edge with a > 0; outside to the right: one with "
              "a < 0. Pixels backtracked over are visited again going right.",
-             "The walk never leaves the grid: its edges count as outside."),
-      oracle=TRAVERSAL)
+             "The walk never leaves the grid: its edges count as outside. It does leave the "
+             "bounding box: backing up left until a pixel fails a left edge, or right until one "
+             "fails a right edge, often takes it a column past xmin or xmax (on most random "
+             "triangles); outside_box counts those visits, and a note names the first of each "
+             "triangle.",
+             "With bounded, the box's edges count as outside too, so the walk stays inside it, "
+             "as the lecture remarks it can: every covered pixel lies in the box, so the pixels "
+             "are the same, and fewer are visited."),
+      oracle=Oracle("exact", COVERAGE + FLOATS + " bounded: the same pixels, and no visit "
+                    "outside the box.", TRAVERSAL.tests + (
+                        "algorithms/triangles/test_triangle_backtrack_box.py",), TRAVERSAL.check))
 TRIANGLE_PINEDA = _spec("triangle-pineda", "Pineda pixel walk", "zig-zag from the top vertex, visiting a "
       "superset of the covered pixels, each once", PINEDA.code, PINEDA.generator, kernel=False,
       notes=("Each row first carries on in the last direction, then turns and walks back; "

@@ -13,7 +13,7 @@ from fractions import Fraction
 import numpy as np
 
 from algorithms.core.code import Code
-from algorithms.core.steps import PLOT, VISIT
+from algorithms.core.steps import PLOT, VISIT, Note, Vars
 
 from .edges import Edges, ExactView, Triangle, ceil_div, floor_div
 from .run import (BASE, LOOP_OPS, TEST_OPS, Run, Traversal, evaluate_ops, footer, header,
@@ -119,14 +119,16 @@ def top_start(run: Run, tri: Triangle):
 
 
 def _backtrack_code(options):
+    bounded = options.get("bounded", False)
+    walls = "the bounding box's edges" if bounded else "the grid's edges"
     code = Code()
     header(code, options)
     code.add("sides", "    outsideLeft = not inside(e_k) for an edge with a_k > 0;  outsideRight: "
-                      "for one with a_k < 0   (the grid's edges count as outside)")
+                      f"for one with a_k < 0   ({walls} count as outside)")
     code.add("start", "    x, y = the pixel under the top vertex", ops=evaluate_ops(options))
     code.add("rows", "    while y >= ymin:")
     # A side test looks at up to two edges; each visit also steps x and the
-    # edge values, and tests the grid's edge.
+    # edge values, and tests the wall.
     visit = ops_sum({"compare": 3, "pixels_tested": 1}, LOOP_OPS, step_ops(options))
     code.add("back", "        while not outsideLeft(x, y): x -= 1   (backtrack, e_k -= a_k)", VISIT,
              ops=visit)
@@ -137,6 +139,9 @@ def _backtrack_code(options):
     _add_plot(code, options, pixel)
     code.add("stop", "        outside to the right: y -= 1   (e_k -= b_k; the next row starts "
                      "under this pixel)", VISIT, ops=visit)
+    code.add("left_box", "        (a row whose walk went past xmin or xmax: outside_box counts "
+                         "those visits)" if not bounded else
+                         "        (xmin - 1 and xmax + 1 are never visited: the box bounds the walk)")
     footer(code)
     return code
 
@@ -152,8 +157,14 @@ def _backtrack_traversal(run, tri, edges, attrs, at):
     if x < i_lo or y < j_lo:
         return
     left, right = _left_right(edges)
+    bounded = run.options.get("bounded", False)
+    # The walls: the grid's edges, or (bounded) the box's, which hold every covered pixel.
     wx0, _, wx1, _ = run.window
+    if bounded:
+        wx0, wx1 = i_lo, i_hi + 1
     es = edges.at(x, y)
+    outside = OutsideBox(run, tri, i_lo, i_hi)
+    yield from outside.start(at["start"])
     yield run.calc(at["start"], (x, y), es, edges)
     a, b = edges.a, edges.b
     back, stop, plot, skip = at["back"], at["stop"], at["plot"], at["test"]
@@ -161,6 +172,7 @@ def _backtrack_traversal(run, tri, edges, attrs, at):
         while x >= wx0:
             out = any(edges.outside(es, k) for k in left)
             run.tested += 1
+            outside.visit(x, y)
             yield run.lean(back, x, y, es, edges, attrs=attrs)
             if out:
                 break
@@ -171,16 +183,53 @@ def _backtrack_traversal(run, tri, edges, attrs, at):
         while x < wx1:
             if any(edges.outside(es, k) for k in right):
                 run.tested += 1
+                outside.visit(x, y)
                 yield run.lean(stop, x, y, es, edges, attrs=attrs)
                 break
             yield run.test(x, y, es, edges, attrs, plot, skip)
             x += 1
             es = [e + d for e, d in zip(es, a)]
-        if x >= wx1:  # stopped by the grid's right edge: come back inside it
+        if x >= wx1:  # stopped by the right wall: come back inside it
             x -= 1
             es = [e - d for e, d in zip(es, a)]
+        yield from outside.row_done(at["left_box"])
         y -= 1
         es = [e - d for e, d in zip(es, b)]
+
+
+class OutsideBox:
+    """Counts the walk's visits outside the triangle's bounding box (columns
+    i_lo .. i_hi), which the lecture remarks a traversal never needs; a row
+    that left the box reports the running count, and the first such row of a
+    triangle says where in a note. (Only the back and stop visits can land
+    outside: a pixel tested for coverage lies between them.)"""
+
+    def __init__(self, run, tri, i_lo: int, i_hi: int):
+        self.run, self.i_lo, self.i_hi = run, i_lo, i_hi
+        self.number = next(s.number for s in run.setups if s.tri is tri) + 1
+        self.row: list[tuple[int, int]] = []
+        self.noted = False
+
+    def start(self, line: int):
+        """The running count, shown from the triangle's first step (0 when bounded)."""
+        yield Vars(line=line, values={"outside_box": self.run.outside_box})
+
+    def visit(self, x: int, y: int) -> None:
+        if not self.i_lo <= x <= self.i_hi:
+            self.row.append((x, y))
+
+    def row_done(self, line: int):
+        if not self.row:
+            return
+        self.run.outside_box += len(self.row)
+        if not self.noted:
+            self.noted = True
+            x, y = self.row[0]
+            yield Note(line=line, pixel=(x, y), text=(
+                f"Triangle {self.number}: the walk visits ({x}, {y}), outside the bounding box "
+                f"(columns {self.i_lo} .. {self.i_hi}); the option bounded keeps it inside."))
+        yield Vars(line=line, pixel=self.row[-1], values={"outside_box": self.run.outside_box})
+        self.row = []
 
 
 BACKTRACK = Traversal(_backtrack_code, _backtrack_traversal)

@@ -160,6 +160,7 @@ class FileActions(QObject):
             window.compare.setChecked(bool(view["compare"]))
         if "speed" in view:
             window.transport.set_speed(view["speed"])
+        window.overlays.switch_on(view.get("overlays", ()))
         if "step" in view:
             from app.gui.recording import seek_when_recorded  # a long run may still be recording
             seek_when_recorded(window.player, int(view["step"]))

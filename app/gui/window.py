@@ -135,7 +135,7 @@ class MainWindow(QMainWindow):
         self.exercise_mode = ExerciseMode(self)  # Run > Exercise
         self.student_actions = StudentActions(self)  # File > Open algorithm…, Run > First divergence
         from app.gui.overlay_actions import TriangleOverlays
-        self.overlays = TriangleOverlays(self)  # View > Overlays (triangle geometry)
+        self.overlays = TriangleOverlays(self)  # View > Overlays (triangle and line geometry)
         from app.gui.input_guard import InputGuard
         self.input_guard = InputGuard(self)  # no wheel edits by accident; Ctrl+Z everywhere
         from app.gui.window_view import WindowView

@@ -498,6 +498,9 @@ def _view(view) -> dict:
         raise SceneError("view: expected an object")
     checked = {}
     for name, value in view.items():
+        if name == "overlays":
+            checked[name] = _overlay_names(value)
+            continue
         kind = _VIEW_FIELDS.get(name)
         if kind is None:
             continue  # a newer program's view setting: harmless to drop
@@ -509,6 +512,14 @@ def _view(view) -> dict:
                              f"got {show(value)}")
         checked[name] = value
     return checked
+
+
+def _overlay_names(value) -> tuple:
+    """View > Overlays to switch on: names (the window and export skip one they
+    do not know, as a newer program's)."""
+    if not isinstance(value, list) or not all(isinstance(name, str) for name in value):
+        raise SceneError("view.overlays: expected a list of overlay names")
+    return tuple(value)
 
 
 def _bookmarks(bookmarks) -> list:

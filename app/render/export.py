@@ -26,6 +26,7 @@ from algorithms.core import registry
 
 from app.model.geometry import run_paths
 from app.render.derivation import draw_distances
+from app.render.octant_overlay import line_on_grid
 from app.render.overlays import COLOURS as OVERLAY_COLOURS, draw_strokes, overlay_strokes
 from app.render.frame import compose_frame, compose_region, frame_marks, primitive_mask
 from app.render.axes import Axes
@@ -174,7 +175,8 @@ class FrameRenderer:
     def _overlaid(self, grid: np.ndarray, index: int) -> np.ndarray:
         """The grid with the step's geometric overlays drawn over it (a copy:
         the grid part keeps its own for the next frame)."""
-        strokes = overlay_strokes(self.trace, index, self.settings.overlays)
+        strokes = overlay_strokes(self.trace, index, self.settings.overlays,
+                                  line_on_grid(self.spec, self.scene.points))
         if not strokes:
             return grid
         rgb = draw_strokes(self.colours.rgb[grid], strokes, self.settings.scale)

@@ -1,4 +1,4 @@
-"""Geometric overlays of a triangle run, tied to the step on show.
+"""Geometric overlays of a triangle or line run, tied to the step on show.
 
 For the triangle being drawn and the pixel centre p the step tests:
 
@@ -12,6 +12,11 @@ For the triangle being drawn and the pixel centre p the step tests:
 * ``basis``: the vectors P1 - P0 and P2 - P0 of the barycentric frame
   p = P0 + beta (P1 - P0) + gamma (P2 - P0).
 
+And for a line run (P -> Q), whatever the step:
+
+* ``octants``: the eight octants around P, the line's, and the mirrors that
+  take it to the first (app/render/octant_overlay.py).
+
 The shapes are strokes (polylines in grid units, one colour each), so the
 window draws them as line items and export draws them with Pillow on the
 composed frame: both show the same geometry. Nothing here imports Qt.
@@ -24,13 +29,14 @@ from dataclasses import dataclass
 import numpy as np
 
 from algorithms.core.steps import Vars
+from app.render import octant_overlay
 
-OVERLAYS = ("half-planes", "sub-triangles", "distances", "basis")
+OVERLAYS = ("half-planes", "sub-triangles", "distances", "basis", "octants")
 # One colour per edge k (and its opposite vertex P_k), and one for the basis.
 # Not blue: the ink is blue, and a blue stroke over filled pixels disappears.
 EDGE_COLOURS = ((214, 40, 40), (43, 138, 62), (180, 40, 180))
 BASIS_COLOUR = (30, 30, 30)
-COLOURS = EDGE_COLOURS + (BASIS_COLOUR,)
+COLOURS = EDGE_COLOURS + (BASIS_COLOUR,) + octant_overlay.COLOURS
 HATCH_SPACING = 1.5  # px between hatch lines
 HATCH_ANGLES = (math.radians(30), math.radians(90), math.radians(150))
 
@@ -42,14 +48,22 @@ class Stroke:
 
 
 def parse_overlays(text: str) -> tuple[str, ...]:
-    """Names from a comma list ("all" for every one); ValueError names a bad one."""
+    """Names from a comma list ("all" for every one, "none" for none); ValueError
+    names a bad one."""
     names = [part.strip() for part in text.split(",") if part.strip()]
     if names == ["all"]:
         return OVERLAYS
+    if names == ["none"]:
+        return ()
     for name in names:
         if name not in OVERLAYS:
             raise ValueError(f"unknown overlay {name!r}; use {', '.join(OVERLAYS)} or all")
     return tuple(dict.fromkeys(names))
+
+
+def scene_overlays(scene) -> tuple[str, ...]:
+    """The overlays a scene's view switches on, those this program knows."""
+    return tuple(name for name in scene.view.get("overlays", ()) if name in OVERLAYS)
 
 
 def current_triangle(trace, index: int):
@@ -62,18 +76,22 @@ def current_triangle(trace, index: int):
     return None
 
 
-def overlay_strokes(trace, index: int, shown) -> list[Stroke]:
-    """The strokes of the overlays named in ``shown`` at step ``index``."""
+def overlay_strokes(trace, index: int, shown, line=None) -> list[Stroke]:
+    """The strokes of the overlays named in ``shown`` at step ``index``;
+    ``line``: the run's segment P -> Q in grid units (octant_overlay.line_on_grid),
+    None when the run draws no line."""
     shown = set(shown)
     if trace is None or not shown:
         return []
+    strokes = []
+    if "octants" in shown and line is not None:
+        strokes += octant_overlay.octant_strokes(line, Stroke)
     triangle = current_triangle(trace, index)
     if triangle is None:
-        return []
+        return strokes
     step = trace.step(index)
     p = None if step.pixel is None else (step.pixel[0] + 0.5, step.pixel[1] + 0.5)
     grid = (trace.width, trace.height)
-    strokes = []
     if "half-planes" in shown:
         strokes += half_plane_strokes(triangle, grid)
     if "sub-triangles" in shown and p is not None:

@@ -114,3 +114,68 @@ def test_export_draws_the_strokes_in_their_colours(trace):
 def test_cramer_run_names_its_triangle_for_the_overlays():
     trace = record("triangle-cramer", TRIANGLE, {}, (32, 24))
     assert overlays.current_triangle(trace, len(trace) // 2) == TRIANGLE
+
+
+# ------------------------------------------------------------ octants
+LINE = ((14, 14), (8, 1))  # dx = -6, dy = -13: octant 6
+
+
+def octant_strokes(line=((14.5, 14.5), (8.5, 1.5))):
+    trace = record("line-bresenham", LINE)
+    return overlays.overlay_strokes(trace, 3, ["octants"], line)
+
+
+def test_the_octant_diagram_outlines_the_lines_octant_and_its_image():
+    from app.render import octant_overlay as octo
+    strokes = octant_strokes()
+    by_colour = {}
+    for stroke in strokes:
+        by_colour.setdefault(stroke.colour, []).append(stroke)
+    # Octant 6 lies between 225 and 270 degrees: its rays end there, seen from P.
+    ends = {tuple(round(v, 6) for v in s.points[-1]) for s in by_colour[octo.OCTANT_COLOUR]
+            if len(s.points) == 2 and s.points[0] == (14.5, 14.5)}
+    r = octo.RADIUS
+    assert ends == {(round(14.5 - r * 0.5 ** 0.5, 6), round(14.5 - r * 0.5 ** 0.5, 6)),
+                    (14.5, round(14.5 - r, 6))}
+    # The image in octant 1: (13, 6) from P.
+    (image,) = by_colour[octo.IMAGE_COLOUR]
+    assert image.points == ((14.5, 14.5), (27.5, 20.5))
+    # Three mirrors, dashed: dashes along the vertical, the horizontal and y = x.
+    directions = set()
+    for s in by_colour[octo.MIRROR_COLOUR]:
+        (x0, y0), (x1, y1) = s.points
+        directions.add((round(x1 - x0, 6) != 0, round(y1 - y0, 6) != 0))
+    assert directions == {(False, True), (True, False), (True, True)}
+    # Eight rays, and the octant's number drawn in its colour beside seven others.
+    assert sum(1 for s in by_colour[octo.RAY_COLOUR] if s.points[0] == (14.5, 14.5)) == 8
+
+
+def test_the_octant_overlay_needs_a_line():
+    trace = record("line-bresenham", LINE)
+    assert overlays.overlay_strokes(trace, 3, ["octants"], None) == []
+    assert not any(s.colour == (120, 60, 200) for s in octant_strokes(((3.5, 3.5), (9.5, 5.5))))
+
+
+def test_octants_is_named_and_a_scene_can_switch_it_on():
+    from app.model import shipped
+    assert overlays.parse_overlays("octants") == ("octants",)
+    assert overlays.parse_overlays("none") == ()
+    scene = scenes.load(shipped.scene_path("line-octants"))
+    assert overlays.scene_overlays(scene) == ("octants",)
+    assert overlays.scene_overlays(scene.replace(view={"overlays": ["later", "octants"]})) \
+        == ("octants",)
+    with pytest.raises(scenes.SceneError, match="view.overlays"):
+        scenes._view({"overlays": "octants"})
+
+
+def test_export_draws_the_octant_diagram():
+    from app.model import shipped
+    from app.render import octant_overlay as octo
+    scene = scenes.load(shipped.scene_path("line-octants"))
+    # No highlight: its marks are drawn over the strokes.
+    settings = dict(scale=12, panel="none", caption=False, highlight=False)
+    plain = FrameRenderer(scene, ExportSettings(**settings)).rgb(3)
+    drawn = FrameRenderer(scene, ExportSettings(**settings, overlays=("octants",))).rgb(3)
+    changed = [tuple(c) for c in drawn[(plain != drawn).any(axis=2)].tolist()]
+    assert {octo.OCTANT_COLOUR, octo.MIRROR_COLOUR, octo.IMAGE_COLOUR} <= set(changed)
+    assert set(changed) <= set(octo.COLOURS)
