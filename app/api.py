@@ -223,7 +223,8 @@ class Run:
 
 
 def check(student_file, *, algorithm: str, cases="hard", seed: int = 0,
-          time_limit: float = 2, memory_limit="256M") -> "CheckResult":
+          time_limit: float = 2, memory_limit="256M",
+          require_sandbox: bool = False) -> "CheckResult":
     """Check a student's algorithm as `rasterlab check` does: the file's
     generator draw(...) runs in a separate process on each case, with the
     same limits, and its pixels are compared with the reference's and the
@@ -236,11 +237,13 @@ def check(student_file, *, algorithm: str, cases="hard", seed: int = 0,
     seed: the seed of the random cases.
     time_limit: CPU seconds per case, 0.1 .. 60.
     memory_limit: memory per case, 64M .. 8G: bytes or a size such as "512M".
+    require_sandbox: refuse (ValueError) where the bubblewrap sandbox is not
+        available; without it the text says which isolation was in force.
     """
     from app.teaching import check_report
     from app.teaching.check_run import run_check
     checked = run_check(student_file, algorithm, _case_words(cases), str(seed), str(time_limit),
-                        str(memory_limit))
+                        str(memory_limit), require_sandbox=require_sandbox)
     return CheckResult(check_report.as_json(*checked),
                        "\n".join(check_report.text_lines(*checked)))
 

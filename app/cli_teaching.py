@@ -3,7 +3,10 @@ file of a student's own algorithm, `rasterlab check` grades it, `rasterlab
 worksheet` writes a worksheet and its answer key.
 
 check's exit status: 0 when every case passes, 1 when some fail, 2 for bad
-input (raised as InputError, which app/cli.py turns into one line).
+input (raised as InputError, which app/cli.py turns into one line), 3 when
+RasterLab itself failed (a bug, or a resource the grader lacked), which is
+never the student's doing: whatever the student's code does ends as a
+failed case (app/teaching/student.py).
 """
 from __future__ import annotations
 
@@ -14,8 +17,10 @@ from pathlib import Path
 from algorithms.core.registry import InputError
 from app.cli_parser import add_numbers_option
 from app.model import shipped
+from app.model.scene import one_line
 from app.teaching import worksheet
-from app.model.files import Output, check_outputs, listed, not_ours, write_atomically
+from app.model.files import (Output, OutputRefused, check_outputs, listed, not_ours,
+                              write_atomically)
 
 
 def add_check_command(parser, commands) -> None:
@@ -24,8 +29,11 @@ def add_check_command(parser, commands) -> None:
         description="Run the generator draw(...) of a student's Python file (see "
                     "`rasterlab template`) in a separate process on each case, compare its "
                     "pixels with the reference algorithm and the exact result, and print "
-                    "PASS or FAIL per case with the first divergence. Exit status 0 when all "
-                    "pass, 1 when some fail, 2 for bad input.")
+                    "PASS or FAIL per case with the first divergence. On Linux with "
+                    "bubblewrap each case runs in a sandbox (no network, no files but its own "
+                    "scratch folder); elsewhere the report says the code is not isolated. "
+                    "Exit status 0 when all pass, 1 when some fail, 2 for bad input, 3 when "
+                    "RasterLab itself failed.")
     check.add_argument("file", metavar="FILE.py", help="the student's file")
     check.add_argument("--against", required=True, metavar="ALG",
                        help="the reference algorithm: a line, circle, triangle or polygon "
@@ -47,21 +55,42 @@ def add_check_command(parser, commands) -> None:
                        "never over the student's file or a case's scene")
     check.add_argument("--force", action="store_true",
                        help="with --junit: replace a file that is not XML")
+    check.add_argument("--require-sandbox", action="store_true",
+                       help="refuse to run (exit status 2) where the bubblewrap sandbox is not "
+                            "available; RASTERLAB_BWRAP names the bwrap program to use")
 
 
 def command_check(args) -> int:
     # Loaded here: the window and the other commands import this module too.
-    from app.teaching import check_report
-    from app.teaching.check_run import run_check
+    from app.teaching.check_run import isolation
     if args.junit:
         cases = [word for word in args.cases if Path(word).is_file()]
         check_outputs([Output("--junit", args.junit, foreign=not_ours("xml"))],
                       [args.file, *cases], args.force)
+    where = isolation(args.require_sandbox)
+    if not where.sandboxed:
+        print(f"rasterlab: warning: the student's code is NOT isolated from your files and "
+              f"network ({where.reason}); --require-sandbox refuses to run without a sandbox",
+              file=sys.stderr)
+    try:
+        return _checked(args)
+    except (InputError, OutputRefused, BrokenPipeError, KeyboardInterrupt):
+        raise
+    except Exception as error:  # MemoryError, OSError, SandboxFailure and bugs alike
+        print(f"rasterlab: check failed in RasterLab itself, not in the student's code: "
+              f"{type(error).__name__}: {one_line(str(error))}", file=sys.stderr)
+        return 3
+
+
+def _checked(args) -> int:
+    from app.teaching import check_report
+    from app.teaching.check_run import run_check
     from app.progress import CasesBar
     bar = CasesBar(sys.stderr)
     try:
         checked = run_check(args.file, args.against, args.cases, args.seed, args.time_limit,
-                            args.memory_limit, bar if bar.active else None)
+                            args.memory_limit, bar if bar.active else None,
+                            args.require_sandbox)
     finally:
         bar.clear()
     if args.junit:

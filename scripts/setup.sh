@@ -22,6 +22,8 @@ PYTHON="${PYTHON:-python3}"
 SYSTEM_PACKAGES="libegl1 libgl1 libglib2.0-0 libfontconfig1 libdbus-1-3 fonts-dejavu-core
   libxkbcommon0 libxkbcommon-x11-0 libxcb-cursor0 libxcb-icccm4 libxcb-image0
   libxcb-keysyms1 libxcb-randr0 libxcb-render-util0 libxcb-shape0 libxcb-xinerama0 libxcb-xkb1"
+# bubblewrap: `rasterlab check` runs each student's case in its sandbox.
+SYSTEM_PACKAGES="$SYSTEM_PACKAGES bubblewrap"
 # Stock Debian and Ubuntu Pythons make no venv without their -venv package
 # (it holds ensurepip); Python's own message names the versioned one.
 if ! "$PYTHON" -c "import ensurepip" >/dev/null 2>&1; then

@@ -16,6 +16,8 @@ U+FFFD or a space, so the UTF-8 writers never fail on them.
     latex_file_name a file name LaTeX can be given, or ValueError
     markdown_text   Markdown inline text: no raw HTML, links or images
     csv_row         CSV cells guarded against spreadsheet formulas
+    foreign_text    what another program wrote (a student's code), safe for any of these
+                    and for a terminal: no control character, escape sequence or lone surrogate
 """
 from __future__ import annotations
 
@@ -32,6 +34,11 @@ _NOT_XML = re.compile("[\x00-\x08\x0b\x0c\x0e-\x1f\ufffe\uffff]")
 # \n, reads ^^L as \par and refuses NUL and DEL; one line of text has none.
 _CONTROL = re.compile("[\x00-\x1f\x7f\x85\u2028\u2029]")
 _LINE_END = re.compile("\r\n|\r|\n")  # where TeX ends a line
+
+
+# Control characters a terminal acts on (ESC starts an escape sequence, \x9b
+# is CSI on its own) and the non-characters XML refuses; line ends and tabs stay.
+_FOREIGN = re.compile("[\x00-\x08\x0b-\x1f\x7f-\x9f\ufffe\uffff]")
 
 
 def _encodable(text: str) -> str:
@@ -146,3 +153,15 @@ def csv_cell(cell):
 def csv_row(cells) -> list:
     """A row for ``csv.writer``: every cell through ``csv_cell``."""
     return [csv_cell(cell) for cell in cells]
+
+
+def foreign_text(text: str, limit: int | None = None) -> str:
+    """Text another program produced (a student's messages, prints and
+    names), safe to print and to hand to any writer above: lone surrogates
+    and control characters other than line ends and tabs as U+FFFD, a
+    carriage return as a line end; at most ``limit`` characters, with the
+    count of those left out."""
+    text = _FOREIGN.sub("\ufffd", _encodable(text).replace("\r\n", "\n").replace("\r", "\n"))
+    if limit is not None and len(text) > limit:
+        text = f"{text[:limit]}\n[{len(text) - limit:,} more characters not shown]"
+    return text

@@ -4,7 +4,9 @@ worksheets to print.
 
 ``exercise``           the exercise mode's questions and grading
 ``student``            runs a student's program in a child process, with limits
-``student_child``      what runs in that child
+``student_child``      what runs in that child (the runner, self-contained)
+``sandbox``            where that child runs: a bubblewrap sandbox, or the fallback
+``student_answer``     the child's answer, read as untrusted input
 ``checking``           a student's algorithm against the hard cases and the exact oracles
 ``check_families``     what checking asks of each family
 ``check_report``       a check's outcome as text, JSON or JUnit

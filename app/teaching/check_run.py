@@ -11,24 +11,27 @@ from typing import NamedTuple
 from algorithms.core import registry
 from algorithms.core.registry import InputError, parse_number
 from app.model import budget
-from app.teaching import checking, student
+from app.teaching import checking, sandbox, student
 
 
 class Checked(NamedTuple):
     """Every case's result, the file's name as reports show it, the
-    reference's name and the limits that held (student.limits_record)."""
+    reference's name, the limits that held (student.limits_record) and the
+    line on the isolation in force (sandbox.Isolation.line)."""
 
     results: list
     file: str
     against: str
     limits: dict
+    isolation: str
 
 
 def run_check(file, against: str, cases: list[str], seed: str = "0", time_limit: str = "2",
-              memory_limit: str = "256M", progress=None) -> Checked:
+              memory_limit: str = "256M", progress=None, require_sandbox: bool = False) -> Checked:
     """Check ``file`` against the algorithm ``against`` on ``cases`` (hard,
     random N and SCENE.json words). Bad input raises InputError before any
-    case runs; each case runs the student's code in its own process."""
+    case runs, as does ``require_sandbox`` where there is no sandbox; each
+    case runs the student's code in its own process (sandbox.py)."""
     path = student.check_file(file)
     spec = registry.get(against)
     checking.kind_of(spec)
@@ -36,9 +39,18 @@ def run_check(file, against: str, cases: list[str], seed: str = "0", time_limit:
     number = parse_number(seed, "--seed", integer=True)
     case_limits = limits(time_limit, memory_limit)
     made = checking.make_cases(spec, selectors, number)  # bad scenes are refused before any run
+    where = isolation(require_sandbox)
     results = checking.check(path, spec.name, made, limits=case_limits, progress=progress)
     held = student.limits_record(case_limits, student.limits_in_force(case_limits))
-    return Checked(results, Path(file).name, spec.name, held)
+    return Checked(results, Path(file).name, spec.name, held, where.line())
+
+
+def isolation(required: bool = False) -> sandbox.Isolation:
+    """The isolation cases run in; InputError when ``required`` and there is none."""
+    where = sandbox.isolation()
+    if required and not where.sandboxed:
+        raise InputError(f"--require-sandbox: no sandbox on this system ({where.reason})")
+    return where
 
 
 def limits(time_limit: str, memory_limit: str) -> student.Limits:

@@ -3,27 +3,32 @@
 The protocol (see resources/templates/): a plain Python file defines a
 generator function that takes the family's inputs and yields each pixel as
 ``x, y`` or ``x, y, {"d": d}``. RasterLab never imports that file: every
-case runs in a fresh ``python -I -S`` process (student_child.py) with a
-wall-clock timeout here, after which the process is ended, on every system;
-where the system lets a process limit itself, also a CPU-time limit
-(RLIMIT_CPU) and a memory limit (RLIMIT_AS, or RLIMIT_DATA on a macOS that
-refuses it). Windows has neither: ``limits_in_force`` asks the child which
-hold, and the check's report says so. Whatever the student's code does (raises, loops,
-crashes, allocates without bound, yields garbage), the case ends as an
-``Outcome`` with a message, never as an exception in RasterLab.
+case runs a fresh ``python -I -S`` process (student_child.py, the runner)
+in a scratch folder of its own, in a sandbox where this system has one
+(sandbox.py), with a wall-clock timeout here, after which every process of
+the case is ended, on every system; where the system lets a process limit
+itself, also CPU time (RLIMIT_CPU), memory (RLIMIT_AS, or RLIMIT_DATA on a
+macOS that refuses it), file size, open files and processes. Windows has
+no such limits: ``limits_in_force`` asks the runner which hold, and the
+check's report says so. Nothing the child says is trusted beyond the
+runner's answer, read capped and checked by student_answer.py. Whatever
+the student's code does (raises, loops, crashes, allocates without bound,
+writes without end, yields garbage), the case ends as an ``Outcome`` with
+a message, never as an exception in RasterLab; a child that could not
+start at all raises sandbox.SandboxFailure, RasterLab's own failure.
 """
 from __future__ import annotations
 
 import json
 import math
 import signal
-import subprocess
-import sys
 import time
 from dataclasses import dataclass, field, replace
 from pathlib import Path
 
 from algorithms.core.errors import InputError
+from app.teaching import sandbox, student_answer
+from app.teaching.sandbox import Ran
 
 CHILD = Path(__file__).with_name("student_child.py")
 FUNCTION = "draw"
@@ -93,21 +98,24 @@ def wall_seconds(limits: Limits) -> float:
     return limits.seconds + 1.0
 
 
-def _child(request: dict, limits: Limits) -> subprocess.CompletedProcess:
+def _child(request: dict, limits: Limits, path: Path | None = None) -> Ran:
+    """Run the runner on ``request`` with a copy of the student's file
+    ``path`` beside it, under the same name (the runner's tracebacks show it)."""
     request = {**request, "memory": limits.memory, "cpu_seconds": max(1, math.ceil(limits.seconds))}
-    return subprocess.run([sys.executable, "-I", "-S", str(CHILD)], input=json.dumps(request),
-                          capture_output=True, encoding="utf-8", errors="replace",
-                          timeout=wall_seconds(limits))
+    files = {sandbox.RUNNER: CHILD}
+    if path is not None:
+        request["file"] = path.name if path.name != sandbox.RUNNER else "submission.py"
+        files[request["file"]] = path
+    return sandbox.run_case(files, json.dumps(request).encode("utf-8"), wall_seconds(limits),
+                            sandbox.isolation())
 
 
 def limits_in_force(limits: Limits = Limits()) -> dict:
-    """Which limits hold for a case on this system, as the child sets them:
+    """Which limits hold for a case on this system, as the runner sets them:
     {"cpu": bool, "memory": "address space", "data segment" or None}."""
-    try:
-        held = json.loads(_child({"probe": True}, limits).stdout)
-        return {"cpu": bool(held["cpu"]), "memory": held["memory"]}
-    except (subprocess.TimeoutExpired, ValueError, KeyError, TypeError):
-        return {"cpu": False, "memory": None}  # unknown is stated as not enforced
+    ran = _child({"probe": True}, limits)
+    held = student_answer.probe_answer(ran)
+    return held if held is not None else {"cpu": False, "memory": None}  # unknown: not enforced
 
 
 def limits_record(limits: Limits, held: dict) -> dict:
@@ -134,38 +142,29 @@ def run_student(path, args, limits: Limits = Limits(), function: str = FUNCTION,
     """Run ``function(*args)`` of the file in a child process and collect its pixels.
     With ``value_name``, a step may also be ``x, y, number``: the number is
     kept under that name (an antialiased line's ``x, y, intensity``)."""
-    request = {"file": str(path), "function": function, "args": list(args), "value": value_name,
+    request = {"function": function, "args": list(args), "value": value_name,
                "max_steps": limits.max_steps}
     started = time.perf_counter()
-    try:
-        done = _child(request, limits)
-    except subprocess.TimeoutExpired as expired:
+    ran = _child(request, limits, Path(path))
+    return _outcome(ran, limits, time.perf_counter() - started)
+
+
+def _outcome(ran: Ran, limits: Limits, seconds: float) -> Outcome:
+    printed = student_answer.printed(ran)
+    if ran.status is None:
         return Outcome("time", error=f"no result within {limits.seconds:g} s: does the loop end?",
-                       seconds=time.perf_counter() - started, output=_text(expired.stderr))
-    seconds = time.perf_counter() - started
-    return _outcome(done, limits, seconds)
-
-
-def _outcome(done: subprocess.CompletedProcess, limits: Limits, seconds: float) -> Outcome:
-    printed = done.stderr or ""
-    if done.returncode in CPU_LIMIT_STATUSES:
+                       seconds=seconds, output=printed)
+    if ran.status in CPU_LIMIT_STATUSES:
         return Outcome("time", error=f"the CPU-time limit of {limits.seconds:g} s was reached: "
                                      "does the loop end?", seconds=seconds, output=printed)
     try:
-        result = json.loads(done.stdout)
-        kind = result["kind"]
-        steps = tuple((int(x), int(y), dict(values)) for x, y, values in result.get("steps", ()))
-    except (ValueError, KeyError, TypeError):
+        kind, steps, error = student_answer.case_answer(ran, limits.max_steps)
+    except student_answer.NoAnswer as missing:
         if "MemoryError" in printed:
             return Outcome("memory", error="the memory limit was reached (MemoryError)",
                            seconds=seconds, output=printed)
         last = printed.strip().splitlines()[-1:] or [""]
-        return Outcome("crash", error=f"the process ended with status {done.returncode} and no "
-                                      f"result {last[0]}".rstrip(), seconds=seconds, output=printed)
-    return Outcome(kind, steps, str(result.get("error", "")), seconds, printed)
-
-
-def _text(data) -> str:
-    if isinstance(data, bytes):
-        return data.decode("utf-8", "replace")
-    return data or ""
+        return Outcome("crash", error=f"the process ended with status {ran.status} and "
+                                      f"{missing} {last[0]}".rstrip(),
+                       seconds=seconds, output=printed)
+    return Outcome(kind, steps, error, seconds, printed)

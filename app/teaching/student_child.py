@@ -1,11 +1,16 @@
 """Run one case of a student's algorithm. Executed as a process of its own.
 
-RasterLab never imports a student's file: app/teaching/student.py starts this
-script with ``python -I -S`` and sends one request as JSON on stdin
-(the file, the function, its arguments, the limits). This script sets the
-limits on itself before it reads the student's code, runs the generator and
-writes one JSON object on its own stdout: the steps, or the error. The
-student's own prints go to stderr. Standard library only.
+RasterLab never imports a student's file: app/teaching/student.py copies
+this script and the student's file into the case's scratch folder, starts
+it there with ``python -I -S`` (in a sandbox where there is one, see
+sandbox.py) and sends one request as JSON on stdin (the file, the
+function, its arguments, the limits). This script first writes the line
+HELLO on its stdout (the sign that the process started; without it the
+failure is RasterLab's), sets the limits on itself before it reads the
+student's code, runs the generator and writes one JSON object as the next
+line: the steps, or the error. The student's own prints go to stderr.
+Standard library only, and self-contained: nothing of RasterLab is
+visible where it runs.
 
 Which limits a system lets a process set differs: Windows has no
 ``resource`` module (no CPU-time or memory limit here; the parent's
@@ -26,6 +31,9 @@ except ImportError:  # Windows
 
 
 FILE_LIMIT = 16 << 20  # the largest file the student's code may write
+OPEN_FILES = 64
+PROCESSES = 64  # counted per user; root is exempt (a sandbox's pid namespace still ends them)
+HELLO = "rasterlab-runner 1"
 
 
 class Shape(Exception):
@@ -45,6 +53,8 @@ def set_limits(memory: int, cpu_seconds: int, rlimits=resource) -> dict:
             break
     _limit(rlimits, "RLIMIT_CORE", 0, 0)
     _limit(rlimits, "RLIMIT_FSIZE", FILE_LIMIT, FILE_LIMIT)
+    _limit(rlimits, "RLIMIT_NOFILE", OPEN_FILES, OPEN_FILES)
+    _limit(rlimits, "RLIMIT_NPROC", PROCESSES, PROCESSES)
     return held
 
 
@@ -130,6 +140,8 @@ def run(request: dict) -> dict:
 
 
 def main() -> None:
+    sys.stdout.write(HELLO + "\n")
+    sys.stdout.flush()
     request = json.loads(sys.stdin.read())
     held = set_limits(request["memory"], request["cpu_seconds"])
     if request.get("probe"):

@@ -276,3 +276,11 @@ def test_lone_surrogates_and_controls_never_break_a_writer():
         function(text).encode("utf-8")
     ET.fromstring(f"<t a=\"{escape.xml_text(text)}\">{escape.xml_text(text)}</t>")
     assert "\\ud800" in escape.script_json(text)
+
+
+def test_foreign_text_keeps_lines_and_tabs_and_nothing_a_terminal_acts_on():
+    text = escape.foreign_text("a\tb\r\nc\rd\x00\x07\x1b[2J\x7f\x9b\ud800\udfff\ufffe é≤")
+    assert text == "a\tb\nc\nd\ufffd\ufffd\ufffd[2J\ufffd\ufffd\ufffd\ufffd\ufffd é≤"
+    text.encode("utf-8")
+    ET.fromstring(f"<a>{escape.xml_text(text)}</a>")
+    assert escape.foreign_text("x" * 10, limit=4) == "xxxx\n[6 more characters not shown]"

@@ -122,17 +122,17 @@ def test_the_cpu_limit_statuses_exist_only_where_the_signals_do():
 
 def test_without_the_signals_a_killed_child_is_a_crash_not_a_traceback(monkeypatch):
     monkeypatch.setattr(student, "CPU_LIMIT_STATUSES", frozenset())  # Windows
-    done = subprocess.CompletedProcess([], 1, stdout="", stderr="")  # TerminateProcess's 1
-    outcome = student._outcome(done, student.Limits(), 0.1)
+    ran = student.Ran(1, b"rasterlab-runner 1\n", 0, b"", 0)  # TerminateProcess's 1
+    outcome = student._outcome(ran, student.Limits(), 0.1)
     assert outcome.kind == "crash" and "status 1" in outcome.error
 
 
 def child_with(tmp_path, setup: str) -> Path:
-    """A stand-in for student_child.py that runs the real one after ``setup``
-    (Python source that replaces ``resource`` or the standard streams)."""
+    """A stand-in for student_child.py: ``setup`` (Python source that replaces
+    ``resource`` or the standard streams), then the real one's source, as
+    the runner is self-contained (it runs where RasterLab is not visible)."""
     wrapper = tmp_path / "child.py"
-    wrapper.write_text(f"import sys\n{setup}\nimport runpy\n"
-                       f"runpy.run_path({str(student.CHILD)!r}, run_name='__main__')\n",
+    wrapper.write_text(f"import sys\n{setup}\n" + student.CHILD.read_text(encoding="utf-8"),
                        encoding="utf-8")
     return wrapper
 

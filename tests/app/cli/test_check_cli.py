@@ -66,9 +66,11 @@ def test_junit_xml_validates(run_cli, tmp_path):
     assert suite.tag == "testsuite"
     properties, *cases = list(suite)
     assert properties.tag == "properties"  # first, as the JUnit schema has it
-    (limits,) = properties
+    limits, isolation = properties
     assert limits.attrib["name"] == "limits"
     assert limits.attrib["value"].startswith("limits per case: wall clock 3 s")
+    assert isolation.attrib["name"] == "isolation"
+    assert isolation.attrib["value"].startswith("isolation: ")
     assert {case.tag for case in cases} == {"testcase"} and len(cases) == len(LINE_CASES)
     assert all(JUNIT_CASE_ATTRIBUTES <= set(case.attrib) for case in cases)
     for case in cases:
