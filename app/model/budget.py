@@ -114,12 +114,21 @@ def _outline_length(spec, points) -> int:
                for p, q in _edges(spec, points))
 
 
-def _temporal_frame_steps(options, pixels: int) -> int:
+def _temporal_frame_steps(options, points, pixels: int) -> int:
     """Steps of one animation frame at most: a pixel frame per pixel, and
-    with motion blur one per pixel and instant added to the accumulation
-    buffer."""
-    blur = options["mode"] == "motion-blur"
-    return pixels * (1 + options["time_samples"] * blur)
+    with motion blur one per instant and pixel the primitive reaches then
+    (the square around it that any turn of it fits in), added to the
+    accumulation buffer."""
+    if options["mode"] != "motion-blur":
+        return pixels
+    if len(points) == 1:
+        reach = 2 * options["radius"] + options["spoke_width"] + 2
+    else:
+        cx = sum(float(p[0]) for p in points) / max(1, len(points))
+        cy = sum(float(p[1]) for p in points) / max(1, len(points))
+        reach = 2 * max((math.hypot(float(p[0]) - cx, float(p[1]) - cy) for p in points),
+                        default=0.0) + 2
+    return pixels + options["time_samples"] * min(pixels, math.ceil(min(reach, pixels)) ** 2)
 
 
 def step_bound(spec, points, options, grid, step_cap: int) -> int:
@@ -127,7 +136,8 @@ def step_bound(spec, points, options, grid, step_cap: int) -> int:
     width, height = int(grid[0]), int(grid[1])
     options = _options(spec, options)
     if spec.name == "aa-temporal":
-        bound = options["frames"] * (_temporal_frame_steps(options, width * height) + 1) + 2
+        per_frame = _temporal_frame_steps(options, spec.inputs.flat(points), width * height)
+        bound = options["frames"] * (per_frame + 1) + 2
     elif spec.family == "lines":
         # a few steps per pixel of each segment
         bound = 8 * _outline_length(spec, points) + 1024
@@ -240,7 +250,8 @@ def _unstepped_seconds(spec, points, options, grid, steps: int) -> float:
         shapes = options["spokes"] if count == 1 else 1
         # each frame reached: every pixel's samples, at every instant, against every shape
         frames = min(options["frames"],
-                     steps // (_temporal_frame_steps(options, width * height) + 1) + 1)
+                     steps // (_temporal_frame_steps(options, spec.inputs.flat(points),
+                                                     width * height) + 1) + 1)
         return SAMPLE_SECONDS * frames * width * height * options["n"] ** 2 * instants * shapes
     if spec.name == "aa-supersample":
         # n x n samples per pixel reached, each against the shape's edges
