@@ -7,15 +7,15 @@ centres of the two end pixels. Every algorithm plots both end pixels.
 from __future__ import annotations
 
 # Imported in this order, so the algorithms are listed in this order.
-from . import (bresenham as _bresenham, explicit_printed, forms as _forms, textbook, traversal,
-               two_triangles)
+from . import bresenham as _bresenham, explicit_printed, forms as _forms, textbook, traversal
 from .common import COLORS, SEGMENT, Octant
 from .bresenham import bresenham, bresenham_code, bresenham_pixels
 from .forms import explicit, implicit, incremental, parametric
 
 # The family's algorithms, in the order they are listed.
-SPECS = (_bresenham.SPECS + _forms.SPECS + explicit_printed.SPECS + textbook.SPECS + traversal.SPECS
-         + two_triangles.SPECS)
+# (line-two-triangles, a line algorithm that fills triangles, is declared by
+# the triangle package: algorithms/triangles/line_triangles.py.)
+SPECS = _bresenham.SPECS + _forms.SPECS + explicit_printed.SPECS + textbook.SPECS + traversal.SPECS
 
 __all__ = ["COLORS", "SEGMENT", "Octant", "bresenham", "bresenham_code", "bresenham_pixels",
            "explicit", "implicit", "incremental", "parametric"]

@@ -92,7 +92,7 @@ def projected_paths(trace) -> list:
 def _two_triangles(points, spec, options) -> list:
     """The rectangle's two triangles a line-two-triangles run fills."""
     from algorithms.core.registry import InputError
-    from algorithms.lines.two_triangles import triangles
+    from algorithms.triangles.line_triangles import triangles
     try:
         return [(list(t), True) for t in triangles(points, spec.resolve(options))]
     except InputError:

@@ -91,11 +91,6 @@ def test_the_pixels_are_the_rectangles_centres_by_the_top_left_rule(p, q, width,
     assert all(n == 1 for n in counts.values()), "the shared diagonal gave a pixel twice"
 
 
-def test_its_fill_rules_are_the_triangle_familys():
-    from algorithms.triangles.edges import RULES
-    assert SPEC.option("fill_rule").choices == RULES
-
-
 def test_the_kernel_gives_the_generators_pixels_in_order():
     trace = SPEC.record(((2, 3), (28, 13)), {})
     steps = [trace.step(i).pixel for i in range(len(trace)) if trace.step(i).writes]

@@ -1,5 +1,10 @@
 """A line drawn as two skinny triangles, as some systems draw lines.
 
+An algorithm of the line family that lives in the triangle package: it
+fills triangles, and the line package may not import this one (the
+triangle package imports the circle package, which imports the line
+package).
+
 The segment between the centres of pixels P and Q is widened into a
 rectangle w px across (with square caps it also reaches w/2 beyond each
 end); the rectangle is cut along a diagonal into two triangles, and each
@@ -22,16 +27,11 @@ import numpy as np
 from algorithms.core.code import Code, listing
 from algorithms.core.registry import AlgorithmSpec, Option, Oracle
 from algorithms.core.steps import PLOT, Note, Start, Vars
+from algorithms.lines.common import SEGMENT
 
-from .common import SEGMENT
+from .edges import FILL_RULE
+from .kernels import kernel_pixels
 
-# The triangle family's fill rules (algorithms.triangles.edges.RULES). The
-# family is imported only when a triangle is filled: it imports the circle
-# family, which imports this one.
-FILL_RULE = Option("fill_rule", "choice", "top-left", "a centre exactly on an edge: top-left "
-                   "(kept on left and bottom edges, so the shared diagonal's pixels go to one "
-                   "triangle), inclusive (kept by both) or strict (by neither)",
-                   choices=("top-left", "inclusive", "strict"))
 WIDTH = Option("width", "float", 1.0, "the line's width across, in px", minimum=0.05, maximum=4)
 CAPS = Option("caps", "choice", "square", "square: the rectangle reaches w/2 beyond each end "
               "centre; butt: it ends at the end centres", choices=("square", "butt"))
@@ -60,7 +60,6 @@ def triangles(points, options):
 
 
 def triangle_pixels(triangle, options) -> np.ndarray:
-    from algorithms.triangles.kernels import kernel_pixels
     return kernel_pixels(triangle, {"fill_rule": options["fill_rule"]})
 
 
