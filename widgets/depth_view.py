@@ -1,4 +1,5 @@
-"""A second picture of the grid: the depth buffer of a run that keeps one.
+"""A second picture of the grid: the depth buffer of a run that keeps one
+(or its other buffer: accumulation, stencil).
 
 It shows an image composed elsewhere (``app.render.depth_image``: near
 dark, far light) cell for cell in the same frame as the pixel grid, with
@@ -64,9 +65,11 @@ class DepthView(QWidget):
         self.layout().insertWidget(0, self.plot, 1)
         self.plot.show()  # made after its parent was shown: Qt would show it later
 
-    def set_image(self, rgba: np.ndarray, near: float, far: float) -> None:
+    def set_image(self, rgba: np.ndarray, near: float, far: float,
+                  legend: str | None = None) -> None:
         """Show an (H, W, 4) uint8 image, row 0 at y = 0; ``near`` and
-        ``far`` are the depths of the darkest and the lightest grey."""
+        ``far`` are the depths of the darkest and the lightest grey, which
+        the legend says unless it is given."""
         self._build()
         self._rgba = rgba
         self.image.setImage(rgba, autoLevels=False)
@@ -74,8 +77,8 @@ class DepthView(QWidget):
         if (width, height) != self._size:
             self._size = (width, height)
             self.plot.getViewBox().setRange(xRange=(0, width), yRange=(0, height), padding=0.02)
-        self.legend.setText(f"near {near:.3g} = dark \u00b7 far {far:.3g} = light "
-                            "(never written: the clear depth)")
+        self.legend.setText(legend or f"near {near:.3g} = dark \u00b7 far {far:.3g} = light "
+                                      "(never written: the clear depth)")
 
     def set_y_down(self, y_down: bool) -> None:
         self._y_down = bool(y_down)

@@ -13,6 +13,9 @@ from .shapes import (BACKGROUND, LOOP, NAN, SHAPE_OPTIONS, SNAP, UNIT, WHITE, Sh
                      code_shapes, ops_sum, sample_ops, shape_vars, test_ops)
 
 PATTERNS = ("grid", "jitter", "random", "rotated-grid")
+# The buffer a pixel's weighted samples are summed in (shown as cover / W:
+# the running coverage of the pixel's samples tested so far).
+ACCUMULATION = "accumulation buffer"
 FILTERS = ("box", "weighted", "tent", "gaussian")
 
 PATTERN = Option("pattern", "choice", "grid", "where the samples lie in the pixel: a grid, "
@@ -222,7 +225,8 @@ def supersample(points, options, grid):
     if shapes.kind == "polygon":
         constants["fill_rule"] = options["fill_rule"]
     yield Start(line=at["setup"], values=("sx", "sy", "hit", "weight", "coverage", "rgb"),
-                constants=constants, pixel_value="coverage", color_value="rgb")
+                constants=constants, pixel_value="coverage", color_value="rgb",
+                buffer_value="coverage", buffer_name=ACCUMULATION)
     yield from shape_vars(shapes, at["setup"])
     yield _sample_table(options, at["setup"])
     window = shapes.window(grid)

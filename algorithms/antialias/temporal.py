@@ -12,11 +12,13 @@ import numpy as np
 from algorithms.core.code import Code
 from algorithms.triangles.interpolate import unpack
 from algorithms.core.registry import InputError, Option
-from algorithms.core.steps import PLOT, Start, Vars
+from algorithms.core.steps import PLOT, VISIT, Start, Vars
 from algorithms.core.trace import checkpoint
 
 from .shapes import INK, POSITION, UNIT, Shapes, ink_blend, ops_sum, test_ops
-from .supersample import lattice, sample_strata
+from .supersample import ACCUMULATION, lattice, sample_strata
+
+NAN = math.nan
 
 TEMPORAL_OPTIONS = (
     Option("primitive", "choice", "auto", "wheel (1 point: the centre) or triangle (3 points); "
@@ -206,8 +208,10 @@ def temporal_code(points, options) -> Code:
     # the primitive's window reaches but that show nothing in this frame or
     # the last yield no frame and are not counted, nor is moving the
     # primitive to each instant (line "frames": per instant, not per pixel).
+    # With motion blur the samples are counted on line "accumulate" instead,
+    # one frame per pixel and instant, and a pixel frame only divides.
     instants = options.get("time_samples", 8) if blur else 1
-    per_pixel = instants * options.get("n", 2) ** 2
+    per_pixel = 0 if blur else instants * options.get("n", 2) ** 2
     shape_test = {}
     try:
         shape_test = test_ops(_temporal_shapes(
@@ -220,23 +224,49 @@ def temporal_code(points, options) -> Code:
     pixel = ops_sum(pixel, {"compare": 2, "pixels_tested": 1})
     code = Code()
     code.add("setup", "setup: the primitive, its motion per frame, the n x n samples of a pixel")
-    code.add("frames", f"for each animation frame k:  {sample}")
-    code.add("plot_pixels", "    for each pixel (x, y) the primitive reaches in any frame:  coverage = "
-                       "(samples inside, over all instants) / (instants * n^2);  write it", PLOT,
-             ops=pixel)
+    code.add("frames", f"for each animation frame k:  {sample}"
+                       + ("  (clear the accumulation buffer)" if blur else ""))
+    if blur:
+        code.add("accumulate", "    for each instant t, each pixel the primitive reaches at t:  "
+                               "accumulation buffer += its n^2 samples inside at t", VISIT,
+                 ops=ops_sum(one, times=options.get("n", 2) ** 2))
+    summed = "the accumulation buffer" if blur else "(samples inside, over all instants)"
+    code.add("plot_pixels", "    for each pixel (x, y) the primitive reaches in any frame:  "
+                            f"coverage = {summed} / (instants * n^2);  write it", PLOT, ops=pixel)
     code.add("done", "done")
     return code
+
+
+def _accumulate(points, options, grid, frame: int, line: int):
+    """Motion blur through the accumulation buffer: each instant of the
+    frame adds, per pixel, its samples inside the primitive at that instant.
+    Yields a frame per pixel an instant reaches, with the buffer's value
+    there (samples so far / (instants * n^2)); returns the frame's image."""
+    options, points, offsets = _setup(points, options, grid)
+    width, height = int(grid[0]), int(grid[1])
+    instants = time_samples(options, frame)
+    total = len(instants) * options["n"] ** 2
+    buffer = np.zeros((height, width), np.int64)
+    for t in instants:
+        hits = np.zeros((height, width), np.int64)
+        _add_hits(hits, 0, _temporal_shapes(points, options, t), offsets, height)
+        buffer += hits
+        for y, x in np.argwhere(hits > 0):
+            yield (line, int(x), int(y), float(frame), NAN, NAN, float(buffer[y, x] / total))
+    return buffer / total
 
 
 def temporal(points, options, grid):
     kind = _primitive(points, options)
     apparent = apparent_speed(points, options)
     at = temporal_code(points, options).at
+    blur = options["mode"] == "motion-blur"
     constants = {"primitive": kind, "motion": options["motion"], "mode": options["mode"],
                  "frames": options["frames"], "speed": options["speed"], "apparent speed":
                  apparent}
-    yield Start(line=at["setup"], values=("frame", "coverage", "rgb"), constants=constants,
-                pixel_value="coverage", color_value="rgb", replaces=True)
+    yield Start(line=at["setup"], values=("frame", "coverage", "rgb") + (("accum",) * blur),
+                constants=constants, pixel_value="coverage", color_value="rgb", replaces=True,
+                buffer_value="accum" if blur else None, buffer_name=ACCUMULATION if blur else "")
     # Each frame's image is made band by band when the run reaches it, so the
     # step cap and a cancel stop the work: the pixels written are those that
     # show something in this frame or the last, in row order.
@@ -248,16 +278,21 @@ def temporal(points, options, grid):
                   else instants[0]}
         if options["motion"] == "spin":
             values["angle"] = options["speed"] * instants[0] % 360
+        if blur:
+            values["cleared"] = ACCUMULATION
         yield Vars(line=at["frames"], values=values)
         # (np.zeros, not zeros_like: that one writes every zero at once, 100 ms at 4096^2)
         image = np.zeros(previous.shape)
-        for top, rows in frame_bands(points, options, grid, k):
+        bands = frame_bands(points, options, grid, k)
+        if blur:
+            bands = [(0, (yield from _accumulate(points, options, grid, k, at["accumulate"])))]
+        for top, rows in bands:
             image[top:top + len(rows)] = rows
             shown = (rows > 0) | (previous[top:top + len(rows)] > 0)
             for y, x in np.argwhere(shown):
                 value = float(rows[y, x])
                 yield (at["plot_pixels"], int(x), int(y) + top, float(k), value,
-                       float(ink_blend(ink, value)))
+                       float(ink_blend(ink, value))) + (NAN,) * blur
         previous = image
     yield Vars(line=at["done"], values={"frames": options["frames"], "apparent speed": apparent})
 

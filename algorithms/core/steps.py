@@ -102,6 +102,13 @@ class Start:
     # True when a write replaces the pixel's picture, as the frames of an
     # animation do: a pixel written again is then not overdraw.
     replaces: bool = False
+    # A second per-pixel buffer the run keeps besides the colour buffer
+    # (the accumulation buffer of supersampling, a stencil): the value that
+    # sets it and the buffer's name. Any frame with a pixel and a value
+    # there sets it, written or not; a Vars record whose "cleared" names the
+    # buffer clears it (app/model/buffers.py shows it at any step).
+    buffer_value: str | None = None
+    buffer_name: str = ""
 
 
 @dataclass(frozen=True, slots=True, kw_only=True)

@@ -16,6 +16,8 @@ from .bresenham import bresenham, bresenham_code, bresenham_pixels
 from .forms import explicit, implicit, incremental, parametric
 
 # The family's algorithms, in the order they are listed.
+# (line-two-triangles, a line algorithm that fills triangles, is declared by
+# the triangle package: algorithms/triangles/line_triangles.py.)
 SPECS = _bresenham.SPECS + _forms.SPECS + explicit_printed.SPECS + textbook.SPECS + traversal.SPECS
 
 __all__ = ["COLORS", "SEGMENT", "Octant", "bresenham", "bresenham_code", "bresenham_pixels",

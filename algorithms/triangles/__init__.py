@@ -109,9 +109,11 @@ from .run import BASE, Run, Traversal, drive, mesh_flaws, ops_sum
 from .traversals import (BACKTRACK, BARYCENTRIC, BBOX, HALFPLANE, INCREMENTAL, LINEWISE, PINEDA,
                          SCAN, linewise_rows, top_start)
 from .specs import NOTES, make_kernel
-from . import specs, variants, span_interpolation, printed  # noqa: E402
+from . import specs, variants, span_interpolation, printed, line_triangles  # noqa: E402
 
 # The family's algorithms, in the order they are listed: the traversals, then
 # the other views of a triangle (barycentric, Cramer's plane, linewise interpolation),
-# then two listings as printed.
-SPECS = specs.SPECS + variants.SPECS + span_interpolation.SPECS + printed.SPECS
+# then two listings as printed; and a line drawn as two triangles, which is
+# listed with the lines (its family).
+SPECS = (specs.SPECS + variants.SPECS + span_interpolation.SPECS + printed.SPECS
+         + line_triangles.SPECS)

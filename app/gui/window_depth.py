@@ -1,10 +1,12 @@
-"""The depth buffer, the stochastic samples and the coverage error of the
-step on show (``MainWindow.depth_display``): what antialiasing and
-visibility runs show besides the colour buffer."""
+"""The depth buffer (or a run's other buffer: accumulation, stencil), the
+stochastic samples and the coverage error of the step on show
+(``MainWindow.depth_display``): what antialiasing and visibility runs show
+besides the colour buffer."""
 from __future__ import annotations
 
 import numpy as np
 
+from app.model.buffers import has_side_buffer, side_buffer
 from app.model.geometry import exact_reference
 from app.render import frame as frame_view
 from app.render.compose import depth_image, depth_range, error_image, error_stats
@@ -12,11 +14,14 @@ from app.render.compose import depth_image, depth_range, error_image, error_stat
 
 class DepthDisplay:
     """The depth dock, the samples on the grid and the coverage error of the
-    run on show: its depth scale and its exact coverage, kept per run."""
+    run on show: its depth scale and its exact coverage, kept per run. The
+    dock shows, for a run that keeps no depth buffer but another one
+    (``Start.buffer_value``), that buffer instead, 0 dark and 1 light."""
 
     def __init__(self, window):
         self.window = window
         self._scale = None  # (clear, near, far) of a run that keeps a depth buffer
+        self._side = False  # the run keeps another buffer (accumulation, stencil)
         self.accuracy = None  # AccuracyCache of the antialiasing run on show
         window.depth_action.toggled.connect(self._toggled)
         window.depth_dock.visibilityChanged.connect(self._dock_shown)
@@ -28,6 +33,8 @@ class DepthDisplay:
         player, trace = w.player, w.player.trace
         self._scale = None
         self.accuracy = None
+        self._side = has_side_buffer(trace) and trace.start.depth_value is None
+        self._name_dock(trace.start.buffer_name if self._side else "depth buffer")
         if trace is not None and trace.start.depth_value is not None:
             clear = float(trace.start.constants.get("clear_depth",
                                                     player.options.get("clear_depth", 1.0)))
@@ -39,7 +46,7 @@ class DepthDisplay:
             if not self.accuracy.available:
                 self.accuracy = None
         w.error_action.setEnabled(self.accuracy is not None)
-        w.depth_action.setEnabled(self._scale is not None)
+        w.depth_action.setEnabled(self._shows_buffer())
         self._place_dock()
 
     def error_map(self):
@@ -74,9 +81,17 @@ class DepthDisplay:
     def _shown_accuracy(self):
         return self.accuracy if self.window.error_action.isChecked() else None
 
+    def _shows_buffer(self) -> bool:
+        return self._scale is not None or self._side
+
+    def _name_dock(self, name: str) -> None:
+        title = name[:1].upper() + name[1:]
+        self.window.depth_dock.setWindowTitle(title)
+        self.window.depth_action.setText(title)
+
     def _place_dock(self) -> None:
         w = self.window
-        want = self._scale is not None and w.depth_action.isChecked()
+        want = self._shows_buffer() and w.depth_action.isChecked()
         if want != w.depth_dock.isVisibleTo(w):
             w.depth_dock.setVisible(want)
 
@@ -87,14 +102,17 @@ class DepthDisplay:
     def _dock_shown(self, visible: bool) -> None:
         # Closing the dock by its own button turns the View toggle off.
         w = self.window
-        if not visible and self._scale is not None and not w.depth_dock.isVisibleTo(w):
+        if not visible and self._shows_buffer() and not w.depth_dock.isVisibleTo(w):
             w.depth_action.blockSignals(True)
             w.depth_action.setChecked(False)
             w.depth_action.blockSignals(False)
 
     def _show_depth(self, state) -> None:
         w = self.window
-        if self._scale is None or not w.depth_dock.isVisibleTo(w):
+        if not self._shows_buffer() or not w.depth_dock.isVisibleTo(w):
+            return
+        if self._side:
+            self._show_side_buffer(state)
             return
         clear, near, far = self._scale
         depth = state.raster.depth
@@ -102,6 +120,14 @@ class DepthDisplay:
             depth = np.full(state.raster.counts.shape, np.nan)
         w.depth_view.set_y_down(w.grid.y_down)
         w.depth_view.set_image(depth_image(depth, clear, near, far), near, far)
+
+    def _show_side_buffer(self, state) -> None:
+        w = self.window
+        buffer = side_buffer(w.player.trace, state.index)
+        w.depth_view.set_y_down(w.grid.y_down)
+        w.depth_view.set_image(depth_image(buffer.values, 0.0, 0.0, 1.0), 0.0, 1.0,
+                               legend=f"{buffer.name}: 0 = dark \u00b7 1 = light "
+                                      "(never set since cleared: 0)")
 
     def _show_samples(self, state) -> None:
         w = self.window

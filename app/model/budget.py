@@ -115,12 +115,30 @@ def _outline_length(spec, points) -> int:
                for p, q in _edges(spec, points))
 
 
+def _temporal_frame_steps(options, points, pixels: int) -> int:
+    """Steps of one animation frame at most: a pixel frame per pixel, and
+    with motion blur one per instant and pixel the primitive reaches then
+    (the square around it that any turn of it fits in), added to the
+    accumulation buffer."""
+    if options["mode"] != "motion-blur":
+        return pixels
+    if len(points) == 1:
+        reach = 2 * options["radius"] + options["spoke_width"] + 2
+    else:
+        cx = sum(float(p[0]) for p in points) / max(1, len(points))
+        cy = sum(float(p[1]) for p in points) / max(1, len(points))
+        reach = 2 * max((math.hypot(float(p[0]) - cx, float(p[1]) - cy) for p in points),
+                        default=0.0) + 2
+    return pixels + options["time_samples"] * min(pixels, math.ceil(min(reach, pixels)) ** 2)
+
+
 def step_bound(spec, points, options, grid, step_cap: int) -> int:
     """Steps the run records at most: the cap, or less where the grid bounds the run."""
     width, height = int(grid[0]), int(grid[1])
     options = _options(spec, options)
     if spec.name == "aa-temporal":
-        bound = options["frames"] * (width * height + 1) + 2
+        per_frame = _temporal_frame_steps(options, spec.inputs.flat(points), width * height)
+        bound = options["frames"] * (per_frame + 1) + 2
     elif spec.family == "lines":
         # a few steps per pixel of each segment, and one per pixel of the
         # box or grid an algorithm tests pixel by pixel
@@ -173,10 +191,11 @@ def estimate_memory(spec, points, options, grid, step_cap: int) -> int:
         # each step pushes up to four neighbours
         total += PENDING_BYTES * 4 * min(pixels, steps)
     if spec.name == "aa-temporal":
-        # this frame's hits and image, the last image, the mask and the
-        # pixel list, and one band of samples (coordinates, owners, tests)
+        # this frame's hits and image, the last image, the mask, the pixel
+        # list, with motion blur the accumulation buffer and an instant's
+        # hits, and one band of samples (coordinates, owners, tests)
         band = min(SAMPLES_PER_BAND, pixels * options["n"] ** 2)
-        total += 72 * pixels + 100 * band
+        total += 88 * pixels + 100 * band
     elif spec.name == "flood-fill":
         # drawn segments, and outline pixels off the grid (each one a step)
         total += OBJECT_BYTES * (count + min(_outline_length(spec, points), steps))
@@ -255,7 +274,9 @@ def _unstepped_seconds(spec, points, options, grid, steps: int) -> float:
         instants = options["time_samples"] if options["mode"] == "motion-blur" else 1
         shapes = options["spokes"] if count == 1 else 1
         # each frame reached: every pixel's samples, at every instant, against every shape
-        frames = min(options["frames"], steps // (width * height + 1) + 1)
+        frames = min(options["frames"],
+                     steps // (_temporal_frame_steps(options, spec.inputs.flat(points),
+                                                     width * height) + 1) + 1)
         return SAMPLE_SECONDS * frames * width * height * options["n"] ** 2 * instants * shapes
     if spec.name == "aa-supersample":
         # n x n samples per pixel reached, each against the shape's edges

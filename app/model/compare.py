@@ -510,6 +510,15 @@ PRESETS = (
            Scene(algorithm="line-bresenham", points=((4, 5), (28, 15)),
                  title="a segment of slope 5/12"),
            follows=("lines",)),
+    Preset("two-triangles", "Two skinny triangles vs Bresenham",
+           "The segment widened into a rectangle 1 px across and filled as two triangles, "
+           "against Bresenham's one pixel per column: the rectangle takes every centre "
+           "within 1/2 px of the line, so where the line passes half-way between two "
+           "centres of a column (every other column at slope 1/2) it takes both.",
+           (Pane.of("line-two-triangles"), Pane.of("line-bresenham")),
+           Scene(algorithm="line-two-triangles", points=((2, 3), (28, 16)),
+                 title="a segment of slope 1/2"),
+           follows=("line-two-triangles",)),
     Preset("dda-precision", "DDA float32 vs float64 on a long line",
            "Adding a float32 slope 4095 times drifts: some pixels land one row off the "
            "float64 result.",

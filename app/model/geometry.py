@@ -26,7 +26,8 @@ def ideal_paths(spec, points, options) -> list:
     """The ideal primitive as [(points, closed), ...] in grid units.
 
     A whole-pixel point (i, j) stands for its pixel's centre (i + 1/2,
-    j + 1/2). Lines: the segment between the end pixels' centres. Circles
+    j + 1/2). Lines: the segment between the end pixels' centres (and the
+    two triangles of a line drawn as triangles). Circles
     and ellipses: the exact curve of the radius options around the centre.
     Triangles given in threes: each triangle. Polygons and outlines: the
     closed polygon through the points. An antialiasing run's ``shape``
@@ -41,6 +42,8 @@ def ideal_paths(spec, points, options) -> list:
         centres = [(float(x), float(y)) for x, y in points]
     if not centres:
         return []
+    if spec.name == "line-two-triangles" and len(centres) == 2:
+        return [(centres, False)] + _two_triangles(points, spec, options)
     if takes_circle(spec):
         rx = options.get("rx", options.get("radius"))
         ry = options.get("ry", options.get("radius"))
@@ -84,6 +87,16 @@ def projected_paths(trace) -> list:
         if len(corners) >= 3:
             paths.append(([tuple(float(v) for v in c) for c in corners], True))
     return paths
+
+
+def _two_triangles(points, spec, options) -> list:
+    """The rectangle's two triangles a line-two-triangles run fills."""
+    from algorithms.core.registry import InputError
+    from algorithms.triangles.line_triangles import triangles
+    try:
+        return [(list(t), True) for t in triangles(points, spec.resolve(options))]
+    except InputError:
+        return []
 
 
 def bezier_samples(points, count: int = 121) -> list:

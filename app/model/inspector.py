@@ -11,6 +11,9 @@ the "Pixel inspector" dock shows, as ``Row(section, label, value)``:
   families do): the exact edge values at the pixel centre, the barycentric
   weights and, with w, the perspective-correct weights, worked out in
   integers and fractions from the snapped vertices the run recorded.
+* Sign conventions (the same runs): that centre under note 000's edge
+  functions, note 004's normal form and note 003's barycentric
+  coordinates, areal and homogeneous (``app/model/conventions.py``).
 * Depth (runs with z): the fragment depth at the centre, and for a run
   with a depth buffer the depth stored there at this frame and the depth
   tests made so far.
@@ -38,6 +41,7 @@ from algorithms.triangles.interpolate import affine_value, barycentric_weights, 
 from algorithms.core.registry import InputError, format_value
 from algorithms.core.steps import PLOT, VISIT, Vars
 
+from app.model.conventions import convention_rows
 from app.model.geometry import exact_reference
 
 MAX_SAMPLE_ROWS = 16  # sample positions listed one per row, at most
@@ -181,6 +185,7 @@ class PixelInspector:
         weights = barycentric_weights(*es, Fraction(tri.area2, tri.S * tri.S))
         rows += [Row(section, name, _number(w)) for name, w in zip(("alpha", "beta", "gamma"),
                                                                    weights)]
+        rows += self._convention_rows(tri, pixel, "swapped" in str(values.get("winding", "")))
         order = self._vertex_order(values)
         w = self._per_vertex("w", order)
         if w is not None:
@@ -197,6 +202,17 @@ class PixelInspector:
                             f"{depth!r} (triangle {values['triangle']})"))
         rows += self._stored_depth_rows(raster, pixel)
         return rows
+
+    def _convention_rows(self, tri, pixel, swapped: bool) -> list[Row]:
+        """The centre under note 000's, 004's and 003's conventions side by
+        side, for the vertices a, b, c in the order they were given (a run
+        that turned a clockwise triangle round recorded them swapped)."""
+        ox, oy = self.trace.start.constants.get("offset", (0, 0))
+        order = (0, 2, 1) if swapped else (0, 1, 2)
+        vertices = [(Fraction(tri.v[k][0], tri.S), Fraction(tri.v[k][1], tri.S)) for k in order]
+        centre = (Fraction(2 * (pixel[0] + ox) + 1, 2), Fraction(2 * (pixel[1] + oy) + 1, 2))
+        return [Row("Sign conventions", label, value)
+                for label, value in convention_rows(vertices, centre)]
 
     def _run_edge_rows(self, section, visits) -> list[Row]:
         """The edge values a floating-point run itself computed at its last

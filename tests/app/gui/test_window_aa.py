@@ -65,6 +65,25 @@ def test_depth_toggle_and_runs_without_depth(window):
     assert not w.depth_action.isEnabled()
 
 
+def test_the_dock_shows_a_runs_accumulation_buffer_step_by_step(window):
+    w = window
+    w.set_algorithm("aa-supersample")
+    trace = w.player.trace
+    assert w.depth_action.isEnabled() and w.depth_action.text() == "Accumulation buffer"
+    assert w.depth_dock.isVisibleTo(w) and w.depth_dock.windowTitle() == "Accumulation buffer"
+    # a pixel's first sample inside: its cover so far over W, 0 dark, 1 light
+    hit = next(i for i in range(len(trace)) if trace.step(i).branch == "hit")
+    x, y = trace.step(hit).pixel
+    w.player.seek(hit)
+    shown = w.depth_view.image_data()
+    cover = trace.step(hit).values["coverage"]
+    assert shown[y, x, 0] == depth_image(np.full((1, 1), cover), 0.0, 0.0, 1.0)[0, 0, 0]
+    w.player.seek(hit - 1)
+    assert w.depth_view.image_data()[y, x, 0] != shown[y, x, 0]
+    w.set_algorithm("painter")
+    assert not w.depth_dock.isVisibleTo(w) and w.depth_action.text() == "Depth buffer"
+
+
 def test_the_depth_plot_is_made_when_the_dock_first_shows_and_then_shows_the_buffer(window):
     """The depth dock is hidden at start and its plot not yet made; shown,
     it holds the picture of the step's depth buffer, cell for cell."""
