@@ -169,8 +169,9 @@ MANIFEST = ".rasterlab-worksheet.json"  # the files the last worksheet wrote int
 
 def file_names(fmt: str) -> list[str]:
     """The names ``write`` gives the files of format ``fmt`` in its folder."""
-    grids = ["worksheet-grid.png", "answers-grid.png"] if fmt == "md" else []
-    return [f"worksheet.{fmt}", f"answers.{fmt}"] + grids
+    if fmt == "md":  # each sheet after the grid picture it shows
+        return ["worksheet-grid.png", "worksheet.md", "answers-grid.png", "answers.md"]
+    return [f"worksheet.{fmt}", f"answers.{fmt}"]
 
 
 def write(sheet: Worksheet, folder, fmt: str, pdf_writer=None) -> list[Path]:
