@@ -75,6 +75,7 @@ def build_parser() -> Parser:
     add_report_command(parser, commands)
     cli_teaching.add_template_command(parser, commands)
     cli_teaching.add_check_command(parser, commands)
+    cli_teaching.add_grader_command(parser, commands)
     cli_teaching.add_worksheet_command(parser, commands)
     return parser
 
@@ -617,6 +618,7 @@ def main(argv: list[str] | None = None) -> int:
         return {"list": command_list, "run": command_run,
                 "export": command_export, "report": command_report,
                 "template": cli_teaching.command_template, "check": cli_teaching.command_check,
+                "grader": cli_teaching.command_grader,
                 "worksheet": cli_teaching.command_worksheet}[args.command](args)
     except (CommandError, InputError, OutputRefused) as error:
         print(f"rasterlab: {one_line(str(error))}", file=sys.stderr)

@@ -29,12 +29,17 @@ def add_check_command(parser, commands) -> None:
         description="Run the generator draw(...) of a student's Python file (see "
                     "`rasterlab template`) in a separate process on each case, compare its "
                     "pixels with the reference algorithm and the exact result, and print "
-                    "PASS or FAIL per case with the first divergence. On Linux with "
+                    "PASS or FAIL per case with the first divergence. Given several files "
+                    "or folders (one per student), or any of --format, --csv, --points, "
+                    "--jobs, --give-up-after and --id-from, it grades a class: one line "
+                    "per submission as it finishes, and the formats asked for. On Linux with "
                     "bubblewrap each case runs in a sandbox (no network, no files but its own "
                     "scratch folder); elsewhere the report says the code is not isolated. "
                     "Exit status 0 when all pass, 1 when some fail, 2 for bad input, 3 when "
                     "RasterLab itself failed.")
-    check.add_argument("file", metavar="FILE.py", help="the student's file")
+    check.add_argument("submissions", nargs="+", metavar="SUBMISSION",
+                       help="a student's .py file, or a folder holding one; the student's id "
+                            "is the folder's name or the file's name (see --id-from)")
     check.add_argument("--against", required=True, metavar="ALG",
                        help="the reference algorithm: a line, circle, triangle or polygon "
                             "algorithm of `rasterlab list` (e.g. line-bresenham, circle-midpoint, "
@@ -51,29 +56,53 @@ def add_check_command(parser, commands) -> None:
                        help="memory per case, 64M .. 8G (default %(default)s); the report "
                             "says which limits this system enforces")
     check.add_argument("--json", action="store_true", help="print one JSON object")
-    check.add_argument("--junit", metavar="OUT.xml", help="also write JUnit XML for a grader; "
-                       "never over the student's file or a case's scene")
+    check.add_argument("--junit", metavar="OUT.xml", help="also write JUnit XML for a grader "
+                       "(for a class, one testsuite per student, named by the id); never "
+                       "over a student's file or a case's scene")
+    _add_batch_options(check)
     check.add_argument("--force", action="store_true",
-                       help="with --junit: replace a file that is not XML")
+                       help="replace an output file that RasterLab did not write")
     check.add_argument("--require-sandbox", action="store_true",
                        help="refuse to run (exit status 2) where the bubblewrap sandbox is not "
                             "available; RASTERLAB_BWRAP names the bwrap program to use")
 
 
+def _add_batch_options(check) -> None:
+    check.add_argument("--format", choices=("gradescope", "prairielearn", "coderunner"),
+                       help="write each submission's results for a grader: Gradescope's or "
+                            "PrairieLearn's results.json, or CodeRunner's combinator grader "
+                            "JSON; to --out, else to stdout")
+    check.add_argument("--out", metavar="PATH", help="the file --format writes; for several "
+                       "submissions a folder, which gets ID.json per submission")
+    check.add_argument("--csv", metavar="OUT.csv", help="also write one row per student: id, "
+                       "cases passed and failed, score, most points, first failing case, seconds")
+    check.add_argument("--points", metavar="KIND=N,...", help="points per case of each kind: "
+                       "hard, random, scene (e.g. hard=2,random=1; default 1 each)")
+    check.add_argument("--jobs", metavar="N", help="grade N submissions at a time (default 1)")
+    check.add_argument("--give-up-after", metavar="K", help="after K cases of a submission "
+                       "ran out of time, skip its other cases (default 2; 0: never)")
+    check.add_argument("--id-from", metavar="REGEX", help="take each student's id from the "
+                       "one group of REGEX, searched in the submission's path as given")
+
+
 def command_check(args) -> int:
     # Loaded here: the window and the other commands import this module too.
+    from app import cli_batch
     from app.teaching.check_run import isolation
-    if args.junit:
+    prepared = None
+    if cli_batch.is_batch(args):
+        prepared = cli_batch.prepare(args)
+    elif args.junit:
         cases = [word for word in args.cases if Path(word).is_file()]
         check_outputs([Output("--junit", args.junit, foreign=not_ours("xml"))],
-                      [args.file, *cases], args.force)
+                      [args.submissions[0], *cases], args.force)
     where = isolation(args.require_sandbox)
     if not where.sandboxed:
         print(f"rasterlab: warning: the student's code is NOT isolated from your files and "
               f"network ({where.reason}); --require-sandbox refuses to run without a sandbox",
               file=sys.stderr)
     try:
-        return _checked(args)
+        return cli_batch.run(args, prepared, where.line()) if prepared else _checked(args)
     except (InputError, OutputRefused, BrokenPipeError, KeyboardInterrupt):
         raise
     except Exception as error:  # MemoryError, OSError, SandboxFailure and bugs alike
@@ -88,7 +117,7 @@ def _checked(args) -> int:
     from app.progress import CasesBar
     bar = CasesBar(sys.stderr)
     try:
-        checked = run_check(args.file, args.against, args.cases, args.seed, args.time_limit,
+        checked = run_check(args.submissions[0], args.against, args.cases, args.seed, args.time_limit,
                             args.memory_limit, bar if bar.active else None,
                             args.require_sandbox)
     finally:
@@ -191,4 +220,55 @@ def command_worksheet(args) -> int:
         pdf_writer = write_pdf
     files = worksheet.write(sheet, args.out, args.format, pdf_writer)
     print(f"{args.out}: {', '.join(path.name for path in files)} ({len(sheet.rows)} steps)")
+    return 0
+
+
+# ------------------------------------------------------------------- grader
+def add_grader_command(parser, commands) -> None:
+    grader = parser.add_command(
+        commands, "grader", help="write a grading platform's autograder for an algorithm",
+        description="Write Gradescope's autograder zip: setup.sh installs RasterLab (from "
+                    "--wheel, which the zip carries, else from pip) and bubblewrap; "
+                    "run_autograder runs `rasterlab check /autograder/submission --against ALG "
+                    "--format gradescope` on the cases given here. The cases, limits and "
+                    "points are checked now, as check would.")
+    grader.add_argument("platform", choices=("gradescope",), help="the grading platform")
+    grader.add_argument("--against", required=True, metavar="ALG",
+                        help="the reference algorithm, as for check")
+    grader.add_argument("--cases", nargs="+", default=["hard"], metavar="CASE",
+                        help="hard, random N and SCENE.json files, as for check (default: hard)")
+    grader.add_argument("--seed", default="0", metavar="N", help="seed of the random cases")
+    grader.add_argument("--time-limit", default="2", metavar="SECONDS", help="as for check")
+    grader.add_argument("--memory-limit", default="256M", metavar="SIZE", help="as for check")
+    grader.add_argument("--points", metavar="KIND=N,...", help="points per kind of case, as for check")
+    grader.add_argument("--wheel", metavar="WHEEL.whl", help="the RasterLab wheel to install "
+                        "(default: `pip install rasterlab` of this version)")
+    grader.add_argument("--out", required=True, metavar="ZIP", help="the zip to write")
+    grader.add_argument("--force", action="store_true", help="replace a file that is not a zip")
+
+
+def command_grader(args) -> int:
+    from importlib import metadata
+    from app.teaching import autograder, batch
+    batch.plan(args.against, args.cases, args.seed, args.time_limit, args.memory_limit,
+               args.points)  # refused here, not on the platform
+    wheel = Path(args.wheel) if args.wheel else None
+    if wheel is not None and (wheel.suffix != ".whl" or not wheel.is_file()):
+        raise InputError(f"--wheel {wheel}: not a .whl file")
+    scenes = [word for word in args.cases if word.endswith(".json")]
+    check_outputs([Output("--out", args.out, foreign=not_ours("zip"))],
+                  [wheel, *scenes], args.force)
+    try:
+        version = metadata.version("rasterlab")
+    except metadata.PackageNotFoundError:
+        if wheel is None:
+            raise InputError("RasterLab is not installed as a package here, so its version "
+                             "for pip is unknown: give --wheel") from None
+        version = ""
+    words = autograder.check_words(args.against, args.cases, args.seed, args.time_limit,
+                                   args.memory_limit, args.points)
+    write_atomically(Path(args.out), autograder.zip_bytes(words, args.cases, wheel, version),
+                     error=OSError)
+    print(f"{args.out}: Gradescope autograder for {args.against} "
+          f"(cases: {' '.join(args.cases)}); upload it as the assignment's autograder")
     return 0

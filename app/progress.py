@@ -67,6 +67,29 @@ class CasesBar(DelayedBar):
             self.show("checking", done, total, "cases, about")
 
 
+class GradingBar(DelayedBar):
+    """A class's grading: the cases done of every submission's, with the
+    submissions finished, and the time left at the rate so far."""
+
+    def __init__(self, submissions: int, cases: int, stream=sys.stderr, clock=time.monotonic):
+        super().__init__(stream, clock)
+        self.submissions, self.cases = submissions, cases
+        self.finished = self.done = 0
+
+    def case_done(self) -> None:
+        self.done += 1
+        self._draw()
+
+    def submission_done(self) -> None:
+        self.finished += 1
+        self._draw()
+
+    def _draw(self) -> None:
+        if self.due():
+            self.show("grading", self.done, self.submissions * self.cases,
+                      f"cases, {self.finished} of {self.submissions} submissions, about")
+
+
 class RecordingBar(DelayedBar):
     """A recording's progress, as ``RecordMonitor`` reports it (the steps so
     far), against ``bound()``, the most steps the budget expects, so the

@@ -158,6 +158,9 @@ SIGNATURES = {
     "html": (b"<!DOCTYPE html", b"<!doctype html"),
     "tex": (b"% RasterLab",),
     "xml": (b"<?xml",),
+    "json": (b"{",),
+    "zip": (b"PK\x03\x04",),
+    "csv": (b"id,passed,",),  # the header of `check --csv`
 }
 
 

@@ -10,6 +10,10 @@ worksheets to print.
 ``checking``           a student's algorithm against the hard cases and the exact oracles
 ``check_families``     what checking asks of each family
 ``check_report``       a check's outcome as text, JSON or JUnit
+``batch``              a class's submissions graded on the same cases, several at a time
+``grade_formats``      a class's results for graders: Gradescope, PrairieLearn, CodeRunner, JUnit, CSV
+``grade_pictures``     a failing case's pixel difference as a PNG or an SVG
+``autograder``         Gradescope's autograder zip
 ``student_algorithm``  a student's file as an algorithm the window can step through
 ``worksheet``          a scene's steps as a table to fill in, with its answer key
 """

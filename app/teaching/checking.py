@@ -340,9 +340,17 @@ def number_text(value) -> str:
     return registry.format_value(float(value))
 
 
-def check_case(spec, options: dict, path, case: Case, limits: Limits) -> CaseResult:
-    case = Case(case.name, case.points, {**options, **case.options}, case.args)
-    expected = reference_steps(spec, case)
+def with_options(options: dict, case: Case) -> Case:
+    """``case`` with the reference's options under its own."""
+    return Case(case.name, case.points, {**options, **case.options}, case.args)
+
+
+def check_case(spec, options: dict, path, case: Case, limits: Limits,
+               expected: list | None = None) -> CaseResult:
+    """One case's result; ``expected`` is the reference's steps on it when
+    known already (a class's submissions share them), else they are made."""
+    case = with_options(options, case)
+    expected = reference_steps(spec, case) if expected is None else expected
     kind = kind_of(spec)
     outcome = run_student(path, case.args, limits.steps_for(len(expected)),
                           value_name="intensity" if kind == "antialias" else None)

@@ -104,3 +104,15 @@ def test_the_cases_bar_waits_two_seconds():
     clock.now += 1.0  # 2 s for 2 of 4 cases: about 2 s left
     bar(2, 4)
     assert "2/4 cases, about 2 s left" in stream.getvalue()
+
+
+def test_the_grading_bar_counts_cases_and_submissions():
+    stream, clock = Terminal(), Clock()
+    bar = progress.GradingBar(3, 4, stream, clock)  # 3 submissions of 4 cases
+    for _ in range(4):
+        bar.case_done()
+    assert stream.getvalue() == ""  # under 2 s
+    clock.now += 4.0  # 4 s for 4 of 12 cases: about 8 s left
+    bar.submission_done()
+    assert "grading [" in stream.getvalue()
+    assert "4/12 cases, 1 of 3 submissions, about 8 s left" in stream.getvalue()
