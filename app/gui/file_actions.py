@@ -1,7 +1,8 @@
 """Scene files and animation export in the window's File menu.
 
 ``MainWindow.add_file_actions()`` adds to the File menu:
-Open…, Open Recent, Open Example, Save, Save As… and Export Animation…
+Open…, Open Recent, Open Example (the catalogue of shipped scenes, a
+submenu per family), Save, Save As… and Export Animation…
 (Ctrl+E). It reads and changes the window's scene only through the
 window's public methods (``set_scene``, ``set_y_down``, the player, the
 transport's speed), so the window itself knows nothing of files.
@@ -22,6 +23,7 @@ from PySide6.QtWidgets import QFileDialog, QMenu, QMessageBox
 from algorithms.core.registry import InputError
 
 from app.gui.appdata import open_settings
+from app.model import catalogue
 from app.model import scene as scenes
 from app.model.scene import Scene, SceneError, one_line
 
@@ -101,14 +103,30 @@ class FileActions(QObject):
         self._fill_recent()
 
     def _fill_examples(self) -> None:
+        """The catalogue: Browse all… (the gallery, with pictures), then a
+        submenu per family, its scenes by title."""
         if self.examples_menu.actions():
             return
-        for path, scene in scenes.shipped():
-            text = f"{scene.title} ({path.stem})" if scene.title else path.stem
-            act = self.examples_menu.addAction(text)
-            act.setData(str(path))
-            act.triggered.connect(lambda checked=False, p=path: self.open_path(p, remember=False))
+        gallery = getattr(self.window, "gallery_entry", None)
+        if gallery is not None:
+            self.examples_menu.addAction("&Browse all\u2026", gallery.open)
+            self.examples_menu.addSeparator()
+        for family, entries in catalogue.by_family(catalogue.examples()):
+            submenu = self.examples_menu.addMenu(catalogue.family_title(family))
+            for entry in entries:
+                act = submenu.addAction(entry.title)
+                act.setData(str(entry.path))
+                act.setToolTip(entry.scene.description)
+                act.triggered.connect(
+                    lambda checked=False, p=entry.path: self.open_path(p, remember=False))
+            submenu.setToolTipsVisible(True)
         self.examples_menu.setEnabled(not self.examples_menu.isEmpty())
+
+    def example_actions(self) -> list[QAction]:
+        """Every scene's entry of Open Example, family by family."""
+        self._fill_examples()
+        return [act for menu_act in self.examples_menu.actions() if menu_act.menu()
+                for act in menu_act.menu().actions()]
 
     def recent(self) -> list[str]:
         value = self.settings.value(RECENT_KEY, [])

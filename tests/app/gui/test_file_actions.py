@@ -16,7 +16,7 @@ from app.gui.window import MainWindow
 from tests.support import ROOT
 from tests.support.gui import WAIT_MS
 
-SHIPPED = sorted((ROOT / "resources" / "scenes").glob("*.json"))
+SCENES = ROOT / "resources" / "scenes"
 
 
 @pytest.fixture
@@ -205,11 +205,27 @@ def test_recent_files_newest_first_and_capped(window, files, tmp_path, settings)
         other.deleteLater()
 
 
-def test_every_shipped_scene_is_an_example(window, files):
+def test_every_shipped_scene_is_an_example_under_its_family(window, files, qtbot):
     files.examples_menu.aboutToShow.emit()  # the menu reads them as it opens
-    entries = files.examples_menu.actions()
-    assert [Path(a.data()).name for a in entries] == [p.name for p in SHIPPED]
-    for entry, path in zip(entries, SHIPPED):
+    submenus = [a.menu() for a in files.examples_menu.actions() if a.menu()]
+    # A submenu per family, named as people read it, not one long flat list.
+    titles = [m.title() for m in submenus]
+    assert "Lines" in titles and "The 3-D pipeline" in titles and len(titles) == len(set(titles))
+    entries = files.example_actions()
+    every = sorted(p.relative_to(SCENES) for p in SCENES.rglob("*.json"))
+    assert sorted(Path(a.data()).relative_to(SCENES) for a in entries) == every
+    assert max(len(m.actions()) for m in submenus) < len(every) / 2
+    for menu in submenus:
+        families = {scenes.load(a.data()).spec.family for a in menu.actions()}
+        assert len(families) == 1, menu.title()
+    # Browse all… opens the gallery with the pictures.
+    browse = files.examples_menu.actions()[0]
+    assert "Browse" in browse.text()
+    browse.trigger()
+    assert window.gallery_entry.window.isVisible()
+    qtbot.waitUntil(lambda: window.gallery_entry.window.thumbnails_done, timeout=4 * WAIT_MS)
+    for entry in entries:
+        path = Path(entry.data())
         entry.trigger()
         scene = scenes.load(path)
         assert window.player.spec.name == scene.algorithm
