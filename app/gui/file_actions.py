@@ -8,7 +8,9 @@ window's public methods (``set_scene``, ``set_y_down``, the player, the
 transport's speed), so the window itself knows nothing of files.
 
 Opening a file that cannot be used shows why and leaves the scene on show
-as it was. Saving writes a temporary file and renames it over the target
+as it was. Shipped scenes (anything inside the program's own folder) are
+read-only: Save on one acts as Save As, and saves and exports start in the
+user's documents folder. Saving writes a temporary file and renames it over the target
 (``app.scene.save``), so a failed save never leaves half a file.
 """
 from __future__ import annotations
@@ -22,8 +24,8 @@ from PySide6.QtWidgets import QFileDialog, QMenu, QMessageBox
 
 from algorithms.core.registry import InputError
 
-from app.gui.appdata import open_settings
-from app.model import catalogue
+from app.gui.appdata import documents_dir, open_settings
+from app.model import catalogue, shipped
 from app.model import scene as scenes
 from app.model.scene import Scene, SceneError, one_line
 
@@ -275,13 +277,22 @@ class FileActions(QObject):
         self._status(f"Opened {path.name}")
         self.opened.emit(self.path)
 
+    @property
+    def writable_path(self) -> Path | None:
+        """The file Save writes to: the one opened or saved last, unless it
+        is a shipped scene (read-only: Save asks for a new name)."""
+        if self.path is None or shipped.is_program_file(self.path):
+            return None
+        return self.path
+
     def save(self) -> bool:
-        if self.path is None:
+        if self.writable_path is None:
             return self.save_as()
         return self.save_to(self.path)
 
     def save_as(self) -> bool:
-        start = str(self.path) if self.path else str(Path.home() / "scene.json")
+        name = self.path.name if self.path else "scene.json"
+        start = str(self.writable_path or documents_dir() / name)
         path, _ = QFileDialog.getSaveFileName(self.window, "Save scene as", start, SCENE_FILTER)
         if not path:
             return False
@@ -293,6 +304,11 @@ class FileActions(QObject):
     def save_to(self, path) -> bool:
         """Save the scene on show to ``path`` (atomically); say why if not."""
         path = Path(path)
+        if shipped.is_program_file(path):
+            QMessageBox.warning(self.window, "Save scene",
+                                f"{path.name} is in RasterLab's own folder, which is read-only: "
+                                "save the scene somewhere else.")
+            return False
         if self.window.player.trace is None:
             QMessageBox.warning(self.window, "Save scene",
                                 "Place all the points first: a scene is saved with a full input.")
@@ -347,8 +363,9 @@ class FileActions(QObject):
         # The export machinery (Pillow, the writers) loads on first use,
         # not with the window.
         from app.gui.export_job import EXPORT_FOLDER_KEY, ExportController
-        folder = self.settings.value(EXPORT_FOLDER_KEY, "") or str(
-            self.path.parent if self.path else Path.home())
+        folder = self.settings.value(EXPORT_FOLDER_KEY, "")
+        if not folder or shipped.is_program_file(folder):
+            folder = self.writable_path.parent if self.writable_path else documents_dir()
         name = (self.path.stem if self.path else scene.algorithm) + ".gif"
         self.export_controller = ExportController(window, scene, player.trace, differences,
                                                   str(Path(folder) / name), self.settings)

@@ -497,3 +497,43 @@ def test_export_interactive_page_asks_only_for_the_page(window, files):
     values = controller.dialog.values()
     assert values["gif"] == "" and values["html"].endswith(".html")
     assert files.export_page_action.shortcut().toString() == "Ctrl+Shift+E"
+
+
+# ------------------------------------------------------- shipped scenes
+def test_a_shipped_scene_opened_by_file_open_is_not_saved_over(window, files, tmp_path,
+                                                               monkeypatch, messages):
+    shipped = SCENES / "line-centre-ties.json"
+    before = shipped.read_bytes()
+    asked = []
+
+    def save_dialog(parent, title, start, *args, **kwargs):
+        asked.append(start)
+        return str(tmp_path / "mine.json"), ""
+    monkeypatch.setattr(QFileDialog, "getSaveFileName", save_dialog)
+    monkeypatch.setattr(QFileDialog, "getOpenFileName", lambda *a, **k: (str(shipped), ""))
+    assert files.open_dialog()  # File > Open…, not the examples menu
+    window.player.seek(1)
+    assert files.save()  # Ctrl+S
+    # Save acted as Save As: asked for a name, starting outside the program's folder.
+    assert len(asked) == 1 and not Path(asked[0]).resolve().is_relative_to(ROOT)
+    assert shipped.read_bytes() == before
+    assert scenes.load(tmp_path / "mine.json").algorithm == scenes.load(shipped).algorithm
+    # Now the scene is the user's file: Save writes it without asking.
+    assert files.save() and len(asked) == 1
+    # Saving into the program's folder by name is refused with a message.
+    assert not files.save_to(shipped) and messages and shipped.read_bytes() == before
+
+
+def test_exports_of_a_shipped_scene_start_in_the_documents_folder(window, files):
+    from PySide6.QtCore import QStandardPaths
+    documents = Path(QStandardPaths.writableLocation(
+        QStandardPaths.StandardLocation.DocumentsLocation))
+    assert files.open_path(SCENES / "rendering" / "textured-floor.json")
+    controller = files.export_animation()
+    target = Path(controller.dialog.values()["gif"])
+    assert not target.resolve().is_relative_to(ROOT)
+    assert target.parent == documents and target.name == "textured-floor.gif"
+    # A stored export folder inside the program's folder is not used either.
+    files.settings.setValue("export/folder", str(SCENES))
+    target = Path(files.export_animation().dialog.values()["gif"])
+    assert target.parent == documents
