@@ -152,9 +152,9 @@ class GalleryDialog(QDialog):
         QTimer.singleShot(0, self, self._next_thumbnail)
 
     def _open_list_row(self, row: int) -> bool:
-        return row in self.rows and self.open_case(self.rows.index(row))
+        return row in self.rows and self.open_row(self.rows.index(row))
 
-    def open_case(self, case: int) -> bool:
+    def open_row(self, case: int) -> bool:
         """Load the ``case``-th scene into the window; say why if it cannot be."""
         if not 0 <= case < len(self.cases):
             return False

@@ -73,7 +73,7 @@ def test_the_gallery_lists_every_scene_by_family_with_its_explanation(window, di
 
 def test_every_hard_case_opens_in_the_window_and_runs_to_the_end(window, dialog, capsys):
     for row, case in enumerate(dialog.cases):
-        assert dialog.open_case(row), case.name
+        assert dialog.open_row(row), case.name
         player = window.player
         assert player.spec.name == case.scene.algorithm, case.name
         assert player.grid == (case.scene.width, case.scene.height), case.name
@@ -133,9 +133,9 @@ def test_open_works_without_the_file_menu_and_a_broken_file_is_refused(qtbot, tm
     dialog = gal.GalleryDialog(window, folder)
     qtbot.addWidget(dialog)
     assert [c.name for c in dialog.cases] == ["polygon-star-nonzero", "triangle-fan-32"]
-    assert dialog.open_case(1) and window.player.spec.name == "triangle-incremental"
+    assert dialog.open_row(1) and window.player.spec.name == "triangle-incremental"
     (folder / "polygon-star-nonzero.json").write_text("[]")  # spoiled after listing
-    assert not dialog.open_case(0)
+    assert not dialog.open_row(0)
     assert window.player.spec.name == "triangle-incremental" and "polygon-star-nonzero" in shown[0]
-    assert not dialog.open_case(5)
+    assert not dialog.open_row(5)
     qtbot.waitUntil(lambda: dialog.thumbnails_done, timeout=WAIT_MS)

@@ -125,7 +125,7 @@ def _open_by(window, how, path, monkeypatch):
         files.example_actions()[0].trigger()
     else:
         from app.gui.gallery import GalleryDialog
-        GalleryDialog(window).open_case(0)
+        GalleryDialog(window).open_row(0)
 
 
 @pytest.mark.parametrize("how", ["dialog", "recent", "example", "gallery"])
