@@ -263,6 +263,8 @@ def test_the_export_dialog_writes_a_gif(window, files, qtbot, tmp_path):
             controller.trace).caption_height)
         assert image.info["duration"] == 100 and "loop" not in image.info
     assert dialog.progress.value() == dialog.progress.maximum()
+    # The bar says it is over, not still "writing the file".
+    assert "writing" not in dialog.progress.text() and "Done" in dialog.progress.text()
     assert dialog.export_button.isEnabled() and not dialog.cancel_button.isEnabled()
 
 
