@@ -107,7 +107,7 @@ class GalleryDialog(QDialog):
         font = item.font()
         font.setBold(True)
         item.setFont(font)
-        item.setFlags(Qt.ItemFlag.NoItemFlags)
+        item.setFlags(Qt.ItemFlag.ItemIsEnabled)  # drawn as text, never selected
         self.list.addItem(item)
 
     def _add_row(self, case: Example) -> None:
