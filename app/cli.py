@@ -132,16 +132,18 @@ def command_list(args) -> int:
 
 
 def list_scenes(args) -> int:
-    from app.model import scene as scenes
-    from app.model import shipped
-    rows = [(shipped.scene_name(path), scenes.load(path)) for path in shipped.scene_files()]
+    """The catalogue of shipped scenes, family by family (app/model/catalogue.py)."""
+    from app.model import catalogue
+    rows = catalogue.examples()
     if args.json:
-        print(json.dumps([{"name": name, "algorithm": scene.algorithm, "title": scene.title}
-                          for name, scene in rows], indent=2))
+        print(json.dumps([{"name": e.name, "family": e.family, "algorithm": e.scene.algorithm,
+                           "title": e.scene.title, "description": e.scene.description}
+                          for e in rows], indent=2))
         return 0
-    width = max(len(name) for name, _ in rows)
-    for name, scene in rows:
-        print(f"{name:<{width}}  {scene.title or scene.algorithm}")
+    width = max(len(e.name) for e in rows)
+    family_width = max(len(e.family) for e in rows)
+    for e in rows:
+        print(f"{e.name:<{width}}  {e.family:<{family_width}}  {e.title}")
     return 0
 
 

@@ -71,6 +71,11 @@ class _AlgorithmDelegate(QStyledItemDelegate):
         painter.restore()
 
 
+def _folded(text: str) -> str:
+    """Lower case, letters and digits only: "Scan-line" and "scan line" read as "scanline"."""
+    return "".join(c for c in text.lower() if c.isalnum())
+
+
 class AlgorithmPicker(QTreeWidget):
     """Algorithms grouped by family: title, with the summary under it."""
 
@@ -88,6 +93,8 @@ class AlgorithmPicker(QTreeWidget):
         self.setHorizontalScrollBarPolicy(Qt.ScrollBarPolicy.ScrollBarAlwaysOff)
         self.currentItemChanged.connect(self._changed)
         self._items: dict[str, QTreeWidgetItem] = {}
+        self._filter = ""
+        self.nothing: QTreeWidgetItem | None = None  # the row that says no algorithm matches
 
     def set_specs(self, specs) -> None:
         """Fill the list from algorithm specs (name, title, family, summary)."""
@@ -110,8 +117,11 @@ class AlgorithmPicker(QTreeWidget):
             item.setData(0, SUMMARY_ROLE, spec.summary)
             item.setToolTip(0, f"{spec.title} ({spec.name})\n{spec.summary}")
             self._items[spec.name] = item
+        self.nothing = QTreeWidgetItem(self, [""])
+        self.nothing.setFlags(Qt.ItemFlag.NoItemFlags)
         self.expandAll()
         self.blockSignals(False)
+        self.set_filter(self._filter)
 
     def names(self) -> list[str]:
         return list(self._items)
@@ -127,6 +137,7 @@ class AlgorithmPicker(QTreeWidget):
         self.blockSignals(True)
         self.setCurrentItem(item)
         self.blockSignals(False)
+        self.set_filter(self._filter)  # the algorithm on show is never hidden
         self.scrollToItem(item)
 
     def item_for(self, name: str) -> QTreeWidgetItem:
@@ -134,31 +145,40 @@ class AlgorithmPicker(QTreeWidget):
 
     def set_filter(self, text: str) -> list[str]:
         """Show only the algorithms whose title, name, summary or family
-        holds every word of ``text`` (any case); returns their names."""
-        words = text.lower().split()
+        holds every word of ``text`` (any case; hyphens and spaces inside a
+        word do not count, so "scan-line" finds "scanline"); returns their
+        names. The algorithm on show stays listed whatever the filter, and
+        a filter that leaves none says so."""
+        self._filter = text
+        words = [_folded(word) for word in text.split()]
         shown = []
+        current = self.currentItem()
         for k in range(self.topLevelItemCount()):
             family = self.topLevelItem(k)
+            if family is self.nothing:
+                continue
             any_shown = False
             for j in range(family.childCount()):
                 item = family.child(j)
-                haystack = " ".join(str(v) for v in (
+                haystack = _folded(" ".join(str(v) for v in (
                     item.text(0), item.data(0, NAME_ROLE), item.data(0, SUMMARY_ROLE),
-                    family.text(0))).lower()
+                    family.text(0))))
                 hit = all(word in haystack for word in words)
-                item.setHidden(not hit)
+                item.setHidden(not (hit or item is current))
                 if hit:
                     shown.append(item.data(0, NAME_ROLE))
-                    any_shown = True
+                any_shown = any_shown or not item.isHidden()
             family.setHidden(not any_shown)
+        if self.nothing is not None:
+            self.nothing.setText(0, f"No algorithm matches \u201c{text.strip()}\u201d")
+            self.nothing.setHidden(bool(shown) or not words)
         return shown
 
     def choose_first_shown(self) -> None:
-        """Enter in the search field: the first algorithm the filter left."""
-        for name, item in self._items.items():
-            if not item.isHidden() and not item.parent().isHidden():
-                self.setCurrentItem(item)
-                return
+        """Enter in the search field: the first algorithm the filter found."""
+        shown = self.set_filter(self._filter)
+        if shown:
+            self.setCurrentItem(self._items[shown[0]])
 
     def _changed(self, item, _previous) -> None:
         if item is None:

@@ -52,13 +52,15 @@ class ExercisePanel(QWidget):
         self.feedback = QLabel(wordWrap=True)
         self.score = QLabel("Score: 0 / 0")
         self.hint = QLabel(wordWrap=True)
+        # Hint, Undo and Save first: nothing above them changes height, so
+        # they stay where they are when feedback of any length appears.
+        layout.addLayout(self._buttons())
         for widget in (self.note, self.question):
             layout.addWidget(widget)
         layout.addLayout(self.choices)
         layout.addLayout(entry_row)
         for widget in (self.feedback, self.score):
             layout.addWidget(widget)
-        layout.addLayout(self._buttons())
         layout.addWidget(self.hint)
         layout.addLayout(self._settings())
         layout.addStretch(1)

@@ -402,6 +402,13 @@ class ExportDialog(QDialog):
         self.progress.setFormat(f"{done} / {total} frames" if done < total
                                 else f"{total} frames, writing the file")
 
+    def finish_progress(self, text: str, done: bool = True) -> None:
+        """The bar once the export is over: full with ``text`` ("done")
+        when it was written, empty with ``text`` when it was not."""
+        self.progress.setRange(0, 1)
+        self.progress.setValue(1 if done else 0)
+        self.progress.setFormat(text)
+
     def set_message(self, text: str, error: bool = False) -> None:
         self.message.setStyleSheet("color: #b0245f;" if error else "")
         self.message.setText(text)

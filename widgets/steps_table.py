@@ -13,11 +13,13 @@ show is drawn highlighted; the view follows it.
 from __future__ import annotations
 
 from PySide6.QtCore import QAbstractTableModel, QModelIndex, Qt, Signal
-from PySide6.QtGui import QBrush, QColor, QFont, QKeySequence, QShortcut
+from PySide6.QtGui import QBrush, QColor, QFont, QFontMetrics, QKeySequence, QShortcut
 from PySide6.QtWidgets import (QAbstractItemView, QHBoxLayout, QHeaderView, QLabel, QPushButton,
                                QTableView, QVBoxLayout, QWidget)
 
 CURRENT = QColor("#ffe8a3")
+MAX_COLUMN = 480  # px: a column wider than this is cut (its tooltip holds the whole text)
+CODE_COLUMN = "pseudo-code"  # never cut: the line is what a row is read for
 
 
 class StepsModel(QAbstractTableModel):
@@ -62,7 +64,7 @@ class StepsModel(QAbstractTableModel):
         if not index.isValid() or self.table is None:
             return None
         row = index.row()
-        if role == Qt.ItemDataRole.DisplayRole:
+        if role in (Qt.ItemDataRole.DisplayRole, Qt.ItemDataRole.ToolTipRole):
             return self.text(row)[index.column()]
         if role == Qt.ItemDataRole.BackgroundRole and row == self.current:
             return QBrush(CURRENT)
@@ -118,8 +120,10 @@ class StepsView(QWidget):
         self.view.setEditTriggers(QAbstractItemView.EditTrigger.NoEditTriggers)
         self.view.setWordWrap(False)
         self.view.verticalHeader().hide()
-        # Fixed row heights: the view never measures a million rows.
+        # Fixed row heights: the view never measures a million rows. One line
+        # of text each, so that a dock of a third of the window shows a dozen.
         self.view.verticalHeader().setSectionResizeMode(QHeaderView.ResizeMode.Fixed)
+        self.view.verticalHeader().setDefaultSectionSize(self.view.fontMetrics().lineSpacing() + 6)
         self.view.horizontalHeader().setSectionResizeMode(QHeaderView.ResizeMode.Interactive)
         self.view.clicked.connect(lambda index: self.stepRequested.emit(index.row()))
         self.summary = QLabel(self)
@@ -145,7 +149,8 @@ class StepsView(QWidget):
         if table is None:
             self.summary.setText(why)
             return
-        self.summary.setText(f"{len(table):,} steps")
+        # Numbered as the transport numbers them ("step 5 / 417"): from 0 to the last.
+        self.summary.setText(f"steps 0 to {len(table) - 1:,}")
         self._size_columns()
 
     def follow(self, row: int) -> None:
@@ -166,11 +171,19 @@ class StepsView(QWidget):
     def _size_columns(self) -> None:
         # Fitted to the first and the last rows only (the widest step numbers and,
         # as a rule, pixels): measuring them all would make every row.
-        metrics = self.view.fontMetrics()
+        # Measured in bold, as the row on show is drawn.
+        bold = self.view.font()
+        bold.setBold(True)
+        metrics = QFontMetrics(bold)
         total = len(self.model.table)
         rows = sorted(set(range(min(32, total))) | set(range(max(0, total - 32), total)))
         sample = [self.model.table.text_row(i) for i in rows]
         for c, column in enumerate(self.model.table.columns):
             texts = [column.title] + [row[c] for row in sample]
             width = max(metrics.horizontalAdvance(t) for t in texts) + 16
-            self.view.setColumnWidth(c, min(width, 480))
+            self.view.setColumnWidth(c, width if column.title == CODE_COLUMN
+                                     else min(width, MAX_COLUMN))
+
+    def rows_shown(self) -> int:
+        """How many whole rows the table shows at its present height."""
+        return self.view.viewport().height() // max(1, self.view.verticalHeader().defaultSectionSize())

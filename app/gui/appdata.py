@@ -35,6 +35,12 @@ def data_dir() -> Path:
     return Path(location)
 
 
+def documents_dir() -> Path:
+    """The user's documents folder (where saves and exports start), else the home folder."""
+    location = QStandardPaths.writableLocation(QStandardPaths.StandardLocation.DocumentsLocation)
+    return Path(location) if location else Path.home()
+
+
 def ensure(folder: Path) -> Path:
     """Create ``folder`` (and its parents) if needed; raises OSError."""
     folder.mkdir(parents=True, exist_ok=True)

@@ -49,11 +49,11 @@ def compare_entry(window) -> WindowEntry:
 
 
 def gallery_entry(window) -> WindowEntry:
-    """Help > Hard cases… of the main window, and the gallery it opens."""
+    """Help > Examples and hard cases… of the main window, and the gallery it opens."""
     menu = window.menus["help"]
-    action = QAction("&Hard cases\u2026", window)
-    action.setToolTip("Shipped scenes that make the algorithms stumble, each with what to "
-                      "look for")
+    action = QAction("&Examples and hard cases\u2026", window)
+    action.setToolTip("Every shipped scene by family: the examples and the hard cases that "
+                      "make the algorithms stumble, each with what to look for")
     action.setStatusTip(action.toolTip())
     first = menu.actions()[0] if menu.actions() else None
     menu.insertAction(first, action)

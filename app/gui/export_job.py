@@ -145,15 +145,18 @@ class ExportController(QObject):
     def _succeeded(self, done) -> None:
         result, page = done
         self.result = result
+        self.dialog.finish_progress("Done")
         self.dialog.set_message("Wrote " + "; ".join(formats.summary(self.outputs, result, page))
                                 + ".")
         if self.settings is not None and result is not None and result.gif is not None:
             self.settings.setValue(EXPORT_FOLDER_KEY, str(Path(result.gif).resolve().parent))
 
     def _failed(self, message: str) -> None:
+        self.dialog.finish_progress("Failed", done=False)
         self.dialog.set_message(f"Not exported: {message}", error=True)
 
     def _cancelled(self) -> None:
+        self.dialog.finish_progress("Cancelled", done=False)
         self.dialog.set_message("Cancelled; nothing was written.")
 
     def _thread_done(self) -> None:

@@ -1,13 +1,16 @@
 """Scene files and animation export in the window's File menu.
 
 ``MainWindow.add_file_actions()`` adds to the File menu:
-Open…, Open Recent, Open Example, Save, Save As… and Export Animation…
+Open…, Open Recent, Open Example (the catalogue of shipped scenes, a
+submenu per family), Save, Save As… and Export Animation…
 (Ctrl+E). It reads and changes the window's scene only through the
 window's public methods (``set_scene``, ``set_y_down``, the player, the
 transport's speed), so the window itself knows nothing of files.
 
 Opening a file that cannot be used shows why and leaves the scene on show
-as it was. Saving writes a temporary file and renames it over the target
+as it was. Shipped scenes (anything inside the program's own folder) are
+read-only: Save on one acts as Save As, and saves and exports start in the
+user's documents folder. Saving writes a temporary file and renames it over the target
 (``app.scene.save``), so a failed save never leaves half a file.
 """
 from __future__ import annotations
@@ -21,7 +24,8 @@ from PySide6.QtWidgets import QFileDialog, QMenu, QMessageBox
 
 from algorithms.core.registry import InputError
 
-from app.gui.appdata import open_settings
+from app.gui.appdata import documents_dir, open_settings
+from app.model import catalogue, shipped
 from app.model import scene as scenes
 from app.model.scene import Scene, SceneError, one_line
 
@@ -101,14 +105,30 @@ class FileActions(QObject):
         self._fill_recent()
 
     def _fill_examples(self) -> None:
+        """The catalogue: Browse all… (the gallery, with pictures), then a
+        submenu per family, its scenes by title."""
         if self.examples_menu.actions():
             return
-        for path, scene in scenes.shipped():
-            text = f"{scene.title} ({path.stem})" if scene.title else path.stem
-            act = self.examples_menu.addAction(text)
-            act.setData(str(path))
-            act.triggered.connect(lambda checked=False, p=path: self.open_path(p, remember=False))
+        gallery = getattr(self.window, "gallery_entry", None)
+        if gallery is not None:
+            self.examples_menu.addAction("&Browse all\u2026", gallery.open)
+            self.examples_menu.addSeparator()
+        for family, entries in catalogue.by_family(catalogue.examples()):
+            submenu = self.examples_menu.addMenu(catalogue.family_title(family))
+            for entry in entries:
+                act = submenu.addAction(entry.title)
+                act.setData(str(entry.path))
+                act.setToolTip(entry.scene.description)
+                act.triggered.connect(
+                    lambda checked=False, p=entry.path: self.open_path(p, remember=False))
+            submenu.setToolTipsVisible(True)
         self.examples_menu.setEnabled(not self.examples_menu.isEmpty())
+
+    def example_actions(self) -> list[QAction]:
+        """Every scene's entry of Open Example, family by family."""
+        self._fill_examples()
+        return [act for menu_act in self.examples_menu.actions() if menu_act.menu()
+                for act in menu_act.menu().actions()]
 
     def recent(self) -> list[str]:
         value = self.settings.value(RECENT_KEY, [])
@@ -257,13 +277,22 @@ class FileActions(QObject):
         self._status(f"Opened {path.name}")
         self.opened.emit(self.path)
 
+    @property
+    def writable_path(self) -> Path | None:
+        """The file Save writes to: the one opened or saved last, unless it
+        is a shipped scene (read-only: Save asks for a new name)."""
+        if self.path is None or shipped.is_program_file(self.path):
+            return None
+        return self.path
+
     def save(self) -> bool:
-        if self.path is None:
+        if self.writable_path is None:
             return self.save_as()
         return self.save_to(self.path)
 
     def save_as(self) -> bool:
-        start = str(self.path) if self.path else str(Path.home() / "scene.json")
+        name = self.path.name if self.path else "scene.json"
+        start = str(self.writable_path or documents_dir() / name)
         path, _ = QFileDialog.getSaveFileName(self.window, "Save scene as", start, SCENE_FILTER)
         if not path:
             return False
@@ -275,6 +304,11 @@ class FileActions(QObject):
     def save_to(self, path) -> bool:
         """Save the scene on show to ``path`` (atomically); say why if not."""
         path = Path(path)
+        if shipped.is_program_file(path):
+            QMessageBox.warning(self.window, "Save scene",
+                                f"{path.name} is in RasterLab's own folder, which is read-only: "
+                                "save the scene somewhere else.")
+            return False
         if self.window.player.trace is None:
             QMessageBox.warning(self.window, "Save scene",
                                 "Place all the points first: a scene is saved with a full input.")
@@ -329,8 +363,9 @@ class FileActions(QObject):
         # The export machinery (Pillow, the writers) loads on first use,
         # not with the window.
         from app.gui.export_job import EXPORT_FOLDER_KEY, ExportController
-        folder = self.settings.value(EXPORT_FOLDER_KEY, "") or str(
-            self.path.parent if self.path else Path.home())
+        folder = self.settings.value(EXPORT_FOLDER_KEY, "")
+        if not folder or shipped.is_program_file(folder):
+            folder = self.writable_path.parent if self.writable_path else documents_dir()
         name = (self.path.stem if self.path else scene.algorithm) + ".gif"
         self.export_controller = ExportController(window, scene, player.trace, differences,
                                                   str(Path(folder) / name), self.settings)

@@ -1,15 +1,16 @@
-"""Help > Hard cases…: the shipped scenes that make algorithms stumble.
+"""Help > Examples and hard cases…: the catalogue of shipped scenes, browsed.
 
-``gallery_entry(window)`` makes the entry of the window's Help menu. The
-dialog lists every hard-case scene in resources/scenes with its title, the
-one line that says what makes it hard, and its algorithm; a small picture
-of each run's last frame follows once it is drawn (one scene at a time, so
-the dialog opens at once). Open (or a double-click) loads the scene into
-the window, through the File menu's actions when they are installed.
+``gallery_entry(window)`` makes the entry of the window's Help menu (File >
+Open Example > Browse all… opens the same dialog). The dialog lists the
+catalogue (app/model/catalogue.py) family by family under a heading each:
+every scene's title, the one line that says what to look for, and its
+algorithm; a small picture of each run's last frame follows once it is
+drawn (one scene at a time, so the dialog opens at once). Open (or a
+double-click) loads the scene into the window, through the File menu's
+actions when they are installed.
 """
 from __future__ import annotations
 
-from dataclasses import dataclass
 from html import escape
 from pathlib import Path
 
@@ -21,43 +22,13 @@ from PySide6.QtWidgets import (QDialog, QDialogButtonBox, QHBoxLayout, QLabel, Q
 from algorithms.core.registry import InputError
 
 from app.render import compose as render
+from app.model import catalogue
 from app.model import scene as scenes
+from app.model.catalogue import Example
 from app.model.scene import SceneError, one_line
 
-FOLDER = scenes.SHIPPED
-# Scenes that are examples, not hard cases.
-NOT_HARD = ("demo-bresenham",)
-# The order a lecture meets them in; scenes not named here follow, by name.
-ORDER = ("line-float32-drift", "line-centre-ties", "line-reversed", "circle-radius-1",
-         "circle-radius-2", "circle-sqrt4-gaps", "polygon-horizontal-edges",
-         "polygon-star-evenodd", "polygon-star-nonzero", "triangle-sliver", "triangle-fan-32",
-         "triangle-mesh-1e6", "triangle-behind-eye", "painter-intersecting", "painter-cyclic",
-         "aa-siemens-star")
 THUMBNAIL = QSize(112, 84)
 MAX_THUMBNAIL_CELLS = 4096 * 512  # a bigger grid is shown without a picture
-
-
-@dataclass(frozen=True)
-class HardCase:
-    path: Path
-    scene: scenes.Scene
-
-    @property
-    def name(self) -> str:
-        return self.path.stem
-
-    def text(self) -> str:
-        spec = self.scene.spec
-        return (f"{self.scene.title or self.name}\n{self.scene.description}\n"
-                f"{spec.title} ({spec.name}), {self.scene.width} x {self.scene.height} grid")
-
-
-def hard_cases(folder: Path = FOLDER) -> list[HardCase]:
-    """Every readable hard-case scene of ``folder``, in lecture order."""
-    rank = {name: n for n, name in enumerate(ORDER)}
-    cases = [HardCase(path, scene) for path, scene in scenes.shipped(folder)
-             if path.stem not in NOT_HARD]
-    return sorted(cases, key=lambda case: (rank.get(case.name, len(ORDER)), case.name))
 
 
 def thumbnail(scene: scenes.Scene) -> QImage | None:
@@ -80,35 +51,43 @@ def thumbnail(scene: scenes.Scene) -> QImage | None:
 
 
 class GalleryDialog(QDialog):
-    """A non-modal list of the hard cases; Open loads one into the window."""
+    """A non-modal list of the catalogue, under a heading per family; Open
+    loads one scene into the window. ``folder`` lists that folder's scenes
+    instead of the shipped ones."""
 
-    def __init__(self, window, folder: Path = FOLDER):
+    def __init__(self, window, folder: Path | None = None):
         super().__init__(window)
         self.window_ = window
-        self.setWindowTitle("Hard cases")
+        self.setWindowTitle("Examples and hard cases")
         self.setModal(False)
         self.resize(720, 640)
-        intro = QLabel("Scenes where the algorithms meet their hard cases: what makes each one "
-                       "hard, and what to look for. Open one to step through it.")
+        intro = QLabel("Every example RasterLab ships, family by family: what each shows "
+                       "or what makes it hard, and what to look for. Open one to step "
+                       "through it.")
         intro.setWordWrap(True)
         self.list = QListWidget()
         self.list.setSpacing(2)
-        self.list.setAlternatingRowColors(True)
         self.list.setToolTip("Double-click a scene to open it in the window")
         # Selected rows stay light, so that the dark text on them stays readable.
         self.list.setStyleSheet("QListWidget::item:selected { background: #d3e4f6; }")
-        self.cases = hard_cases(folder)
+        paths = None if folder is None else sorted(Path(folder).glob("*.json"))
+        self.cases = catalogue.examples(paths)
         self.pictures: list[QLabel] = []
-        for case in self.cases:
-            self._add_row(case)
-        self.list.itemDoubleClicked.connect(lambda item: self.open_row(self.list.row(item)))
+        self.rows: list[int] = []  # the list row of each case (headings sit between)
+        for family, entries in catalogue.by_family(self.cases):
+            self._add_heading(catalogue.family_title(family))
+            for case in entries:
+                self.rows.append(self.list.count())
+                self._add_row(case)
+        self.list.itemDoubleClicked.connect(lambda item: self._open_list_row(self.list.row(item)))
         buttons = QDialogButtonBox(QDialogButtonBox.StandardButton.Close)
         self.open_button = buttons.addButton("Open", QDialogButtonBox.ButtonRole.AcceptRole)
         self.open_button.setToolTip("Load the selected scene into the window")
         buttons.button(QDialogButtonBox.StandardButton.Close).setToolTip("Close this list")
         self.open_button.setEnabled(False)
-        self.list.currentRowChanged.connect(lambda row: self.open_button.setEnabled(row >= 0))
-        buttons.accepted.connect(lambda: self.open_row(self.list.currentRow()))
+        self.list.currentRowChanged.connect(
+            lambda row: self.open_button.setEnabled(row in self.rows))
+        buttons.accepted.connect(lambda: self._open_list_row(self.list.currentRow()))
         buttons.rejected.connect(self.close)
         layout = QVBoxLayout(self)
         layout.addWidget(intro)
@@ -118,18 +97,31 @@ class GalleryDialog(QDialog):
         self.thumbnails_done = not self._pending
         QTimer.singleShot(0, self, self._next_thumbnail)
 
-    def _add_row(self, case: HardCase) -> None:
+    def item(self, case: int) -> QListWidgetItem:
+        """The list's row of the ``case``-th scene."""
+        return self.list.item(self.rows[case])
+
+    def _add_heading(self, title: str) -> None:
+        """A family's heading: a bold row that cannot be selected or opened."""
+        item = QListWidgetItem(title)
+        font = item.font()
+        font.setBold(True)
+        item.setFont(font)
+        item.setFlags(Qt.ItemFlag.ItemIsEnabled)  # drawn as text, never selected
+        self.list.addItem(item)
+
+    def _add_row(self, case: Example) -> None:
         """One row: the picture (drawn later) beside the title, the explanation and the
         algorithm. The labels let mouse clicks through, so the row selects and opens."""
         item = QListWidgetItem()
         item.setData(Qt.ItemDataRole.AccessibleTextRole, case.text())
-        item.setToolTip(f"{case.scene.description}\n{case.path.name}")
+        item.setToolTip(f"{case.scene.description}\n{case.name}")
         row = QWidget()
         picture = QLabel()
         picture.setFixedSize(THUMBNAIL)
         picture.setAlignment(Qt.AlignmentFlag.AlignCenter)
         spec, scene = case.scene.spec, case.scene
-        text = QLabel(f"<b>{escape(scene.title or case.name)}</b><br>{escape(scene.description)}"
+        text = QLabel(f"<b>{escape(case.title)}</b><br>{escape(scene.description)}"
                       f"<br><span style='color:#5b6675'>{escape(spec.title)} ({spec.name}), "
                       f"{scene.width} x {scene.height} grid</span>")
         text.setWordWrap(True)
@@ -159,10 +151,14 @@ class GalleryDialog(QDialog):
             self.pictures[row].setText("(large grid)")
         QTimer.singleShot(0, self, self._next_thumbnail)
 
-    def open_row(self, row: int) -> bool:
-        if not 0 <= row < len(self.cases):
+    def _open_list_row(self, row: int) -> bool:
+        return row in self.rows and self.open_row(self.rows.index(row))
+
+    def open_row(self, case: int) -> bool:
+        """Load the ``case``-th scene into the window; say why if it cannot be."""
+        if not 0 <= case < len(self.cases):
             return False
-        path = self.cases[row].path
+        path = self.cases[case].path
         actions = getattr(self.window_, "file_actions", None)
         if actions is not None:
             return actions.open_path(path, remember=False)
@@ -176,6 +172,6 @@ def _open_directly(window, path: Path) -> bool:
         window.set_scene(scene.algorithm, scene.points, scene.options, (scene.width, scene.height))
         window.set_y_down(scene.origin == "top-left")
     except (SceneError, InputError) as error:
-        QMessageBox.warning(window, "Hard cases", f"Cannot open {path.name}:\n{one_line(str(error))}")
+        QMessageBox.warning(window, "Examples", f"Cannot open {path.name}:\n{one_line(str(error))}")
         return False
     return True

@@ -13,7 +13,7 @@ import csv
 import io
 from pathlib import Path
 
-from PySide6.QtCore import Qt
+from PySide6.QtCore import Qt, QTimer
 from PySide6.QtGui import QGuiApplication, QKeySequence
 from PySide6.QtWidgets import QFileDialog, QMessageBox
 
@@ -23,6 +23,12 @@ from widgets.steps_table import StepsView
 from app.model.escape import csv_row
 from app.model.files import write_atomically
 from app.model.steptable import StepTable, write_csv
+
+
+# Rows the table shows at least when it opens, if the window has the room
+# (up to this share of its height); a smaller dock is a strip to squint at.
+OPEN_ROWS = 12
+OPEN_SHARE = 0.4
 
 
 class StepsDock:
@@ -48,7 +54,25 @@ class StepsDock:
         self.view.stepRequested.connect(self._go)
         self.view.copyRequested.connect(self.copy)
         self.view.saveRequested.connect(self.save)
-        self.dock.visibilityChanged.connect(lambda visible: visible and self.refresh())
+        self.dock.visibilityChanged.connect(self._visibility_changed)
+
+    def _visibility_changed(self, visible: bool) -> None:
+        if visible:
+            self.refresh()
+            QTimer.singleShot(0, self.window, self.open_size)
+
+    def open_size(self) -> None:
+        """Make the dock tall enough for OPEN_ROWS rows (or OPEN_SHARE of the
+        window, whichever is less); a dock already taller keeps its height."""
+        if not self.dock.isVisible() or self.dock.isFloating():
+            return
+        row = self.view.view.verticalHeader().defaultSectionSize()
+        if self.view.rows_shown() >= OPEN_ROWS:
+            return
+        around = self.dock.height() - self.view.view.viewport().height()
+        wanted = min(OPEN_ROWS * row + around, int(self.window.height() * OPEN_SHARE))
+        if wanted > self.dock.height():
+            self.window.resizeDocks([self.dock], [wanted], Qt.Orientation.Vertical)
 
     def _trace_changed(self) -> None:
         self.table = None

@@ -123,7 +123,7 @@ class MainWindow(QMainWindow):
         # Stored preferences, Edit > Preferences (Ctrl+,) and View > Grid lines.
         self.preferences = PreferencesController(self, Preferences())
         self.compare_entry = compare_entry(self)  # View > Compare… (Ctrl+K)
-        self.gallery_entry = gallery_entry(self)  # Help > Hard cases…
+        self.gallery_entry = gallery_entry(self)  # Help > Examples and hard cases…
         self.breakpoints = Breakpoints(self)  # step units, breakpoints, bookmarks
         self.inspector = InspectorDock(self)  # View > Pixel inspector (Ctrl+I)
         self.steps = StepsDock(self)  # View > Steps table (Ctrl+T)

@@ -570,11 +570,13 @@ def preset(key: str) -> Preset:
 
 def window_panes(player) -> tuple:
     """The main window's algorithm and the one shown before it (the one
-    its own comparison outlines), or a neighbour in the same family."""
+    its own comparison outlines) when that is of the same family, else a
+    neighbour in the same family: a triangle fill is never set against a
+    seed fill, which cannot run on its input."""
     spec = player.spec
     options = _changed_options(spec, player.options)
     mine = Pane(spec.name, tuple(sorted(options.items())))
-    if player.previous is not None:
+    if player.previous is not None and player.previous[0].family == spec.family:
         other, other_options = player.previous
         return (mine, Pane(other.name, tuple(sorted(_changed_options(other, other_options)
                                                     .items()))))

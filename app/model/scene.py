@@ -237,19 +237,6 @@ def _primitives(inputs, points) -> list:
     return [{"points": [list(p) for p in group]} for group in groups]
 
 
-def shipped(folder: Path = SHIPPED) -> list[tuple[Path, Scene]]:
-    """The readable scenes of ``folder`` (the shipped examples and hard
-    cases), by file name. A broken shipped scene is left out here and is
-    a test failure instead."""
-    found = []
-    for path in sorted(Path(folder).glob("*.json")):
-        try:
-            found.append((path, load(path)))
-        except SceneError:
-            continue
-    return found
-
-
 # ------------------------------------------------------------------ reading
 def load(path: str | os.PathLike, *, confine: bool = True) -> Scene:
     """Read and check a scene file; SceneError names what is wrong.

@@ -20,6 +20,7 @@ def _root() -> Path:
 
 
 ROOT = _root()
+PROGRAM = ROOT.parent  # the folder that holds the program's packages and its data
 SCENES = ROOT / "scenes"
 FONTS = ROOT / "fonts"
 TEMPLATES = ROOT / "templates"
@@ -36,6 +37,16 @@ def scene_name(path: Path) -> str:
     """The name a shipped scene is called by: its file name without .json,
     with the sub-folder in front for the rendering scenes ("rendering/pipeline-cube")."""
     return path.relative_to(SCENES).with_suffix("").as_posix()
+
+
+def is_program_file(path) -> bool:
+    """Does ``path`` lie inside the program's own folder (a shipped scene,
+    say)? The window never writes there: an update or reinstall would
+    replace the file, and every user of the program shares it."""
+    try:
+        return Path(path).resolve().is_relative_to(PROGRAM.resolve())
+    except OSError:
+        return False
 
 
 def templates() -> dict[str, Path]:

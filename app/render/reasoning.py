@@ -161,7 +161,8 @@ def _midpoint_guides(trace, state, paths, y_down=False) -> Guides:
     if side is not None:
         noun = "circle" if circle is not None else \
             "curve" if _nearest_segment(paths, mx, my)[1] else "line"
-        label = side_words(candidates, side, y_down, noun) + _branch_of(trace, state, side)
+        label = side_words(candidates, side, y_down, noun) + _branch_of(trace, state, side,
+                                                                   y_down)
     return Guides(tuple(lines), ((mx, my, "midpoint"),), ((mx, my, label),))
 
 
@@ -228,14 +229,34 @@ def side_words(candidates, side: int, y_down: bool, noun: str) -> str:
     return f"{noun} {'right of' if px > qx else 'left of'} M"
 
 
-def _branch_of(trace, state, side: int) -> str:
+def _branch_of(trace, state, side: int, y_down: bool = False) -> str:
     """": NE" -- the branch named for the candidate on the primitive's
     side, read from the pseudo-code's lines deciding between this step's
-    candidates."""
+    candidates. A compass name is the step as it goes on the grid: the
+    code is written for one octant, so a line running down and to the
+    right takes the code's NE as ": SE (code: NE)"."""
     if side == -1:
         return ""
-    names = branch_groups(trace).get(candidate_offsets(trace, trace.code[state.step.line]), [])
-    return f": {names[side]}" if len(names) == 2 else ""
+    line = trace.code[state.step.line]
+    names = branch_groups(trace).get(candidate_offsets(trace, line), [])
+    if len(names) != 2:
+        return ""
+    name = names[side]
+    offsets = line.candidates or trace.start.candidates
+    shown = compass(offsets[side], y_down) if name in COMPASS.values() else name
+    return f": {shown}" if shown == name else f": {shown} (code: {name})"
+
+
+# The unit steps on the grid by their compass names (y up).
+COMPASS = {(1, 0): "E", (1, 1): "NE", (0, 1): "N", (-1, 1): "NW", (-1, 0): "W",
+           (-1, -1): "SW", (0, -1): "S", (1, -1): "SE"}
+
+
+def compass(offset, y_down: bool = False) -> str:
+    """The compass name of a step (dx, dy) as the picture shows it: with
+    the origin top-left, +y goes down the screen."""
+    dx, dy = offset
+    return COMPASS.get((dx, -dy if y_down else dy), f"({dx}, {dy})")
 
 
 def _nearest_on_paths(paths, x: float, y: float):

@@ -106,7 +106,8 @@ def test_picker_groups_by_family_and_emits_names(qtbot):
     specs = registry.all_specs()
     picker.set_specs(specs)
     assert picker.names() == [s.name for s in specs]
-    families = [picker.topLevelItem(i).text(0) for i in range(picker.topLevelItemCount())]
+    families = [picker.topLevelItem(i).text(0) for i in range(picker.topLevelItemCount())
+                if not picker.topLevelItem(i).isHidden()]
     assert families == list(dict.fromkeys(s.family.capitalize() for s in specs))
     with qtbot.waitSignal(picker.algorithmChosen, timeout=WAIT_MS) as blocker:
         picker.setCurrentItem(picker.item_for(specs[-1].name))
@@ -150,3 +151,37 @@ def test_the_algorithm_search_keeps_only_matching_entries(qtbot):
     picker.set_filter("midpoint ellipse")
     picker.choose_first_shown()
     assert chosen == ["ellipse-midpoint"]
+
+
+def test_the_search_reads_scan_line_as_scanline_and_says_when_nothing_matches(qtbot):
+    from algorithms.core import registry
+    from widgets.editors import AlgorithmPicker
+    picker = AlgorithmPicker()
+    qtbot.addWidget(picker)
+    specs = registry.all_specs()
+    picker.set_specs(specs)
+    # The oracle: the specs that say "scanline" or "scan line" or "scan-line" anywhere.
+    expected = [s.name for s in specs if any(
+        form in f"{s.title} {s.name} {s.summary}".lower()
+        for form in ("scanline", "scan line", "scan-line"))]
+    assert expected
+    assert picker.set_filter("scan-line") == expected
+    assert picker.set_filter("Scanline") == expected
+    assert picker.nothing.isHidden()
+    assert picker.set_filter("zzqx") == []
+    assert not picker.nothing.isHidden() and "zzqx" in picker.nothing.text(0)
+    assert picker.set_filter("") and picker.nothing.isHidden()
+
+
+def test_a_stale_filter_never_hides_the_algorithm_on_show(qtbot):
+    from algorithms.core import registry
+    from widgets.editors import AlgorithmPicker
+    picker = AlgorithmPicker()
+    qtbot.addWidget(picker)
+    picker.set_specs(registry.all_specs())
+    picker.set_filter("circle")
+    picker.set_current("line-bresenham")  # a line scene opened meanwhile
+    item = picker.item_for("line-bresenham")
+    assert not item.isHidden() and not item.parent().isHidden()
+    assert picker.current_name() == "line-bresenham"
+    assert picker.item_for("line-dda").isHidden()  # the filter still holds for the rest

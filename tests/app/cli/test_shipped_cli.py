@@ -18,15 +18,25 @@ NAMES = sorted(p.stem for p in SCENES.glob("*.json")) + sorted(
     f"rendering/{p.stem}" for p in (SCENES / "rendering").glob("*.json"))
 
 
-def test_list_scenes_names_every_shipped_file(run_cli):
+FAMILIES = ("lines", "circles", "polygons", "fill", "triangles", "visibility", "antialias",
+            "textures", "pipeline")
+
+
+def test_list_scenes_names_every_shipped_file_family_by_family(run_cli):
     status, out, err = run_cli("list", "--scenes")
     assert status == 0 and err == ""
-    assert [line.split()[0] for line in out.splitlines()] == NAMES
+    rows = [line.split()[:2] for line in out.splitlines()]
+    assert sorted(name for name, _ in rows) == sorted(NAMES)
+    families = [family for _, family in rows]
+    assert families == sorted(families, key=FAMILIES.index)
+    assert dict(rows)["rendering/pipeline-cube"] == "pipeline"
+    assert dict(rows)["polygon-star-evenodd"] == "polygons"
     status, out, _ = run_cli("list", "--scenes", "--json")
     listed = json.loads(out)
-    assert [row["name"] for row in listed] == NAMES
+    assert [row["name"] for row in listed] == [name for name, _ in rows]
+    assert all(row["description"] and row["family"] in FAMILIES for row in listed)
     demo = json.loads((SCENES / "demo-bresenham.json").read_text(encoding="utf-8"))
-    assert listed[NAMES.index("demo-bresenham")]["algorithm"] == demo["algorithm"]
+    assert next(r for r in listed if r["name"] == "demo-bresenham")["algorithm"] == demo["algorithm"]
 
 
 @pytest.mark.parametrize("name", ["demo-bresenham", "demo-bresenham.json",

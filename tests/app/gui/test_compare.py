@@ -261,3 +261,16 @@ def test_compare_opens_within_the_screen(comparing):
     room = comparing.screen().availableGeometry()
     assert comparing.frameGeometry().width() <= room.width()
     assert comparing.frameGeometry().height() <= room.height()
+
+
+def test_compare_defaults_to_an_algorithm_of_the_same_family(window, qtbot):
+    from algorithms.core import registry
+    window.set_scene("triangle-bbox", [(2, 2), (20, 4), (10, 18)], None, (24, 20))
+    qtbot.waitUntil(lambda: window.player.trace is not None and not window.player.recording,
+                    timeout=WAIT_MS)
+    window.picker.setCurrentItem(window.picker.item_for("flood-fill"))  # as a person picks it
+    qtbot.waitUntil(lambda: window.player.spec.name == "flood-fill", timeout=WAIT_MS)
+    window.compare_entry.action.trigger()
+    c = window.compare_entry.window
+    families = {registry.get(pane.algorithm).family for pane in c.panes}
+    assert families == {"fill"}, c.panes

@@ -152,3 +152,24 @@ def test_the_steps_table_is_put_aside_while_an_exercise_runs(window):
     assert not steps.dock.isVisible() and not steps.action.isEnabled()
     mode.action.setChecked(False)
     assert steps.dock.isVisible() and steps.action.isEnabled()
+
+
+def test_the_buttons_stay_put_after_an_answer(window, qtbot):
+    """The next click after an answer (Hint, say) lands on the button that
+    was there before the answer: the feedback does not push it down."""
+    mode = start(window)
+    panel = mode.panel
+    qtbot.waitUntil(lambda: panel.isVisible() and panel.hint_button.isVisible())
+
+    def places():
+        QTest.qWait(20)
+        return [b.mapTo(panel, b.rect().center()) for b in
+                (panel.hint_button, panel.undo_button, panel.save_button)]
+    before = places()
+    question = mode.exercise.current
+    wrong = {"E": "NE", "NE": "E"}[direction(window.player.trace, question.step)]
+    qtbot.mouseClick(panel.choice_button(wrong), Qt.MouseButton.LeftButton)
+    assert panel.feedback.text().startswith("Wrong")  # several lines of feedback
+    assert places() == before
+    panel.show_feedback("a longer explanation\nover\nseveral\nlines", False)
+    assert places() == before

@@ -16,7 +16,7 @@ from app.gui.window import MainWindow
 from tests.support import ROOT
 from tests.support.gui import WAIT_MS
 
-SHIPPED = sorted((ROOT / "resources" / "scenes").glob("*.json"))
+SCENES = ROOT / "resources" / "scenes"
 
 
 @pytest.fixture
@@ -205,11 +205,27 @@ def test_recent_files_newest_first_and_capped(window, files, tmp_path, settings)
         other.deleteLater()
 
 
-def test_every_shipped_scene_is_an_example(window, files):
+def test_every_shipped_scene_is_an_example_under_its_family(window, files, qtbot):
     files.examples_menu.aboutToShow.emit()  # the menu reads them as it opens
-    entries = files.examples_menu.actions()
-    assert [Path(a.data()).name for a in entries] == [p.name for p in SHIPPED]
-    for entry, path in zip(entries, SHIPPED):
+    submenus = [a.menu() for a in files.examples_menu.actions() if a.menu()]
+    # A submenu per family, named as people read it, not one long flat list.
+    titles = [m.title() for m in submenus]
+    assert "Lines" in titles and "The 3-D pipeline" in titles and len(titles) == len(set(titles))
+    entries = files.example_actions()
+    every = sorted(p.relative_to(SCENES) for p in SCENES.rglob("*.json"))
+    assert sorted(Path(a.data()).relative_to(SCENES) for a in entries) == every
+    assert max(len(m.actions()) for m in submenus) < len(every) / 2
+    for menu in submenus:
+        families = {scenes.load(a.data()).spec.family for a in menu.actions()}
+        assert len(families) == 1, menu.title()
+    # Browse all… opens the gallery with the pictures.
+    browse = files.examples_menu.actions()[0]
+    assert "Browse" in browse.text()
+    browse.trigger()
+    assert window.gallery_entry.window.isVisible()
+    qtbot.waitUntil(lambda: window.gallery_entry.window.thumbnails_done, timeout=4 * WAIT_MS)
+    for entry in entries:
+        path = Path(entry.data())
         entry.trigger()
         scene = scenes.load(path)
         assert window.player.spec.name == scene.algorithm
@@ -247,6 +263,8 @@ def test_the_export_dialog_writes_a_gif(window, files, qtbot, tmp_path):
             controller.trace).caption_height)
         assert image.info["duration"] == 100 and "loop" not in image.info
     assert dialog.progress.value() == dialog.progress.maximum()
+    # The bar says it is over, not still "writing the file".
+    assert "writing" not in dialog.progress.text() and "Done" in dialog.progress.text()
     assert dialog.export_button.isEnabled() and not dialog.cancel_button.isEnabled()
 
 
@@ -481,3 +499,43 @@ def test_export_interactive_page_asks_only_for_the_page(window, files):
     values = controller.dialog.values()
     assert values["gif"] == "" and values["html"].endswith(".html")
     assert files.export_page_action.shortcut().toString() == "Ctrl+Shift+E"
+
+
+# ------------------------------------------------------- shipped scenes
+def test_a_shipped_scene_opened_by_file_open_is_not_saved_over(window, files, tmp_path,
+                                                               monkeypatch, messages):
+    shipped = SCENES / "line-centre-ties.json"
+    before = shipped.read_bytes()
+    asked = []
+
+    def save_dialog(parent, title, start, *args, **kwargs):
+        asked.append(start)
+        return str(tmp_path / "mine.json"), ""
+    monkeypatch.setattr(QFileDialog, "getSaveFileName", save_dialog)
+    monkeypatch.setattr(QFileDialog, "getOpenFileName", lambda *a, **k: (str(shipped), ""))
+    assert files.open_dialog()  # File > Open…, not the examples menu
+    window.player.seek(1)
+    assert files.save()  # Ctrl+S
+    # Save acted as Save As: asked for a name, starting outside the program's folder.
+    assert len(asked) == 1 and not Path(asked[0]).resolve().is_relative_to(ROOT)
+    assert shipped.read_bytes() == before
+    assert scenes.load(tmp_path / "mine.json").algorithm == scenes.load(shipped).algorithm
+    # Now the scene is the user's file: Save writes it without asking.
+    assert files.save() and len(asked) == 1
+    # Saving into the program's folder by name is refused with a message.
+    assert not files.save_to(shipped) and messages and shipped.read_bytes() == before
+
+
+def test_exports_of_a_shipped_scene_start_in_the_documents_folder(window, files):
+    from PySide6.QtCore import QStandardPaths
+    documents = Path(QStandardPaths.writableLocation(
+        QStandardPaths.StandardLocation.DocumentsLocation))
+    assert files.open_path(SCENES / "rendering" / "textured-floor.json")
+    controller = files.export_animation()
+    target = Path(controller.dialog.values()["gif"])
+    assert not target.resolve().is_relative_to(ROOT)
+    assert target.parent == documents and target.name == "textured-floor.gif"
+    # A stored export folder inside the program's folder is not used either.
+    files.settings.setValue("export/folder", str(SCENES))
+    target = Path(files.export_animation().dialog.values()["gif"])
+    assert target.parent == documents

@@ -1,4 +1,5 @@
-"""Help > Hard cases…: every shipped hard case is listed, opens and runs to the end."""
+"""Help > Examples and hard cases…: every shipped scene is listed under its family,
+opens and runs to the end."""
 import json
 import shutil
 
@@ -14,8 +15,10 @@ from app.gui.window import MainWindow
 from tests.support import ROOT
 from tests.support.gui import WAIT_MS
 
-SHIPPED = sorted((ROOT / "resources" / "scenes").glob("*.json"))
-HARD = [p for p in SHIPPED if p.stem != "demo-bresenham"]
+FOLDER = ROOT / "resources" / "scenes"
+SHIPPED = sorted(FOLDER.rglob("*.json"))
+FAMILIES = ("lines", "circles", "polygons", "fill", "triangles", "visibility", "antialias",
+            "textures", "pipeline")
 # The hard cases the issue names, by the scene that shows each.
 NAMED = ("line-float32-drift", "line-centre-ties", "line-reversed", "circle-radius-1",
          "circle-radius-2", "polygon-horizontal-edges", "polygon-star-evenodd",
@@ -33,24 +36,38 @@ def dialog(window, qtbot):
     return found
 
 
+def _family(algorithm):
+    from algorithms.core import registry
+    return registry.get(algorithm).family
+
+
 def written_cells(window):
     raster = window.player.final_raster()
     return {(int(x), int(y)) for y, x in zip(*raster.counts.nonzero())}
 
 
-def test_the_gallery_lists_every_hard_case_with_its_explanation(window, dialog):
-    assert set(NAMED) <= {p.stem for p in HARD}
-    assert [c.name for c in dialog.cases] == sorted(
-        (p.stem for p in HARD), key=lambda n: (gal.ORDER.index(n) if n in gal.ORDER else 99, n))
-    assert dialog.list.count() == len(HARD) and not dialog.isModal()
+def test_the_gallery_lists_every_scene_by_family_with_its_explanation(window, dialog):
+    assert set(NAMED) <= {p.stem for p in SHIPPED}
+    # Every scene, those of rendering/ too, each once.
+    assert sorted(c.path for c in dialog.cases) == SHIPPED and not dialog.isModal()
+    # Family by family (in the registry's order), a heading before each.
+    families = [json.loads(c.path.read_text())["algorithm"] for c in dialog.cases]
+    families = [_family(a) for a in families]
+    assert families == sorted(families, key=FAMILIES.index)
+    headings = [dialog.list.item(r).text() for r in range(dialog.list.count())
+                if not dialog.list.item(r).flags() & Qt.ItemFlag.ItemIsSelectable]
+    assert len(headings) == len(set(families)) and "The 3-D pipeline" in headings
+    # Within the lines, the lecture order of the named cases holds.
+    lines = [c.name for c in dialog.cases if c.name in NAMED[:3]]
+    assert lines == list(NAMED[:3])
     for row, case in enumerate(dialog.cases):
         data = json.loads(case.path.read_text())
-        text = dialog.list.item(row).data(Qt.ItemDataRole.AccessibleTextRole)
+        text = dialog.item(row).data(Qt.ItemDataRole.AccessibleTextRole)
         assert data["title"] in text and data["description"] in text and data["algorithm"] in text
         # One line, saying something.
         assert "\n" not in data["description"] and len(data["description"]) > 40
         assert not dialog.pictures[row].pixmap().isNull(), case.name
-    action = next(a for a in window.menus["help"].actions() if "Hard cases" in a.text())
+    action = next(a for a in window.menus["help"].actions() if "hard cases" in a.text())
     assert action.toolTip()
 
 
@@ -81,13 +98,13 @@ def test_run_scene_exits_0_with_json_for_every_scene(run_cli):
 
 
 def test_the_help_menu_opens_one_dialog_and_a_double_click_opens_a_scene(window, qtbot):
-    action = next(a for a in window.menus["help"].actions() if "Hard cases" in a.text())
+    action = next(a for a in window.menus["help"].actions() if "hard cases" in a.text())
     action.trigger()
     first = window.gallery_entry.window
     action.trigger()
     assert window.gallery_entry.window is first and first.isVisible()
     row = next(n for n, c in enumerate(first.cases) if c.name == "triangle-behind-eye")
-    item = first.list.item(row)
+    item = first.item(row)
     first.list.scrollToItem(item)
     centre = first.list.visualItemRect(item).center()
     QTest.mouseClick(first.list.viewport(), Qt.MouseButton.LeftButton, pos=centre)

@@ -122,8 +122,7 @@ def _open_by(window, how, path, monkeypatch):
         files._remember(path)
         files.recent_menu.actions()[0].trigger()
     elif how == "example":
-        files.examples_menu.aboutToShow.emit()
-        files.examples_menu.actions()[0].trigger()
+        files.example_actions()[0].trigger()
     else:
         from app.gui.gallery import GalleryDialog
         GalleryDialog(window).open_row(0)

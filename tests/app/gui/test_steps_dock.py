@@ -5,7 +5,7 @@ import io
 
 import pytest
 from PySide6.QtCore import Qt
-from PySide6.QtGui import QGuiApplication
+from PySide6.QtGui import QFontMetrics, QGuiApplication
 from PySide6.QtTest import QTest
 
 from tests.support.gui import WAIT_MS
@@ -98,3 +98,29 @@ def test_the_table_follows_a_new_run(window, qtbot):
     titles = [column.title for column in view.model.table.columns]
     assert "y_lo" in titles and "d" not in titles
     assert not any(curve.isVisible() for curve, _ in window.derivation.items.values())
+
+
+@pytest.mark.parametrize("size", [(1280, 720), (1920, 1080)])
+def test_the_table_opens_at_a_useful_size_and_counts_as_the_transport(make_window, qtbot, size):
+    window = make_window("line-bresenham", [(2, 3), (60, 40)], grid=(64, 48), settled=True)
+    window.resize(*size)
+    qtbot.wait(50)
+    view = shown_dock(window)
+    row = view.view.verticalHeader().defaultSectionSize()
+    # Eight rows at least (a dozen where the window has room): not a strip of three.
+    qtbot.waitUntil(lambda: view.view.viewport().height() // row >= 8, timeout=WAIT_MS)
+    # One line of text per row, not room for two.
+    assert row < 2 * view.view.fontMetrics().lineSpacing()
+    # The pseudo-code is shown whole: its column is as wide as its widest line.
+    model = view.model
+    code = [model.headerData(c, Qt.Orientation.Horizontal)
+            for c in range(model.columnCount())].index("pseudo-code")
+    bold = view.view.font()
+    bold.setBold(True)  # as the row on show is drawn
+    widest = max(QFontMetrics(bold).horizontalAdvance(model.text(r)[code])
+                 for r in range(len(model.table)))
+    assert view.view.columnWidth(code) >= widest
+    # The count agrees with the transport's "step 0 / last".
+    last = len(window.player.trace) - 1
+    assert f"/ {last}" in window.transport.counter.text()
+    assert str(last) in view.summary.text() and str(last + 1) not in view.summary.text()

@@ -86,5 +86,7 @@ def test_the_label_at_m_follows_the_origin(qtbot, window):
     (after,) = window.guides.item.label_texts()
     words = {"above": "below", "below": "above", "left of": "right of", "right of": "left of"}
     side = next(word for word in words if f"line {word} M" in before)
-    assert after == before.replace(f"line {side} M", f"line {words[side]} M")
-    assert before.endswith(": NE")
+    # Turned upside down, the diagonal step is drawn going down-right: SE.
+    assert before.endswith(": NE") and after.endswith(": SE (code: NE)")
+    assert after.removesuffix(": SE (code: NE)") == before.removesuffix(": NE").replace(
+        f"line {side} M", f"line {words[side]} M")

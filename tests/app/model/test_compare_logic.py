@@ -237,6 +237,13 @@ def test_window_panes_compare_with_the_previous_algorithm():
                      Pane.of("line-bresenham", symmetric=True))
     FakePlayer.previous = None
     assert compare.window_panes(FakePlayer())[1].algorithm != "line-dda"
+    # A previous algorithm of another family (a triangle before a seed
+    # fill) is not the default: a neighbour of the same family is.
+    FakePlayer.spec = compare.spec_of("flood-fill")
+    FakePlayer.options = {}
+    FakePlayer.previous = (compare.spec_of("triangle-bbox"), {})
+    other = compare.window_panes(FakePlayer())[1].algorithm
+    assert compare.spec_of(other).family == "fill" and other != "flood-fill"
 
 
 def test_the_logic_needs_no_qt():

@@ -15,6 +15,10 @@ TRIANGLE = [(2.25, 2.0), (28.0, 3.5), (20.0, 20.75)]
 PENTAGRAM = [(10, 1), (15.75, 18), (0.5, 7.5), (19.5, 7.5), (4, 18)]
 
 
+GRID_NAMES = {(1, 0): "E", (1, 1): "NE", (0, 1): "N", (-1, 1): "NW", (-1, 0): "W",
+              (-1, -1): "SW", (0, -1): "S", (1, -1): "SE"}
+
+
 def crossings(polygon, y_centre):
     """x where the polygon's edges cross the line y = y_centre, exactly, by
     the half-open rule ymin <= y < ymax (a vertex on the line counts once)."""
@@ -146,11 +150,30 @@ def test_the_label_at_m_says_which_side_the_line_passes(p, q, y_down):
         else:
             words = "right of" if chosen[0] > other[0] else "left of"
         branch = "NE" if chosen == b else "E"
-        assert text == f"line {words} M: {branch}", (i, text)
+        # The step as it goes in the picture (the code's names are octant 1's).
+        before = trace.step(i - 1).pixel
+        move = (chosen[0] - before[0], (before[1] - chosen[1]) if y_down else chosen[1] - before[1])
+        grid = GRID_NAMES[move]
+        shown = grid if grid == branch else f"{grid} (code: {branch})"
+        assert text == f"line {words} M: {shown}", (i, text)
         # Bresenham decides exactly: the branch it takes is that side's.
         assert state.step.branch == branch and tuple(state.step.pixel) == tuple(chosen)
         seen.add(words)
     assert len(seen) >= 1
+
+
+def test_an_octant_8_line_names_its_diagonal_step_se():
+    """P -> Q down and to the right, shallow (octant 8): the diagonal step
+    goes south-east on the grid, whatever the octant-1 code calls it."""
+    p, q = (1, 9), (13, 4)
+    trace = record("line-bresenham", [p, q], grid=(16, 12))
+    ideal = [([(p[0] + 0.5, p[1] + 0.5), (q[0] + 0.5, q[1] + 0.5)], False)]
+    texts = [step_guides(trace, trace.state_at(i), ideal).labels[0][2]
+             for i in range(len(trace)) if len(trace.state_at(i).candidates) == 2]
+    diagonal = [t for t in texts if "SE" in t]
+    assert diagonal and all(t.endswith(": SE (code: NE)") for t in diagonal)
+    assert not any(t.endswith(": NE") for t in texts)
+    assert any(t.endswith(": E") for t in texts)
 
 
 def test_the_label_at_m_names_a_tie():
