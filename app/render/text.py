@@ -367,13 +367,17 @@ class TextParts:
             return 0
         before = sum(len(rows) for rows in self.wrapped[:current])
         wanted = max(0, min(before - room // 3, total - room))
-        # Start at the first row of a line, never on a continuation row.
-        start = 0
+        # Start at the first row of a line, never on a continuation row: the
+        # line start at or before ``wanted`` when the current line still
+        # fits below it, else the next line start (never past the current line).
+        starts = [0]
         for rows in self.wrapped:
-            if start + len(rows) > wanted:
-                break
-            start += len(rows)
-        return start if start + room >= before + len(self.wrapped[current]) else wanted
+            starts.append(starts[-1] + len(rows))
+        down = max(start for start in starts if start <= wanted)
+        up = min(start for start in starts if start >= wanted)
+        if down + room >= before + len(self.wrapped[current]):
+            return down
+        return up if up <= before else wanted
 
     def _paint_variables(self, draw, state, top: int) -> None:
         theme = self.r.theme
