@@ -59,7 +59,7 @@ class StepTable:
         self.numbers = checked_numbers(numbers)
         self.constants = dict(trace.start.constants)
         if self.numbers == "exact":
-            self.constants.update(_implied(trace))
+            self.constants.update(implied(trace))
         names = list(trace.value_names)
         self._checkpoints: list[tuple[int, dict]] = [(-1, {})]
         state: dict = {}
@@ -154,7 +154,7 @@ def _pixel(step):
     return step.pixel
 
 
-def _implied(trace) -> dict:
+def implied(trace) -> dict:
     """Exact values a run implies without recording them (Bresenham's m)."""
     return {name: value for name, value in exact_values(trace, 0).items()
             if name not in trace.start.constants and name not in trace.value_names}

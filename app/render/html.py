@@ -35,6 +35,7 @@ from algorithms.core.steps import NO_PIXEL, Note, Span, Table, Vars
 from app.model.escape import script_json
 from app.model.files import write_atomically
 from app.model.geometry import scene_paths
+from app.model.notation import fraction
 from app.render.frame import colour_name
 from app.render.palette import THEMES
 from app.render.settings import ExportError, frame_range
@@ -92,8 +93,10 @@ def page_data(scene, trace, settings) -> dict:
         "startCandidates": [list(o) for o in start.candidates],
         "decision": start.decision,
         "replaces": bool(getattr(start, "replaces", False)),
-        "constants": {str(k): _json_value(v) for k, v in start.constants.items()},
+        "constants": {**{str(k): _json_value(v) for k, v in start.constants.items()},
+                      **_implied(trace, settings.numbers)},
         "valueNames": list(trace.value_names),
+        "exactValues": _exact_values(trace, settings.numbers),
         "arrays": _arrays(trace),
         "rich": _pack_json(_rich(trace, settings.numbers)),
         "paths": [[[list(map(float, p)) for p in points], bool(closed)]
@@ -186,6 +189,33 @@ def _rich(trace, numbers: str = "decimal") -> list:
         else:
             out.append([index, "span", [record.x_start, record.x_end, record.y]])
     return out
+
+
+def _implied(trace, numbers: str) -> dict:
+    """With "exact": what the run implies without recording it (Bresenham's
+    m), as p/q text, shown among the constants as the window shows it."""
+    if numbers != "exact":
+        return {}
+    from app.model.steptable import implied
+    return {name: fraction(value) for name, value in implied(trace).items()}
+
+
+def _exact_values(trace, numbers: str) -> dict | None:
+    """With "exact": {name: [p/q text, or None, per step]} for the run's
+    values that have an exact form (barycentric weights at lattice points,
+    app/model/exact.py), which the page shows in place of the floats."""
+    from app.model.exact import EXACT_NAMES
+    from app.model.steptable import StepTable
+    names = [name for name in EXACT_NAMES if name in trace.value_names]
+    if numbers != "exact" or not names:
+        return None
+    table = StepTable(trace, "exact")
+    found = {name: [None] * len(trace) for name in names}
+    for i in range(len(trace)):
+        for name, value in table.exact_cells(i).items():
+            if name in found:
+                found[name][i] = fraction(value)
+    return found
 
 
 def _json_value(value):

@@ -125,3 +125,26 @@ def test_the_page_needs_nothing_from_outside():
     assert "default-src 'none'" in text
     for outside in ("http://", "https://", "src=", "@import", "url("):
         assert outside not in text.replace("http://www.w3.org", "")
+
+
+def test_exact_numbers_show_the_weights_and_m_as_fractions(tmp_path, browser):
+    # Weights at pixel (1, 0) of (0,0) (4,0) (0,4): its centre (3/2, 1/2) gives
+    # alpha = 1 - 3/8 - 1/8 = 1/2, beta = x/4 = 3/8, gamma = y/4 = 1/8 (worked by hand).
+    points = ((0, 0), (4, 0), (0, 4))
+    scene = Scene(algorithm="triangle-cramer", points=points, width=6, height=6)
+    trace = record("triangle-cramer", list(points), grid=(6, 6))
+    step = next(i for i in range(len(trace))
+                if trace.step(i).pixel == (1, 0) and "beta" in trace.variables_at(i))
+    page = tmp_path / "weights.html"
+    html.write_page(scene, trace, page, ex.ExportSettings(numbers="exact").for_grid(6, 6))
+    open_page(browser, page)
+    browser.execute_script(f"window.rasterlab.go({step})")
+    shown = browser.execute_script("return document.getElementById('vars').textContent")
+    assert "1/2" in shown and "3/8" in shown and "1/8" in shown, shown
+    # Bresenham's m = dy/dx of the line on show: (1,1)->(12,6) is 5/11.
+    page = tmp_path / "line.html"
+    trace = record("line-bresenham", [P, Q], grid=(14, 8))
+    html.write_page(SCENE, trace, page, ex.ExportSettings(numbers="exact").for_grid(14, 8))
+    open_page(browser, page)
+    browser.execute_script("window.rasterlab.go(3)")
+    assert "5/11" in browser.execute_script("return document.getElementById('vars').textContent")
