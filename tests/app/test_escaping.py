@@ -250,7 +250,7 @@ def test_answers_read_back_as_text_no_spreadsheet_runs():
     for given in typed:
         exercise.answer(given)
     rows = list(csv.reader(io.StringIO(exercise.csv_text())))
-    assert [row[3] for row in rows[1:1 + len(typed)]] == [guarded(given) for given in typed]
+    assert [row[rows[0].index("given")] for row in rows[1:1 + len(typed)]] == [guarded(given) for given in typed]
 
 
 def test_numbers_stay_numbers_in_csv():
