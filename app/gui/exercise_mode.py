@@ -119,6 +119,8 @@ class ExerciseMode(QObject):
         trace = self.window.player.trace
         if not self.student:
             self.exercise = None
+            if trace is not None:
+                self._show(0)  # the run's end would show every answer meanwhile
             self.panel.show_question("Type your name in the Student field below, then Enter: "
                                      "it is recorded with every answer.")
             self.panel.student.setFocus()

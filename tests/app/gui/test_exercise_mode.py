@@ -177,6 +177,7 @@ def test_the_name_is_asked_once_and_every_attempt_is_recorded(window, qtbot, own
     mode = window.exercise_mode
     mode.action.trigger()
     assert mode.exercise is None and "name" in mode.panel.question.text()
+    assert window.player.index == 0  # nothing of the run is shown while the name is asked
     mode.panel.student.setText("Ada Lovelace")
     mode.panel.student.editingFinished.emit()
     trace = window.player.trace
