@@ -186,8 +186,10 @@ def add_worksheet_command(parser, commands) -> None:
     sheet.add_argument("--time-limit", default=None, metavar="SECONDS",
                        help="refuse a run estimated to take longer than this, before it "
                             "starts (default 120)")
-    sheet.add_argument("--blank", default=",".join(worksheet.DEFAULT_BLANK), metavar="COLUMNS",
-                       help="columns the student fills in, comma-separated (default %(default)s)")
+    sheet.add_argument("--blank", default=None, metavar="COLUMNS",
+                       help="columns the student fills in, comma-separated (default: every "
+                            "column but step, since each of the others gives answers away); "
+                            "columns empty on every row are left out")
     sheet.add_argument("--force", action="store_true",
                        help="replace files in DIR that an earlier worksheet did not write")
     add_numbers_option(sheet, "the sheet and its answer key")
@@ -205,7 +207,8 @@ def command_worksheet(args) -> int:
                   + [Output("--out", out / name, foreign=listed(worksheet.MANIFEST))
                      for name in worksheet.file_names(args.format)],
                   [scene_path], force=args.force)
-    blank = [name.strip() for name in args.blank.split(",") if name.strip()]
+    blank = None if args.blank is None else [
+        name.strip() for name in args.blank.split(",") if name.strip()]
     from app.model import budget
     memory = budget.DEFAULT_MEMORY_LIMIT if args.memory_limit is None \
         else budget.parse_size(args.memory_limit)

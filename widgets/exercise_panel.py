@@ -34,6 +34,7 @@ class ExercisePanel(QWidget):
     undoRequested = Signal()
     saveRequested = Signal()
     settingsChanged = Signal()
+    studentNamed = Signal(str)     # the name typed in the Student field
 
     def __init__(self, parent=None):
         super().__init__(parent)
@@ -92,6 +93,11 @@ class ExercisePanel(QWidget):
         form.addRow("Ask at", self.frequency)
         form.addRow("Random share", self.percent)
         form.addRow("Answer with", self.answer_with)
+        self.student = QLineEdit(placeholderText="your name, then Enter")
+        self.student.setToolTip("Recorded with every answer")
+        self.student.editingFinished.connect(
+            lambda: self.studentNamed.emit(self.student.text().strip()))
+        form.addRow("Student", self.student)
         self.frequency.currentIndexChanged.connect(self._settings_changed)
         self.percent.valueChanged.connect(self._settings_changed)
         self.answer_with.currentIndexChanged.connect(self._settings_changed)

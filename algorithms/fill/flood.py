@@ -44,9 +44,12 @@ NEIGHBOUR_NAMES = "E, W, N, S"
 DIAGONAL_NAMES = ", NE, NW, SW, SE"
 
 # Pops up to this many show the stack's first entries in the panel; past it
-# only its size is kept, so a million-pixel fill stays small.
+# only its size is kept, so a million-pixel fill stays small. Wherever the
+# size changes, the listing changes with it (or says once that it is no
+# longer kept): the two are never shown out of step.
 DETAIL_POPS = 10_000
 SHOWN_ENTRIES = 5
+NOT_LISTED = "(not listed past the first pops)"  # "next" once DETAIL_POPS is passed
 
 SEED = Option("seed", "point", "auto",
               "the pixel X,Y the fill starts from; auto takes a free pixel inside the outlines "
@@ -432,43 +435,51 @@ def _pixel_frames(constants, outline, region, seed, options, target, rgb, at):
     largest = 1
     pop, skip, fill = at["pop"], at["skip"], at["plot_fill"]
     while pending:
-        # The first pops show the next entries in the panel; past them the
-        # loop stays lean for large regions.
+        # The first pops show the next entries in the panel: the pop, the
+        # fill (the stack as the pop left it) and the pushes are a step each.
+        # Past them the loop stays lean for large regions: the fill's frame
+        # carries the size after its pushes.
         pops = filled + skipped
-        if pops == DETAIL_POPS:
-            y, x = divmod(pending[-1] if stack else pending[0], stride)
-            yield Note(line=pop, text=f"From here on the panel keeps only the size of the "
-                                      f"{'stack' if stack else 'queue'}; its entries are listed "
-                                      f"for the first {DETAIL_POPS:,} pops.", pixel=(x - 1, y - 1))
+        detailed = pops < DETAIL_POPS
         p = take()
         y, x = divmod(p, stride)
         x, y = x - 1, y - 1
-        if pops < DETAIL_POPS:
+        if detailed:
             yield Vars(line=pop, values={"size": len(pending),
                                          "next": _entries(pending, stack, region)}, pixel=(x, y))
+        elif pops == DETAIL_POPS:  # the listing ends here: said once
+            yield Note(line=pop, text=f"From here on the panel keeps only the size of the "
+                                      f"{'stack' if stack else 'queue'}; its entries are listed "
+                                      f"for the first {DETAIL_POPS:,} pops.", pixel=(x, y))
+            yield Vars(line=pop, values={"size": len(pending), "next": NOT_LISTED}, pixel=(x, y))
         if cells[p] != target:
             skipped += 1
             yield (skip, x, y, NAN, len(pending))
             continue
         cells[p] = FILLED
         filled += 1
+        before = len(pending)
         for offset in offsets:
             if cells[p + offset] == target:
                 push(p + offset)
         size = len(pending)
         if size > largest:
             largest = size
-        yield (fill, x, y, fill_rgb, size)
+        yield (fill, x, y, fill_rgb, before if detailed else size)
+        if detailed and size > before:
+            yield Vars(line=fill, values={"size": size, "next": _entries(pending, stack, region)},
+                       pixel=(x, y))
     yield Vars(line=at["done"], values={"filled": filled, "boundary": outline.count,
                                         "pops": filled + skipped, "skipped": skipped,
-                                        "largest": largest, "next": "(empty)"})
+                                        "largest": largest, "size": 0, "next": "(empty)"})
 
 
 def _span_frames(constants, outline, region, seed, options, target, rgb, at):
     """Scan-line seed fill: a run of free pixels per pop.
 
     Frames are few here (one per run), so the stack's size goes into a Vars
-    record at every pop rather than into a value of every frame.
+    record at every pop and after the pushes of each row, rather than into
+    a value of every frame.
     """
     boundary_rgb, fill_rgb = rgb
     yield Start(line=at["plot_outline"], values=("rgb",), constants=constants, pixel_value="rgb")
@@ -487,6 +498,8 @@ def _span_frames(constants, outline, region, seed, options, target, rgb, at):
         values = {"size": len(pending)}
         if pops <= DETAIL_POPS:
             values["next"] = _entries(pending, True, region)
+        elif pops == DETAIL_POPS + 1:
+            values["next"] = NOT_LISTED
         yield Vars(line=pop, values=values, pixel=(x, y))
         if cells[p] != target:
             skipped += 1
@@ -514,6 +527,11 @@ def _span_frames(constants, outline, region, seed, options, target, rgb, at):
             pending.extend(reversed(seeds))
             largest = max(largest, len(pending))
             yield Span(line=push, y=row, x_start=lo, x_end=hi + 1)
+            if seeds:  # the size and the listing change with the pushes
+                values = {"size": len(pending)}
+                if pops <= DETAIL_POPS:
+                    values["next"] = _entries(pending, True, region)
+                yield Vars(line=push, values=values, pixel=(lo, row))
     yield Vars(line=at["done"], values={"filled": filled, "boundary": outline.count, "pops": pops,
                                         "runs": runs, "skipped": skipped, "largest": largest,
                                         "size": 0, "next": "(empty)"})

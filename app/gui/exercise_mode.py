@@ -6,7 +6,13 @@ current question (stepping further is held back), a click on the grid
 answers a pixel or span question instead of drawing, and the panel takes
 branch choices and typed values. The questions and grading are
 app/teaching/exercise.py's; a new recording (the scene edited or undone, the
-origin switched) starts the exercise again on the new run.
+origin switched) starts the exercise again on the new run, and says so,
+naming the algorithm when that was switched.
+
+The student's name is asked once (the panel's Student field, remembered in
+the settings); the questions wait for it. Every answer and every undo is
+appended, as it happens, to exercise-attempts.csv in the program's data
+folder (app/teaching/attempts.py), with the name, scene, algorithm and time.
 """
 from __future__ import annotations
 
@@ -19,9 +25,12 @@ from PySide6.QtWidgets import QFileDialog
 from widgets.docks import panel_dock
 from widgets.exercise_panel import ExercisePanel
 
+from app.gui.appdata import data_dir, open_settings
+from app.teaching.attempts import FILE_NAME, AttemptLog
 from app.teaching.exercise import Exercise
 from app.model.files import write_atomically
 
+STUDENT_KEY = "exercise/student"
 PLACEHOLDERS = {"value": "the value, e.g. -3", "span": "or type: first, last",
                 "pixel": "or type: x, y"}
 
@@ -50,13 +59,18 @@ class ExerciseMode(QObject):
         self.panel.undoRequested.connect(self.undo)
         self.panel.saveRequested.connect(self.save)
         self.panel.settingsChanged.connect(self.restart)
+        self.panel.studentNamed.connect(self.set_student)
+        self.panel.student.setText(self.student)
+        self.log = AttemptLog(data_dir() / FILE_NAME)
+        self._log_failed = False
         window.player.traceChanged.connect(self._trace_changed)
         window.player.frameChanged.connect(self._hold_back)
         window.grid.viewport().installEventFilter(self)
 
     @property
     def active(self) -> bool:
-        return self.exercise is not None
+        """On (Run > Exercise checked), the questions asked or waiting for the name."""
+        return self.action.isChecked()
 
     def set_active(self, on: bool) -> None:
         self.dock.setVisible(on)
@@ -80,24 +94,65 @@ class ExerciseMode(QObject):
         steps = getattr(self.window, "steps", None)
         return [self.window.variables_dock] + ([steps.dock] if steps is not None else [])
 
+    @property
+    def student(self) -> str:
+        return str(open_settings().value(STUDENT_KEY, "") or "").strip()
+
+    def set_student(self, name: str) -> None:
+        """The name typed in the panel: remembered; the questions start if they waited."""
+        if not name or name == self.student and self.exercise is not None:
+            return
+        settings = open_settings()
+        settings.setValue(STUDENT_KEY, name)
+        settings.sync()
+        self.restart(f"Answers are recorded for {name}.")
+
+    def _scene(self) -> str:
+        files = self.window.file_actions
+        if files is not None and files.path is not None:
+            return str(files.path)
+        return "unsaved: " + " ".join(f"({x:g}, {y:g})" for x, y in self.window.player.points)
+
     def restart(self, message: str = "") -> None:
         if not self.action.isChecked():
             return
         trace = self.window.player.trace
+        if not self.student:
+            self.exercise = None
+            if trace is not None:
+                self._show(0)  # the run's end would show every answer meanwhile
+            self.panel.show_question("Type your name in the Student field below, then Enter: "
+                                     "it is recorded with every answer.")
+            self.panel.student.setFocus()
+            return
         if trace is None:
             self.exercise = None
             self.panel.show_question("The run is still being recorded: start the exercise "
                                      "again when it is done.")
             return
         frequency, percent, answer_with = self.panel.settings()
-        self.exercise = Exercise(trace, frequency, percent, answer_with)
+        spec = self.window.player.spec
+        context = {"student": self.student, "scene": self._scene(), "algorithm": spec.name}
+        self.exercise = Exercise(trace, frequency, percent, answer_with,
+                                 explain=spec.explain, context=context)
         self.panel.show_note(self.exercise.note())
         self.panel.show_feedback(message, None)
         self._ask()
 
     def _trace_changed(self) -> None:
-        if self.action.isChecked():
-            self.restart("The run changed: the exercise starts again.")
+        if not self.action.isChecked():
+            return
+        before = None if self.exercise is None else self.exercise.context["algorithm"]
+        now = self.window.player.spec.name
+        kept = "" if self.exercise is None or not self.exercise.attempts else (
+            " (the answers given so far stay in the record)")
+        if before is not None and before != now:
+            message = (f"The algorithm changed from {before} to {now}: "
+                       f"the exercise starts again on {now}{kept}.")
+            self.window.statusBar().showMessage(message, 8000)
+        else:
+            message = f"The run changed: the exercise starts again{kept}."
+        self.restart(message)
 
     # ------------------------------------------------------------ asking
     def _ask(self) -> None:
@@ -141,6 +196,7 @@ class ExerciseMode(QObject):
         if self.exercise is None or self.exercise.finished:
             return
         grade = self.exercise.answer(given)
+        self._record(grade, "answer")
         self.panel.show_feedback(grade.text(), grade.right)
         self._ask()
 
@@ -187,10 +243,22 @@ class ExerciseMode(QObject):
             self.clicked(grid.pixel_at(grid.mapToScene(event.position().toPoint())))
         return True
 
+    def _record(self, grade, event: str) -> None:
+        try:
+            self.log.append(self.exercise.row(grade, event))
+        except OSError as error:
+            if not self._log_failed:  # said once, not at every answer
+                self.window.say_error(f"Could not record the answer in {self.log.path}: "
+                                      f"{error.strerror or error}")
+            self._log_failed = True
+
     def undo(self) -> None:
-        if self.exercise is None or self.exercise.undo() is None:
+        grade = None if self.exercise is None else self.exercise.undo()
+        if grade is None:
             return
-        self.panel.show_feedback("The last answer was taken back.", None)
+        self._record(grade, "undo")
+        self.panel.show_feedback("The last answer was taken back; it stays in the record, "
+                                 "and the question is asked again.", None)
         self._ask()
 
     def hint(self) -> None:

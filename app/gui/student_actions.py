@@ -127,9 +127,15 @@ class StudentActions(QObject):
         window.picker.set_current(spec.name)
         return spec.name
 
-    def export_worksheet(self, folder: str | None = None, fmt: str | None = None) -> list:
-        """Write worksheet.FORMAT and answers.FORMAT for the scene on show; the files."""
+    def export_worksheet(self, folder: str | None = None, fmt: str | None = None,
+                         blank=None) -> list:
+        """Write worksheet.FORMAT and answers.FORMAT for the scene on show; the
+        files. Without a folder, dialogs ask for it and for the blank columns
+        (``blank``; None: the default, every column but the step)."""
         window = self.window
+        # Worksheets (and Pillow, which draws their grid) load on first use.
+        from app.gui.worksheet_pdf import write_pdf
+        from app.teaching import worksheet
         if folder is None:
             path, chosen = QFileDialog.getSaveFileName(
                 window, "Export worksheet (a folder is made for it)", "worksheet",
@@ -137,11 +143,11 @@ class StudentActions(QObject):
             if not path:
                 return []
             folder, fmt = path, next(k for k, v in FILTERS.items() if v == chosen)
-        # Worksheets (and Pillow, which draws their grid) load on first use.
-        from app.gui.worksheet_pdf import write_pdf
-        from app.teaching import worksheet
+            blank = self._ask_blank(worksheet)
+            if blank is None:
+                return []
         try:
-            sheet = worksheet.build(window.player.scene)
+            sheet = worksheet.build(window.player.scene, blank)
             files = worksheet.write(sheet, folder, fmt or "pdf", write_pdf)
         except (InputError, OSError) as error:
             window.say_error(f"Could not export the worksheet: {error}")
@@ -149,6 +155,17 @@ class StudentActions(QObject):
         window.statusBar().showMessage(f"Wrote {', '.join(p.name for p in files)} in {folder}",
                                        8000)
         return files
+
+    def _ask_blank(self, worksheet) -> list[str] | None:
+        """The columns to leave blank, chosen in a dialog; None when cancelled."""
+        from app.gui.worksheet_blanks import BlankColumns
+        try:
+            columns, default = worksheet.blank_choices(self.window.player.scene)
+        except (InputError, OSError) as error:
+            self.window.say_error(f"Could not export the worksheet: {error}")
+            return None
+        dialog = BlankColumns(columns, default, self.window)
+        return dialog.chosen() if dialog.exec() else None
 
     def first_divergence(self) -> int | None:
         """Seek to the first divergence of the student's run on show; the step, or None."""

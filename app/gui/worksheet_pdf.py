@@ -1,10 +1,12 @@
 """A worksheet (app/teaching/worksheet.py) as a PDF, drawn with Qt's QPdfWriter.
 
 A4 pages in DejaVu Sans and Sans Mono (the shipped files, app/gui/fonts.py):
-the title, the pseudo-code and the constants, then the step table
-(ROWS_PER_PAGE rows a page, headings repeated), then one page with the grid
-and the ideal shape (shaded where the run plots, on the answer key). The
-command line imports this module only when it writes a PDF.
+the title, the name and date fields (on the student's sheet), the inputs,
+the pseudo-code (long lines wrapped, never cut) and the constants, then the
+step table and the tables to fill in by hand (as many rows a page as fit,
+headings repeated), then one page with the grid and the ideal shape (shaded
+where the run plots, on the answer key). The command line imports this
+module only when it writes a PDF.
 """
 from __future__ import annotations
 
@@ -18,9 +20,10 @@ from PySide6.QtWidgets import QApplication
 
 from app.gui.fonts import register_shipped_fonts
 from app.model.files import write_atomically
+from app.teaching.worksheet import FIELDS
 
-ROWS_PER_PAGE = 30
 DPI = 150
+ROW_HEIGHT = 1.5  # a table row, in lines of its 9 pt text
 
 
 def application():
@@ -33,10 +36,6 @@ def application():
             os.environ.setdefault("QT_QPA_PLATFORM", "offscreen")
         app = QApplication([])
     return app
-
-
-def page_count(sheet) -> int:
-    return max(1, -(-len(sheet.rows) // ROWS_PER_PAGE)) + 1
 
 
 def write_pdf(sheet, path, answers: bool) -> None:
@@ -58,12 +57,12 @@ def write_pdf(sheet, path, answers: bool) -> None:
     try:
         area = QRectF(writer.pageLayout().paintRectPixels(DPI))
         area.moveTo(0, 0)
-        chunks = [sheet.cells(answers)[k:k + ROWS_PER_PAGE]
-                  for k in range(0, max(len(sheet.rows), 1), ROWS_PER_PAGE)]
-        for n, rows in enumerate(chunks):
-            top = _heading(painter, sheet, answers, area) if n == 0 else 0.0
-            _table(painter, sheet, rows, area, top)
-            writer.newPage()
+        top = _heading(painter, sheet, answers, area)
+        tables = [("", sheet.columns, sheet.cells(answers))] + [
+            (table.name, table.columns, table.cells(answers)) for table in sheet.tables]
+        for name, columns, rows in tables:
+            top = _paged_table(writer, painter, name, columns, rows, area, top)
+        writer.newPage()
         _grid(painter, sheet, answers, area)
     finally:
         painter.end()
@@ -78,16 +77,26 @@ def _font(painter, size: float, bold: bool = False, mono: bool = False) -> float
     return painter.fontMetrics().height()
 
 
+def _wrapped(painter, text: str, y: float, width: float) -> float:
+    """Draw ``text`` wrapped to ``width`` from ``y``; the y below it."""
+    flags = int(Qt.TextFlag.TextWordWrap)
+    rect = painter.boundingRect(QRectF(0, y, width, 10_000), flags, text)
+    painter.drawText(QRectF(0, y, width, rect.height()), flags, text)
+    return y + rect.height()
+
+
 def _heading(painter, sheet, answers: bool, area: QRectF) -> float:
-    y = 0.0
-    height = _font(painter, 14, bold=True)
+    _font(painter, 14, bold=True)
     kind = "Answer key" if answers else "Worksheet"
-    painter.drawText(QPointF(0, y + height), f"{kind}: {sheet.title} ({sheet.algorithm})")
-    y += height * 1.6
-    height = _font(painter, 8, mono=True)
+    y = _wrapped(painter, f"{kind}: {sheet.title} ({sheet.algorithm})", 0.0, area.width())
+    height = _font(painter, 10)
+    if not answers:
+        y = _wrapped(painter, FIELDS, y + height * 0.4, area.width())
+    y = _wrapped(painter, f"Inputs: {sheet.inputs}", y + height * 0.4, area.width())
+    y += height * 0.5
+    _font(painter, 8, mono=True)
     for line in sheet.code:
-        painter.drawText(QRectF(0, y, area.width(), height), Qt.TextFlag.TextSingleLine, line)
-        y += height
+        y = _wrapped(painter, line, y, area.width())
     _font(painter, 9)
     lines = []
     if sheet.constants:
@@ -98,19 +107,41 @@ def _heading(painter, sheet, answers: bool, area: QRectF) -> float:
     if sheet.note:
         lines.append(sheet.note)
     for line in lines:
-        y += painter.fontMetrics().height() * 1.3
-        painter.drawText(QPointF(0, y), line)
+        y = _wrapped(painter, line, y + painter.fontMetrics().height() * 0.3, area.width())
     return y + painter.fontMetrics().height()
 
 
-def _table(painter, sheet, rows, area: QRectF, top: float) -> None:
-    height = _font(painter, 9) * 1.5
-    widths = [max(len(c), *(len(r[k]) for r in sheet.rows), 4) + 2
-              for k, c in enumerate(sheet.columns)] if sheet.rows else [8] * len(sheet.columns)
+def _paged_table(writer, painter, name: str, columns, rows, area: QRectF, top: float) -> float:
+    """A table from ``top``, on as many pages as it needs (headings repeated);
+    the y below it."""
+    height = _font(painter, 9) * ROW_HEIGHT
+    widths = [max(len(c), *(len(r[k]) for r in rows), 4) + 2
+              for k, c in enumerate(columns)] if rows else [8] * len(columns)
+    if name:
+        top += height * 0.5
+        if top + 3 * height > area.height():
+            writer.newPage()
+            top = 0.0
+        _font(painter, 11, bold=True)
+        top = _wrapped(painter, name, top, area.width())
+    rows = list(rows)
+    while True:
+        fit = max(1, int((area.height() - top) / height) - 1)
+        _table(painter, columns, widths, rows[:fit], area, top)
+        top += (1 + min(fit, len(rows))) * height
+        rows = rows[fit:]
+        if not rows:
+            return top
+        writer.newPage()
+        top = 0.0
+
+
+def _table(painter, columns, widths, rows, area: QRectF, top: float) -> None:
+    height = _font(painter, 9) * ROW_HEIGHT
     scale = area.width() / sum(widths)
     xs = [sum(widths[:k]) * scale for k in range(len(widths) + 1)]
     painter.setPen(QPen(QColor("#000000"), 1))
-    for r, row in enumerate([list(sheet.columns)] + rows):
+    for r, row in enumerate([list(columns)] + rows):
         y = top + r * height
         if r == 0:
             painter.fillRect(QRectF(0, y, area.width(), height), QColor("#e8e8e8"))

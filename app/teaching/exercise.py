@@ -12,9 +12,12 @@ or a seeded random k %). Each question has one kind:
 - ``span``: the first and last pixel of the run a scan line fills.
 - ``pixel``: the pixel the step writes next (click it).
 
-The answer is graded at once: right, or wrong with the right answer and the
-pseudo-code line that decides it. Answers can be undone; the summary (asked,
-right, steps missed, time taken) is saved as CSV.
+The answer is graded at once: right or wrong, with the numbers that decide
+it (app/teaching/exercise_reasons.py) and, when wrong, the pseudo-code line.
+An answer can be undone (its question is asked again), but every attempt
+stays in ``attempts``: the CSV lists each one with the student, scene,
+algorithm and time, and app/teaching/attempts.py appends it to a file as it
+happens, so that a record for grading is never rewritten.
 """
 from __future__ import annotations
 
@@ -22,12 +25,13 @@ import csv
 import io
 import random
 import time
-from dataclasses import dataclass
+from dataclasses import dataclass, field
+from datetime import datetime
 
-from algorithms.core.registry import format_value
 from algorithms.core.steps import PLOT, VISIT, Span
 
 from app.model.escape import csv_row
+from app.teaching.exercise_reasons import reason, shown
 
 FREQUENCIES = ("step", "decision", "scanline", "random")
 MAX_SCAN = 20_000  # steps looked at for questions: an exercise is a few hundred at most
@@ -52,20 +56,34 @@ class Grade:
     given: object
     right: bool
     seconds: float
+    reason: str = ""    # the numbers that decide the answer, ending in it
+    attempt: int = 1    # the how-manieth answer to this question
+    at: datetime = field(default_factory=datetime.now)
 
     def text(self) -> str:
+        why = self.reason or f"the answer is {self.answer_text}"
         if self.right:
-            return f"Right: {show(self.question.answer)}."
-        return (f"Wrong: you gave {show(self.given)}; the answer is {show(self.question.answer)}, "
-                f"decided by line {self.question.line + 1}: {self.question.line_text.strip()}")
+            return f"Right: {why}."
+        return (f"Wrong: you gave {self.given_text}; {why} "
+                f"(line {self.question.line + 1}: {self.question.line_text.strip()}).")
+
+    @property
+    def answer_text(self) -> str:
+        return shown(self.question.kind, self.question.answer)
+
+    @property
+    def given_text(self) -> str:
+        return shown(self.question.kind, self.given)
+
+
+# Columns of the CSV: one row per attempt, undone ones included.
+ATTEMPT_FIELDS = ("time", "student", "scene", "algorithm", "step", "kind", "attempt",
+                  "answer", "given", "right", "seconds", "event")
 
 
 def show(answer) -> str:
-    if isinstance(answer, tuple) and len(answer) == 2 and all(isinstance(v, int) for v in answer):
-        return f"({answer[0]}, {answer[1]})"
-    if isinstance(answer, float):
-        return format_value(answer)
-    return str(answer)
+    """A value as a person reads it (a pixel as (x, y))."""
+    return shown("", answer)
 
 
 def branches_of(trace) -> tuple[str, ...]:
@@ -87,10 +105,16 @@ class Exercise:
     """The questions of one run, the answers given so far, and the score."""
 
     def __init__(self, trace, frequency: str = "decision", percent: int = 30,
-                 answer_with: str = "auto", seed: int = 0, clock=time.monotonic):
+                 answer_with: str = "auto", seed: int = 0, clock=time.monotonic,
+                 explain=None, context: dict | None = None):
+        """``explain`` is the algorithm's AlgorithmSpec.explain (the numbers
+        of the feedback); ``context`` the student, scene and algorithm the
+        record names."""
         if frequency not in FREQUENCIES:
             raise ValueError(f"frequency: one of {', '.join(FREQUENCIES)}")
         self.trace = trace
+        self.explain = explain
+        self.context = {"student": "", "scene": "", "algorithm": "", **(context or {})}
         self.answer_with = answer_with
         self.clock = clock
         self.branches = branches_of(trace)
@@ -101,7 +125,8 @@ class Exercise:
         self.scanned = min(len(trace), MAX_SCAN)
         every = [q for q in (self.question_at(i) for i in range(1, self.scanned)) if q is not None]
         self.questions = self._choose(every, frequency, percent, seed)
-        self.grades: list[Grade] = []
+        self.grades: list[Grade] = []    # the answers that count (undo takes one back)
+        self.attempts: list[tuple[Grade, str]] = []  # every answer and undo, in order
         self.started = clock()
         self._asked_at = self.started
 
@@ -185,17 +210,31 @@ class Exercise:
         if question is None:
             raise ValueError("the exercise is over")
         now = self.clock()
-        grade = Grade(question, given, is_right(question, given), now - self._asked_at)
+        tries = sum(g.question == question for g, event in self.attempts if event == "answer")
+        grade = Grade(question, given, is_right(question, given), now - self._asked_at,
+                      reason(self.trace, self.explain, question, self.decision), tries + 1)
         self.grades.append(grade)
+        self.attempts.append((grade, "answer"))
         self._asked_at = now
         return grade
 
     def undo(self) -> Grade | None:
-        """Take back the last answer; its question is asked again."""
+        """Take back the last answer; its question is asked again. The
+        attempt stays in ``attempts``, followed by an "undo" entry."""
         if not self.grades:
             return None
         self._asked_at = self.clock()
-        return self.grades.pop()
+        grade = self.grades.pop()
+        self.attempts.append((grade, "undo"))
+        return grade
+
+    def row(self, grade: Grade, event: str) -> list:
+        """One attempt as a row of ATTEMPT_FIELDS."""
+        context = self.context
+        return [grade.at.isoformat(timespec="seconds"), context["student"], context["scene"],
+                context["algorithm"], grade.question.step, grade.question.kind, grade.attempt,
+                grade.answer_text, grade.given_text, "yes" if grade.right else "no",
+                f"{grade.seconds:.1f}", event]
 
     def hint(self) -> list[tuple[str, str]]:
         """The values that decide the current question: the numbers known before
@@ -228,18 +267,20 @@ class Exercise:
                 "seconds": round(self.clock() - self.started, 1)}
 
     def csv_text(self) -> str:
-        """One row per answer, then the totals; an answer typed as a formula
+        """One row per attempt (an undone one too, and its undo), then the
+        totals of the answers that count; an answer typed as a formula
         (=, +, -, @) is written as text (``escape.csv_row``)."""
         out = io.StringIO()
         writer = csv.writer(out, lineterminator="\n")
-        writer.writerow(["step", "kind", "answer", "given", "right", "seconds"])
-        for grade in self.grades:
-            writer.writerow(csv_row([grade.question.step, grade.question.kind,
-                                     show(grade.question.answer), show(grade.given),
-                                     "yes" if grade.right else "no", f"{grade.seconds:.1f}"]))
+        writer.writerow(ATTEMPT_FIELDS)
+        for grade, event in self.attempts:
+            writer.writerow(csv_row(self.row(grade, event)))
         summary = self.summary()
-        writer.writerow(["total", "", "", "", f"{summary['right']}/{summary['asked']}",
-                         f"{summary['seconds']:.1f}"])
+        totals = dict.fromkeys(ATTEMPT_FIELDS, "")
+        totals.update(time="total", student=self.context["student"],
+                      right=f"{summary['right']}/{summary['asked']}",
+                      seconds=f"{summary['seconds']:.1f}")
+        writer.writerow(csv_row(list(totals.values())))
         return out.getvalue()
 
 

@@ -167,6 +167,8 @@ def test_a_pdf_name_latex_cannot_read_is_refused_before_any_work(tmp_path, run_c
 
 
 def test_the_worksheet_tex_keeps_the_title_in_its_comment(scene_file, tmp_path, run_cli):
+    from app.model.escape import latex_text
+    from app.teaching.worksheet import FIELDS
     status, _, err = run_cli("worksheet", scene_file, "--out", tmp_path, "--format", "tex")
     assert status == 0, err
     for name, kind in (("worksheet.tex", "Worksheet"), ("answers.tex", "Answer key")):
@@ -174,10 +176,14 @@ def test_the_worksheet_tex_keeps_the_title_in_its_comment(scene_file, tmp_path, 
         head = text[:text.index("\\begin{tabular}")]
         commands, comments = tex_tokens(text)
         assert set(commands) <= ESCAPES | {"begin", "end", "hline", "\\"}
-        # Every line of the title is a comment line of its own.
-        assert all(line.startswith("% ") or line == "%" for line in LINES.split(head)[:-1])
+        # Every line of the title is a comment line of its own (the student's
+        # sheet then has its name and date line).
+        fields = [latex_text(FIELDS) + r" \\"] if kind == "Worksheet" else []
+        assert [line for line in LINES.split(head)[:-1]
+                if not (line.startswith("% ") or line == "%")] == fields
         lines = LINES.split(f"{kind}: {TITLE} (line-bresenham)")
-        assert [c[2:] for c in comments] == [one_line(line).rstrip() for line in lines]
+        assert [c[2:] for c in comments[:len(lines)]] == [one_line(line).rstrip() for line in lines]
+        assert comments[len(lines)].startswith("% Inputs: P = (")
 
 
 def test_latex_text_typesets_every_special_character():
@@ -250,7 +256,7 @@ def test_answers_read_back_as_text_no_spreadsheet_runs():
     for given in typed:
         exercise.answer(given)
     rows = list(csv.reader(io.StringIO(exercise.csv_text())))
-    assert [row[3] for row in rows[1:1 + len(typed)]] == [guarded(given) for given in typed]
+    assert [row[rows[0].index("given")] for row in rows[1:1 + len(typed)]] == [guarded(given) for given in typed]
 
 
 def test_numbers_stay_numbers_in_csv():

@@ -323,7 +323,7 @@ def pdf_writer(sheet, path, answers):
     path.write_bytes(sheet.title.encode("utf-8"))
 
 sheet = worksheet.build(scenes.load(shipped.scene_path(sys.argv[1])),
-                        list(worksheet.DEFAULT_BLANK))
+                        None)
 worksheet.write(sheet, "ws", "pdf", pdf_writer)
 """
 

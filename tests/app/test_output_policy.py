@@ -306,7 +306,7 @@ def test_a_worksheet_pdf_that_fails_leaves_no_folder(tmp_path, monkeypatch):
     def failing(sheet, path, answers):
         raise OSError(f"{path}: cannot write the file (Permission denied)")
     sheet = worksheet.build(scenes.load(shipped.scene_path("demo-bresenham")),
-                            list(worksheet.DEFAULT_BLANK))
+                            None)
     with pytest.raises(OSError):
         worksheet.write(sheet, tmp_path / "a" / "b", "pdf", failing)
     assert list(tmp_path.iterdir()) == []

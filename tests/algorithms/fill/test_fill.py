@@ -1,5 +1,6 @@
 """Seed fill: the same region in every order, against a BFS written here."""
 import json
+import re
 import sys
 from collections import deque
 from fractions import Fraction
@@ -303,7 +304,7 @@ def test_panel_shows_size_and_next_entries():
             # A queue's front does not change when pixels join at its back.
             assert listed.startswith(f"({b.pixel[0]}, {b.pixel[1]})")
         # The size after a pop is one less than after the frame before it.
-        assert b.record.values["size"] == trace.step(j - 1).values["size"] - 1
+        assert b.record.values["size"] == trace.variables_at(j - 1)["size"] - 1
         assert trace.variables_at(j)["next"] == b.record.values["next"]
 
 
@@ -311,9 +312,110 @@ def test_entries_stop_after_the_detail_limit(monkeypatch):
     monkeypatch.setattr(fill_module, "DETAIL_POPS", 10)
     trace = flood(SHAPES[0])
     records = [trace.step(i).record for i in range(len(trace))]
-    assert sum(isinstance(r, Vars) for r in records) == 10 + 1  # and the final one
+    pops = [r for r in records if isinstance(r, Vars) and "next" in r.values]
+    # 10 pops, the pushes of their fills, the listing's end, and the final record.
+    assert 10 + 2 < len(pops) <= 2 * 10 + 2
     assert sum(type(r).__name__ == "Note" for r in records) == 1
     assert trace.final_variables()["filled"] == len(final_sets(trace)[1])
+
+
+def simulated_stack(blocked, seed, grid, connectivity, order):
+    """The stack (or queue) of the fill re-run here: after each pop, each
+    fill or skip, and each fill's pushes, as (event, pixel, entries) with the
+    entry to come out next first. Neighbours are pushed E, W, N, S (then
+    NE, NW, SW, SE); a stack pushes them in reverse so that E comes out first."""
+    width, height = grid
+    steps = FOUR if connectivity == "4" else EIGHT
+    free = {(x, y) for x in range(width) for y in range(height) if (x, y) not in blocked}
+    pending, events = [seed], []
+    stack = order == "stack"
+
+    def coming():
+        return list(reversed(pending)) if stack else list(pending)
+    while pending:
+        p = pending.pop() if stack else pending.pop(0)
+        events.append(("pop", p, coming()))
+        if p not in free:
+            events.append(("skip", p, coming()))
+            continue
+        free.discard(p)
+        pushed = [(p[0] + dx, p[1] + dy) for dx, dy in steps if (p[0] + dx, p[1] + dy) in free]
+        events.append(("fill", p, coming()))  # the fill shows the stack as the pop left it
+        pending.extend(reversed(pushed) if stack else pushed)
+        if pushed:
+            events.append(("push", p, coming()))
+    return events
+
+
+def listed(entries):
+    """The panel's "next": the first five, then how many more."""
+    text = " ".join(f"({x}, {y})" for x, y in entries[:5]) or "(empty)"
+    return text + (f" +{len(entries) - 5} more" if len(entries) > 5 else "")
+
+
+@pytest.mark.parametrize("order", ["stack", "queue"])
+@pytest.mark.parametrize("connectivity", ["4", "8"])
+def test_the_stack_shown_at_every_step_is_the_stack(order, connectivity, monkeypatch):
+    monkeypatch.setattr(fill_module, "DETAIL_POPS", 60)  # listed for 60 pops, size only after
+    contours = [[(1, 1), (22, 1), (22, 22), (1, 22)]]
+    trace = flood(contours, grid=(24, 24), order=order, connectivity=connectivity)
+    seed = trace.start.constants["seed"]
+    at = fill_module.fill_listing(contours, get("flood-fill").resolve(
+        {"order": order, "connectivity": connectivity})).at
+    events = simulated_stack(set(outline_pixels(contours)), tuple(seed), (24, 24),
+                             connectivity, order)
+    k, checked, past = 0, 0, 0
+    names = {at["pop"]: "pop", at["skip"]: "skip", at["plot_fill"]: "fill"}
+    for i in range(len(trace)):
+        step = trace.step(i)
+        kind = names.get(step.line)
+        if kind is None or type(step.record).__name__ == "Note":
+            continue
+        if kind == "fill" and isinstance(step.record, Vars):
+            kind = "push"
+        variables = trace.variables_at(i)
+        listing = not variables["next"].startswith("(not listed")
+        if events[k][0] == "pop" and kind != "pop":  # past the listing a pop has no step
+            k += 1
+        event, pixel, entries = events[k]
+        k += 1
+        if kind == "fill" and not listing and k < len(events) and events[k][0] == "push":
+            entries = events[k][2]  # past the listing the fill's step shows its pushes done
+            k += 1
+        assert (kind, step.pixel) == (event, pixel), i
+        assert variables["size"] == len(entries), i
+        if listing:
+            assert variables["next"] == listed(entries), i
+            checked += 1
+        else:
+            past += 1
+    assert k == len(events)
+    assert checked > 100 and past > 100
+    assert trace.variables_at(len(trace) - 1)["size"] == 0
+
+
+def test_the_span_fill_stack_changes_with_its_pushes():
+    contours = [[(1, 1), (22, 1), (22, 22), (1, 22)], [(8, 8), (14, 8), (14, 14), (8, 14)]]
+    trace = flood(contours, grid=(24, 24), order="span")
+    at = fill_module.fill_listing(contours, get("flood-fill").resolve({"order": "span"})).at
+    size, pushes = 1, 0
+    for i in range(1, len(trace)):
+        step, variables = trace.step(i), trace.variables_at(i)
+        if isinstance(step.record, Span) and step.line == at["push_runs"]:
+            # The runs of free (unwritten) pixels the scanned row holds now: one push each.
+            free = trace.raster_at(i).counts[step.record.y] == 0
+            xs = range(step.record.x_start, step.record.x_end)
+            runs = sum(free[x] and (x == xs[0] or not free[x - 1]) for x in xs)
+            if runs:
+                after = trace.variables_at(i + 1)
+                assert after["size"] == variables["size"] + runs, i  # shown at the next step
+                pushes += 1
+        if "size" in variables:
+            shown = variables["next"]
+            assert len(re.findall(r"\(\d+, \d+\)", shown)) == min(5, variables["size"]), i
+            if variables["size"] > 5:
+                assert f"+{variables['size'] - 5} more" in shown, i
+    assert pushes > 10
 
 
 @pytest.mark.parametrize("order", ORDERS)

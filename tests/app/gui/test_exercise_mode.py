@@ -1,6 +1,8 @@
 """Run > Exercise driven with qtbot: answers by button, by typing and by
 clicking the grid, graded as the trace says; stepping held back; undo of an
-answer and of a scene edit; the origin switched; the CSV summary."""
+answer and of a scene edit; the origin switched; the CSV summary; the
+student's name asked once; the append-only record of every attempt; a
+switch of algorithm said."""
 from __future__ import annotations
 
 import csv
@@ -13,6 +15,14 @@ from tests.support.gui import settle
 
 LINE = ((2, 3), (9, 6))
 pytestmark = pytest.mark.window("line-bresenham", LINE, grid=(16, 12), settled=True)
+
+
+@pytest.fixture(autouse=True)
+def own_files(tmp_path, monkeypatch):
+    """Settings and data folder of the test's own (made before the window)."""
+    monkeypatch.setenv("RASTERLAB_SETTINGS", str(tmp_path / "settings.ini"))
+    monkeypatch.setenv("RASTERLAB_DATA_DIR", str(tmp_path / "data"))
+    return tmp_path
 
 
 def plotted(trace):
@@ -34,6 +44,10 @@ def start(window):
     assert mode.action in window.menus["run"].actions()
     mode.action.trigger()
     assert mode.action.isChecked() and mode.dock.isVisible()
+    if mode.exercise is None:  # the name is asked first
+        mode.panel.student.setText("Ada Lovelace")
+        mode.panel.student.editingFinished.emit()
+    assert mode.exercise is not None
     return mode
 
 
@@ -118,7 +132,7 @@ def test_a_scene_edit_undone_restarts_and_the_summary_is_saved(window, tmp_path)
     assert window.player.index == len(trace) - 1
     mode.save(str(tmp_path / "summary.csv"))
     rows = list(csv.reader(open(tmp_path / "summary.csv")))
-    assert len(rows) == asked + 2 and rows[-1][4] == f"{asked}/{asked}"
+    assert len(rows) == asked + 2 and rows[-1][rows[0].index("right")] == f"{asked}/{asked}"
     mode.action.setChecked(False)
     assert not mode.dock.isVisible() and window.variables_dock.isVisible()
 
@@ -173,3 +187,70 @@ def test_the_buttons_stay_put_after_an_answer(window, qtbot):
     assert places() == before
     panel.show_feedback("a longer explanation\nover\nseveral\nlines", False)
     assert places() == before
+
+
+def record_rows(tmp_path):
+    return list(csv.DictReader(open(tmp_path / "data" / "exercise-attempts.csv",
+                                    encoding="utf-8")))
+
+
+def test_the_name_is_asked_once_and_every_attempt_is_recorded(window, qtbot, own_files):
+    mode = window.exercise_mode
+    mode.action.trigger()
+    assert mode.exercise is None and "name" in mode.panel.question.text()
+    assert window.player.index == 0  # nothing of the run is shown while the name is asked
+    mode.panel.student.setText("Ada Lovelace")
+    mode.panel.student.editingFinished.emit()
+    trace = window.player.trace
+    first = mode.exercise.current
+    wrong = {"E": "NE", "NE": "E"}[direction(trace, first.step)]
+    qtbot.mouseClick(mode.panel.choice_button(wrong), Qt.MouseButton.LeftButton)
+    qtbot.mouseClick(mode.panel.undo_button, Qt.MouseButton.LeftButton)
+    assert mode.exercise.score == (0, 0)
+    mode.answer(direction(trace, first.step))
+    rows = record_rows(own_files)
+    # The wrong attempt is not erased by the undo: it stays, then the undo, then the retry.
+    assert [(r["step"], r["given"], r["right"], r["event"], r["attempt"]) for r in rows] == [
+        (str(first.step), wrong, "no", "answer", "1"),
+        (str(first.step), wrong, "no", "undo", "1"),
+        (str(first.step), direction(trace, first.step), "yes", "answer", "2")]
+    assert {(r["student"], r["algorithm"]) for r in rows} == {("Ada Lovelace", "line-bresenham")}
+    assert all("(2, 3) (9, 6)" in r["scene"] and r["time"] for r in rows)
+    mode.save(str(own_files / "export.csv"))
+    exported = list(csv.DictReader(open(own_files / "export.csv", encoding="utf-8")))
+    assert [r["event"] for r in exported[:-1]] == ["answer", "undo", "answer"]
+    mode.action.setChecked(False)
+    mode.action.setChecked(True)  # asked once: the name is remembered
+    assert mode.exercise is not None and mode.exercise.context["student"] == "Ada Lovelace"
+
+
+def test_switching_the_algorithm_says_so(window):
+    mode = start(window)
+    mode.answer("E")
+    window.player.set_algorithm("line-dda")
+    settle_recording(window)
+    text = mode.panel.feedback.text()
+    assert "line-bresenham" in text and "line-dda" in text and "stay in the record" in text
+    assert mode.exercise.context["algorithm"] == "line-dda"
+
+
+def settle_recording(window):
+    from PySide6.QtCore import QCoreApplication
+    for _ in range(50):
+        QCoreApplication.processEvents()
+        if window.player.trace is not None:
+            return
+
+
+def test_the_feedback_gives_the_deciding_numbers(window):
+    mode = start(window)
+    trace = window.player.trace
+    (x0, y0), (x1, y1) = LINE
+    dx, dy = x1 - x0, y1 - y0
+    d = 2 * dy - dx  # the textbook's d0, then d += 2dy or 2(dy - dx): written here
+    question = mode.exercise.current
+    correct = direction(trace, question.step)
+    mode.answer({"E": "NE", "NE": "E"}[correct])
+    feedback = mode.panel.feedback.text()
+    assert f"= {d}" in feedback and feedback.count(correct) >= 1
+    assert ("< 0" if d < 0 else "> 0" if d > 0 else "0") in feedback

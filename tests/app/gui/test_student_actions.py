@@ -2,6 +2,7 @@
 in a separate process, and D jumps to its first divergence."""
 from __future__ import annotations
 
+import csv
 from fractions import Fraction
 
 import pytest
@@ -86,3 +87,21 @@ def test_save_template_into_a_missing_folder_says_why(window, tmp_path, monkeypa
     monkeypatch.setattr(window, "say_error", said.append)
     assert window.student_actions.save_template("line", str(tmp_path / "no" / "x.py")) is None
     assert len(said) == 1 and "does not exist" in said[0]
+
+
+def test_the_lecturer_chooses_the_blank_columns(window, qtbot, tmp_path):
+    from app.gui.worksheet_blanks import BlankColumns
+    from app.teaching import worksheet
+    columns, default = worksheet.blank_choices(window.player.scene)
+    dialog = BlankColumns(columns, default, window)
+    qtbot.addWidget(dialog)
+    # The default: every column but the step (the line and d give the branch away).
+    assert [c for c, box in dialog.boxes.items() if box.isChecked()] == \
+        [c for c in columns if c != "step"]
+    assert {"line", "pixel", "choice", "d"} <= set(dialog.chosen())
+    dialog.boxes["d"].click()  # the lecturer gives d
+    chosen = dialog.chosen()
+    assert "d" not in chosen
+    window.student_actions.export_worksheet(str(tmp_path / "sheet"), "csv", chosen)
+    rows = list(csv.DictReader(open(tmp_path / "sheet" / "worksheet.csv")))
+    assert all(row["d"] != "" and row["pixel"] == "" and row["line"] == "" for row in rows)

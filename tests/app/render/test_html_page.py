@@ -148,3 +148,86 @@ def test_exact_numbers_show_the_weights_and_m_as_fractions(tmp_path, browser):
     open_page(browser, page)
     browser.execute_script("window.rasterlab.go(3)")
     assert "5/11" in browser.execute_script("return document.getElementById('vars').textContent")
+
+
+def write_demo(tmp_path, grid=(14, 8)):
+    page = tmp_path / "demo.html"
+    trace = record("line-bresenham", [P, Q], grid=grid)
+    html.write_page(SCENE, trace, page, ex.ExportSettings().for_grid(*grid))
+    return page, trace
+
+
+def rect(driver, selector):
+    return driver.execute_script(
+        f"const r = document.querySelector('{selector}').getBoundingClientRect();"
+        " return [r.left, r.top, r.right, r.bottom];")
+
+
+@pytest.fixture
+def phone(browser):
+    browser.set_window_size(390, 844)
+    yield browser
+    browser.set_window_size(1400, 900)
+
+
+def test_a_phone_gets_one_column(tmp_path, phone):
+    page, _ = write_demo(tmp_path)
+    open_page(phone, page)
+    width = phone.execute_script("return document.documentElement.clientWidth")
+    view, code, caption = (rect(phone, s) for s in ("#view", "#code", "#caption"))
+    assert view[2] - view[0] >= 0.9 * width  # the grid takes the page's width
+    assert code[1] >= view[3]  # the pseudo-code comes below the grid
+    # The caption overlaps neither the pseudo-code nor the grid.
+    assert caption[1] >= code[3] or caption[3] <= code[1]
+    assert caption[1] >= view[3]
+    assert phone.execute_script("return document.documentElement.scrollWidth") <= width
+
+
+def test_the_grid_has_axis_coordinates(tmp_path, browser):
+    page, _ = write_demo(tmp_path)
+    open_page(browser, page)
+    labels = browser.execute_script("return window.rasterlab.axisLabels()")
+    xs = [label for label in labels if label["axis"] == "x"]
+    ys = [label for label in labels if label["axis"] == "y"]
+    assert [label["value"] for label in xs] == list(range(14))  # 14 columns, room for each
+    assert [label["value"] for label in ys] == list(range(8))
+    view = browser.execute_script("return [document.getElementById('grid').clientWidth,"
+                                  " document.getElementById('grid').clientHeight]")
+    assert all(0 <= label["x"] <= view[0] and 0 <= label["y"] <= view[1] for label in labels)
+    # Each x label sits under its column, left to right; y counts up the page (y up).
+    assert [label["x"] for label in xs] == sorted(label["x"] for label in xs)
+    assert [label["y"] for label in ys] == sorted((label["y"] for label in ys), reverse=True)
+    step = xs[1]["x"] - xs[0]["x"]
+    assert all(abs(b["x"] - a["x"] - step) < 0.01 for a, b in zip(xs, xs[1:]))
+
+
+def test_the_keys_work_after_the_speed_list_and_in_either_case(tmp_path, browser):
+    page, _ = write_demo(tmp_path)
+    open_page(browser, page)
+    speed = browser.find_element(By.ID, "speed")
+    chosen = speed.get_attribute("value")
+    browser.execute_script("document.getElementById('speed').focus()")
+    speed.send_keys(Keys.ARROW_RIGHT)
+    speed.send_keys(Keys.ARROW_RIGHT)
+    assert browser.execute_script("return window.rasterlab.step()") == 2
+    assert speed.get_attribute("value") == chosen  # the list kept its speed
+    body = browser.find_element(By.TAG_NAME, "body")
+    theme = browser.execute_script("return window.rasterlab.theme()")
+    body.send_keys("T")  # as the docs write it: Shift+T
+    assert browser.execute_script("return window.rasterlab.theme()") != theme
+    shown = browser.execute_script("return [document.getElementById('show-primitive').checked,"
+                                   " document.getElementById('show-highlight').checked]")
+    body.send_keys("I")
+    body.send_keys("O")
+    assert browser.execute_script("return [document.getElementById('show-primitive').checked,"
+                                  " document.getElementById('show-highlight').checked]") == \
+        [not shown[0], not shown[1]]
+
+
+def test_stepping_on_a_phone_keeps_the_grid_in_sight(tmp_path, phone):
+    page, _ = write_demo(tmp_path)
+    open_page(phone, page)
+    body = phone.find_element(By.TAG_NAME, "body")
+    for _ in range(6):
+        body.send_keys(Keys.ARROW_RIGHT)
+    assert phone.execute_script("return window.scrollY") == 0

@@ -8,6 +8,8 @@ import io
 
 import pytest
 
+from algorithms.core import registry
+
 from app.teaching.exercise import Exercise
 from tests.support import record
 from tests.support.bresenham import bresenham_run
@@ -69,10 +71,13 @@ def test_grading_score_undo_and_summary():
     summary = exercise.summary()
     assert (summary["asked"], summary["right"]) == (5, 3)
     assert summary["missed"] == missed[:2]
-    rows = list(csv.reader(io.StringIO(exercise.csv_text())))
-    assert rows[0] == ["step", "kind", "answer", "given", "right", "seconds"]
-    assert [row[4] for row in rows[1:-1]] == ["no", "yes", "no", "yes", "yes"]
-    assert rows[-1][4] == "3/5" and all(float(row[5]) == 1.5 for row in rows[1:-1])
+    rows = list(csv.DictReader(io.StringIO(exercise.csv_text())))
+    # Every attempt, the undone one and its undo included, in the order they happened.
+    assert [(row["right"], row["event"]) for row in rows[:-1]] == [
+        ("no", "answer"), ("yes", "answer"), ("no", "answer"), ("yes", "answer"),
+        ("no", "answer"), ("no", "undo"), ("yes", "answer")]
+    assert [row["attempt"] for row in rows[:-1]] == ["1", "1", "1", "1", "1", "1", "2"]
+    assert rows[-1]["right"] == "3/5" and all(float(row["seconds"]) == 1.5 for row in rows[:-1])
 
 
 def test_the_decision_variable_can_be_typed():
@@ -163,3 +168,31 @@ def test_a_long_run_asks_about_its_first_steps_and_says_so(monkeypatch):
     exercise = Exercise(trace, "step")
     assert max(q.step for q in exercise.questions) < 10
     assert f"first 10 of {len(trace)} steps" in exercise.note()
+
+
+def test_the_feedback_says_the_numbers_that_decide():
+    trace = record("line-bresenham", LINE)
+    exercise = Exercise(trace, "decision", explain=registry.get("line-bresenham").explain)
+    for d in bresenham_run(*LINE)[1][:4]:  # the d that chooses each pixel after the first
+        answer = exercise.current.answer
+        text = exercise.answer("NE" if answer == "E" else "E").text()
+        sign = "<" if d < 0 else ">"
+        assert f"= {d} {sign} 0, so {answer}" in text
+
+
+def test_dda_feedback_shows_the_rounding():
+    line = ((2, 3), (8, 10))  # y steps by 1, x by 6/7: x = 2 + 6k/7
+    trace = record("line-dda", line)
+    exercise = Exercise(trace, "decision")
+    exercise.answer((0, 0))  # the first pixel, (2, 3), has nothing to round
+    text = exercise.answer((0, 0)).text()
+    assert "x = 2.8571 -> 3, y = 4, so (3, 4)" in text
+
+
+def test_a_span_reads_as_a_span():
+    trace = record("polygon-scanline", POLYGON)
+    exercise = Exercise(trace, "scanline", explain=registry.get("polygon-scanline").explain)
+    x0, x1 = exercise.current.answer
+    text = exercise.answer((x0 + 1, x1 + 1)).text()
+    assert f"so x = {x0}..{x1}" in text and f"you gave x = {x0 + 1}..{x1 + 1}" in text
+    assert f"({x0}, {x1})" not in text
