@@ -149,3 +149,17 @@ def check_span(case, options, trace, pixels):
 # The stability suite's checks, by the name an algorithm's oracle declares.
 CHECKS = {"closed-triangle": check_cramer, "columns": check_columns, "wireframe": check_wireframe,
           "span-plane": check_span}
+
+
+def edge(a, b, p):
+    """Twice the signed area of a, b, p (exact for Fractions and integers)."""
+    return (b[0] - a[0]) * (p[1] - a[1]) - (b[1] - a[1]) * (p[0] - a[0])
+
+
+def strictly_inside(tri, p) -> bool | None:
+    """Whether p lies strictly inside the triangle (either winding); None
+    when p lies on one of its edge lines (a tie the fill rule decides)."""
+    values = [edge(tri[k], tri[(k + 1) % 3], p) for k in range(3)]
+    if any(v == 0 for v in values):
+        return None
+    return all(v > 0 for v in values) or all(v < 0 for v in values)

@@ -9,24 +9,13 @@ from hypothesis import assume, given, settings, strategies as st
 
 from algorithms.core import registry
 from app.model.buffers import side_buffer
+from tests.support.triangle_variant_oracles import strictly_inside
 
 GRID = (24, 18)
 HALF = Fraction(1, 2)
 
 coordinate = st.integers(-256, 256 * GRID[0]).map(lambda v: Fraction(v, 256))
 point = st.tuples(coordinate, coordinate)
-
-
-def edge(a, b, p) -> Fraction:
-    return (b[0] - a[0]) * (p[1] - a[1]) - (b[1] - a[1]) * (p[0] - a[0])
-
-
-def triangle_covers(tri, c) -> bool | None:
-    """The centre strictly inside (either winding); None on an edge line."""
-    values = [edge(tri[k], tri[(k + 1) % 3], c) for k in range(3)]
-    if any(v == 0 for v in values):
-        return None
-    return all(v > 0 for v in values) or all(v < 0 for v in values)
 
 
 def polygon_covers(contour, c) -> bool | None:
@@ -67,7 +56,7 @@ def floats(points):
 @given(st.lists(point, min_size=3, max_size=7), st.lists(point, min_size=3, max_size=3))
 def test_the_triangle_is_written_only_where_the_polygon_set_the_stencil(polygon, tri):
     trace = registry.get("stencil-triangle").record((floats(polygon), floats(tri)), {}, GRID)
-    fragments = oracle(triangle_covers, tri)
+    fragments = oracle(strictly_inside, tri)
     stencil = oracle(polygon_covers, polygon)
     assume(fragments is not None and stencil is not None)
     written = {tuple(map(int, p)) for p in np.argwhere(trace.state_at(len(trace) - 1)
@@ -100,4 +89,4 @@ def test_one_contour_is_a_triangle_with_no_stencil_buffer():
     assert side_buffer(trace, len(trace) - 1) is None
     written = {tuple(map(int, p)) for p in np.argwhere(trace.state_at(len(trace) - 1)
                                                        .raster.written())[:, ::-1]}
-    assert written == oracle(triangle_covers, [tuple(map(Fraction, p)) for p in tri])
+    assert written == oracle(strictly_inside, [tuple(map(Fraction, p)) for p in tri])

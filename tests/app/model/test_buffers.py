@@ -10,20 +10,9 @@ from hypothesis import assume, given, settings, strategies as st
 from algorithms.core import registry
 from algorithms.core.steps import Vars
 from app.model.buffers import side_buffer
+from tests.support.triangle_variant_oracles import edge, strictly_inside
 
 GRID = (12, 10)
-
-
-def edge(a, b, p) -> Fraction:
-    return (b[0] - a[0]) * (p[1] - a[1]) - (b[1] - a[1]) * (p[0] - a[0])
-
-
-def inside(tri, p) -> bool | None:
-    """Strictly inside either winding; None when p lies on an edge line (a tie)."""
-    values = [edge(tri[k], tri[(k + 1) % 3], p) for k in range(3)]
-    if any(v == 0 for v in values):
-        return None
-    return all(v > 0 for v in values) or all(v < 0 for v in values)
 
 
 def area2(tri) -> Fraction:
@@ -65,7 +54,7 @@ def test_supersampling_accumulates_each_pixels_samples_one_at_a_time(tri):
         assert buffer.name == "accumulation buffer"
         for (x, y), count in tested.items():
             if (x, y) not in inside_at:
-                inside_at[(x, y)] = [inside(tri, (x + u, y + v)) for u, v in samples]
+                inside_at[(x, y)] = [strictly_inside(tri, (x + u, y + v)) for u, v in samples]
             first = inside_at[(x, y)][:count]
             if None in first:
                 continue
@@ -103,7 +92,7 @@ def test_motion_blur_adds_each_instants_samples_into_the_buffer(tri, speed):
             shape = moved(tri, shift)
             for y in range(grid[1]):
                 for x in range(grid[0]):
-                    hits = [inside(shape, (x + u, y + v)) for u, v in samples]
+                    hits = [strictly_inside(shape, (x + u, y + v)) for u, v in samples]
                     assume(None not in hits)
                     if sum(hits):
                         totals = expected.setdefault((x, y), [])
