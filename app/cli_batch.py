@@ -16,7 +16,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from algorithms.core.registry import InputError
-from app.model.files import Output, check_outputs, not_ours, write_atomically
+from app.model.files import Output, check_folders, check_outputs, not_ours, write_atomically
 from app.teaching import batch, grade_formats
 
 FORMATS = ("gradescope", "prairielearn", "coderunner")
@@ -59,6 +59,7 @@ def prepare(args) -> Prepared:
     outputs += [Output("--out", path, foreign=not_ours("json")) for path in outs.values()]
     scenes = [word for word in args.cases if word.endswith(".json") and Path(word).is_file()]
     check_outputs(outputs, [s.path for s in submissions] + scenes, args.force)
+    check_folders(outputs)
     return Prepared(submissions, plan, jobs, outs)
 
 

@@ -19,7 +19,7 @@ from app.cli_parser import add_numbers_option
 from app.model import shipped
 from app.model.scene import one_line
 from app.teaching import worksheet
-from app.model.files import (Output, OutputRefused, check_outputs, listed, not_ours,
+from app.model.files import (Output, OutputRefused, check_folders, check_outputs, listed, not_ours,
                               write_atomically)
 
 
@@ -94,8 +94,9 @@ def command_check(args) -> int:
         prepared = cli_batch.prepare(args)
     elif args.junit:
         cases = [word for word in args.cases if Path(word).is_file()]
-        check_outputs([Output("--junit", args.junit, foreign=not_ours("xml"))],
-                      [args.submissions[0], *cases], args.force)
+        junit = [Output("--junit", args.junit, foreign=not_ours("xml"))]
+        check_outputs(junit, [args.submissions[0], *cases], args.force)
+        check_folders(junit)
     where = isolation(args.require_sandbox)
     if not where.sandboxed:
         print(f"rasterlab: warning: the student's code is NOT isolated from your files and "

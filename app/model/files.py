@@ -236,6 +236,23 @@ def check_outputs(outputs: Iterable[Output], inputs: Iterable = (), force: bool 
         _check_foreign(output, Path(output.path), force)
 
 
+def check_folders(outputs: Iterable[Output]) -> None:
+    """Refuse (OutputRefused) an output whose folder does not exist or cannot
+    be written, for commands that would find it only after long work (a
+    check's cases). A file inside a folder output is the folder's to make."""
+    outputs = [output for output in outputs if output.path is not None]
+    made = {Path(output.path) for output in outputs if output.folder}
+    for output in outputs:
+        folder = Path(output.path).parent
+        if folder in made:
+            continue
+        where = f"{output.option} {output.path}"
+        if not folder.is_dir():
+            raise OutputRefused(f"{where}: the folder {folder} does not exist")
+        if not os.access(folder, os.W_OK):
+            raise OutputRefused(f"{where}: the folder {folder} cannot be written")
+
+
 def _check_kind(output: Output, path: Path) -> None:
     where = f"{output.option} {path}"
     if path.is_symlink() and not path.exists():

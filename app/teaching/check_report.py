@@ -47,7 +47,8 @@ def printed_lines(output: str) -> list[str]:
 def _divergence(divergence: Divergence | None):
     if divergence is None:
         return None
-    return {"step": divergence.step, "expected": divergence.expected, "got": divergence.got}
+    return {"step": divergence.step, "where": divergence.where, "expected": divergence.expected,
+            "got": divergence.got, "explanation": foreign_text(divergence.why) or None}
 
 
 def as_json(results: list[CaseResult], file: str, against: str,

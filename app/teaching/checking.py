@@ -26,6 +26,7 @@ from algorithms.exact import triangles as exact_triangles
 
 from app.model import budget
 from app.teaching import check_families as families
+from app.teaching import explain
 from app.teaching.student import Limits, Outcome, run_student
 
 # What the student's draw() takes, per family: the template's signature.
@@ -50,12 +51,17 @@ class Case:
 class Divergence:
     """The first step where the student and a reference differ."""
 
-    step: int
+    step: int          # the student's pixel, counted from 0
     expected: str
     got: str
+    pixel: tuple | None = None  # the pixel of an unordered divergence
+    extra: bool = False         # ... yielded but not expected (else expected, not yielded)
+    where: str = ""    # as reports name it: "step S" as the window numbers a line's steps
+    why: str = ""      # the values that decide it (explain.py)
 
     def text(self) -> str:
-        return f"step {self.step}: expected {self.expected}, got {self.got}"
+        head = f"{self.where or f'step {self.step}'}: expected {self.expected}, got {self.got}"
+        return f"{head}. {self.why}" if self.why else head
 
 
 @dataclass(frozen=True)
@@ -251,8 +257,10 @@ def reference_steps(spec, case: Case) -> list:
     if kind_of(spec) in families.SIGNATURES:
         return families.reference(spec, trace, kind_of(spec))
     writes = trace.written()
-    return [(int(x), int(y), trace.variables_at(int(step)))
-            for step, (x, y) in zip(writes.steps.tolist(), writes.pixels.tolist())]
+    steps = writes.steps.tolist()
+    return explain.ReferenceSteps([(int(x), int(y), trace.variables_at(int(step)))
+                                   for step, (x, y) in zip(steps, writes.pixels.tolist())],
+                                  steps, len(trace) - 1)
 
 
 def exact_pixels(spec, case: Case, options: dict) -> list | None:
@@ -311,15 +319,16 @@ def unordered_divergence(expected: list, got: list) -> Divergence | None:
     for n, have in enumerate(got):
         pixel = tuple(have[:2])
         if left[pixel] <= 0:
-            missing = [p for p in expected if left[tuple(p[:2])] > 0]
-            want = f"one of {len(missing)} pixels not yet given, such as {pixel_text(missing[0])}" \
-                if missing else "the end"
-            return Divergence(n, want, f"pixel {pixel_text(pixel)}")
+            times = Counter(tuple(p[:2]) for p in expected)[pixel]
+            want = f"{pixel_text(pixel)} only {times} time{'s' if times > 1 else ''}" if times \
+                else f"no pixel {pixel_text(pixel)}"
+            return Divergence(n, want, f"pixel {pixel_text(pixel)}", pixel, True)
         left[pixel] -= 1
     missing = [p for p in expected if left[tuple(p[:2])] > 0]
     if missing:
-        return Divergence(len(got), f"pixel {pixel_text(missing[0])} (and {len(missing) - 1} more)",
-                          "the end")
+        more = f" (and {len(missing) - 1} more)" if len(missing) > 1 else ""
+        return Divergence(len(got), f"pixel {pixel_text(missing[0])}{more}", "the end",
+                          tuple(missing[0][:2]))
     return None
 
 
@@ -371,6 +380,10 @@ def check_case(spec, options: dict, path, case: Case, limits: Limits,
             [(x, y, {}) for x, y in exact], got)
     if not outcome.ok:
         reference = versus_exact = None
+    resolved = spec.resolve(case.options)
+    reference = explain.explained(kind, spec, case, expected, got, reference, resolved)
+    versus_exact = None if exact is None else explain.explained(
+        kind, spec, case, [(x, y, {}) for x, y in exact], got, versus_exact, resolved, expected)
     return CaseResult(case, outcome, reference, versus_exact, exact is not None, names)
 
 
@@ -382,6 +395,8 @@ def family_result(spec, case: Case, outcome: Outcome, expected: list) -> CaseRes
     if outcome.ok:
         reference = families.divergence(kind, expected, got, Divergence)
         versus_exact = None if exact is None else families.divergence(kind, exact, got, Divergence)
+    reference, versus_exact = (None if found is None else explain.explained(
+        kind, spec, case, expected, got, found, {}) for found in (reference, versus_exact))
     return CaseResult(case, outcome, reference, versus_exact, exact is not None)
 
 

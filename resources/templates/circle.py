@@ -14,6 +14,10 @@ reference plots it; on the axes and the diagonals the reference plots a
 pixel once). It is compared with the reference algorithm and, for the
 midpoint and square-root circles, with the exact result.
 
+circle-midpoint starts at (0, r) with d = 1 - r and walks the second
+octant while y > x: if d < 0 it goes E (d += 2x + 3; x += 1), else SE
+(d += 2(x - y) + 5; x += 1; y -= 1), so a tie (d = 0) goes SE.
+
 Plain Python only: no imports from RasterLab, and only the standard library.
 Each case runs in a separate process with a time and a memory limit.
 """

@@ -10,7 +10,13 @@ order, as ``yield x, y`` (or with named variables, ``yield x, y, {"e0": e}``).
 A pixel (x, y) is covered when its centre (x + 1/2, y + 1/2) lies strictly
 inside, or exactly on a left edge or on a bottom horizontal edge (the
 top-left rule seen with y up). A triangle of no area covers nothing, and
-the vertices may come in either winding.
+the vertices may come in either winding. With the vertices in
+counter-clockwise order, the edge from a to b has the value
+e(p) = (bx - ax)(py - ay) - (by - ay)(px - ax) at a point p: positive
+inside. Where e = 0 at a centre, the edge decides: going down (a left edge)
+or going right along a horizontal (a bottom edge), the pixel is covered;
+going up (a right edge) or left along a horizontal (a top edge), it is not.
+At a corner both edges must keep it.
 
 The pixels are compared, as a collection, with the reference algorithm
 and with the exact coverage. Plain Python only: no imports from RasterLab,

@@ -117,3 +117,23 @@ def test_junit_xml_parses_whatever_the_file_is_called(run_cli, tmp_path):
     assert status == 0, err
     (suite,) = ET.parse(out_file).getroot()
     assert suite.attrib["name"].startswith("a\ufffd\ufffd")
+
+
+@pytest.mark.parametrize("outputs", [["--junit", "{missing}/out.xml"],
+                                     ["--csv", "{missing}/marks.csv", "--junit", "{tmp}/out.xml"]])
+def test_an_output_in_a_missing_folder_is_refused_before_any_case_runs(run_cli, tmp_path,
+                                                                       outputs):
+    missing = tmp_path / "not here"
+    words = [word.format(missing=missing, tmp=tmp_path) for word in outputs]
+    # two submissions (a batch) when --csv is given, else one file
+    submissions = [SAMPLES / "off_by_one.py"] * (2 if "--csv" in words else 1)
+    if len(submissions) == 2:
+        submissions = [tmp_path / name for name in ("ann", "bob")]
+        for folder in submissions:
+            folder.mkdir()
+            (folder / "line.py").write_text((SAMPLES / "off_by_one.py").read_text())
+    status, out, err = run_cli("check", *submissions, "--against", "line-bresenham", *words)
+    assert status == 2
+    assert out == ""  # not one case ran
+    assert err.strip() == f"rasterlab: {words[0]} {words[1]}: the folder {missing} does not exist"
+    assert list(tmp_path.glob("*.xml")) == []
