@@ -232,19 +232,13 @@ def plan(against: str, words: list[str], seed: str = "0", time_limit: str = "2",
 
 
 # ---------------------------------------------------------------- grading
-def skipped_result(case, timeouts: int) -> CaseResult:
-    outcome = Outcome("skipped", error=f"not run: {timeouts} cases of this submission ran out "
-                                       "of time before it (--give-up-after)")
-    return CaseResult(case, outcome, None, None, False)
-
-
 def grade(submission: Submission, plan: Plan, on_case=None) -> Graded:
     """Every case of ``plan`` on one submission; ``on_case()`` hears each end."""
     started = time.perf_counter()
     graded, timeouts = [], 0
     for kind, case, expected in plan.cases:
         if plan.give_up_after and timeouts >= plan.give_up_after:
-            result = skipped_result(case, timeouts)
+            result = checking.skipped_result(case, timeouts)
         else:
             result = checking.check_case(plan.spec, plan.options, submission.path, case,
                                          plan.limits, expected)

@@ -76,13 +76,14 @@ def junit_xml(results: list[CaseResult], file: str, against: str,
     student's message say anything) passes through xml_chars, so the file
     always parses."""
     failures = sum(1 for r in results if r.outcome.ok and not r.passed)
-    errors = sum(1 for r in results if not r.outcome.ok)
+    skipped = sum(1 for r in results if r.outcome.kind == "skipped")
+    errors = sum(1 for r in results if not r.outcome.ok) - skipped
     seconds = sum(r.outcome.seconds for r in results)
     suites = ET.Element("testsuites", tests=str(len(results)), failures=str(failures),
                         errors=str(errors), time=f"{seconds:.3f}")
     suite = ET.SubElement(suites, "testsuite", name=xml_chars(f"{file} against {against}"),
                           tests=str(len(results)), failures=str(failures), errors=str(errors),
-                          skipped="0", time=f"{seconds:.3f}")
+                          skipped=str(skipped), time=f"{seconds:.3f}")
     named = {"limits": None if limits is None else limits_text(limits), "isolation": isolation}
     if any(value is not None for value in named.values()):
         properties = ET.SubElement(suite, "properties")
@@ -92,7 +93,9 @@ def junit_xml(results: list[CaseResult], file: str, against: str,
     for result in results:
         case = ET.SubElement(suite, "testcase", classname=f"rasterlab.check.{against}",
                              name=xml_chars(result.case.name), time=f"{result.outcome.seconds:.3f}")
-        if not result.passed:
+        if result.outcome.kind == "skipped":
+            ET.SubElement(case, "skipped", message=xml_chars(result.outcome.error))
+        elif not result.passed:
             tag = "failure" if result.outcome.ok else "error"
             detail = ET.SubElement(case, tag, message=xml_chars(result.message()),
                                    type=result.outcome.kind if tag == "error" else "divergence")

@@ -27,11 +27,13 @@ class Checked(NamedTuple):
 
 
 def run_check(file, against: str, cases: list[str], seed: str = "0", time_limit: str = "2",
-              memory_limit: str = "256M", progress=None, require_sandbox: bool = False) -> Checked:
+              memory_limit: str = "256M", progress=None, require_sandbox: bool = False,
+              give_up_after: int = 2) -> Checked:
     """Check ``file`` against the algorithm ``against`` on ``cases`` (hard,
     random N and SCENE.json words). Bad input raises InputError before any
     case runs, as does ``require_sandbox`` where there is no sandbox; each
-    case runs the student's code in its own process (sandbox.py)."""
+    case runs the student's code in its own process (sandbox.py); after
+    ``give_up_after`` time-outs the other cases are skipped (0: never)."""
     path = student.check_file(file)
     spec = registry.get(against)
     checking.kind_of(spec)
@@ -40,7 +42,8 @@ def run_check(file, against: str, cases: list[str], seed: str = "0", time_limit:
     case_limits = limits(time_limit, memory_limit)
     made = checking.make_cases(spec, selectors, number)  # bad scenes are refused before any run
     where = isolation(require_sandbox)
-    results = checking.check(path, spec.name, made, limits=case_limits, progress=progress)
+    results = checking.check(path, spec.name, made, limits=case_limits, progress=progress,
+                             give_up_after=give_up_after)
     held = student.limits_record(case_limits, student.limits_in_force(case_limits))
     return Checked(results, Path(file).name, spec.name, held, where.line())
 

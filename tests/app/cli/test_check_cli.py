@@ -137,3 +137,17 @@ def test_an_output_in_a_missing_folder_is_refused_before_any_case_runs(run_cli, 
     assert out == ""  # not one case ran
     assert err.strip() == f"rasterlab: {words[0]} {words[1]}: the folder {missing} does not exist"
     assert list(tmp_path.glob("*.xml")) == []
+
+
+def test_one_file_that_loops_costs_two_time_limits_not_one_per_case(run_cli, tmp_path):
+    loops = tmp_path / "loops.py"
+    loops.write_text("def draw(x0, y0, x1, y1):\n    while True:\n        pass\n", "utf-8")
+    junit = tmp_path / "grades.xml"
+    status, out, err = run_cli("check", loops, "--against", "line-bresenham", "--cases",
+                               "hard", "--time-limit", "0.3", "--json", "--junit", junit)
+    assert status == 1, err
+    kinds = [case["outcome"] for case in json.loads(out)["cases"]]
+    assert len(kinds) == len(LINE_CASES) > 2
+    assert kinds[:2] == ["time", "time"] and set(kinds[2:]) == {"skipped"}
+    suite = ET.parse(junit).getroot().find("testsuite")
+    assert suite.get("skipped") == str(len(LINE_CASES) - 2) and suite.get("errors") == "2"
