@@ -5,7 +5,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from algorithms.pipeline.space import Camera
+from algorithms.pipeline.space import Camera, to_window
 
 
 @dataclass
@@ -49,3 +49,20 @@ def outside_view(points, options, grid) -> OutsideView | None:
                + (" (drawn shorter)" if far < camera.far else ""))
     return OutsideView(edges, frustum, eye, caption)
 
+
+
+def handle_places(points, options, grid) -> list | None:
+    """Where the viewport puts each vertex on the grid: window (x, y), None for a vertex at or
+    behind the eye (w <= 0, no place on the screen); None when the options make no camera."""
+    try:
+        camera = Camera(options["eye"], options["target"], options["fov"], options["near"],
+                        options["far"], grid[0] / grid[1])
+        z = list(options.get("z") or ())
+        places = []
+        for k, (x, y) in enumerate(points):
+            clip = camera.to_clip(camera.to_eye([float(x), float(y),
+                                                 float(z[k % len(z)]) if z else 0.0]))
+            places.append(to_window(clip, *grid)[:2] if clip[3] > 0 else None)
+    except (KeyError, TypeError, ValueError, ZeroDivisionError):
+        return None
+    return places

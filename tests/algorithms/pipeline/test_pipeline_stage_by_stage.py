@@ -5,12 +5,12 @@ from __future__ import annotations
 
 import json
 
-import numpy as np
 import pytest
 
 from algorithms.core import registry
 from algorithms.core.steps import Table, Vars
 from app.model import shipped
+from tests.support import pipeline as matrices
 
 SPEC = registry.get("pipeline")
 STAGES = ("model", "view", "projection", "clip", "divide", "viewport", "fan")
@@ -22,26 +22,6 @@ def _scene(name):
     points = [tuple(p) for primitive in data["primitives"] for p in primitive["points"]]
     options = SPEC.resolve(data["options"])
     return points, options, (data["grid"]["width"], data["grid"]["height"])
-
-
-def _view_matrix(eye, target):
-    eye, target = np.asarray(eye, float), np.asarray(target, float)
-    forward = (target - eye) / np.linalg.norm(target - eye)
-    side = np.cross(forward, [0.0, 1.0, 0.0])
-    side /= np.linalg.norm(side)
-    up = np.cross(side, forward)
-    rotation = np.identity(4)
-    rotation[0, :3], rotation[1, :3], rotation[2, :3] = side, up, -forward
-    translation = np.identity(4)
-    translation[:3, 3] = -eye
-    return rotation @ translation
-
-
-def _projection_matrix(fov, aspect, near, far):
-    f = 1 / np.tan(np.radians(fov) / 2)
-    return np.array([[f / aspect, 0, 0, 0], [0, f, 0, 0],
-                     [0, 0, (far + near) / (near - far), 2 * far * near / (near - far)],
-                     [0, 0, -1, 0]])
 
 
 def _stage_values(trace, key):
@@ -77,16 +57,9 @@ def test_each_triangle_goes_through_the_stages_in_order():
 def test_each_stage_matches_the_matrices():
     points, options, grid = _scene("rendering/pipeline-cube")
     trace = SPEC.record(points, options, grid)
-    z = options["z"]
-    world = np.array([[x, y, z[k], 1.0] for k, (x, y) in enumerate(points)])
-    view = _view_matrix(options["eye"], options["target"])
-    projection = _projection_matrix(options["fov"], grid[0] / grid[1], options["near"],
-                                    options["far"])
-    eye = world @ view.T
-    clip = eye @ projection.T
-    ndc = clip[:, :3] / clip[:, 3:]
-    window = np.column_stack([(ndc[:, 0] + 1) * grid[0] / 2, (ndc[:, 1] + 1) * grid[1] / 2,
-                              (ndc[:, 2] + 1) / 2])
+    expected = matrices.stages(points, options["z"], options, grid)
+    world, eye, clip, ndc, window = (expected[key] for key in
+                                     ("world", "eye", "clip", "ndc", "window"))
     stages = {key: _stage_values(trace, key)
               for key in ("model", "view", "projection", "divide", "viewport")}
     for n in range(len(points) // 3):
