@@ -3,7 +3,7 @@ from above (x to the right, z downwards), as line segments for a view to draw.""
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 from algorithms.pipeline.space import Camera, to_window
 
@@ -12,8 +12,11 @@ from algorithms.pipeline.space import Camera, to_window
 class OutsideView:
     triangles: list  # [(x0, z0), (x1, z1)] segments of the triangles' edges
     frustum: list  # segments of the frustum (near and far rectangles, the four side edges)
-    eye: tuple  # (x, z)
+    eye: tuple | None  # (x, z) of the camera; None: not in the picture
     caption: str
+    current: list = field(default_factory=list)  # segments of the triangle at the step
+    title: str = "Scene from outside"
+    y_down: bool = True  # a view from above: z grows downwards
 
 
 def outside_view(points, options, grid) -> OutsideView | None:

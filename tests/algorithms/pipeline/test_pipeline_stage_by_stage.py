@@ -25,12 +25,12 @@ def _scene(name):
 
 
 def _stage_values(trace, key):
-    line = SPEC_LINES(trace)[key]
+    line = _lines(trace)[key]
     return [record.values for step, record in trace.records_of(Vars)
             if trace.step(step).line == line]
 
 
-def SPEC_LINES(trace):  # noqa: N802 (a table)
+def _lines(trace):  # noqa: N802 (a table)
     """Line numbers by the start of their text, read from the listing the trace holds."""
     starts = {"model": "for each triangle", "view": "    eye_k = view",
               "projection": "    clip_k = projection", "clip": "    clip against",
@@ -43,7 +43,7 @@ def SPEC_LINES(trace):  # noqa: N802 (a table)
 def test_each_triangle_goes_through_the_stages_in_order():
     points, options, grid = _scene("rendering/pipeline-cube")
     trace = SPEC.record(points, options, grid)
-    lines = SPEC_LINES(trace)
+    lines = _lines(trace)
     stage_of = {line: key for key, line in lines.items()}
     seen = []
     for i in range(1, len(trace)):  # step 0 starts the run

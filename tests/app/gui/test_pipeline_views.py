@@ -61,3 +61,13 @@ def test_the_handles_sit_where_the_viewport_puts_the_vertices(window, qtbot):
     xs, ys = window.grid.handles.getData()
     assert (list(xs), list(ys)) == ([3, 28, 15], [3, 4, 20])  # at the points again
     assert "window space" not in window.message.text()
+
+
+@pytest.mark.window("triangle-bbox", [(3, 3), (28, 4), (15, 20)], {}, (32, 24))
+def test_the_side_picture_follows_the_stage_of_the_step(window, qtbot):
+    _open_pipeline(window, qtbot, (1280, 720))
+    for step, title in ((1, "Model"), (2, "View"), (3, "Projection"), (4, "Clip"),
+                        (5, "Divide"), (6, "Viewport"), (8, "Rasterization")):
+        window.player.seek(step)
+        qtbot.waitUntil(lambda: window.outside_dock.windowTitle().startswith(title),
+                        timeout=WAIT_MS)
