@@ -30,7 +30,7 @@ def _stage_values(trace, key):
             if trace.step(step).line == line]
 
 
-def _lines(trace):  # noqa: N802 (a table)
+def _lines(trace):
     """Line numbers by the start of their text, read from the listing the trace holds."""
     starts = {"model": "for each triangle", "view": "    eye_k = view",
               "projection": "    clip_k = projection", "clip": "    clip against",
