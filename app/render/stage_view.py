@@ -81,7 +81,7 @@ def stage_view(trace, points, options, grid, index, stage) -> OutsideView | None
         view = outside_view(points, options, grid)
         if view is not None:
             view.current = _ring([(p[0], p[2]) for p in world[3 * triangle:3 * triangle + 3]])
-            view.title = "Model: the world from above"
+            view.title = "Model: the world"
         return view
     if stage == "view":
         return _eye_view(camera, eyes, triangle)
@@ -89,13 +89,12 @@ def stage_view(trace, points, options, grid, index, stage) -> OutsideView | None
         return _clip_view(clips, triangle, trace.variables_at(index), stage)
     if stage == "divide":
         polygons = _polygons(trace, index, ("x_ndc", "y_ndc"))
-        return _flat_view(polygons, [(-1, -1), (1, -1), (1, 1), (-1, 1)],
-                          "Divide: NDC, x and y in -1 .. 1",
-                          "x_ndc to the right, y_ndc up; the square is the view volume seen "
-                          "from the camera")
+        return _flat_view(polygons, [(-1, -1), (1, -1), (1, 1), (-1, 1)], "Divide: NDC",
+                          "x_ndc to the right, y_ndc up, each in -1 .. 1: the square is the "
+                          "view volume seen from the camera")
     polygons = _polygons(trace, index, ("x_win", "y_win"))
     width, height = grid
-    title = "Viewport: window space" if stage == "viewport" else "Rasterization: window space"
+    title = "Viewport: window" if stage == "viewport" else "Rasterize: window"
     return _flat_view(polygons, [(0, 0), (width, 0), (width, height), (0, height)], title,
                       f"x_win to the right, y_win up, the grid's {width} x {height} pixels")
 
@@ -123,7 +122,7 @@ def _clip_view(clips, triangle, variables, stage) -> OutsideView:
     caption = "x_clip to the right, w up; inside between the lines x = -w and x = w"
     title = "Projection: clip space"
     if stage == "clip":
-        title = "Clip: the planes that cut"
+        title = "Clip: planes that cut"
         corners = clips[3 * triangle:3 * triangle + 3]
         # A plane cuts when some corner lies outside it (all outside: nothing is left).
         cut = [plane for plane in PLANES if any(distance(plane, c) < 0 for c in corners)]

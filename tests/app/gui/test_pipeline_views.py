@@ -67,7 +67,7 @@ def test_the_handles_sit_where_the_viewport_puts_the_vertices(window, qtbot):
 def test_the_side_picture_follows_the_stage_of_the_step(window, qtbot):
     _open_pipeline(window, qtbot, (1280, 720))
     for step, title in ((1, "Model"), (2, "View"), (3, "Projection"), (4, "Clip"),
-                        (5, "Divide"), (6, "Viewport"), (8, "Rasterization")):
+                        (5, "Divide"), (6, "Viewport"), (8, "Rasterize")):
         window.player.seek(step)
         qtbot.waitUntil(lambda: window.outside_dock.windowTitle().startswith(title),
                         timeout=WAIT_MS)

@@ -37,9 +37,9 @@ def test_the_steps_go_through_the_stages_in_order(pictures):
         title = stages.at(i).title
         if not titles or titles[-1] != title:
             titles.append(title)
-    per_triangle = ["Model: the world from above", "View: eye space", "Projection: clip space",
-                    "Clip: the planes that cut", "Divide: NDC, x and y in -1 .. 1",
-                    "Viewport: window space", "Rasterization: window space"]
+    per_triangle = ["Model: the world", "View: eye space", "Projection: clip space",
+                    "Clip: planes that cut", "Divide: NDC",
+                    "Viewport: window", "Rasterize: window"]
     assert titles == per_triangle * 2
 
 
