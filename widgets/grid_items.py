@@ -353,3 +353,26 @@ def point_label(color) -> pg.TextItem:
     label.setZValue(5)
     label.hide()
     return label
+
+
+def place_labels(labels, texts, anchors, y_down: bool) -> None:
+    """Each point's label by its handle (anchors in grid units, None: the label hidden), above
+    or below it, away from the middle of the points, so that a label does not cover the
+    primitive (on screen, whichever way y runs)."""
+    placed = [a for a in anchors if a is not None]
+    if not placed:
+        for label in labels:
+            label.hide()
+        return
+    cx = sum(a.x() for a in placed) / len(placed)
+    cy = sum(a.y() for a in placed) / len(placed)
+    for label, text, at in zip(labels, texts, anchors):
+        label.setVisible(at is not None)
+        if at is None:
+            continue
+        label.setText(text)
+        dy = -(at.y() - cy) if y_down else at.y() - cy
+        if dy == 0:
+            dy = at.x() - cx if len(placed) > 1 else 1.0
+        label.setAnchor((0.5, 1.35) if dy >= 0 else (0.5, -0.35))
+        label.setPos(at)

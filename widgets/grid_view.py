@@ -44,7 +44,7 @@ from app.model.inputs import clamp
 from .grid_box import GridViewBox
 from .axes_frame import axes_frame
 from .grid_items import (CellOutlines, GridLinesItem, PixelAxis, handle_items, number_text,
-                         path_xy, point_label, primitive_curves, translucent)
+                         path_xy, place_labels, point_label, primitive_curves, translucent)
 
 
 HANDLE_HIT = 12   # screen pixels from a handle's centre that grab it
@@ -156,6 +156,7 @@ class PixelGridView(pg.GraphicsView):
         self._shown = None  # the array the image item shows
         self._rules = Tool()
         self._sketch = Sketch()  # the points on show, as last given
+        self._places = None  # where the handles sit when not at the points
         self._integer = True
         self._names: tuple[str, ...] = ()
         self._closed = False
@@ -393,6 +394,13 @@ class PixelGridView(pg.GraphicsView):
         self.outlines.set_layer("difference", cells)
 
     # -------------------------------------------------------- geometry
+    def set_handle_places(self, places=None) -> None:
+        """Draw the handles at these grid positions, one per point (None: that one not drawn),
+        and let none be dragged: for a grid that shows the points transformed (the pipeline's
+        window space). None: the handles at the points again."""
+        self._places = None if places is None else list(places)
+        self._refresh_points()
+
     def anchor(self, point) -> QPointF:
         """Where a point's handle sits, in grid units."""
         x, y = point
@@ -453,6 +461,8 @@ class PixelGridView(pg.GraphicsView):
 
     # ----------------------------------------------------------- mouse
     def _handle_at(self, scene_pos) -> int | None:
+        if self._places is not None:  # handles at places of their own do not move the points
+            return None
         best, best_distance = None, HANDLE_HIT
         for index, point in enumerate(self._sketch.points):
             distance = self._screen_distance(self.anchor(point), scene_pos)
@@ -597,10 +607,15 @@ class PixelGridView(pg.GraphicsView):
         self._box.addItem(label)
         return label
 
+    def _anchors(self) -> list:
+        """Where the handles sit: at the points, or at the places given (None: not drawn)."""
+        if self._places is None:
+            return [self.anchor(p) for p in self._sketch.points]
+        return [None if p is None else QPointF(*p) for p in self._places]
+
     def _refresh_points(self) -> None:
-        points = self._sketch.points
-        anchors = [self.anchor(p) for p in points]
-        self.handles.setData(pos=[(a.x(), a.y()) for a in anchors])
+        anchors = self._anchors()
+        self.handles.setData(pos=[(a.x(), a.y()) for a in anchors if a is not None])
         shown = len(anchors) if len(anchors) <= MAX_LABELS else 0
         while len(self._labels) < shown:
             self._labels.append(self._make_label(self.palette.handle_edge))
@@ -624,29 +639,15 @@ class PixelGridView(pg.GraphicsView):
 
     def _place_labels(self) -> None:
         points = self._sketch.points
-        anchors = [self.anchor(p) for p in points]
+        anchors = self._anchors()
         if not anchors or not self._labels:
             return
-        names = self.labels()
         # Coordinates in the label while there are few points; with many the
         # points editor lists them and the labels only name them.
         with_numbers = self._rules.mode in (FIXED, CIRCLE)
-        cx = sum(a.x() for a in anchors) / len(anchors)
-        cy = sum(a.y() for a in anchors) / len(anchors)
-        for label, name, point, at in zip(self._labels, names, points, anchors):
-            text = f"{name} ({number_text(point[0])}, {number_text(point[1])})" if with_numbers \
-                else name
-            label.setText(text)
-            # Above or below the handle, away from the middle of the points,
-            # so a label does not cover the primitive (on screen, whichever
-            # way y runs).
-            dy = at.y() - cy
-            if self._y_down:
-                dy = -dy
-            if dy == 0:
-                dy = at.x() - cx if len(anchors) > 1 else 1.0
-            label.setAnchor((0.5, 1.35) if dy >= 0 else (0.5, -0.35))
-            label.setPos(at)
+        texts = [f"{name} ({number_text(p[0])}, {number_text(p[1])})" if with_numbers else name
+                 for name, p in zip(self.labels(), points)]
+        place_labels(self._labels, texts, anchors, self._y_down)
 
     def _rim_position(self) -> QPointF | None:
         if not self._circle or not self._sketch.points:

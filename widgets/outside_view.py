@@ -1,4 +1,5 @@
-"""The pipeline's scene from outside: triangles, camera and frustum, seen from above."""
+"""The pipeline's side picture: the stage's triangles (the one at the step drawn apart), with
+the camera and frustum, the clip planes or the frame of NDC or the window."""
 from __future__ import annotations
 
 import numpy as np
@@ -9,6 +10,7 @@ from widgets.depth_view import quiet_plot
 
 SCENE_PEN = (40, 40, 40)
 FRUSTUM_PEN = (25, 113, 194)
+CURRENT_PEN = (230, 73, 55)
 
 
 def _pairs(segments):
@@ -28,8 +30,10 @@ class OutsideView(QWidget):
         box.invertY(True)  # z grows downwards: the camera looks up the picture towards -z
         self.scene_lines = pg.PlotDataItem(connect="pairs", pen=pg.mkPen(SCENE_PEN, width=1.5))
         self.frustum_lines = pg.PlotDataItem(connect="pairs", pen=pg.mkPen(FRUSTUM_PEN, width=1.5))
+        self.current_lines = pg.PlotDataItem(connect="pairs",
+                                             pen=pg.mkPen(CURRENT_PEN, width=2.5))
         self.eye = pg.ScatterPlotItem(symbol="o", size=9, brush=pg.mkBrush(FRUSTUM_PEN))
-        for part in (self.scene_lines, self.frustum_lines, self.eye):
+        for part in (self.scene_lines, self.frustum_lines, self.current_lines, self.eye):
             box.addItem(part)
         self.caption = QLabel(self)
         self.caption.setWordWrap(True)
@@ -40,13 +44,20 @@ class OutsideView(QWidget):
 
     def set_view(self, view) -> None:
         if view is None:
-            for part in (self.scene_lines, self.frustum_lines):
+            for part in (self.scene_lines, self.frustum_lines, self.current_lines):
                 part.setData([], [])
             self.eye.setData([])
             self.caption.setText("")
             return
         self.scene_lines.setData(*_pairs(view.triangles))
         self.frustum_lines.setData(*_pairs(view.frustum))
-        self.eye.setData([view.eye[0]], [view.eye[1]])
+        self.current_lines.setData(*_pairs(view.current))
+        if view.eye is None:
+            self.eye.setData([])
+        else:
+            self.eye.setData([view.eye[0]], [view.eye[1]])
         self.caption.setText(view.caption)
-        self.plot.getViewBox().autoRange(padding=0.08)
+        self.caption.setToolTip(view.caption)
+        box = self.plot.getViewBox()
+        box.invertY(view.y_down)
+        box.autoRange(padding=0.08)

@@ -1,16 +1,19 @@
 """The texture panel: the texture level in use with the pixel's footprint and the texels
 fetched, and beside it the grid coloured by the mip level each pixel read.
 
-It shows what it is given (``app.render.texture_frame``) and nothing else.
+It shows what it is given (``app.render.texture_frame``) and nothing else. The pictures keep
+at least a quarter of the window's height, so that a crowded dock column cannot squeeze them
+to a strip, and the texts wrap, each whole in its tooltip.
 """
 from __future__ import annotations
 
 import numpy as np
 import pyqtgraph as pg
-from PySide6.QtCore import Signal
+from PySide6.QtCore import QEvent, Signal
 from PySide6.QtWidgets import QHBoxLayout, QLabel, QPushButton, QVBoxLayout, QWidget
 
 FOOTPRINT = (230, 30, 30)
+SMALLEST_PICTURE = 120  # px: the pictures' height however small the window
 
 
 def _plot(parent, background) -> tuple:
@@ -65,6 +68,24 @@ class TextureView(QWidget):
         layout.addWidget(self.legend)
         self._sizes = {}
         self.footprint_points: list = []
+        for label in (self.caption, self.legend):
+            # Two lines at least: the dock may not take a wrapped label's height into account.
+            label.setMinimumHeight(2 * label.fontMetrics().lineSpacing() + 2)
+
+    def showEvent(self, event):  # noqa: N802 (Qt naming)
+        self.window().installEventFilter(self)  # installed once: Qt moves a repeat to the front
+        self._fit_pictures()
+        super().showEvent(event)
+
+    def eventFilter(self, watched, event):  # noqa: N802 (Qt naming)
+        if watched is self.window() and event.type() == QEvent.Type.Resize:
+            self._fit_pictures()
+        return False
+
+    def _fit_pictures(self) -> None:
+        height = max(SMALLEST_PICTURE, self.window().height() // 4)
+        for plot in (self.texture_plot, self.level_plot):
+            plot.setMinimumHeight(height)
 
     def set_picture(self, picture) -> None:
         """Show a TexturePicture (None: clear)."""
@@ -72,7 +93,7 @@ class TextureView(QWidget):
             self.texture_image.clear()
             self.footprint.setData([], [])
             self.fetches.setData([])
-            self.caption.setText("")
+            self._say(self.caption, "")
             return
         self._show(self.texture_plot, self.texture_image, picture.image, "texture")
         self.footprint_points = list(picture.footprint)
@@ -87,14 +108,19 @@ class TextureView(QWidget):
         self.fetches.setData([{"pos": (i + 0.5, j + 0.5), "size": size,
                                "brush": pg.mkBrush(255, 255, 0, int(60 + 180 * min(w * 4, 1)))}
                               for i, j, w in picture.texels])
-        self.caption.setText(picture.caption)
+        self._say(self.caption, picture.caption)
 
     def set_levels(self, rgba, legend: str = "") -> None:
         if rgba is None:
             self.level_image.clear()
         else:
             self._show(self.level_plot, self.level_image, rgba, "levels")
-        self.legend.setText(legend)
+        self._say(self.legend, legend)
+
+    @staticmethod
+    def _say(label, text: str) -> None:
+        label.setText(text)
+        label.setToolTip(text)
 
     def set_y_down(self, y_down: bool) -> None:
         self.level_plot.getViewBox().invertY(bool(y_down))

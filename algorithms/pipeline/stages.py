@@ -29,7 +29,7 @@ from algorithms.core.steps import PLOT, VISIT, Note, Start, Table, Vars
 from algorithms.textures import texels
 from algorithms.textures.sampling import Mapping, Sampler
 
-from .space import PLANES, Camera, clip_polygon, normalized, to_window
+from .space import PLANES, Camera, clip_polygon, distance, normalized, to_window
 
 AMBIENT = 0.2
 # Products of coordinates stay far inside the float range (and the window's).
@@ -42,17 +42,24 @@ FRAGMENT_OPS = {"int_add": 7, "mul": 30, "compare": 5, "pixels_tested": 1, "floa
 
 def pipeline_code(options) -> Code:
     code = Code()
-    code.add("transform", "for each triangle, each vertex p:  eye = view (p - eye);  "
-                          "clip = projection eye   (w = -z_eye)", ops={"mul": 48, "float_add": 45})
+    code.add("model", "for each triangle, each vertex k:  world_k = model p_k   (the points are "
+                      "given in world coordinates: the model matrix is the identity)")
+    code.add("view", "    eye_k = view (world_k - camera):  x_eye = side . d,  y_eye = up . d,  "
+                     "z_eye = -forward . d", ops={"mul": 27, "float_add": 36})
+    code.add("projection", "    clip_k = projection eye_k:  x_clip = f/aspect x_eye,  y_clip = "
+                           "f y_eye,  z_clip = A z_eye + B,  w = -z_eye",
+             ops={"mul": 21, "float_add": 9})
     planes = {"all": "near, far, left, right, bottom, top", "near": "the near plane",
               "none": "nothing (every w must be > 0)"}[options["clipping"]]
-    code.add("clip", f"    clip against {planes}: Sutherland-Hodgman in clip space, "
-                     "d = w + z (near), w - z (far), w +- x, w +- y; a crossing edge gains "
-                     "a + t (b - a), t = d_a / (d_a - d_b)")
-    code.add("viewport", "    each corner: ndc = (x, y, z) / w;  window = ((x + 1) W/2, "
-                         "(y + 1) H/2, (z + 1)/2)", ops={"div": 3, "mul": 3, "float_add": 3})
-    code.add("fan", "    for each triangle (C0, Ck, Ck+1) of the polygon: snap and set up its "
-                    "edges (the triangle family's rasterizer)")
+    code.add("clip", f"    clip against {planes}: inside when d >= 0, d = w + z (near), "
+                     "w - z (far), w +- x, w +- y; a crossing edge gains a + t (b - a), "
+                     "t = d_a / (d_a - d_b)")
+    code.add("divide", "    each corner C_k:  x_ndc = x_clip / w,  y_ndc = y_clip / w,  "
+                       "z_ndc = z_clip / w", ops={"div": 3})
+    code.add("viewport", "    x_win = (x_ndc + 1) W/2,  y_win = (y_ndc + 1) H/2,  "
+                         "depth = (z_ndc + 1)/2", ops={"mul": 3, "float_add": 3})
+    code.add("fan", "    rasterize each triangle (C0, Ck, Ck+1) of the polygon: snap and set up "
+                    "its edges (the triangle family's rasterizer)")
     shade = {"flat": "colour = the triangle's (face normal, mean colour)",
              "gouraud": "colour = sum b'_k colour_k (lit at the vertices)",
              "phong": "N = normalize(sum b'_k N_k); colour = base (0.2 + 0.8 max(0, N.L))"
@@ -136,7 +143,7 @@ def pipeline(points, options, grid):
     at = pipeline_code(options).at
     # u and v are columns only when the scene has them (uv or a texture).
     uv = ("u", "v") if world.has_uv else ()
-    yield Start(line=at["transform"], values=("depth", "zb", "w", *uv, "rgb"),
+    yield Start(line=at["model"], values=("depth", "zb", "w", *uv, "rgb"),
                 constants={"shading": options["shading"], "clipping": options["clipping"],
                            "triangles": len(points) // 3}, pixel_value="rgb", depth_value="depth")
     state = {"color": np.full((height, width), -1.0), "depth": np.full((height, width), np.inf),
@@ -152,7 +159,7 @@ def pipeline(points, options, grid):
 
 def _triangle(n, world, camera, planes, options, state, at, grid):
     corners = []
-    shown = {"triangle": n + 1}
+    eyes = []
     for k in range(3):
         index = 3 * n + k
         eye = camera.to_eye(world.positions[index])
@@ -160,27 +167,32 @@ def _triangle(n, world, camera, planes, options, state, at, grid):
         normal = world.normals[index] if world.normals else world.face_normal(n)
         color = world.colors[index]
         lit = world.shade(color, normal)
+        eyes.append(eye)
         corners.append([*clip, *color, *normal, *world.uv[index], *lit])
-        shown |= {f"world{k}": tuple(world.positions[index]), f"eye{k}": tuple(eye),
-                  f"clip{k}": tuple(clip)}
         state["clip"].append(tuple(clip))
-    yield Vars(line=at["transform"], values=shown)
+    triangle = {"triangle": n + 1}
+    yield Vars(line=at["model"], values=triangle | _named(
+        ("x_world", "y_world", "z_world"), world.positions[3 * n:3 * n + 3]))
+    yield Vars(line=at["view"], values=_named(("x_eye", "y_eye", "z_eye"), eyes))
+    yield Vars(line=at["projection"], values=_named(("x_clip", "y_clip", "z_clip", "w"),
+                                                     [c[:4] for c in corners]))
     if not planes and any(not c[3] > 0 for c in corners):
         raise InputError(f"triangle {n + 1} has a vertex with w <= 0 (at or behind the eye): "
                          "set clipping to near or all")
     polygon, report = clip_polygon(corners, planes)
     if planes:
-        yield Table(line=at["clip"], name="clipping", columns=("plane", "corners in", "out"),
-                    rows=tuple(report))
+        yield Table(line=at["clip"], name="clipping", columns=CLIP_COLUMNS,
+                    rows=clip_rows(corners, planes, report))
     if len(polygon) < 3:
         yield Note(line=at["clip"], text=f"Triangle {n + 1} lies outside the view volume: "
                                          "nothing is left to draw.")
         return
+    yield Vars(line=at["divide"], values={"corners": len(polygon)} | _named(
+        ("x_ndc", "y_ndc", "z_ndc"), [[float(v / c[3]) for v in c[:3]] for c in polygon])
+        | {f"w_C{k}": float(c[3]) for k, c in enumerate(polygon)})
     windows = [to_window(c, *grid) for c in polygon]
     state["window"] += [tuple(float(v) for v in p) for p in windows]
-    yield Vars(line=at["viewport"], values={f"C{k}": tuple(round(float(v), 6) for v in p)
-                                            for k, p in enumerate(windows)}
-               | {f"w(C{k})": float(c[3]) for k, c in enumerate(polygon)})
+    yield Vars(line=at["viewport"], values=_named(("x_win", "y_win", "depth"), windows))
     face = (world.colors[3 * n:3 * n + 3], world.face_normal(n))
     for k in range(1, len(polygon) - 1):
         fan = [polygon[0], polygon[k], polygon[k + 1]]
@@ -191,6 +203,28 @@ def _triangle(n, world, camera, planes, options, state, at, grid):
                    | {f"H{m}": tuple(float(v) for v in c[:4])
                       for m, c in enumerate((polygon[0], polygon[k], polygon[k + 1]))})
         yield from _fragments(fan, corners, face, world, options, state, at)
+
+
+CLIP_COLUMNS = ("plane", "inside when", "vertices in", "out", "corners after")
+INSIDE = {"near": "-w <= z", "far": "z <= w", "left": "-w <= x", "right": "x <= w",
+          "bottom": "-w <= y", "top": "y <= w"}
+
+
+def clip_rows(vertices, planes, report) -> tuple:
+    """Per plane: its inequality, how many of the triangle's vertices pass it and how many do
+    not, and the corners the polygon has after the cut (a dash once nothing is left)."""
+    after = {plane: left for plane, _, left in report}
+    rows = []
+    for plane in planes:
+        inside = sum(1 for v in vertices if distance(plane, v) >= 0)
+        rows.append((plane, INSIDE[plane], inside, len(vertices) - inside,
+                     after.get(plane, "-")))
+    return tuple(rows)
+
+
+def _named(names, rows) -> dict:
+    """Short variables per vertex: x_eye0, y_eye0, z_eye0, x_eye1, ..."""
+    return {f"{name}{k}": float(v) for k, row in enumerate(rows) for name, v in zip(names, row)}
 
 
 def _fragments(fan, windows, face, world, options, state, at):

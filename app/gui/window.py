@@ -629,6 +629,8 @@ class MainWindow(QMainWindow):
             step = note_at(trace, self._notes, player.index)
             if step is not None:
                 text = f"Step {step:,}: {trace.record_at(step).text}"
+        if not text:
+            text = self.texture_display.handle_note
         self._say(text, error)
 
     def _say(self, text: str, error: bool = False) -> None:

@@ -80,10 +80,11 @@ def projected_paths(trace) -> list:
     pipeline's primitive as the screen sees it, from its viewport steps."""
     paths = []
     for _, record in trace.records_of(Vars):
-        if "w(C0)" not in record.values:  # not a viewport step
+        if "x_win0" not in record.values:  # not a viewport step
             continue
-        corners = [record.values[f"C{k}"][:2] for k in range(len(record.values))
-                   if f"C{k}" in record.values]
+        values = record.values
+        corners = [(values[f"x_win{k}"], values[f"y_win{k}"]) for k in range(len(values))
+                   if f"x_win{k}" in values]
         if len(corners) >= 3:
             paths.append(([tuple(float(v) for v in c) for c in corners], True))
     return paths

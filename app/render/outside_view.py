@@ -3,17 +3,20 @@ from above (x to the right, z downwards), as line segments for a view to draw.""
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
-from algorithms.pipeline.space import Camera
+from algorithms.pipeline.space import Camera, to_window
 
 
 @dataclass
 class OutsideView:
     triangles: list  # [(x0, z0), (x1, z1)] segments of the triangles' edges
     frustum: list  # segments of the frustum (near and far rectangles, the four side edges)
-    eye: tuple  # (x, z)
+    eye: tuple | None  # (x, z) of the camera; None: not in the picture
     caption: str
+    current: list = field(default_factory=list)  # segments of the triangle at the step
+    title: str = "Scene from outside"
+    y_down: bool = True  # a view from above: z grows downwards
 
 
 def outside_view(points, options, grid) -> OutsideView | None:
@@ -49,3 +52,20 @@ def outside_view(points, options, grid) -> OutsideView | None:
                + (" (drawn shorter)" if far < camera.far else ""))
     return OutsideView(edges, frustum, eye, caption)
 
+
+
+def handle_places(points, options, grid) -> list | None:
+    """Where the viewport puts each vertex on the grid: window (x, y), None for a vertex at or
+    behind the eye (w <= 0, no place on the screen); None when the options make no camera."""
+    try:
+        camera = Camera(options["eye"], options["target"], options["fov"], options["near"],
+                        options["far"], grid[0] / grid[1])
+        z = list(options.get("z") or ())
+        places = []
+        for k, (x, y) in enumerate(points):
+            clip = camera.to_clip(camera.to_eye([float(x), float(y),
+                                                 float(z[k % len(z)]) if z else 0.0]))
+            places.append(to_window(clip, *grid)[:2] if clip[3] > 0 else None)
+    except (KeyError, TypeError, ValueError, ZeroDivisionError):
+        return None
+    return places

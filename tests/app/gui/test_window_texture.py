@@ -77,7 +77,9 @@ def test_a_png_opened_in_the_window_is_the_texture(window, qtbot):
 def test_the_pipeline_shows_the_scene_from_outside(window, qtbot):
     qtbot.waitUntil(lambda: window.outside_dock is not None and window.outside_dock.isVisible(),
                     timeout=WAIT_MS)
-    assert "Camera at (16.0, 12.0, 40.0)" in window.outside_view.caption.text()
+    window.player.seek(1)  # the model stage: the world from above
+    qtbot.waitUntil(lambda: "Camera at (16.0, 12.0, 40.0)" in window.outside_view.caption.text(),
+                    timeout=WAIT_MS)
     window.set_option("near", 0.0)
     qtbot.waitUntil(lambda: "near" in window._error, timeout=WAIT_MS)
 
