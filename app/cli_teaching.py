@@ -171,9 +171,12 @@ def command_template(args) -> int:
     if out.exists() and not args.force:
         raise InputError(f"{out}: exists; add --force to replace it")
     write_atomically(out, text.encode("utf-8"), error=OSError)
-    how = "" if out.suffix == ".py" else " --cmd ..."
-    print(f"{out}: the {args.name} template; check it with `rasterlab check{how} {out.name} "
-          f"--against ...` (the file says how and against which algorithms)")
+    if out.suffix == ".py":
+        print(f"{out}: the {args.name} template; check it with `rasterlab check {out.name} "
+              f"--against ...` (the file says which algorithms)")
+    else:
+        print(f"{out}: the {args.name} template; check the program with `rasterlab check "
+              f"--cmd ...` (the file says how, and against which algorithms)")
     return 0
 
 

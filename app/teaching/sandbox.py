@@ -2,8 +2,9 @@
 as this system allows, and ended whole with its case.
 
 Each case gets a fresh private scratch folder holding a copy of the runner
-(student_child.py) and of the student's file; nothing else of RasterLab is
-copied. On Linux, when bubblewrap (``bwrap``) can start a sandbox here, the
+(student_child.py) and of the student's file (or, for ``check --cmd``, the
+submission's folder); nothing else of RasterLab is copied. A program the
+command names (node, a JVM) is shown read-only as well (student_command.py). On Linux, when bubblewrap (``bwrap``) can start a sandbox here, the
 child runs inside one: the scratch folder is the only writable place and,
 besides it, only the Python interpreter, its standard library (without
 site-packages) and the system's shared libraries are visible, read-only;
