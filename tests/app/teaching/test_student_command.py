@@ -16,7 +16,7 @@ import pytest
 
 from algorithms.core.errors import InputError
 from app.model import shipped
-from app.teaching import sandbox, student_answer, student_command
+from app.teaching import student_answer, student_command
 from app.teaching.sandbox import Ran
 from app.teaching.student_answer import NoAnswer
 
