@@ -12,7 +12,8 @@ PROGRAM = (find_packages(include=["algorithms*", "app*", "widgets*"])
 setup(
     packages=["rasterlab", *(f"rasterlab._lib.{name}" for name in PROGRAM)],
     package_dir={"rasterlab": "rasterlab", **{f"rasterlab._lib.{top}": top for top in TOP}},
-    package_data={"": ["*.json", "*.html", "*.py", "*.png", "*.ttf", "LICENSE.txt"]},
+    package_data={"": ["*.json", "*.html", "*.py", "*.c", "*.cpp", "*.js", "*.png", "*.ttf",
+                      "LICENSE.txt"]},
     # The README's pictures stay in the repository.
     exclude_package_data={"rasterlab._lib.resources": ["*.png", "*.gif"]},
 )

@@ -12,12 +12,12 @@ from __future__ import annotations
 import json
 import sys
 import time
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from pathlib import Path
 
 from algorithms.core.registry import InputError
 from app.model.files import Output, check_folders, check_outputs, not_ours, write_atomically
-from app.teaching import batch, grade_formats
+from app.teaching import batch, grade_formats, student_command
 
 FORMATS = ("gradescope", "prairielearn", "coderunner")
 BATCH_OPTIONS = ("format", "out", "csv", "points", "id_from", "jobs", "give_up_after")
@@ -46,11 +46,13 @@ def prepare(args) -> Prepared:
         raise InputError("--out names where --format writes; give --format too")
     if args.json and args.format is not None:
         raise InputError("--json and --format both print to stdout; give one of them")
-    submissions = batch.find_submissions(args.submissions, args.id_from)
+    command = None if args.cmd is None else student_command.parse(args.cmd)
+    submissions = batch.find_submissions(args.submissions, args.id_from, command)
     jobs = batch.parse_count(args.jobs, "--jobs", 1, 1, batch.MAX_JOBS)
     give_up = batch.parse_count(args.give_up_after, "--give-up-after", 2, 0, 10_000)
     plan = batch.plan(args.against, args.cases, args.seed, args.time_limit, args.memory_limit,
                       args.points, give_up)
+    plan = replace(plan, command=command)
     outs = _format_outputs(args, submissions)
     outputs = [Output("--junit", args.junit, foreign=not_ours("xml")),
                Output("--csv", args.csv, foreign=not_ours("csv"))]
@@ -83,10 +85,11 @@ def run(args, prepared: Prepared, isolation: str) -> int:
     """Grade every submission, print and write; 0 when all pass, 1 otherwise."""
     from app.progress import GradingBar
     from app.teaching import student
+    from app.teaching.check_run import limits_held
     plan = prepared.plan
     quiet = args.json or (args.format is not None and not prepared.outs)
     say = (lambda line: None) if quiet else print
-    held = student.limits_record(plan.limits, student.limits_in_force(plan.limits))
+    held = student.limits_record(plan.limits, limits_held(plan.limits, plan.command))
     say(f"grading {grade_formats.counted(len(prepared.submissions), 'submission')} against {plan.spec.name}: "
         f"{len(plan.cases)} cases, {grade_formats.number(plan.max_score)} points each")
     say(student.limits_text(held))

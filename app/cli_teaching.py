@@ -38,8 +38,15 @@ def add_check_command(parser, commands) -> None:
                     "Exit status 0 when all pass, 1 when some fail, 2 for bad input, 3 when "
                     "RasterLab itself failed.")
     check.add_argument("submissions", nargs="+", metavar="SUBMISSION",
-                       help="a student's .py file, or a folder holding one; the student's id "
-                            "is the folder's name or the file's name (see --id-from)")
+                       help="a student's .py file, or a folder holding one (with --cmd, the "
+                            "folder or file the command runs); the student's id is the "
+                            "folder's name or the file's name (see --id-from)")
+    check.add_argument("--cmd", metavar="COMMAND",
+                       help="grade a program in any language: COMMAND runs in each submission "
+                            "(a folder, copied whole, or a file; {} is the file's name), e.g. "
+                            "./raster or \"node {}\", reading each case as a JSON line on "
+                            "stdin and writing JSON lines of steps (`rasterlab template` "
+                            "lists C, C++ and JavaScript starting files)")
     check.add_argument("--against", required=True, metavar="ALG",
                        help="the reference algorithm: a line, circle, triangle or polygon "
                             "algorithm of `rasterlab list` (e.g. line-bresenham, circle-midpoint, "
@@ -120,7 +127,7 @@ def _checked(args) -> int:
     try:
         checked = run_check(args.submissions[0], args.against, args.cases, args.seed, args.time_limit,
                             args.memory_limit, bar if bar.active else None,
-                            args.require_sandbox)
+                            args.require_sandbox, args.cmd)
     finally:
         bar.clear()
     if args.junit:
@@ -139,14 +146,15 @@ def add_template_command(parser, commands) -> None:
         commands, "template", help="write the starting file of a student's own algorithm",
         description="With no NAME, list the templates. With NAME, print that template, or "
                     "write it to --out: a Python file with the generator draw(...) to fill in, "
-                    "which `rasterlab check` then grades.")
+                    "which `rasterlab check` then grades, or a C, C++ or JavaScript program "
+                    "for `rasterlab check --cmd`.")
     template.add_argument("name", nargs="?", metavar="NAME", help="a template, as the list names it")
-    template.add_argument("--out", metavar="FILE.py", help="write the template into FILE.py")
-    template.add_argument("--force", action="store_true", help="replace FILE.py if it exists")
+    template.add_argument("--out", metavar="FILE", help="write the template into FILE")
+    template.add_argument("--force", action="store_true", help="replace FILE if it exists")
 
 
 def command_template(args) -> int:
-    found = shipped.templates()
+    found = {**shipped.templates(), **shipped.program_templates()}
     if args.name is None:
         if args.out:
             raise InputError("--out needs a template NAME")
@@ -164,8 +172,12 @@ def command_template(args) -> int:
     if out.exists() and not args.force:
         raise InputError(f"{out}: exists; add --force to replace it")
     write_atomically(out, text.encode("utf-8"), error=OSError)
-    print(f"{out}: the {args.name} template; check it with `rasterlab check {out.name} "
-          f"--against ...` (the file says which algorithms)")
+    if out.suffix == ".py":
+        print(f"{out}: the {args.name} template; check it with `rasterlab check {out.name} "
+              f"--against ...` (the file says which algorithms)")
+    else:
+        print(f"{out}: the {args.name} template; check the program with `rasterlab check "
+              f"--cmd ...` (the file says how, and against which algorithms)")
     return 0
 
 

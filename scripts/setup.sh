@@ -35,6 +35,10 @@ fi
 if [ "$MODE" = test ] && ! command -v google-chrome >/dev/null 2>&1; then
   SYSTEM_PACKAGES="$SYSTEM_PACKAGES chromium chromium-driver"
 fi
+# The tests build the C and C++ templates of `check --cmd` (skipped without a compiler).
+if [ "$MODE" = test ]; then
+  SYSTEM_PACKAGES="$SYSTEM_PACKAGES gcc g++"
+fi
 
 if command -v apt-get >/dev/null 2>&1 && command -v dpkg >/dev/null 2>&1; then
   missing=""

@@ -54,10 +54,21 @@ def templates() -> dict[str, Path]:
     return {path.stem: path for path in sorted(TEMPLATES.glob("*.py"))}
 
 
+PROGRAM_TEMPLATES = (".c", ".cpp", ".js")  # programs for `check --cmd`
+
+
+def program_templates() -> dict[str, Path]:
+    """The starting files of a program in another language, for `check --cmd`,
+    by file name ("line.c", "line.js", ...)."""
+    return {path.name: path for path in sorted(TEMPLATES.iterdir())
+            if path.suffix in PROGRAM_TEMPLATES}
+
+
 def template_title(path: Path) -> str:
-    """A template's docstring title ("A line algorithm of your own, ...")."""
+    """A template's title, the first line of its docstring or comment
+    ("A line algorithm of your own, ...")."""
     for line in path.read_text(encoding="utf-8").splitlines():
-        text = line.strip().strip('"').strip()
+        text = line.strip().strip('"').strip("/*").strip()
         if text:
             return text
     return ""

@@ -2,7 +2,8 @@
 
 Each submission is a student's .py file, or a folder holding exactly one
 (the student's id is the folder's name, the file's name without .py, or
-the one group of an ``--id-from`` pattern searched in the path). Every
+the one group of an ``--id-from`` pattern searched in the path); with
+``--cmd``, a folder or file that the command runs (student_command.py). Every
 submission gets the same cases (``Plan``), whose reference steps are made
 once; ``grade_all`` grades ``jobs`` submissions at a time (threads that
 each drive one case's child process at a time: the children do the work).
@@ -22,7 +23,7 @@ from pathlib import Path
 
 from algorithms.core import registry
 from algorithms.core.registry import InputError, parse_number
-from app.teaching import checking, student
+from app.teaching import checking, student, student_command
 from app.teaching.checking import CaseResult
 from app.teaching.student import Outcome
 
@@ -32,18 +33,20 @@ MAX_JOBS = 64
 
 @dataclass(frozen=True)
 class Submission:
-    """One student's file and id."""
+    """One student's id and file (or folder, for --cmd), and the
+    student_command.Program that runs it, for --cmd."""
 
     id: str
     path: Path
+    program: object = None
 
 
 @dataclass(frozen=True)
 class Plan:
     """What every submission is graded on: the reference, its options, the
     cases with their kind and reference steps, the limits, the points per
-    kind and after how many time-outs a submission's other cases are skipped
-    (0: never)."""
+    kind, after how many time-outs a submission's other cases are skipped
+    (0: never) and the command that runs each submission (--cmd)."""
 
     spec: object
     options: dict
@@ -51,6 +54,7 @@ class Plan:
     limits: student.Limits
     points: dict
     give_up_after: int
+    command: object = None  # the student_command.Command of --cmd
 
     @property
     def max_score(self) -> float:
@@ -131,14 +135,19 @@ class Graded:
 
 
 # ------------------------------------------------------------- submissions
-def find_submissions(words: list[str], id_from: str | None = None) -> list[Submission]:
+def find_submissions(words: list[str], id_from: str | None = None,
+                     command=None) -> list[Submission]:
     """The submissions the words name, in their order (InputError for a
-    missing or unusable one, and for two with one id)."""
+    missing or unusable one, and for two with one id); with ``command``
+    (a student_command.Command) each is a folder or a file that it runs."""
     pattern = _id_pattern(id_from)
     found, seen = [], {}
     for word in words:
-        path = submission_file(word)
-        made = Submission(student_id(word, pattern), path)
+        if command is None:
+            made = Submission(student_id(word, pattern), submission_file(word))
+        else:
+            program = student_command.program_for(command, word)
+            made = Submission(student_id(word, pattern), program.path, program)
         if made.id in seen:
             raise InputError(f"{word}: its id {made.id!r} is also that of {seen[made.id]}; "
                              "give --id-from a pattern that tells them apart")
@@ -240,7 +249,8 @@ def grade(submission: Submission, plan: Plan, on_case=None) -> Graded:
         if plan.give_up_after and timeouts >= plan.give_up_after:
             result = checking.skipped_result(case, timeouts)
         else:
-            result = checking.check_case(plan.spec, plan.options, submission.path, case,
+            result = checking.check_case(plan.spec, plan.options,
+                                         submission.program or submission.path, case,
                                          plan.limits, expected)
             timeouts += result.outcome.kind == "time"
         graded.append(GradedCase(result, kind, plan.points[kind]))

@@ -11,7 +11,7 @@ from typing import NamedTuple
 from algorithms.core import registry
 from algorithms.core.registry import InputError, parse_number
 from app.model import budget
-from app.teaching import checking, sandbox, student
+from app.teaching import checking, sandbox, student, student_command
 
 
 class Checked(NamedTuple):
@@ -28,13 +28,17 @@ class Checked(NamedTuple):
 
 def run_check(file, against: str, cases: list[str], seed: str = "0", time_limit: str = "2",
               memory_limit: str = "256M", progress=None, require_sandbox: bool = False,
-              give_up_after: int = 2) -> Checked:
+              command: str | None = None, give_up_after: int = 2) -> Checked:
     """Check ``file`` against the algorithm ``against`` on ``cases`` (hard,
-    random N and SCENE.json words). Bad input raises InputError before any
-    case runs, as does ``require_sandbox`` where there is no sandbox; each
+    random N and SCENE.json words); with ``command`` (--cmd), ``file`` is the
+    file or folder that the command runs. Bad input raises InputError before
+    any case runs, as does ``require_sandbox`` where there is no sandbox; each
     case runs the student's code in its own process (sandbox.py); after
     ``give_up_after`` time-outs the other cases are skipped (0: never)."""
-    path = student.check_file(file)
+    if command is None:
+        path = student.check_file(file)
+    else:
+        path = student_command.program_for(student_command.parse(command), file)
     spec = registry.get(against)
     checking.kind_of(spec)
     selectors = checking.parse_selectors(cases)
@@ -44,8 +48,17 @@ def run_check(file, against: str, cases: list[str], seed: str = "0", time_limit:
     where = isolation(require_sandbox)
     results = checking.check(path, spec.name, made, limits=case_limits, progress=progress,
                              give_up_after=give_up_after)
-    held = student.limits_record(case_limits, student.limits_in_force(case_limits))
+    held = student.limits_record(case_limits, limits_held(case_limits, command))
     return Checked(results, Path(file).name, spec.name, held, where.line())
+
+
+def limits_held(case_limits: student.Limits, command) -> dict:
+    """Which limits hold for each case (student.limits_in_force); a --cmd
+    program's memory is limited as its data segment (student_child.launch)."""
+    held = student.limits_in_force(case_limits)
+    if command is not None and held["memory"]:
+        held = {**held, "memory": "data segment"}
+    return held
 
 
 def isolation(required: bool = False) -> sandbox.Isolation:

@@ -28,6 +28,7 @@ from app.model import budget
 from app.teaching import check_families as families
 from app.teaching import explain
 from app.teaching.student import Limits, Outcome, run_student
+from app.teaching.student_command import Program, run_program
 
 # What the student's draw() takes, per family: the template's signature.
 SIGNATURES = {"lines": "draw(x0, y0, x1, y1)", "circles": "draw(xc, yc, r)",
@@ -356,13 +357,17 @@ def with_options(options: dict, case: Case) -> Case:
 
 def check_case(spec, options: dict, path, case: Case, limits: Limits,
                expected: list | None = None) -> CaseResult:
-    """One case's result; ``expected`` is the reference's steps on it when
+    """One case's result; ``path`` is the student's Python file, or a
+    student_command.Program; ``expected`` is the reference's steps on it when
     known already (a class's submissions share them), else they are made."""
     case = with_options(options, case)
     expected = reference_steps(spec, case) if expected is None else expected
     kind = kind_of(spec)
-    outcome = run_student(path, case.args, limits.steps_for(len(expected)),
-                          value_name="intensity" if kind == "antialias" else None)
+    if isinstance(path, Program):
+        outcome = run_program(path, spec.name, case.args, limits.steps_for(len(expected)))
+    else:
+        outcome = run_student(path, case.args, limits.steps_for(len(expected)),
+                              value_name="intensity" if kind == "antialias" else None)
     if kind in families.SIGNATURES:
         return family_result(spec, case, outcome, expected)
     exact = exact_pixels(spec, case, spec.resolve(case.options))

@@ -2,8 +2,9 @@
 as this system allows, and ended whole with its case.
 
 Each case gets a fresh private scratch folder holding a copy of the runner
-(student_child.py) and of the student's file; nothing else of RasterLab is
-copied. On Linux, when bubblewrap (``bwrap``) can start a sandbox here, the
+(student_child.py) and of the student's file (or, for ``check --cmd``, the
+submission's folder); nothing else of RasterLab is copied. A program the
+command names (node, a JVM) is shown read-only as well (student_command.py). On Linux, when bubblewrap (``bwrap``) can start a sandbox here, the
 child runs inside one: the scratch folder is the only writable place and,
 besides it, only the Python interpreter, its standard library (without
 site-packages) and the system's shared libraries are visible, read-only;
@@ -188,31 +189,39 @@ def environment(home: str) -> dict:
 
 
 # ----------------------------------------------------------------- running
-def run_case(files: dict, request: bytes, wall_seconds: float, where: Isolation) -> Ran:
+def run_case(files: dict, request: bytes, wall_seconds: float, where: Isolation,
+             tree: Path | None = None, shown: tuple = ()) -> Ran:
     """Run the runner (``files[RUNNER]``) on ``request`` (its stdin) in a
-    fresh scratch folder holding a copy of each of ``files`` ({name in the
-    folder: path}); end it after ``wall_seconds``. Nothing of the case (no
+    fresh scratch folder holding a copy of the folder ``tree`` (a compiled
+    submission, with its files' modes) and of each of ``files`` ({name in
+    the folder: path}); end it after ``wall_seconds``. ``shown`` are the
+    system's paths the case also needs, shown read-only in the sandbox (a
+    program such as node and its installation). Nothing of the case (no
     process, no file) is left when this returns."""
     try:
         scratch = tempfile.mkdtemp(prefix="rasterlab-case-")
     except OSError as error:
         raise SandboxFailure(f"no scratch folder for the case: {error}") from None
     try:
+        if tree is not None:
+            shutil.copytree(tree, scratch, symlinks=True, dirs_exist_ok=True)
         for name, path in files.items():
-            shutil.copyfile(path, os.path.join(scratch, name))
-        return _run(scratch, request, wall_seconds, where)
+            shutil.copy(path, os.path.join(scratch, name))  # with its mode: a program runs
+        return _run(scratch, request, wall_seconds, where, shown)
     except OSError as error:
         raise SandboxFailure(f"the case's process could not run: {error}") from None
     finally:
         remove(scratch)
 
 
-def _run(scratch: str, request: bytes, wall_seconds: float, where: Isolation) -> Ran:
+def _run(scratch: str, request: bytes, wall_seconds: float, where: Isolation,
+         shown: tuple = ()) -> Ran:
     python = [interpreter(), "-I", "-S", "-X", "utf8", RUNNER]
     info = None
     if where.sandboxed:
         info, info_write = os.pipe()
-        command = [*where.command, "--bind", scratch, INSIDE, "--chdir", INSIDE,
+        extra = [word for path in shown for word in ("--ro-bind", path, path)]
+        command = [*where.command, *extra, "--bind", scratch, INSIDE, "--chdir", INSIDE,
                    "--info-fd", str(info_write), *python]
         home, fds = INSIDE, (info_write,)
     else:

@@ -149,14 +149,22 @@ def run_student(path, args, limits: Limits = Limits(), function: str = FUNCTION,
     return _outcome(ran, limits, time.perf_counter() - started)
 
 
-def _outcome(ran: Ran, limits: Limits, seconds: float) -> Outcome:
-    printed = student_answer.printed(ran)
+def timed_out(ran: Ran, limits: Limits, seconds: float, printed: str) -> Outcome | None:
+    """The "time" outcome of a child ended by the wall clock or its CPU-time limit, else None."""
     if ran.status is None:
         return Outcome("time", error=f"no result within {limits.seconds:g} s: does the loop end?",
                        seconds=seconds, output=printed)
     if ran.status in CPU_LIMIT_STATUSES:
         return Outcome("time", error=f"the CPU-time limit of {limits.seconds:g} s was reached: "
                                      "does the loop end?", seconds=seconds, output=printed)
+    return None
+
+
+def _outcome(ran: Ran, limits: Limits, seconds: float) -> Outcome:
+    printed = student_answer.printed(ran)
+    timed = timed_out(ran, limits, seconds, printed)
+    if timed is not None:
+        return timed
     try:
         kind, steps, error = student_answer.case_answer(ran, limits.max_steps)
     except student_answer.NoAnswer as missing:

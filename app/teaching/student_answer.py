@@ -94,6 +94,57 @@ def _step(step) -> tuple:
     return x, y, kept
 
 
+def program_answer(ran: Ran, max_steps: int) -> tuple[str, tuple, str]:
+    """(kind, steps, error) of a --cmd program's lines (student_command.py):
+    "ok" at {"done": true}, "exception" at {"error": text}, "too-long" past
+    ``max_steps``, "unfinished" when its output ends first; NoAnswer for a
+    line the protocol does not allow, and for an answer over the cap."""
+    lines = _lines(ran)
+    if ran.answer_dropped:
+        lines = lines[:-1]  # the last line kept is cut short
+    steps = []
+    for number, line in enumerate(lines, start=1):
+        if not line.strip():
+            continue
+        if len(steps) >= max_steps:
+            return "too-long", tuple(steps), (f"wrote more than {max_steps:,} steps: "
+                                              "does the loop end?")
+        item = _program_line(line, number)
+        if "done" in item:
+            return "ok", tuple(steps), ""
+        if "error" in item:
+            return "exception", tuple(steps), foreign_text(item["error"], MAX_ERROR)
+        steps.append(item["step"])
+    if ran.answer_dropped:
+        raise NoAnswer(f"over {len(ran.answer) >> 20} MiB on stdout")
+    return "unfinished", tuple(steps), ""
+
+
+def _program_line(line: bytes, number: int) -> dict:
+    """One line as {"done"}, {"error": text} or {"step": (x, y, values)}."""
+    try:
+        item = json.loads(line)
+    except (ValueError, RecursionError):
+        text = line.decode("utf-8", "replace")
+        shown = foreign_text(text[:40]).replace("\n", " ") + ("..." if len(text) > 40 else "")
+        raise NoAnswer(f"line {number} that is not JSON: {shown}") from None
+    if item == {"done": True}:
+        return {"done": True}
+    if isinstance(item, dict) and set(item) == {"error"} and isinstance(item["error"], str):
+        return item
+    if not isinstance(item, dict) or not {"x", "y"} <= set(item) <= {"x", "y", "vars"}:
+        raise NoAnswer(f"line {number} that is not a step " + '{"x": X, "y": Y, "vars": {...}}, '
+                       '{"done": true} or {"error": TEXT}')
+    if not isinstance(item.get("vars", {}), dict):
+        raise NoAnswer(f"line {number} whose \"vars\" is not an object {{name: number}}")
+    try:
+        return {"step": _step([item["x"], item["y"], item.get("vars", {})])}
+    except NoAnswer as wrong:
+        raise NoAnswer(f"line {number} with {wrong}") from None
+    except OverflowError:
+        raise NoAnswer(f"line {number} with a named value that is not a finite number") from None
+
+
 def printed(ran: Ran) -> str:
     """The student's own prints as far as kept, safe to show, with the count
     of bytes dropped beyond the cap."""

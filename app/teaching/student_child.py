@@ -17,11 +17,21 @@ Which limits a system lets a process set differs: Windows has no
 wall-clock timeout still ends the process), and macOS may refuse
 RLIMIT_AS, where the data segment (RLIMIT_DATA) is limited instead. A
 request with ``"probe": true`` only sets the limits and answers which hold.
+
+A request with ``"exec"`` (a program in any language, see
+app/teaching/student_command.py) sets the limits, then replaces this
+process with that program (on Windows: runs it and passes on its status),
+its stdin the request's ``"input"``: its stdout is then the answer. Its
+memory is limited by the data segment (RLIMIT_DATA), not the address
+space: runtimes such as node and the JVM reserve far more address space
+than they use.
 """
 import json
 import math
 import os
+import subprocess
 import sys
+import tempfile
 import traceback
 
 try:
@@ -40,14 +50,18 @@ class Shape(Exception):
     """A yielded item that is not ``x, y`` or ``x, y, {name: number}``."""
 
 
-def set_limits(memory: int, cpu_seconds: int, rlimits=resource) -> dict:
+MEMORY_LIMITS = (("RLIMIT_AS", "address space"), ("RLIMIT_DATA", "data segment"))
+
+
+def set_limits(memory: int, cpu_seconds: int, rlimits=resource, kinds=MEMORY_LIMITS) -> dict:
     """Set on this process the limits that ``rlimits`` (the ``resource``
-    module, None where there is none) lets it set, and say which hold:
+    module, None where there is none) lets it set, the memory as the first
+    of ``kinds`` that holds, and say which hold:
     {"cpu": bool, "memory": "address space", "data segment" or None}."""
     if rlimits is None:
         return {"cpu": False, "memory": None}
     held = {"cpu": _limit(rlimits, "RLIMIT_CPU", cpu_seconds, cpu_seconds + 1), "memory": None}
-    for name, what in (("RLIMIT_AS", "address space"), ("RLIMIT_DATA", "data segment")):
+    for name, what in kinds:
         if _limit(rlimits, name, memory, memory):
             held["memory"] = what
             break
@@ -139,10 +153,31 @@ def run(request: dict) -> dict:
     return {"kind": "ok", "steps": steps}
 
 
+def launch(request: dict) -> None:
+    """Become the program ``request["exec"]`` with ``request["input"]`` as
+    its stdin; where it cannot start, answer so as the protocol's error line."""
+    argv = request["exec"]
+    with tempfile.TemporaryFile() as given:  # in the case's own TMPDIR
+        given.write(request["input"].encode("utf-8"))
+        given.seek(0)
+        os.dup2(given.fileno(), 0)
+    sys.stdout.flush()
+    try:
+        if os.name == "nt":  # no exec there: the parent's wall clock must see the program
+            sys.exit(subprocess.call(argv))
+        os.execv(argv[0], argv)
+    except OSError as error:
+        print(json.dumps({"error": f"could not start {argv[0]}: {error.strerror}"}))
+
+
 def main() -> None:
     sys.stdout.write(HELLO + "\n")
     sys.stdout.flush()
     request = json.loads(sys.stdin.read())
+    if "exec" in request:
+        set_limits(request["memory"], request["cpu_seconds"], kinds=MEMORY_LIMITS[1:])
+        launch(request)
+        return
     held = set_limits(request["memory"], request["cpu_seconds"])
     if request.get("probe"):
         print(json.dumps(held))

@@ -78,11 +78,16 @@ def test_version_is_the_declared_one(run_cli):
 def test_template_lists_and_prints_every_template(run_cli):
     status, out, err = run_cli("template")
     assert status == 0 and err == ""
+    programs = sorted(p.name for p in TEMPLATES.iterdir() if p.suffix in (".c", ".cpp", ".js"))
+    assert programs == ["line.c", "line.cpp", "line.js"]
     assert [line.split()[0] for line in out.splitlines()] == sorted(
-        p.stem for p in TEMPLATES.glob("*.py"))
+        p.stem for p in TEMPLATES.glob("*.py")) + programs
     for path in TEMPLATES.glob("*.py"):
         status, out, _ = run_cli("template", path.stem)
         assert status == 0 and out == path.read_text(encoding="utf-8")
+    for name in programs:
+        status, out, _ = run_cli("template", name)
+        assert status == 0 and out == (TEMPLATES / name).read_text(encoding="utf-8")
 
 
 def test_template_out_writes_and_keeps_an_existing_file(run_cli, tmp_path):
