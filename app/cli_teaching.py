@@ -124,10 +124,14 @@ def _checked(args) -> int:
     from app.teaching.check_run import run_check
     from app.progress import CasesBar
     bar = CasesBar(sys.stderr)
+
+    def echo(lines):  # each case as it ends, on a line of its own under the bar
+        bar.clear()
+        print("\n".join(lines), flush=True)
     try:
         checked = run_check(args.submissions[0], args.against, args.cases, args.seed, args.time_limit,
                             args.memory_limit, bar if bar.active else None,
-                            args.require_sandbox, args.cmd)
+                            args.require_sandbox, args.cmd, echo=None if args.json else echo)
     finally:
         bar.clear()
     if args.junit:
@@ -135,7 +139,7 @@ def _checked(args) -> int:
     if args.json:
         print(json.dumps(check_report.as_json(*checked), indent=2))
     else:
-        print("\n".join(check_report.text_lines(*checked)))
+        print(check_report.tail_line(checked.results))
     sys.stdout.flush()
     return 0 if all(result.passed for result in checked.results) else 1
 

@@ -16,22 +16,35 @@ def text_lines(results: list[CaseResult], file: str, against: str,
     """PASS or FAIL per case with why, the student's traceback and prints
     where there are any, then the count. ``limits`` (student.limits_record)
     adds the line on the limits, ``isolation`` the one on the isolation."""
-    lines = [f"checking {foreign_text(file)} against {against}: {len(results)} cases"]
+    lines = head_lines(file, against, len(results), limits, isolation)
+    for result in results:
+        lines += case_lines(result)
+    return lines + [tail_line(results)]
+
+
+def head_lines(file: str, against: str, count: int, limits: dict | None = None,
+               isolation: str | None = None) -> list[str]:
+    """The report's first lines: what is checked, the limits, the isolation."""
+    lines = [f"checking {foreign_text(file)} against {against}: {count} cases"]
     if limits is not None:
         lines.append(limits_text(limits))
     if isolation is not None:
         lines.append(isolation)
-    for result in results:
-        if result.passed:
-            lines.append(f"PASS  {result.case.name}")
-            continue
-        lines.append(f"FAIL  {result.case.name}: {result.message()}")
-        if result.outcome.kind == "exception":
-            lines += ["      " + line for line in result.outcome.error.splitlines()]
-        lines += printed_lines(result.outcome.output)
-    passed = sum(result.passed for result in results)
-    lines.append(f"{passed} of {len(results)} cases pass")
     return lines
+
+
+def case_lines(result: CaseResult) -> list[str]:
+    """One case: PASS, or FAIL with why, the traceback and the prints."""
+    if result.passed:
+        return [f"PASS  {result.case.name}"]
+    lines = [f"FAIL  {result.case.name}: {result.message()}"]
+    if result.outcome.kind == "exception":
+        lines += ["      " + line for line in result.outcome.error.splitlines()]
+    return lines + printed_lines(result.outcome.output)
+
+
+def tail_line(results: list[CaseResult]) -> str:
+    return f"{sum(result.passed for result in results)} of {len(results)} cases pass"
 
 
 def printed_lines(output: str) -> list[str]:

@@ -28,13 +28,15 @@ class Checked(NamedTuple):
 
 def run_check(file, against: str, cases: list[str], seed: str = "0", time_limit: str = "2",
               memory_limit: str = "256M", progress=None, require_sandbox: bool = False,
-              command: str | None = None, give_up_after: int = 2) -> Checked:
+              command: str | None = None, give_up_after: int = 2, echo=None) -> Checked:
     """Check ``file`` against the algorithm ``against`` on ``cases`` (hard,
     random N and SCENE.json words); with ``command`` (--cmd), ``file`` is the
     file or folder that the command runs. Bad input raises InputError before
     any case runs, as does ``require_sandbox`` where there is no sandbox; each
     case runs the student's code in its own process (sandbox.py); after
-    ``give_up_after`` time-outs the other cases are skipped (0: never)."""
+    ``give_up_after`` time-outs the other cases are skipped (0: never).
+    ``echo(lines)`` hears the report's head before the first case and each
+    case's lines as it ends (the text report, as it goes)."""
     if command is None:
         path = student.check_file(file)
     else:
@@ -46,9 +48,14 @@ def run_check(file, against: str, cases: list[str], seed: str = "0", time_limit:
     case_limits = limits(time_limit, memory_limit)
     made = checking.make_cases(spec, selectors, number)  # bad scenes are refused before any run
     where = isolation(require_sandbox)
-    results = checking.check(path, spec.name, made, limits=case_limits, progress=progress,
-                             give_up_after=give_up_after)
     held = student.limits_record(case_limits, limits_held(case_limits, command))
+    on_result = None
+    if echo is not None:
+        from app.teaching import check_report
+        echo(check_report.head_lines(Path(file).name, spec.name, len(made), held, where.line()))
+        on_result = lambda result: echo(check_report.case_lines(result))  # noqa: E731
+    results = checking.check(path, spec.name, made, limits=case_limits, progress=progress,
+                             give_up_after=give_up_after, on_result=on_result)
     return Checked(results, Path(file).name, spec.name, held, where.line())
 
 

@@ -406,9 +406,10 @@ def family_result(spec, case: Case, outcome: Outcome, expected: list) -> CaseRes
 
 
 def check(path, against: str, made: list[Case], options: dict | None = None,
-          limits: Limits = Limits(), progress=None, give_up_after: int = 0) -> list[CaseResult]:
-    """Every case's result (cases from ``make_cases``); ``progress(done, total)``
-    hears each case end. After ``give_up_after`` cases ran out of time (0:
+          limits: Limits = Limits(), progress=None, give_up_after: int = 0,
+          on_result=None) -> list[CaseResult]:
+    """Every case's result (cases from ``make_cases``); ``on_result(result)``
+    and ``progress(done, total)`` hear each case end. After ``give_up_after`` cases ran out of time (0:
     never) the others are not run but marked skipped, so code that loops
     costs a few time limits, not one per case."""
     spec = registry.get(against)
@@ -420,6 +421,8 @@ def check(path, against: str, made: list[Case], options: dict | None = None,
         else:
             results.append(check_case(spec, options, path, case, limits))
             timeouts += results[-1].outcome.kind == "time"
+        if on_result is not None:
+            on_result(results[-1])
         if progress is not None:
             progress(len(results), len(made))
     return results

@@ -3,6 +3,9 @@ from __future__ import annotations
 
 import json
 import os
+import select
+import subprocess
+import sys
 import xml.etree.ElementTree as ET
 
 import pytest
@@ -151,3 +154,34 @@ def test_one_file_that_loops_costs_two_time_limits_not_one_per_case(run_cli, tmp
     assert kinds[:2] == ["time", "time"] and set(kinds[2:]) == {"skipped"}
     suite = ET.parse(junit).getroot().find("testsuite")
     assert suite.get("skipped") == str(len(LINE_CASES) - 2) and suite.get("errors") == "2"
+
+
+@pytest.mark.skipif(sys.platform == "win32", reason="select() on a pipe: POSIX only")
+def test_each_case_is_printed_as_it_ends(tmp_path):
+    # A second per case: after the first case's line nothing more may be
+    # waiting in the pipe (a report printed at the end arrives all at once).
+    slow = tmp_path / "slow.py"
+    slow.write_text("import time\n\ndef draw(x0, y0, x1, y1):\n    time.sleep(1)\n"
+                    "    yield x0, y0\n", "utf-8")
+    child = subprocess.Popen([sys.executable, "-m", "rasterlab", "check", str(slow), "--against",
+                              "line-bresenham", "--cases", "random", "3"], cwd=ROOT,
+                             stdout=subprocess.PIPE, stderr=subprocess.DEVNULL, bufsize=0)
+    out = child.stdout.fileno()
+
+    def line() -> bytes:
+        read = b""
+        while not read.endswith(b"\n"):
+            byte = os.read(out, 1)
+            assert byte, "the command ended before printing a case"
+            read += byte
+        return read
+    try:
+        while not line().startswith((b"PASS", b"FAIL")):
+            pass
+        waiting, _, _ = select.select([out], [], [], 0.3)
+        assert not waiting, "the other cases were printed with the first, at the end"
+        rest = b"".join(iter(lambda: os.read(out, 4096), b""))
+    finally:
+        child.kill()
+        child.wait()
+    assert b"FAIL  random 3" in rest
