@@ -6,8 +6,10 @@ import math
 
 import numpy as np
 import pyqtgraph as pg
-from PySide6.QtCore import QLineF, QRectF, Qt
+from PySide6.QtCore import QLineF, QPointF, QRectF, Qt
 from PySide6.QtGui import QColor, QFontMetricsF, QPen
+
+from app.model.label_layout import place
 
 from .dirty import cache_drawing, cells_box, update_boxes
 
@@ -353,3 +355,16 @@ def point_label(color) -> pg.TextItem:
     label.setZValue(5)
     label.hide()
     return label
+
+
+def place_point_labels(box, labels, anchors, above) -> None:
+    """Put each label over (or under) its point, moved apart where labels of
+    points close together would overlap (app/model/label_layout.py); the
+    layout is in screen pixels, so it is done again when the view changes."""
+    screen = [box.mapViewToScene(at) for at in anchors]
+    sizes = [(label.textItem.boundingRect().width(), label.textItem.boundingRect().height())
+             for label in labels]
+    rects = place([(p.x(), p.y()) for p in screen], sizes, above)
+    for label, rect in zip(labels, rects):
+        label.setAnchor((0.5, 0.5))
+        label.setPos(box.mapSceneToView(QPointF(*rect.centre)))

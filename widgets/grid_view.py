@@ -44,7 +44,8 @@ from app.model.inputs import clamp
 from .grid_box import GridViewBox
 from .axes_frame import axes_frame
 from .grid_items import (CellOutlines, GridLinesItem, PixelAxis, handle_items, number_text,
-                         path_xy, point_label, primitive_curves, translucent)
+                         path_xy, place_point_labels, point_label, primitive_curves,
+                         translucent)
 
 
 HANDLE_HIT = 12   # screen pixels from a handle's centre that grab it
@@ -98,6 +99,7 @@ class PixelGridView(pg.GraphicsView):
         # the person pans or zooms.
         self._auto_fit = True
         self._box.sigRangeChangedManually.connect(self._manual_range)
+        self._box.sigTransformChanged.connect(self._place_labels)  # labels keep pixel gaps
         # A step repaints a few small areas: one rectangle around them, so
         # that Qt scales the image by the same rule as in a whole repaint
         # (under a clip of several rectangles it samples differently, and
@@ -633,6 +635,7 @@ class PixelGridView(pg.GraphicsView):
         with_numbers = self._rules.mode in (FIXED, CIRCLE)
         cx = sum(a.x() for a in anchors) / len(anchors)
         cy = sum(a.y() for a in anchors) / len(anchors)
+        above = []
         for label, name, point, at in zip(self._labels, names, points, anchors):
             text = f"{name} ({number_text(point[0])}, {number_text(point[1])})" if with_numbers \
                 else name
@@ -645,8 +648,8 @@ class PixelGridView(pg.GraphicsView):
                 dy = -dy
             if dy == 0:
                 dy = at.x() - cx if len(anchors) > 1 else 1.0
-            label.setAnchor((0.5, 1.35) if dy >= 0 else (0.5, -0.35))
-            label.setPos(at)
+            above.append(dy >= 0)
+        place_point_labels(self._box, self._labels, anchors[:len(self._labels)], above)
 
     def _rim_position(self) -> QPointF | None:
         if not self._circle or not self._sketch.points:
