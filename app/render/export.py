@@ -124,6 +124,11 @@ class FrameRenderer:
         self.vertex_labels = vertex_labels(self.spec, scene) if settings.vertex_labels else []
 
     @property
+    def text_parts(self) -> TextParts:
+        """The caption and side panel's layout and painting (app/render/text.py)."""
+        return self._text
+
+    @property
     def palette_bytes(self) -> bytes:
         return self.colours.palette_bytes()
 
