@@ -6,8 +6,10 @@ import math
 
 import numpy as np
 import pyqtgraph as pg
-from PySide6.QtCore import QLineF, QRectF, Qt
+from PySide6.QtCore import QLineF, QPointF, QRectF, Qt
 from PySide6.QtGui import QColor, QFontMetricsF, QPen
+
+from app.model.label_layout import place
 
 from .dirty import cache_drawing, cells_box, update_boxes
 
@@ -355,17 +357,15 @@ def point_label(color) -> pg.TextItem:
     return label
 
 
-def place_labels(labels, texts, anchors, y_down: bool) -> None:
-    """Each point's label by its handle (anchors in grid units, None: the label hidden), above
-    or below it, away from the middle of the points, so that a label does not cover the
-    primitive (on screen, whichever way y runs)."""
+def place_labels(box, labels, texts, anchors, y_down: bool) -> None:
+    """Each point's label by its handle (anchors in grid units, None: the
+    label hidden), above or below it, away from the middle of the points, so
+    that a label does not cover the primitive (on screen, whichever way y
+    runs); labels of points close together are moved apart (app/model/label_layout.py)."""
     placed = [a for a in anchors if a is not None]
-    if not placed:
-        for label in labels:
-            label.hide()
-        return
-    cx = sum(a.x() for a in placed) / len(placed)
-    cy = sum(a.y() for a in placed) / len(placed)
+    cx = sum(a.x() for a in placed) / max(1, len(placed))
+    cy = sum(a.y() for a in placed) / max(1, len(placed))
+    shown, at_points, above = [], [], []
     for label, text, at in zip(labels, texts, anchors):
         label.setVisible(at is not None)
         if at is None:
@@ -374,5 +374,21 @@ def place_labels(labels, texts, anchors, y_down: bool) -> None:
         dy = -(at.y() - cy) if y_down else at.y() - cy
         if dy == 0:
             dy = at.x() - cx if len(placed) > 1 else 1.0
-        label.setAnchor((0.5, 1.35) if dy >= 0 else (0.5, -0.35))
-        label.setPos(at)
+        shown.append(label)
+        at_points.append(at)
+        above.append(dy >= 0)
+    if shown:
+        place_point_labels(box, shown, at_points, above)
+
+
+def place_point_labels(box, labels, anchors, above) -> None:
+    """Put each label over (or under) its point, moved apart where labels of
+    points close together would overlap (app/model/label_layout.py); the
+    layout is in screen pixels, so it is done again when the view changes."""
+    screen = [box.mapViewToScene(at) for at in anchors]
+    sizes = [(label.textItem.boundingRect().width(), label.textItem.boundingRect().height())
+             for label in labels]
+    rects = place([(p.x(), p.y()) for p in screen], sizes, above)
+    for label, rect in zip(labels, rects):
+        label.setAnchor((0.5, 0.5))
+        label.setPos(box.mapSceneToView(QPointF(*rect.centre)))

@@ -98,6 +98,7 @@ class PixelGridView(pg.GraphicsView):
         # the person pans or zooms.
         self._auto_fit = True
         self._box.sigRangeChangedManually.connect(self._manual_range)
+        self._box.sigTransformChanged.connect(self._place_labels)  # labels keep pixel gaps
         # A step repaints a few small areas: one rectangle around them, so
         # that Qt scales the image by the same rule as in a whole repaint
         # (under a clip of several rectangles it samples differently, and
@@ -647,7 +648,7 @@ class PixelGridView(pg.GraphicsView):
         with_numbers = self._rules.mode in (FIXED, CIRCLE)
         texts = [f"{name} ({number_text(p[0])}, {number_text(p[1])})" if with_numbers else name
                  for name, p in zip(self.labels(), points)]
-        place_labels(self._labels, texts, anchors, self._y_down)
+        place_labels(self._box, self._labels, texts, anchors, self._y_down)
 
     def _rim_position(self) -> QPointF | None:
         if not self._circle or not self._sketch.points:

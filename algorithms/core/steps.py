@@ -109,6 +109,9 @@ class Start:
     # buffer clears it (app/model/buffers.py shows it at any step).
     buffer_value: str | None = None
     buffer_name: str = ""
+    # Names of further values that hold packed 0xRRGGBB colours (a blend's
+    # source and destination): panels and exports show them as #rrggbb.
+    colour_values: tuple[str, ...] = ()
 
 
 @dataclass(frozen=True, slots=True, kw_only=True)

@@ -116,7 +116,8 @@ def blend(points, options, grid):
     at = blend_code(options).at
     yield Start(line=at["clear"], values=("z", "zb", "alpha", "src", "dst", "rgb"),
                 constants={"order": options["order"], "depth_write": options["depth_write"],
-                           "triangles": len(scene.setups)}, pixel_value="rgb")
+                           "triangles": len(scene.setups)}, pixel_value="rgb",
+                colour_values=("src", "dst"))
     drawing = ordered(scene, options["order"])
     yield Table(line=at["order"], name="drawing order", columns=("rank", "triangle", "mean z"),
                 rows=tuple((rank + 1, s.number + 1, key) for rank, (s, key) in

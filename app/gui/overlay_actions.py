@@ -10,12 +10,14 @@ from widgets.overlay_layer import OverlayLayer
 
 from algorithms.lines.common import octant_map
 from app.render.octant_overlay import line_on_grid
-from app.render.overlays import OVERLAYS, overlay_strokes
+from app.render.overlays import OVERLAYS, Shapes, overlay_shapes
 
-TIPS = {"half-planes": "Hatch the side of each edge where its edge function is >= 0 "
-                       "(red e0, green e1, magenta e2)",
+TIPS = {"half-planes": "Tint the side of each edge where its edge function is >= 0 "
+                       "(edges: red e0, green e1, magenta e2); the tints overlap darkest "
+                       "inside the triangle",
         "sub-triangles": "The three triangles the step's pixel centre makes with the edges: "
-                         "their areas over the whole are alpha, beta, gamma",
+                         "their areas over the whole are the weights \u03b1, \u03b2, \u03b3 "
+                         "of the opposite vertices P0, P1, P2",
         "distances": "The perpendiculars from the pixel centre to the three edges",
         "basis": "The vectors P1 - P0 and P2 - P0 of the barycentric frame",
         "octants": "Lines: the eight octants around P, the line's (green), the mirrors "
@@ -55,9 +57,9 @@ class TriangleOverlays:
         player = self.window.player
         state = player.state()
         trace = player.trace
-        strokes = [] if state is None or trace is None else \
-            overlay_strokes(trace, state.index, self.shown(), self.line())
-        self.layer.set_strokes(strokes)
+        shapes = Shapes() if state is None or trace is None else \
+            overlay_shapes(trace, state.index, self.shown(), self.line())
+        self.layer.set_shapes(shapes)
 
     def octant_text(self) -> str:
         """What the octant diagram says in words, or "" when it shows nothing."""

@@ -26,7 +26,7 @@ from app.gui.window_layout import build_layout
 from app.gui.window_menus import add_action, build_menus
 from app.model.drawing import CONTOURS, point_labels
 from app.model.insight import PixelTally, has_insight, inside_chips, row_tones
-from app.model.notation import shown
+from app.model.notation import colour_names, shown
 from app.model.notes import note_at
 from app.gui.window_guides import WindowGuides
 from app.model.inputs import split_contours
@@ -521,8 +521,7 @@ class MainWindow(QMainWindow):
 
     def _show_values(self, state) -> None:
         trace, index = self.player.trace, state.index
-        colour = frame_view.colour_name(trace.start)
-        colors = (colour,) if colour else ()
+        colors = colour_names(trace.start)
         # The trace's own algorithm: a switch may still be recording.
         rows = shown_rows(self.player.trace_spec, trace, index, self.numbers_shown)
         rows += self.depth_display.accuracy_rows(state, rows)

@@ -21,7 +21,7 @@ from __future__ import annotations
 
 from fractions import Fraction
 
-from app.model.notation import fraction
+from app.model.notation import colour, colour_names, fraction
 
 WEIGHTS = ("alpha", "beta", "gamma")
 VERTICES = ("P0", "P1", "P2")
@@ -100,8 +100,11 @@ def _integer(value) -> bool:
 def shown_rows(spec, trace, i: int, numbers: str = "decimal") -> list[tuple[str, str]]:
     """The variables panel's rows at step i (``spec.panel_rows``), with
     ``numbers`` "exact": every value that has an exact form as p/q, and the
-    implied ``m`` added after the run's own values."""
-    rows = spec.panel_rows(trace, i)
+    implied ``m`` added after the run's own values. Values the run declares
+    as colours (``notation.colour_names``) read as #rrggbb."""
+    colours = colour_names(trace.start)
+    rows = [(name, colour(text) or text if name in colours else text)
+            for name, text in spec.panel_rows(trace, i)]
     if numbers != "exact":
         return rows
     exact = exact_values(trace, i)

@@ -2,8 +2,9 @@
 for the window's panels and captions and for the exporter.
 
 The algorithms' own texts stay as they are (plain ASCII, full precision:
-the command line and the recorded traces keep them); what a person reads
-goes through here:
+``run --json`` and the recorded traces keep them); what a person reads
+(the panels, the steps table, exports, worksheets and ``run --steps`` as
+text or CSV) goes through here:
 
 * ``number``: a sensible number of significant figures (all the whole
   digits of a large value, and one decimal at least). A float that
@@ -13,6 +14,9 @@ goes through here:
 * ``tidy``: a text's long decimals shortened the same way, ``<=`` as ≤,
   ``>=`` as ≥, ``!=`` as ≠, and two clumsy forms of the panels' sums
   fixed: "d_i = 0 = 0" becomes "d_i = 0", "+ (-14)" becomes "− 14".
+* ``colour``: a packed 0xRRGGBB value as #rrggbb, for the values a run
+  declares as colours (``colour_names``: its Start record's
+  ``color_value`` or ``pixel_value`` and ``colour_values``).
 * ``subscripts`` (for Pillow frames: Unicode) and ``rich`` (for Qt rich
   text: <sub>) set an index written with an underscore, d_i+1 or
   x_{left}, as a subscript.
@@ -88,6 +92,28 @@ def number(value, digits: int = DIGITS, numbers: str = "decimal") -> str:
     if shown != value and (2 * shown).is_integer() and abs(shown - value) < 1e-4 * last_digit:
         text = repr(value)  # the shortest text that is exactly this float
     return text
+
+
+def colour(value) -> str | None:
+    """A packed 0xRRGGBB value (int, float or its text) as #rrggbb; None
+    for anything else (nan, a fraction of a level, out of range)."""
+    try:
+        value = float(value)
+    except (TypeError, ValueError):
+        return None
+    if not value.is_integer() or not 0 <= value <= 0xFFFFFF:
+        return None
+    return f"#{int(value):06x}"
+
+
+def colour_names(start) -> frozenset[str]:
+    """The names of a run's values that hold packed colours: the colour it
+    writes (``color_value``, else ``pixel_value``: an antialiasing run's
+    pixel value is a coverage, never a colour) and those it declares in
+    ``colour_values``."""
+    written = getattr(start, "color_value", None) or getattr(start, "pixel_value", None)
+    names = set(getattr(start, "colour_values", ()) or ())
+    return frozenset(names | ({written} if written else set()))
 
 
 def tidy(text: str) -> str:

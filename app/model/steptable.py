@@ -9,7 +9,9 @@ line prints it (``run --steps``), the Steps dock shows it, worksheets leave
 columns of it blank. ``numbers`` (app/model/notation.py) is how its text
 shows fractions; with "exact" the text shows the exact values where the run
 has them (app/model/exact.py), and the JSON form keeps its fields and adds
-the exact values as "p/q" strings (app/model/step_output.py).
+the exact values as "p/q" strings (app/model/step_output.py). The text
+reads as people read numbers (five significant figures, colours as
+#rrggbb: app/model/notation.py); the JSON form keeps every digit.
 
 Rows are made on demand: a million-step run does not build a million rows
 to show twenty. Every ``CHECKPOINT`` steps the table keeps the variables set
@@ -27,7 +29,7 @@ from algorithms.core.steps import Span, Table, Vars
 
 from app.model.escape import csv_row
 from app.model.exact import EXACT_NAMES, exact_values
-from app.model.notation import checked_numbers, fraction
+from app.model.notation import checked_numbers, colour, colour_names, fraction
 from app.model.tables import cell_text
 
 CHECKPOINT = 4096  # steps between saved variable states
@@ -57,6 +59,7 @@ class StepTable:
     def __init__(self, trace, numbers: str = "decimal"):
         self.trace = trace
         self.numbers = checked_numbers(numbers)
+        self.colours = colour_names(trace.start)  # values that read as #rrggbb
         self.constants = dict(trace.start.constants)
         if self.numbers == "exact":
             self.constants.update(implied(trace))
@@ -109,7 +112,12 @@ class StepTable:
         """Step i's cells as text, in column order ("" where nothing is known)."""
         cells = self.row(i)
         cells.update(self.exact_cells(i, cells))
-        return [cell_to_text(cells.get(column.key), self.numbers) for column in self.columns]
+        return [self._text(column.key, cells.get(column.key)) for column in self.columns]
+
+    def _text(self, key: str, value) -> str:
+        if key in self.colours and colour(value) is not None:
+            return colour(value)
+        return cell_to_text(value, self.numbers)
 
     def exact_cells(self, i: int, cells: dict | None = None) -> dict:
         """With "exact": step i's values that have an exact form, as

@@ -12,10 +12,9 @@ import bisect
 from dataclasses import dataclass, field
 from fractions import Fraction
 
-from algorithms.core.registry import format_value
 from algorithms.core.steps import Table
 
-from app.model.notation import checked_numbers, fraction
+from app.model.notation import checked_numbers, fraction, number
 
 # A fraction is shown as a decimal when that decimal is exact and this short.
 MAX_DECIMALS = 6
@@ -146,6 +145,8 @@ def cell_text(value, numbers: str = "decimal") -> str:
     reads as that decimal (37/16 -> 2.3125); any other as a rounded decimal
     marked as such (296/15 -> ~19.733), the exact fraction being in the
     cell's tooltip. With "exact", every fraction reads as p/q (-5/2).
+    A float reads to five significant figures (``notation.number``: the
+    drift of a near tie stays visible).
     """
     if isinstance(value, Fraction):
         if value.denominator == 1 or numbers == "exact":
@@ -156,7 +157,7 @@ def cell_text(value, numbers: str = "decimal") -> str:
         return f"\u2248{float(value):.5g}"
     if isinstance(value, tuple):
         return "(" + ", ".join(cell_text(v, numbers) for v in value) + ")"
-    return format_value(value)
+    return number(value)
 
 
 def cell_tip(value, numbers: str = "decimal") -> str:

@@ -63,7 +63,15 @@ class Axes:
         gw, gh = r.grid_size
         left = Image.new("RGBA", (self.left, gh + self.bottom), theme.palette.outside)
         bottom = Image.new("RGBA", (gw, self.bottom), theme.palette.outside)
-        ld, bd = ImageDraw.Draw(left), ImageDraw.Draw(bottom)
+        self.paint(ImageDraw.Draw(left), ImageDraw.Draw(bottom))
+        colours = r.colours
+        return colours.indices(np.asarray(left)), colours.indices(np.asarray(bottom))
+
+    def paint(self, ld, bd) -> None:
+        """The ticks and labels onto the left strip's ``ld`` and the bottom
+        strip's ``bd`` (Pillow's, or a vector frame's: app/render/vector.py)."""
+        r, theme = self.r, self.r.theme
+        gw, gh = r.grid_size
         half_height = (self.face.ascent + self.face.descent) // 2
         for k in self.ticks(r.trace.width):
             x = min(gw - 1, k * self.scale)
@@ -91,8 +99,6 @@ class Axes:
             if y - half_height >= 0 and y + half_height <= gh + self.bottom:
                 ld.text((self.left - 2 * self.tick - 2, y), str(k), font=self.face.face,
                         fill=theme.text, anchor="rm")
-        colours = r.colours
-        return colours.indices(np.asarray(left)), colours.indices(np.asarray(bottom))
 
     def _row(self, value: float) -> float:
         """The image row of coordinate y = ``value`` in the scene's origin."""

@@ -27,7 +27,7 @@ from algorithms.core import registry
 from app.model.geometry import run_paths
 from app.render.derivation import draw_distances
 from app.render.octant_overlay import line_on_grid
-from app.render.overlays import COLOURS as OVERLAY_COLOURS, draw_strokes, overlay_strokes
+from app.render.overlays import draw_shapes, overlay_colours, overlay_shapes
 from app.render.frame import compose_frame, compose_region, frame_marks, primitive_mask
 from app.render.axes import Axes
 from app.render.reasoning import NONE, draw_guides, step_guides, vertex_labels
@@ -112,7 +112,9 @@ class FrameRenderer:
             raise ExportError(f"a frame would be {width}x{height} pixels, more than "
                               f"{MAX_SIDE}x{MAX_SIDE}: choose a smaller scale or no side panel")
         self.colours = build_palette(self.theme, trace,
-                                     OVERLAY_COLOURS if settings.overlays else ())
+                                     overlay_colours(self.theme.palette.background,
+                                                     self.theme.palette.ink)
+                                     if settings.overlays else ())
         self._outside = self.colours.index_of(self.theme.palette.outside)
         self._guide = self.colours.index_of(self.theme.palette.guide)
         self._current = self.colours.index_of(self.theme.palette.current)
@@ -122,6 +124,11 @@ class FrameRenderer:
         self._text.allocate()
         self._axes = self.axes.draw() if self.axes else None
         self.vertex_labels = vertex_labels(self.spec, scene) if settings.vertex_labels else []
+
+    @property
+    def text_parts(self) -> TextParts:
+        """The caption and side panel's layout and painting (app/render/text.py)."""
+        return self._text
 
     @property
     def palette_bytes(self) -> bytes:
@@ -175,11 +182,12 @@ class FrameRenderer:
     def _overlaid(self, grid: np.ndarray, index: int) -> np.ndarray:
         """The grid with the step's geometric overlays drawn over it (a copy:
         the grid part keeps its own for the next frame)."""
-        strokes = overlay_strokes(self.trace, index, self.settings.overlays,
-                                  line_on_grid(self.spec, self.scene.points))
-        if not strokes:
+        shapes = overlay_shapes(self.trace, index, self.settings.overlays,
+                                line_on_grid(self.spec, self.scene.points))
+        if not shapes:
             return grid
-        rgb = draw_strokes(self.colours.rgb[grid], strokes, self.settings.scale)
+        halo = tuple(int(self.theme.palette.background[i:i + 2], 16) for i in (1, 3, 5))
+        rgb = draw_shapes(self.colours.rgb[grid], shapes, self.settings.scale, self.y_down, halo)
         rgba = np.concatenate([rgb, np.full(rgb.shape[:2] + (1,), 255, np.uint8)], axis=2)
         return self.colours.indices(np.ascontiguousarray(rgba))
 

@@ -26,7 +26,7 @@ from algorithms.core.steps import PLOT, VISIT, Span, Vars
 
 from app.model.geometry import final_coverage
 from app.model.exact import exact_values
-from app.model.notation import number
+from app.model.notation import colour, colour_names, number
 from app.render import compose as render
 from app.render.compose import PALETTE, Overlay, Palette, compose
 
@@ -269,19 +269,15 @@ def key_values(trace, state, numbers: str = "decimal") -> list[tuple[str, str]]:
     if decision in names:
         names.remove(decision)
         names.insert(0, decision)
-    colour = colour_name(start)
+    colours = colour_names(start)
     exact = exact_values(trace, state.index, state.variables) if numbers == "exact" else {}
     rows = []
     for name in names:
         if name not in state.variables:
             continue
         value = exact.get(name, state.variables[name])
-        if name == colour and isinstance(value, (int, float)) and value == value \
-                and 0 <= value <= 0xFFFFFF and float(value).is_integer():
-            text = f"#{int(value):06x}"
-        else:
-            text = number(value, numbers=numbers)
-        rows.append((name, text))
+        packed = colour(value) if name in colours and isinstance(value, (int, float)) else None
+        rows.append((name, packed or number(value, numbers=numbers)))
     return rows
 
 

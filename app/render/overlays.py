@@ -2,11 +2,15 @@
 
 For the triangle being drawn and the pixel centre p the step tests:
 
-* ``half-planes``: each edge function's positive side e_k >= 0 hatched in
-  the edge's colour (edge k joins P_(k+1) to P_(k+2)), with the edge's
-  whole line across the grid;
+* ``half-planes``: each edge function's positive side e_k >= 0 in one light
+  tint, so that the tints add up to the darkest where all three tests
+  pass (the triangle), with each edge's whole line across the grid as a
+  thin line in the edge's colour (edge k joins P_(k+1) to P_(k+2));
 * ``sub-triangles``: the three triangles (p, P1, P2), (P0, p, P2),
-  (P0, P1, p) whose areas over the triangle's are alpha, beta, gamma;
+  (P0, P1, p) whose areas over the triangle's are alpha, beta, gamma: the
+  one opposite P_k (p in P_k's place) carries P_k's weight, as the notes
+  have it (alpha = dist(p, BC) / dist(A, BC)); each is filled translucent in
+  its colour and labelled α, β or γ at its centroid;
 * ``distances``: the perpendiculars from p to the three edge lines, whose
   signed lengths are e_k / |P_(k+2) - P_(k+1)|;
 * ``basis``: the vectors P1 - P0 and P2 - P0 of the barycentric frame
@@ -17,9 +21,11 @@ And for a line run (P -> Q), whatever the step:
 * ``octants``: the eight octants around P, the line's, and the mirrors that
   take it to the first (app/render/octant_overlay.py).
 
-The shapes are strokes (polylines in grid units, one colour each), so the
-window draws them as line items and export draws them with Pillow on the
-composed frame: both show the same geometry. Nothing here imports Qt.
+The shapes (``Shapes``) are strokes (polylines in grid units, one colour
+each), translucent fills and labels; the window draws them as items over
+the grid (widgets/overlay_layer.py) and export draws them with Pillow on
+the composed frame (``draw_shapes``): both show the same geometry. Nothing
+here imports Qt.
 """
 from __future__ import annotations
 
@@ -37,14 +43,53 @@ OVERLAYS = ("half-planes", "sub-triangles", "distances", "basis", "octants")
 EDGE_COLOURS = ((214, 40, 40), (43, 138, 62), (180, 40, 180))
 BASIS_COLOUR = (30, 30, 30)
 COLOURS = EDGE_COLOURS + (BASIS_COLOUR,) + octant_overlay.COLOURS
-HATCH_SPACING = 1.5  # px between hatch lines
-HATCH_ANGLES = (math.radians(30), math.radians(90), math.radians(150))
+# One calm tint for every half-plane: on a projector three hatchings in
+# three colours read as noise; one tint that deepens where the half-planes
+# overlap shows how many edge tests a pixel passes.
+HALF_PLANE_TINT, HALF_PLANE_ALPHA = (70, 90, 140), 0.12
+SUB_TRIANGLE_ALPHA = 0.22
+WEIGHT_NAMES = ("\u03b1", "\u03b2", "\u03b3")  # α β γ: the weights of P0, P1, P2
 
 
 @dataclass(frozen=True)
 class Stroke:
     points: tuple  # ((x, y), ...) in grid units
     colour: tuple  # (r, g, b)
+    width: float = 2.0  # screen pixels in the window; export scales it with the cells
+
+
+@dataclass(frozen=True)
+class Fill:
+    """A translucent polygon: ``alpha`` 0..1 of ``colour`` over the grid."""
+
+    points: tuple  # ((x, y), ...) in grid units, not closed
+    colour: tuple
+    alpha: float
+
+
+@dataclass(frozen=True)
+class Label:
+    """A short text centred on ``at`` (grid units)."""
+
+    at: tuple
+    text: str
+    colour: tuple
+
+
+@dataclass(frozen=True)
+class Shapes:
+    """Everything the overlays draw at one step, fills first, labels last."""
+
+    strokes: tuple = ()
+    fills: tuple = ()
+    labels: tuple = ()
+
+    def __add__(self, other: "Shapes") -> "Shapes":
+        return Shapes(self.strokes + other.strokes, self.fills + other.fills,
+                      self.labels + other.labels)
+
+    def __bool__(self) -> bool:
+        return bool(self.strokes or self.fills or self.labels)
 
 
 def parse_overlays(text: str) -> tuple[str, ...]:
@@ -77,30 +122,50 @@ def current_triangle(trace, index: int):
 
 
 def overlay_strokes(trace, index: int, shown, line=None) -> list[Stroke]:
-    """The strokes of the overlays named in ``shown`` at step ``index``;
+    """The strokes of ``overlay_shapes`` (lines only)."""
+    return list(overlay_shapes(trace, index, shown, line).strokes)
+
+
+def overlay_shapes(trace, index: int, shown, line=None) -> Shapes:
+    """The shapes of the overlays named in ``shown`` at step ``index``;
     ``line``: the run's segment P -> Q in grid units (octant_overlay.line_on_grid),
     None when the run draws no line."""
     shown = set(shown)
     if trace is None or not shown:
-        return []
-    strokes = []
+        return Shapes()
+    shapes = Shapes()
     if "octants" in shown and line is not None:
-        strokes += octant_overlay.octant_strokes(line, Stroke)
+        shapes += Shapes(tuple(octant_overlay.octant_strokes(line, Stroke)))
     triangle = current_triangle(trace, index)
     if triangle is None:
-        return strokes
+        return shapes
     step = trace.step(index)
     p = None if step.pixel is None else (step.pixel[0] + 0.5, step.pixel[1] + 0.5)
     grid = (trace.width, trace.height)
     if "half-planes" in shown:
-        strokes += half_plane_strokes(triangle, grid)
+        shapes += half_planes(triangle, grid)
     if "sub-triangles" in shown and p is not None:
-        strokes += sub_triangle_strokes(triangle, p)
+        shapes += sub_triangles(triangle, p)
     if "distances" in shown and p is not None:
-        strokes += distance_strokes(triangle, p)
+        shapes += Shapes(tuple(distance_strokes(triangle, p)))
     if "basis" in shown:
-        strokes += basis_strokes(triangle)
-    return strokes
+        shapes += Shapes(tuple(basis_strokes(triangle)))
+    return shapes
+
+
+def overlay_colours(background: str, ink: str) -> tuple:
+    """Every colour the overlays draw, with their fills over the background
+    and over the ink (for an export's palette)."""
+    bases = [tuple(int(c[i:i + 2], 16) for i in (1, 3, 5)) for c in (background, ink)]
+    tints = [blend(HALF_PLANE_TINT, base, 1 - (1 - HALF_PLANE_ALPHA) ** n)
+             for base in bases for n in (1, 2, 3)]
+    tints += [blend(colour, base, SUB_TRIANGLE_ALPHA) for base in bases for colour in EDGE_COLOURS]
+    return COLOURS + tuple(tints)
+
+
+def blend(colour, base, alpha: float) -> tuple:
+    """``colour`` at ``alpha`` over ``base``, as (r, g, b) integers."""
+    return tuple(round(alpha * c + (1 - alpha) * b) for c, b in zip(colour, base))
 
 
 # ------------------------------------------------------------ the shapes
@@ -138,39 +203,49 @@ def _keep_positive(segment, f):
     return [a, cut] if fa >= 0 else [cut, b]
 
 
-def half_plane_strokes(triangle, grid) -> list[Stroke]:
+def _clip_polygon(polygon, f):
+    """The part of a convex polygon where f >= 0 (f linear): Sutherland-Hodgman."""
+    kept = []
+    for a, b in zip(polygon, polygon[1:] + polygon[:1]):
+        fa, fb = f(a), f(b)
+        if fa >= 0:
+            kept.append(a)
+        if (fa >= 0) != (fb >= 0):
+            t = fa / (fa - fb)
+            kept.append((a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1])))
+    return kept
+
+
+def half_planes(triangle, grid) -> Shapes:
+    """Each edge's line across the grid, thin, and its positive side in the tint."""
     box = (0.0, 0.0, float(grid[0]), float(grid[1]))
-    strokes = []
-    area = edge_function(triangle, 0)(triangle[0])
+    corners = [(box[0], box[1]), (box[2], box[1]), (box[2], box[3]), (box[0], box[3])]
+    if edge_function(triangle, 0)(triangle[0]) == 0:
+        return Shapes()  # a degenerate triangle has no inside
+    strokes, fills = [], []
     for k in range(3):
-        f = edge_function(triangle, k)
         a, b = triangle[(k + 1) % 3], triangle[(k + 2) % 3]
         line = _clip_to_box(a, (b[0] - a[0], b[1] - a[1]), box)
-        if line is None or area == 0:
-            continue
-        strokes.append(Stroke(tuple(line), EDGE_COLOURS[k]))
-        angle = HATCH_ANGLES[k]
-        d = (math.cos(angle), math.sin(angle))
-        n = (-d[1], d[0])
-        corners = [(x, y) for x in box[0::2] for y in box[1::2]]
-        offsets = [c[0] * n[0] + c[1] * n[1] for c in corners]
-        s = math.floor(min(offsets) / HATCH_SPACING) * HATCH_SPACING
-        while s <= max(offsets):
-            hatch = _clip_to_box((s * n[0], s * n[1]), d, box)
-            kept = hatch and _keep_positive(hatch, f)
-            if kept:
-                strokes.append(Stroke(tuple(kept), EDGE_COLOURS[k]))
-            s += HATCH_SPACING
-    return strokes
+        if line is not None:
+            strokes.append(Stroke(tuple(line), EDGE_COLOURS[k], 1.0))
+        inside = _clip_polygon(corners, edge_function(triangle, k))
+        if len(inside) >= 3:
+            fills.append(Fill(tuple(inside), HALF_PLANE_TINT, HALF_PLANE_ALPHA))
+    return Shapes(tuple(strokes), tuple(fills))
 
 
-def sub_triangle_strokes(triangle, p) -> list[Stroke]:
-    strokes = []
+def sub_triangles(triangle, p) -> Shapes:
+    """The sub-triangle opposite each P_k (p in its place): outlined and filled
+    in P_k's colour, labelled with P_k's weight at its centroid."""
+    strokes, fills, labels = [], [], []
     for k in range(3):
         corners = list(triangle)
-        corners[k] = p  # the sub-triangle opposite P_k has p in its place
-        strokes.append(Stroke(tuple(corners + [corners[0]]), EDGE_COLOURS[k]))
-    return strokes
+        corners[k] = p
+        strokes.append(Stroke(tuple(corners + [corners[0]]), EDGE_COLOURS[k], 1.5))
+        fills.append(Fill(tuple(corners), EDGE_COLOURS[k], SUB_TRIANGLE_ALPHA))
+        centroid = (sum(c[0] for c in corners) / 3, sum(c[1] for c in corners) / 3)
+        labels.append(Label(centroid, WEIGHT_NAMES[k], EDGE_COLOURS[k]))
+    return Shapes(tuple(strokes), tuple(fills), tuple(labels))
 
 
 def foot_on_line(a, b, p):
@@ -206,14 +281,38 @@ def basis_strokes(triangle) -> list[Stroke]:
 
 
 # ------------------------------------------------------------ drawing
-def draw_strokes(rgb: np.ndarray, strokes, scale: int) -> np.ndarray:
-    """The strokes drawn over an (H * scale, W * scale, 3) uint8 image whose
-    row 0 is y = 0 (as compose makes it): a new array."""
+def draw_shapes(rgb: np.ndarray, shapes: Shapes, scale: int, y_down: bool,
+                halo: tuple = (255, 255, 255)) -> np.ndarray:
+    """The shapes drawn over an (H * scale, W * scale, 3) uint8 image whose
+    row 0 is y = 0 (as compose makes it): a new array. Labels are written
+    upright in the frame (``y_down`` false: the image is flipped after),
+    in the shipped font, with a ``halo`` so they read over any cell."""
     from PIL import Image, ImageDraw  # for exported frames: the window does not load it
-    image = Image.fromarray(np.ascontiguousarray(rgb), "RGB")
+    image = Image.fromarray(np.ascontiguousarray(rgb), "RGB").convert("RGBA")
+    for fill in shapes.fills:
+        layer = Image.new("RGBA", image.size, (0, 0, 0, 0))
+        ImageDraw.Draw(layer).polygon([(x * scale, y * scale) for x, y in fill.points],
+                                      fill=tuple(fill.colour) + (round(fill.alpha * 255),))
+        image = Image.alpha_composite(image, layer)
     draw = ImageDraw.Draw(image)
-    width = max(1, scale // 8)
-    for stroke in strokes:
+    for stroke in shapes.strokes:
+        width = max(1, round(scale / 8 * stroke.width / 2))
         draw.line([(x * scale, y * scale) for x, y in stroke.points], fill=stroke.colour,
                   width=width)
-    return np.asarray(image)
+    if shapes.labels:
+        image = _write_labels(image, shapes.labels, scale, y_down, halo)
+    return np.asarray(image.convert("RGB"))
+
+
+def _write_labels(image, labels, scale: int, y_down: bool, halo):
+    from PIL import ImageDraw
+    from app.render.text import font
+    face = font("sans_bold", max(12, min(48, round(scale * 1.2))))
+    upright = image if y_down else image.transpose(1)  # FLIP_TOP_BOTTOM
+    draw = ImageDraw.Draw(upright)
+    height = upright.height
+    for label in labels:
+        x, y = label.at[0] * scale, label.at[1] * scale
+        draw.text((x, y if y_down else height - y), label.text, font=face, fill=label.colour,
+                  anchor="mm", stroke_width=max(1, face.size // 10), stroke_fill=halo)
+    return upright if y_down else upright.transpose(1)

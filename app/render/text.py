@@ -178,15 +178,24 @@ class TextParts:
     def caption(self, state) -> np.ndarray:
         """Three lines under the grid: what the step does, the line of
         pseudo-code it runs, and the values it changes."""
+        image, draw = self._canvas(self.caption_size, self.r.theme.caption)
+        # Line 2 (first, so that no other line's glyphs are covered): the
+        # pseudo-code line, drawn once per line and pasted.
+        image.paste(self._code_row(state.step.line), (0, round(5 * self.ui) + self.line))
+        self.paint_caption(draw, state, code_row=False)
+        return self._indices(image)
+
+    def paint_caption(self, draw, state, code_row: bool = True) -> None:
+        """The caption's lines onto ``draw`` (Pillow's, or a vector frame's:
+        app/render/vector.py), its top left at (0, 0); ``code_row`` false
+        leaves out line 2, which ``caption`` pastes."""
         theme = self.r.theme
-        image, draw = self._canvas(self.caption_size, theme.caption)
-        width = image.width
+        width = self.caption_size[0]
         draw.rectangle((0, 0, width - 1, 0), fill=theme.border)
         top = round(5 * self.ui)
         x0, room = self.pad, width - 2 * self.pad
-        # Line 2 (first, so that no other line's glyphs are covered): the
-        # pseudo-code line, numbered as in the panel.
-        image.paste(self._code_row(state.step.line), (0, top + self.line))
+        if code_row:  # line 2: the pseudo-code line, numbered as in the panel
+            self._paint_code_row(draw, state.step.line, top + self.line)
         # Line 1: "Step 12 of 40 · plots (5, 3) · branch NE", bold parts bold.
         text = step_caption(state, self.last, bold=lambda part: f"\x01{part}\x02")
         x, baseline = x0, self._baseline(top, self.sans)
@@ -195,13 +204,18 @@ class TextParts:
                 continue
             face = self.sans_bold if k % 2 == 1 else self.sans
             x += self._text(draw, x, baseline, piece, face, theme.text, x0 + room - x)
-        # Lines 3 and 4: the values of this step, then what the algorithm
-        # explains, each labelled; whole parts wrap to the next line.
-        parts = self.caption_parts(state)
-        for k, line in enumerate(_pack(parts, VALUE_SEPARATOR, self.mono, room, self.value_lines)):
+        # Lines 3 and on: the values of this step, then what the algorithm
+        # explains (its decision and update), each labelled; whole parts
+        # wrap to the next line.
+        for k, line in enumerate(self.value_texts(state)):
             baseline = self._baseline(top + (2 + k) * self.line, self.mono)
             self._text(draw, x0, baseline, line, self.mono, theme.text, room)
-        return self._indices(image)
+
+    def value_texts(self, state) -> list[str]:
+        """The caption's value lines at this step, before any cut to width."""
+        room = self.caption_size[0] - 2 * self.pad
+        return _pack(self.caption_parts(state), VALUE_SEPARATOR, self.mono, room,
+                     self.value_lines)
 
     def caption_parts(self, state) -> list[str]:
         """The caption's values, each labelled: "name = value" for the
@@ -218,25 +232,42 @@ class TextParts:
         once per line (it is the same at every step that runs the line)."""
         row = self._code_rows.get(line)
         if row is None:
-            theme = self.r.theme
-            row, draw = self._canvas((self.caption_size[0], self.line), theme.caption)
-            x0, baseline = self.pad, self._baseline(0, self.mono)
-            if 0 <= line < len(self.code):
-                x = x0 + self._text(draw, x0, baseline, f"{line + 1}: ", self.mono, theme.muted)
-                self._text(draw, x, baseline, self.code[line].strip(), self.mono, theme.text,
-                           row.width - self.pad - x)
+            row, draw = self._canvas((self.caption_size[0], self.line), self.r.theme.caption)
+            self._paint_code_row(draw, line, 0)
             self._code_rows[line] = row
         return row
+
+    def _paint_code_row(self, draw, line: int, top: int) -> None:
+        theme = self.r.theme
+        x0, baseline = self.pad, self._baseline(top, self.mono)
+        if 0 <= line < len(self.code):
+            x = x0 + self._text(draw, x0, baseline, f"{line + 1}: ", self.mono, theme.muted)
+            self._text(draw, x, baseline, self.code[line].strip(), self.mono, theme.text,
+                       self.caption_size[0] - self.pad - x)
 
     def grid_labels(self, frame: np.ndarray, labels, to_pixel, colour: str | None = None) -> None:
         """Write labels (x, y, text in grid units) onto the grid part of
         ``frame`` (palette indices), in ``colour`` (the guide colour by
         default), just right of and above their point."""
         colours = self.r.colours
+        face = self.sans_bold
+        for left, top, text in self.label_places(labels, to_pixel):
+            width, height = face.width(text) + 2, face.ascent + face.descent
+            region = frame[top:top + height, left:left + width]
+            patch = Image.fromarray(colours.rgb[region], "RGB")
+            ImageDraw.Draw(patch).text((1, 0), text, font=face.face,
+                                       fill=colour or self.r.theme.palette.guide, anchor="la")
+            rgba = np.dstack([np.asarray(patch), np.full(region.shape, 255, np.uint8)])
+            frame[top:top + height, left:left + width] = colours.indices(rgba)
+
+    def label_places(self, labels, to_pixel) -> list[tuple[int, int, str]]:
+        """(left, top, text) of each label written on the grid (in the bold
+        sans face): right of and above its point, kept within the grid; a
+        label that would cover one already placed is left out."""
         gw, gh = self.r.grid_size
         x0 = self.r.grid_left
         face = self.sans_bold
-        placed = []  # a label that would cover one already written is left out
+        placed, boxes = [], []
         for x, y, text in labels:
             left, top = to_pixel(x, y)
             width, height = face.width(text) + 2, face.ascent + face.descent
@@ -244,15 +275,11 @@ class TextParts:
             top = int(min(max(0, top - height - 2), gh - height))
             box = (left, top, left + width, top + height)
             if left < 0 or top < 0 or any(box[0] < b[2] and b[0] < box[2] and box[1] < b[3]
-                                          and b[1] < box[3] for b in placed):
+                                          and b[1] < box[3] for b in boxes):
                 continue
-            placed.append(box)
-            region = frame[top:top + height, left:left + width]
-            patch = Image.fromarray(colours.rgb[region], "RGB")
-            ImageDraw.Draw(patch).text((1, 0), text, font=face.face,
-                                       fill=colour or self.r.theme.palette.guide, anchor="la")
-            rgba = np.dstack([np.asarray(patch), np.full(region.shape, 255, np.uint8)])
-            frame[top:top + height, left:left + width] = colours.indices(rgba)
+            boxes.append(box)
+            placed.append((left, top, text))
+        return placed
 
     def _rows(self, index: int) -> list:
         """The variables panel's rows at step ``index``, as a person reads
@@ -262,21 +289,26 @@ class TextParts:
 
     # -------------------------------------------------------------- panel
     def panel(self, state) -> np.ndarray:
-        kind = self.r.settings.panel
-        if kind == "code":
+        if self.r.settings.panel == "code":
             return self._code_panel(state.step.line)
         image, draw = self._canvas(self.panel_size, self.r.theme.panel)
+        self.paint_panel(draw, state)
+        return self._indices(image)
+
+    def paint_panel(self, draw, state) -> None:
+        """The side panel onto ``draw`` (Pillow's or a vector frame's), its
+        top left at (0, 0): pseudo-code, variables, both, or the tables."""
+        kind = self.r.settings.panel
         if kind == "tables":
             self._paint_tables(draw, state.index)
-            self._paint_border(draw)
-            return self._indices(image)
-        top = 0
-        if kind == "both":
-            self._paint_code(draw, state.step.line)
-            top = self.code_height
-        self._paint_variables(draw, state, top)
+        else:
+            top = 0
+            if kind in ("code", "both"):
+                self._paint_code(draw, state.step.line)
+                top = self.code_height
+            if kind != "code":
+                self._paint_variables(draw, state, top)
         self._paint_border(draw)
-        return self._indices(image)
 
     def _code_panel(self, line) -> np.ndarray:
         cached = self._code_cache.get(line)

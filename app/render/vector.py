@@ -4,11 +4,13 @@ frame, and a Beamer snippet that shows the PDF's pages as overlays.
 A frame is described once as a list of shapes (``Drawing``): the cells
 (runs of equal colour per row, so a grid of a million cells stays small),
 the grid lines, the ideal primitive, the outlines of the step's pixel and
-its candidates, the caption and the pseudo-code with the current line
-marked. The SVG and PDF backends draw the same shapes, so the two agree,
-and the colours and marks are those of the raster frames (the same
-palette, ``frame_marks`` and ``step_caption``). One unit is one raster
-pixel at CELL units per cell; text is text, not pixels.
+its candidates, the reasoning, and the text. The SVG and PDF backends draw
+the same shapes, so the two agree. The frame is the raster frame's
+(app/render/export.py): one unit is one pixel of the GIF, at the same
+size, and the axes, the side panel and the caption are painted by the same
+code that paints them with Pillow (app/render/text.py, app/render/axes.py),
+here onto ``_Canvas``, which records text as text in the shipped DejaVu
+fonts at the raster's sizes: the same lines, with ≤ and subscripts.
 
 The writers take part in the export's writer protocol: instead of the
 raster image they are given the step (``grab_step(renderer, index)``),
@@ -22,19 +24,19 @@ from pathlib import Path
 import numpy as np
 
 from app.model.escape import latex_comment, latex_file_name, latex_text, xml_text
-from app.model.exact import shown_rows
 from app.render.compose import OUTLINE_STYLE, compose
-from app.render.frame import frame_marks, key_values, step_caption
+from app.render.frame import frame_marks
 from app.render.reasoning import step_guides
 from app.render.settings import ExportError
-from app.render.text import font_path
+from app.render.text import FONT_FILES, font_path
 from app.model.files import target_of
 from app.render.writers import PngFolderWriter, temporary_beside
 
-CELL = 20        # units per cell
-FONT = 12        # units, caption and pseudo-code
-PAD = 8          # units around the text parts
-MONO_WIDTH = 0.6  # a monospaced character's advance, in font sizes
+_KINDS = {name: kind for kind, name in FONT_FILES.items()}  # font file -> sans, mono_bold, ...
+# Where a Pillow text anchor puts the text: its horizontal offset as a share
+# of the width, and the vertical one in ascents and descents from the baseline.
+_ACROSS = {"l": 0.0, "m": 0.5, "r": 1.0}
+_DOWN = {"a": (1, 0), "t": (1, 0), "m": (0.5, -0.5), "s": (0, 0), "d": (0, -1), "b": (0, -1)}
 
 
 @dataclass
@@ -53,84 +55,130 @@ class Drawing:
     def line(self, points, stroke, width, closed=False):
         self.shapes.append(("line", [tuple(map(float, p)) for p in points], stroke, width, closed))
 
-    def text(self, x, y, text, colour, mono=False, bold=False, size=FONT):
+    def text(self, x, y, text, colour, mono=False, bold=False, size=12):
+        """Text with its baseline's left end at (x, y)."""
         self.shapes.append(("text", x, y, text, colour, mono, bold, size))
 
     def texts(self) -> list[str]:
         return [shape[3] for shape in self.shapes if shape[0] == "text"]
 
 
+class _Canvas:
+    """The part of Pillow's ImageDraw that the text parts use (text,
+    rectangle, line), recorded into a Drawing at an offset."""
+
+    def __init__(self, drawing: Drawing, left: float, top: float):
+        self.drawing, self.left, self.top = drawing, left, top
+
+    def text(self, xy, text, font, fill, anchor="la") -> None:
+        kind = _KINDS[os.path.basename(font.path)]
+        ascent, descent = font.getmetrics()
+        across, (ascents, descents) = _ACROSS[anchor[0]], _DOWN[anchor[1]]
+        x = xy[0] - across * font.getlength(text)
+        y = xy[1] + ascents * ascent - descents * descent
+        self.drawing.text(self.left + x, self.top + y, text, fill, mono=kind.startswith("mono"),
+                          bold=kind.endswith("bold"), size=font.size)
+
+    def rectangle(self, box, fill=None, outline=None, width=1) -> None:
+        x0, y0, x1, y1 = box  # Pillow's corners are inclusive
+        self.drawing.rect(self.left + x0, self.top + y0, x1 - x0 + 1, y1 - y0 + 1, fill=fill,
+                          stroke=outline, width=width if outline else 0.0)
+
+    def line(self, xy, fill=None, width=1) -> None:
+        x0, y0, x1, y1 = xy
+        self.drawing.line([(self.left + x0, self.top + y0), (self.left + x1, self.top + y1)],
+                          fill, width)
+
+
 # ------------------------------------------------------------------ drawing
 def draw_frame(renderer, index: int) -> Drawing:
-    """Frame ``index`` of the renderer's export as a Drawing."""
+    """Frame ``index`` of the renderer's export as a Drawing, the size of the
+    raster frame."""
     trace, settings, theme = renderer.trace, renderer.settings, renderer.theme
     palette = theme.palette
     state = trace.state_at(index)
-    code = settings.panel in ("code", "both")
-    rows = (shown_rows(renderer.spec, trace, index, settings.numbers)
-            if settings.panel in ("variables", "both") else [])
-    panel_width = _code_width(trace) if code else (_rows_width(rows) if rows else 0)
-    grid_w, grid_h = trace.width * CELL, trace.height * CELL
-    caption_h = 3 * (FONT + 4) + 2 * PAD if settings.caption else 0
-    code_h = len(trace.code) * (FONT + 4) + 2 * PAD if code else 0
-    rows_h = (len(rows) + 1) * (FONT + 4) + 2 * PAD if rows else 0
-    body_h = max(grid_h, code_h + rows_h)
-    drawing = Drawing(grid_w + panel_width, body_h + caption_h, palette.outside,
-                      title=renderer.scene.title)
-    y_of = (lambda y: y) if renderer.y_down else (lambda y: trace.height - y)
-    _cells(drawing, state.raster, palette, y_of, trace.height)
+    width, height = renderer.size
+    drawing = Drawing(width, height, palette.outside, title=renderer.scene.title)
+    at = _Place(renderer)
+    _cells(drawing, state.raster, palette, at)
     if renderer.grid_lines:
-        _grid_lines(drawing, trace.width, trace.height, palette.grid)
+        _grid_lines(drawing, at, palette.grid)
     marks = frame_marks(state, renderer.paths, renderer.differences, settings.highlight,
                         settings.primitive)
     for points, closed in marks.paths:
-        drawing.line([(x * CELL, y_of(y) * CELL) for x, y in points], palette.primitive,
-                     2.0, closed)
-    _outlines(drawing, marks, palette, y_of)
+        drawing.line([at(x, y) for x, y in points], palette.primitive, 2.0, closed)
+    _outlines(drawing, marks, palette, at)
+    text = renderer.text_parts
     if settings.reasoning and settings.highlight:
-        _guides(drawing, step_guides(trace, state, renderer.ideal, renderer.y_down), palette, y_of)
-    if panel_width:
-        drawing.rect(grid_w, 0, panel_width, body_h, fill=theme.panel)
-    if code:
-        _code_panel(drawing, trace, state.step.line, grid_w, panel_width, theme)
-    if rows:
-        before = dict(shown_rows(renderer.spec, trace, index - 1, settings.numbers)) if index else {}
-        _variables(drawing, rows, before, grid_w, code_h, theme)
-    if caption_h:
-        _caption(drawing, trace, state, body_h, theme, settings.numbers)
+        guides = step_guides(trace, state, renderer.ideal, renderer.y_down)
+        _guides(drawing, guides, palette, at)
+        if settings.grid_text:
+            _labels(drawing, text, text.label_places(guides.labels, at), palette.guide)
+    if renderer.vertex_labels:
+        _labels(drawing, text, text.label_places(renderer.vertex_labels, at),
+                palette.handle_edge)
+    if renderer.axes is not None:
+        renderer.axes.paint(_Canvas(drawing, 0, 0), _Canvas(drawing, at.left, at.height))
+    grid_right = at.left + at.width
+    if renderer.panel_width:
+        drawing.rect(grid_right, 0, renderer.panel_width, renderer.body_height, fill=theme.panel)
+        text.paint_panel(_Canvas(drawing, grid_right, 0), state)
+    if renderer.caption_height:
+        drawing.rect(0, renderer.body_height, width, renderer.caption_height, fill=theme.caption)
+        text.paint_caption(_Canvas(drawing, 0, renderer.body_height), state)
     return drawing
 
 
-def _cells(drawing, raster, palette, y_of, height) -> None:
+class _Place:
+    """Grid units to frame units, as the raster frame places the grid."""
+
+    def __init__(self, renderer):
+        self.scale = renderer.settings.scale
+        self.left = renderer.grid_left
+        self.width, self.height = renderer.grid_size
+        self.y_down = renderer.y_down
+        self.cells = renderer.trace.height
+
+    def __call__(self, x: float, y: float) -> tuple[float, float]:
+        return (self.left + x * self.scale,
+                (y if self.y_down else self.cells - y) * self.scale)
+
+    def row_top(self, y: int) -> float:
+        """The top of cell row ``y``."""
+        return (y if self.y_down else self.cells - y - 1) * self.scale
+
+
+def _cells(drawing, raster, palette, at: _Place) -> None:
     colours = compose(raster, None, palette, 1, False)[..., :3]  # (H, W, 3), row 0 at y = 0
     background = tuple(int(palette.background[i:i + 2], 16) for i in (1, 3, 5))
-    drawing.rect(0, 0, colours.shape[1] * CELL, height * CELL, fill=palette.background)
+    drawing.rect(at.left, 0, at.width, at.height, fill=palette.background)
     for y in range(colours.shape[0]):
         row = colours[y]
         change = np.flatnonzero(np.any(row[1:] != row[:-1], axis=1)) + 1
         starts = np.concatenate(([0], change))
         ends = np.concatenate((change, [len(row)]))
-        top = min(y_of(y), y_of(y + 1)) * CELL
         for a, b in zip(starts.tolist(), ends.tolist()):
             colour = tuple(int(c) for c in row[a])
             if colour != background:
-                drawing.rect(a * CELL, top, (b - a) * CELL, CELL, fill="#%02x%02x%02x" % colour)
+                drawing.rect(at.left + a * at.scale, at.row_top(y), (b - a) * at.scale, at.scale,
+                             fill="#%02x%02x%02x" % colour)
 
 
-def _grid_lines(drawing, width, height, colour) -> None:
-    for x in range(width + 1):
-        drawing.line([(x * CELL, 0), (x * CELL, height * CELL)], colour, 0.5)
-    for y in range(height + 1):
-        drawing.line([(0, y * CELL), (width * CELL, y * CELL)], colour, 0.5)
+def _grid_lines(drawing, at: _Place, colour) -> None:
+    for x in range(at.width // at.scale + 1):
+        drawing.line([(at.left + x * at.scale, 0), (at.left + x * at.scale, at.height)],
+                     colour, 1.0)
+    for y in range(at.height // at.scale + 1):
+        drawing.line([(at.left, y * at.scale), (at.left + at.width, y * at.scale)], colour, 1.0)
 
 
-def _outlines(drawing, marks, palette, y_of) -> None:
+def _outlines(drawing, marks, palette, at: _Place) -> None:
     def box(x0, x1, y, kind, colour):
         style = OUTLINE_STYLE[kind]
-        inset = style.inset * CELL + style.width / 2
-        top = min(y_of(y), y_of(y + 1)) * CELL
-        drawing.rect(x0 * CELL + inset, top + inset, (x1 - x0) * CELL - 2 * inset,
-                     CELL - 2 * inset, stroke=colour, width=style.width)
+        inset = style.inset * at.scale + style.width / 2
+        drawing.rect(at.left + x0 * at.scale + inset, at.row_top(y) + inset,
+                     (x1 - x0) * at.scale - 2 * inset, at.scale - 2 * inset, stroke=colour,
+                     width=style.width)
 
     for x, y in ([] if marks.differences is None else marks.differences.tolist()):
         box(x, x + 1, y, "difference", palette.difference)
@@ -142,64 +190,25 @@ def _outlines(drawing, marks, palette, y_of) -> None:
         box(x, x + 1, y, "candidate", palette.candidate)
 
 
-def _guides(drawing, guides, palette, y_of) -> None:
+def _guides(drawing, guides, palette, at: _Place) -> None:
     """The step's reasoning (app/render/reasoning.py), as the GIF draws it:
-    lines, dots (as small squares) and labels in the guide colour."""
+    lines and dots (as small squares) in the guide colour."""
     widths = {"pair": 4.0, "drop": 1.5}
     for x0, y0, x1, y1, role in guides.lines:
-        drawing.line([(x0 * CELL, y_of(y0) * CELL), (x1 * CELL, y_of(y1) * CELL)],
-                     palette.guide, widths.get(role, 1.0))
+        drawing.line([at(x0, y0), at(x1, y1)], palette.guide, widths.get(role, 1.0))
     for x, y, role in guides.dots:
-        size = CELL * (0.3 if role in ("crossing", "midpoint", "sample") else 0.18)
+        size = at.scale * (0.3 if role in ("crossing", "midpoint", "sample") else 0.18)
         colour = palette.current if role == "sample" else palette.guide
-        drawing.rect(x * CELL - size / 2, y_of(y) * CELL - size / 2, size, size,
+        cx, cy = at(x, y)
+        drawing.rect(cx - size / 2, cy - size / 2, size, size,
                      fill=None if role == "miss" else colour, stroke=colour, width=0.5)
-    for x, y, text in guides.labels:
-        drawing.text(x * CELL + 3, y_of(y) * CELL - 3, text, palette.guide, bold=True)
 
 
-def _code_width(trace) -> float:
-    longest = max((len(line.text) for line in trace.code), default=0) + 6
-    return longest * FONT * MONO_WIDTH + 2 * PAD
-
-
-def _rows_width(rows) -> float:
-    longest = max((len(f"{name}  {text}") for name, text in rows), default=0) + 4
-    return max(longest * FONT * MONO_WIDTH, 160) + 2 * PAD
-
-
-def _variables(drawing, rows, before, left, top, theme) -> None:
-    step = FONT + 4
-    drawing.text(left + PAD, top + PAD + FONT, "Variables", theme.muted, bold=True)
-    name_width = max(len(name) for name, _ in rows) * FONT * MONO_WIDTH + FONT
-    for k, (name, text) in enumerate(rows, 1):
-        baseline = top + PAD + k * step + FONT
-        changed = name in before and before[name] != text
-        drawing.text(left + PAD, baseline, name, theme.muted, mono=True)
-        drawing.text(left + PAD + name_width, baseline, text,
-                     theme.changed if changed else theme.text, mono=True, bold=changed)
-
-
-def _code_panel(drawing, trace, current, left, width, theme) -> None:
-    step = FONT + 4
-    for number, line in enumerate(trace.code):
-        top = PAD + number * step
-        if number == current:
-            drawing.rect(left, top, width, step, fill=theme.current_line)
-        colour = theme.current_edge if number == current else theme.line_number
-        drawing.text(left + PAD, top + FONT, f"{number + 1:>2}", colour, mono=True)
-        drawing.text(left + PAD + 3 * FONT * MONO_WIDTH, top + FONT, line.text, theme.text,
-                     mono=True, bold=number == current)
-
-
-def _caption(drawing, trace, state, top, theme, numbers: str) -> None:
-    drawing.rect(0, top, drawing.width, drawing.height - top, fill=theme.caption)
-    drawing.text(PAD, top + PAD + FONT, step_caption(state, len(trace) - 1), theme.text, bold=True)
-    values = "   ".join(f"{name} = {text}" for name, text in key_values(trace, state, numbers))
-    if values:
-        drawing.text(PAD, top + PAD + 2 * FONT + 4, values, theme.muted)
-    line = trace.code[state.step.line].text.strip()
-    drawing.text(PAD, top + PAD + 3 * FONT + 8, line, theme.muted, mono=True)
+def _labels(drawing, text, places, colour) -> None:
+    """Labels on the grid where the raster frame writes them (``label_places``)."""
+    face = text.sans_bold
+    for left, top, label in places:
+        drawing.text(left + 1, top + face.ascent, label, colour, bold=True, size=face.face.size)
 
 
 # ---------------------------------------------------------------------- SVG

@@ -14,7 +14,7 @@ TRIANGLE_OVERLAYS = ("half-planes", "sub-triangles", "distances", "basis")
 def drawn(window):
     """(colour, x, y) of every point the overlay layer's items hold."""
     points = set()
-    for colour, item in window.overlays.layer._items.items():
+    for (colour, _width), item in window.overlays.layer._items.items():
         xs, ys = item.getData()
         if xs is None:
             continue
@@ -70,3 +70,17 @@ def test_a_scene_switches_its_overlays_on(window, qtbot):
         window.add_file_actions()
     window.file_actions.apply_scene(load(shipped.scene_path("line-octants")))
     assert window.actions_["overlay-octants"].isChecked()
+
+
+def test_the_window_fills_and_labels_the_sub_triangles_as_export_does(window):
+    window.player.seek(200)
+    window.actions_["overlay-sub-triangles"].setChecked(True)
+    trace, index = window.player.trace, window.player.state().index
+    shapes = overlays.overlay_shapes(trace, index, ["sub-triangles"])
+    layer = window.overlays.layer
+    assert layer.fills() == [(tuple(f.points), tuple(f.colour) + (round(f.alpha * 255),))
+                             for f in shapes.fills]
+    assert layer.labels() == [(tuple(label.at), label.text) for label in shapes.labels]
+    assert [text for _, text in layer.labels()] == ["\u03b1", "\u03b2", "\u03b3"]
+    window.actions_["overlay-sub-triangles"].setChecked(False)
+    assert layer.fills() == [] and layer.labels() == []

@@ -1,5 +1,6 @@
 """The geometric overlays of a triangle run's step, against exact geometry
 written here, and the same strokes in an exported frame."""
+from dataclasses import replace
 from fractions import Fraction
 
 import numpy as np
@@ -59,17 +60,78 @@ def test_distances_are_perpendicular_and_as_long_as_e_over_the_edge(trace):
                 abs(step.values[f"e{k}"]) / np.linalg.norm(edge), rel=1e-12)
 
 
-def test_half_plane_hatching_stays_on_the_positive_side_inside_the_grid(trace):
-    strokes = overlays.overlay_strokes(trace, 10, ["half-planes"])
-    assert {s.colour for s in strokes} == set(overlays.EDGE_COLOURS)
-    for stroke in strokes:
-        k = overlays.EDGE_COLOURS.index(stroke.colour)
+def inside_polygon(point, polygon) -> bool:
+    """Ray casting: is ``point`` inside ``polygon`` (not on its edge)?"""
+    x, y = point
+    inside = False
+    for (x0, y0), (x1, y1) in zip(polygon, polygon[1:] + polygon[:1]):
+        if (y0 > y) != (y1 > y) and x < x0 + (y - y0) * (x1 - x0) / (y1 - y0):
+            inside = not inside
+    return inside
+
+
+def test_half_planes_are_one_calm_tint_on_the_positive_side_and_thin_edges(trace):
+    shapes = overlays.overlay_shapes(trace, 10, ["half-planes"])
+    # Three thin edge lines, no hatching, and one fill per edge in one tint.
+    assert len(shapes.strokes) == 3 and {s.width for s in shapes.strokes} == {1.0}
+    assert [s.colour for s in shapes.strokes] == list(overlays.EDGE_COLOURS)
+    assert len(shapes.fills) == 3 and len({(f.colour, f.alpha) for f in shapes.fills}) == 1
+    assert shapes.fills[0].alpha <= 0.15
+    for k, fill in enumerate(shapes.fills):
         a, b = TRIANGLE[(k + 1) % 3], TRIANGLE[(k + 2) % 3]
-        for x, y in stroke.points:
-            assert -1e-9 <= x <= 32 + 1e-9 and -1e-9 <= y <= 24 + 1e-9
-            e = (b[0] - a[0]) * (y - a[1]) - (b[1] - a[1]) * (x - a[0])
-            assert e >= -1e-6
-    assert len(strokes) > 30  # the lines and their hatching
+
+        def e(x, y):
+            return (b[0] - a[0]) * (y - a[1]) - (b[1] - a[1]) * (x - a[0])
+
+        for x in np.arange(0.25, 32, 1.0):
+            for y in np.arange(0.25, 24, 1.0):
+                if abs(e(x, y)) > 1e-6:
+                    assert inside_polygon((x, y), list(fill.points)) == (e(x, y) > 0)
+
+
+def test_sub_triangles_are_filled_and_labelled_at_their_centroids(trace):
+    whole = twice_area(*TRIANGLE)
+    for i in plotted_steps(trace):
+        step = trace.step(i)
+        p = (step.pixel[0] + 0.5, step.pixel[1] + 0.5)
+        shapes = overlays.overlay_shapes(trace, i, ["sub-triangles"])
+        assert [label.text for label in shapes.labels] == ["\u03b1", "\u03b2", "\u03b3"]
+        for k in range(3):
+            # The sub-triangle opposite P_k: p in P_k's place.
+            corners = [p if j == k else TRIANGLE[j] for j in range(3)]
+            fill, label = shapes.fills[k], shapes.labels[k]
+            assert list(fill.points) == corners and 0 < fill.alpha < 1
+            assert fill.colour == label.colour == overlays.EDGE_COLOURS[k]
+            assert label.at == pytest.approx((sum(c[0] for c in corners) / 3,
+                                              sum(c[1] for c in corners) / 3))
+            # Its share of the area is P_k's weight, as the notes define it:
+            # alpha = dist(p, P1P2) / dist(P0, P1P2), and so on.
+            a, b = TRIANGLE[(k + 1) % 3], TRIANGLE[(k + 2) % 3]
+            weight = twice_area(p, a, b) / twice_area(TRIANGLE[k], a, b)
+            assert twice_area(*corners) / whole == weight
+
+
+def test_an_exported_frame_fills_the_sub_triangles_as_the_shapes_say():
+    scene = scenes.Scene(algorithm="triangle-bbox", points=TRIANGLE, width=32, height=24)
+    settings = ExportSettings(scale=10, caption=False, panel="none", grid_lines=False,
+                              highlight=False, primitive=False)
+    plain = FrameRenderer(scene, settings)
+    shown = FrameRenderer(scene, replace(settings, overlays=("sub-triangles",)))
+    trace = plain.trace
+    i = plotted_steps(trace)[2]
+    shapes = overlays.overlay_shapes(trace, i, ["sub-triangles"])
+    before, after = plain.rgb(i), shown.rgb(i)
+    for fill in shapes.fills:
+        corners = fill.points
+        k = overlays.EDGE_COLOURS.index(fill.colour)
+        # Between the centroid (the label) and a corner that is not p: inside, clear of both.
+        far = corners[(k + 1) % 3]
+        x = (2 * far[0] + sum(c[0] for c in corners) / 3) / 3
+        y = (2 * far[1] + sum(c[1] for c in corners) / 3) / 3
+        row, column = round((24 - y) * 10), round(x * 10)
+        expected = [fill.alpha * c + (1 - fill.alpha) * b
+                    for c, b in zip(fill.colour, before[row, column])]
+        assert np.allclose(after[row, column], expected, atol=3), (k, after[row, column])
 
 
 def test_basis_vectors_run_from_p0(trace):

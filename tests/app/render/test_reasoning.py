@@ -252,7 +252,8 @@ def test_exported_frame_draws_the_scan_line_through_the_row_centres(origin, them
 
 
 def test_vector_frames_draw_the_same_reasoning():
-    from app.render.vector import CELL, draw_frame
+    from app.render.vector import draw_frame
+    cell = 4  # the scale: frame units per cell
     scene = Scene(algorithm="polygon-scanline", points=[TRIANGLE], width=32, height=24)
     renderer = ex.FrameRenderer(scene, ex.ExportSettings(scale=4))
     trace = renderer.trace
@@ -262,8 +263,8 @@ def test_vector_frames_draw_the_same_reasoning():
     guide = ex.LIGHT.palette.guide
     lines = [shape for shape in drawing.shapes if shape[0] == "line" and shape[2] == guide]
     # The scan line across the grid at y + 1/2 (y up: 24 - y - 1/2 from the top), and the pair.
-    row = (24 - y - 0.5) * CELL
-    assert ([(0.0, row), (32.0 * CELL, row)], 1.0) in [(shape[1], shape[3]) for shape in lines]
+    row = (24 - y - 0.5) * cell
+    assert ([(0.0, row), (32.0 * cell, row)], 1.0) in [(shape[1], shape[3]) for shape in lines]
     assert any(shape[3] == 4.0 for shape in lines)
     assert f"y + \u00bd = {y + 0.5:g}" in drawing.texts()
     plain = draw_frame(ex.FrameRenderer(scene, ex.ExportSettings(scale=4, reasoning=False)), i)
