@@ -14,7 +14,8 @@ from widgets.docks import panel_dock
 from widgets.editors import AlgorithmPicker, GridEditor, OptionsEditor
 from widgets.error_scale import ErrorScale
 from widgets.grid_view import PixelGridView
-from widgets.panels import CodePanel, VariablesPanel
+from widgets.code_panel import CodePanel
+from widgets.panels import VariablesPanel
 from widgets.tables import TablesPanel
 from widgets.transport import TransportBar
 from widgets.vertex_table import VertexTable

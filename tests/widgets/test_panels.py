@@ -5,7 +5,8 @@ import pytest
 from PySide6.QtCore import QEvent, QObject, Qt
 from PySide6.QtGui import QFont
 
-from widgets.panels import CURRENT_LINE, CodePanel, VariablesPanel
+from widgets.code_panel import CodePanel
+from widgets.panels import CURRENT_LINE, VariablesPanel
 from widgets.transport import TransportBar
 from tests.support.gui import WAIT_MS
 

@@ -12,7 +12,8 @@ from PySide6.QtWidgets import QApplication, QDockWidget, QMainWindow
 
 from app.gui.window_view import ZOOMS
 from tests.support.gui import WAIT_MS
-from widgets.panels import CodePanel, VariablesPanel
+from widgets.code_panel import CodePanel
+from widgets.panels import VariablesPanel
 
 pytestmark = pytest.mark.window(shown=True)
 
