@@ -26,3 +26,19 @@ def bresenham_run(p, q) -> tuple[list[tuple[int, int]], list[int]]:
 def bresenham_pixels(p, q) -> list[tuple[int, int]]:
     """The pixels of the textbook first-octant loop, in the order it plots them."""
     return bresenham_run(p, q)[0]
+
+
+def printed_draw_line(x1, y1, x2, y2):
+    """Note 002's draw_line as printed, transcribed line by line (first octant;
+    its `y = y0` read as `y = y1`): the as-printed Bresenham's oracle."""
+    pixels, y = [], y1
+    dx, dy = 2 * (x2 - x1), 2 * (y2 - y1)
+    dydx, d = dy - dx, (dy - dx) // 2
+    for x in range(x1, x2 + 1):
+        pixels.append((x, y))
+        if d > 0:
+            d -= dy
+        else:
+            y += 1
+            d -= dydx
+    return pixels

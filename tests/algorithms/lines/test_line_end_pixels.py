@@ -16,6 +16,7 @@ from fractions import Fraction
 import pytest
 
 from algorithms.core import registry
+from tests.support.bresenham import printed_draw_line
 
 GRID = (32, 24)
 # The listings shown as printed, faults included: each may miss an end pixel.
@@ -89,22 +90,6 @@ def test_every_printed_listing_has_a_named_miss():
 
 
 # ------------------------------------------- the printed Bresenham, lifted
-def draw_line_as_printed(x1, y1, x2, y2):
-    """002's draw_line, line by line (first octant: x1 <= x2, 0 <= y2 - y1 <= x2 - x1)."""
-    out = []
-    y = y1  # printed: y = y0
-    dx, dy = 2 * (x2 - x1), 2 * (y2 - y1)
-    dydx, d = dy - dx, (dy - dx) // 2  # dy - dx is even: C's division is exact here
-    for x in range(x1, x2 + 1):
-        out.append((x, y))
-        if d > 0:
-            d -= dy
-        else:
-            y += 1
-            d -= dydx
-    return out
-
-
 def nearest_row(m, u, lift=Fraction(0)):
     """The row nearest the line v = m u + lift, halves up (the corrected listing's rule)."""
     return math.floor(m * u + lift + Fraction(1, 2))
@@ -118,7 +103,7 @@ def first_octant(dx, dy):
 @pytest.mark.parametrize("dx", range(1, 41))
 def test_the_printed_listing_is_the_corrected_rule_on_a_line_lifted_by_1_minus_3m_over_2(dx):
     for dy in range(dx + 1):
-        assert draw_line_as_printed(0, 0, dx, dy) == first_octant(dx, dy), (dx, dy)
+        assert printed_draw_line(0, 0, dx, dy) == first_octant(dx, dy), (dx, dy)
 
 
 def test_the_program_draws_the_listing_as_printed():
@@ -129,11 +114,11 @@ def test_the_program_draws_the_listing_as_printed():
         dy = rng.randint(0, dx)
         drawn = pixels("line-bresenham-textbook", (x1, y1), (x1 + dx, y1 + dy),
                        {"variant": "as-printed"})
-        assert drawn == set(draw_line_as_printed(x1, y1, x1 + dx, y1 + dy))
+        assert drawn == set(printed_draw_line(x1, y1, x1 + dx, y1 + dy))
 
 
 def compare_with_corrected(dx, dy):
-    printed = draw_line_as_printed(0, 0, dx, dy)
+    printed = printed_draw_line(0, 0, dx, dy)
     corrected = [(u, nearest_row(Fraction(dy, dx), u)) for u in range(dx + 1)]
     higher = sum(a[1] > b[1] for a, b in zip(printed, corrected))
     lower = sum(a[1] < b[1] for a, b in zip(printed, corrected))
@@ -152,7 +137,7 @@ def test_a_row_high_below_slope_2_3_equal_at_it_low_above():
                 assert higher == 0, (dx, dy)
     # Never below the corrected line under 2/3, never above it over 2/3; how many
     # pixels differ depends on the slope: flat, every pixel after P is a row high.
-    assert draw_line_as_printed(0, 0, 9, 0)[1:] == [(u, 1) for u in range(1, 10)]
+    assert printed_draw_line(0, 0, 9, 0)[1:] == [(u, 1) for u in range(1, 10)]
     assert compare_with_corrected(28, 6) == (18, 0)
     assert compare_with_corrected(4, 2) == (0, 0)  # lifted by 1/4: no row changes
     assert compare_with_corrected(10, 9) == (0, 4)
@@ -162,7 +147,7 @@ def test_a_row_high_below_slope_2_3_equal_at_it_low_above():
 def test_the_printed_listing_plots_q_only_above_slope_1_3():
     for dx in range(1, 40):
         for dy in range(dx + 1):
-            plotted = draw_line_as_printed(0, 0, dx, dy)[-1] == (dx, dy)
+            plotted = printed_draw_line(0, 0, dx, dy)[-1] == (dx, dy)
             assert plotted == (3 * dy > dx), (dx, dy)
 
 

@@ -16,6 +16,7 @@ from hypothesis import strategies as st
 from algorithms.core import registry
 from algorithms.exact import lines as exact
 from tests.support.linecases import NAMED_CASES, segments
+from tests.support.bresenham import printed_draw_line
 
 SEGMENTS = [((0, 0), (8, 3)), ((0, 0), (6, 3)), ((2, 1), (14, 7)), ((20, 3), (4, 18)),
             ((5, 20), (1, 2)), ((-7, -3), (9, -11)), ((3, 3), (3, 3)), ((0, 5), (9, 5)),
@@ -101,19 +102,6 @@ def test_the_kernel_is_the_nearest_pixel_line_with_ties_away_from_p(p, q):
 
 
 # ------------------------------------------------------- the printed listing
-def printed_draw_line(x1, y1, x2, y2):
-    """The slide's listing, transcribed (its y = y0 read as y = y1)."""
-    pixels, y = [], y1
-    dx, dy = 2 * (x2 - x1), 2 * (y2 - y1)
-    dydx, d = dy - dx, (dy - dx) // 2
-    for x in range(x1, x2 + 1):
-        pixels.append((x, y))
-        if d > 0:
-            d -= dy
-        else:
-            y += 1
-            d -= dydx
-    return pixels
 
 
 FIRST_OCTANT = [((0, 0), (8, 3)), ((0, 0), (10, 1)), ((3, 2), (17, 9)), ((0, 0), (7, 7)),
