@@ -88,9 +88,24 @@ class Template:
 
     name: e.g. "line-decision-after-step"; family: "lines", "circles", "fill",
     "triangles", "visibility", "antialias" or "textures"; title: one line for
-    ``--list``; make: seed -> Question (same seed, same question).
+    ``--list``; algorithms: the algorithms whose scenes it asks about (the
+    first is the one its drawn variants run).
+    make(seed, scene=None) -> Question: the same seed gives the same question.
+    With a scene (of one of ``algorithms``), its inputs are asked about and
+    the seed picks only what the template chooses within them (the step k,
+    the pixel p); ValueError with one line when the scene does not suit.
     """
     name: str
     family: str
     title: str
-    make: Callable[[int], Question]
+    algorithms: tuple[str, ...]
+    make: Callable[..., Question]
+
+
+@dataclass(frozen=True)
+class Bank:
+    """The questions of one export, in groups: one group per student
+    (``--per-student``, named by the student's id) or one group named "".
+    seed: the seed the bank was drawn with (stated in each file's header)."""
+    groups: tuple[tuple[str, tuple[Question, ...]], ...]
+    seed: int
