@@ -25,6 +25,8 @@ GRID = (10, 8)          # small enough to read coordinates off the picture
 STEP_CAP = 200_000      # far above what a 16x12 grid needs
 MIN_AREA2 = 8           # twice the area, in px^2: no sliver triangles
 ATTEMPTS = 500          # draws before a template gives up on a seed
+CENTRE_TEXT = ("Pixel (i, j) is the square [i, i+1) x [j, j+1) with its centre at "
+               "(i + 1/2, j + 1/2), y up.")
 
 
 def run(algorithm: str, points, options: dict, grid):

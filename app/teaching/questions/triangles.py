@@ -21,7 +21,7 @@ from app.teaching.questions.model import CHOICE, NUMERICAL, SHORT, Answer, Templ
 
 TRAVERSALS = ("triangle-bbox", "triangle-scan", "triangle-incremental", "triangle-halfplane",
               "triangle-barycentric", "triangle-pineda")
-CENTRE = "Pixel (i, j) is the square [i, i+1) x [j, j+1) with its centre at (i + 1/2, j + 1/2), y up."
+CENTRE = draws.CENTRE_TEXT
 EDGES = "Edge e_k joins P(k+1) to P(k+2): e_k(x, y) = (x_j - x_i)(y - y_i) - (y_j - y_i)(x - x_i)."
 PERSPECTIVE_W = (1, 2, 4)  # w per vertex: 1/w stays a short decimal
 
