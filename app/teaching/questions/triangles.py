@@ -36,7 +36,12 @@ def _run(template, rng, scene, options=None, carried=()):
     else:
         points, grid = draws.scene_triangles(scene, template)
         points = points[:3]
-        options.update({name: scene.options[name] for name in carried if name in scene.options})
+        options.update({name: tuple(scene.options[name])[:3] for name in carried
+                        if len(scene.options.get(name) or ()) >= 3})
+        if draws.area2(*points) < 0:  # counter-clockwise, as the run would draw it
+            points = [points[0], points[2], points[1]]
+            options.update({name: (v[0], v[2], v[1]) for name, v in options.items()
+                            if name in carried})
     return draws.run(template.algorithms[0], points, options, grid), grid, options
 
 
