@@ -9,7 +9,10 @@ sample, with its position and whether it hit.
 from __future__ import annotations
 
 import random
+from collections import defaultdict
 from fractions import Fraction
+
+import numpy as np
 
 from algorithms.core.steps import Table
 
@@ -24,9 +27,15 @@ def _samples(trace, pixel) -> list:
     return [step for step in draws.frames_at(trace, pixel) if "hit" in step.values]
 
 
-def _partial(trace, pixel) -> bool:
-    hits = [step.values["hit"] for step in _samples(trace, pixel)]
-    return 0 < sum(hits) < len(hits)
+def _partial_pixels(trace) -> list:
+    """The pixels some but not all of whose samples hit, from the sample frames."""
+    hit = trace.series("hit")
+    rows = np.flatnonzero(~np.isnan(hit))
+    counts = defaultdict(lambda: [0, 0])
+    for x, y, h in zip(trace.x[rows].tolist(), trace.y[rows].tolist(), hit[rows].tolist()):
+        counts[(x, y)][0] += int(h)
+        counts[(x, y)][1] += 1
+    return sorted(p for p, (hits, total) in counts.items() if 0 < hits < total)
 
 
 def _on_an_edge(points, pixel, n) -> bool:
@@ -59,13 +68,13 @@ def _coverage(seed, scene=None):
         else:
             points, grid, n = _scene_input(scene)
         trace = draws.run(ALGORITHM, points, {**OPTIONS, "n": n}, grid)
-        pixels = sorted({step.pixel for step in _steps(trace)})
-        pixels = [p for p in pixels if _partial(trace, p) and not _on_an_edge(points, p, n)]
-        if pixels or scene is not None:
+        pixels = _partial_pixels(trace)
+        rng.shuffle(pixels)
+        pixel = next((p for p in pixels if not _on_an_edge(points, p, n)), None)
+        if pixel is not None or scene is not None:
             break
-    if not pixels:
+    if pixel is None:
         raise ValueError("no pixel of the scene is partly covered with its samples off the edges")
-    pixel = pixels[rng.randrange(len(pixels))]
     samples = _samples(trace, pixel)
     hits = sum(int(step.values["hit"]) for step in samples)
     value = Fraction(hits, n * n)
@@ -74,10 +83,10 @@ def _coverage(seed, scene=None):
     text = (f"A triangle has the vertices {draws.vertices_text(points)}. Pixel (i, j) is the "
             f"square [i, i+1) x [j, j+1), y up. It is supersampled with {n} x {n} samples on a "
             f"regular grid, at (i + u, j + v) for u, v in {{{', '.join(offsets)}}}, all weighted "
-            f"equally; a sample exactly on an edge would follow the top-left rule. Give the "
+            f"equally. Give the "
             f"coverage of pixel p = {pixel}: the fraction of its samples inside the triangle, "
             f"as a fraction k/{n * n}.")
-    rows = tuple((str(s + 1), f"{row[1]}", f"{row[2]}", "inside" if step.values["hit"] else "outside")
+    rows = tuple((str(s + 1), row[1], row[2], "inside" if step.values["hit"] else "outside")
                  for s, (row, step) in enumerate(zip(positions.rows, samples)))
     summary = (f"{hits} of the {n * n} samples of p lie inside the triangle (each tested "
                f"against the three edges): coverage = {hits}/{n * n}"
@@ -88,13 +97,6 @@ def _coverage(seed, scene=None):
                                      f"Coverage (#{seed})")
     return draws.question(COVERAGE, seed, "Coverage of a pixel", text, answer, worked,
                           picture_scene)
-
-
-def _steps(trace):
-    for i in range(len(trace)):
-        step = trace.step(i)
-        if step.record is None and step.pixel is not None and "hit" in step.values:
-            yield step
 
 
 COVERAGE = Template("aa-coverage", "antialias",

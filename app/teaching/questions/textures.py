@@ -20,7 +20,7 @@ from app.teaching.questions.model import NUMERICAL, Answer, Template, Worked
 
 ALGORITHM = "triangle-texture"
 TEXTURE = "checker:8"   # 64 x 64 texels, levels 0 .. 6
-OPTIONS = {"texture": TEXTURE, "filter": "mip-nearest", "perspective": True, "w": (1.0,)*3}
+OPTIONS = {"texture": TEXTURE, "filter": "mip-nearest", "perspective": True, "w": (1.0,) * 3}
 MARGIN = 0.05           # lambda stays this far from a level's bounds L +- 1/2
 UV_STEPS = 8            # u, v in 0, 1/4, ..., 2
 

@@ -81,6 +81,8 @@ def scene_triangles(scene, template: Template, count: int | None = 3) -> tuple[l
     points = [tuple(Fraction(c) for c in p) for p in scene.flat]
     if count is not None and len(points) < count:
         raise ValueError(f"template {template.name} needs a scene with {count} points")
+    if area2(*points[:3]) == 0:
+        raise ValueError(f"template {template.name}: the scene's first triangle has no area")
     return points, scene.grid
 
 
@@ -104,7 +106,9 @@ def exact(value) -> Fraction:
 def fraction_text(value: Fraction) -> str:
     """3, -1/2, 7/4: the canonical exact form."""
     value = Fraction(value)
-    return str(value.numerator) if value.denominator == 1 else f"{value.numerator}/{value.denominator}"
+    if value.denominator == 1:
+        return str(value.numerator)
+    return f"{value.numerator}/{value.denominator}"
 
 
 def decimal_text(value: Fraction) -> str:

@@ -48,11 +48,11 @@ def _run(template, rng, scene, options=None, carried=()):
 def _setup(trace):
     """The run's triangle: (vertices in the order drawn, 2A, the edges table rows)."""
     values = trace.records_of(Vars)[0][1].values
-    if "2A" not in values:
-        raise ValueError("the scene's first triangle has no area: nothing to ask about")
+    edges = [record for _, record in trace.records_of(Table) if record.name == "edges"]
+    if not edges or not values.get("2A"):
+        raise ValueError("the scene's first triangle has no area once snapped to 1/256 px")
     vertices = [tuple(draws.exact(c) for c in values[f"P{k}"]) for k in range(3)]
-    edges = [record for _, record in trace.records_of(Table) if record.name == "edges"][0]
-    return vertices, draws.exact(values["2A"]), edges.rows
+    return vertices, draws.exact(values["2A"]), edges[0].rows
 
 
 def _frames(trace, want=None):
