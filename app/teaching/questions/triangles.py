@@ -156,21 +156,29 @@ def _top_left(seed, scene=None):
             f"{CENTRE} {EDGES} A centre exactly on an edge follows the top-left rule (y up): it "
             f"counts on a left edge or a bottom horizontal edge. Is pixel p = {step.pixel} filled?")
     worked_rows = tuple(row[:2] + (row[5], draws.decimal_text(e)) for row, e in zip(rows, es))
-    on = [k for k in range(3) if es[k] == 0]
-    if _tie(step):
-        reason = ", ".join(f"e{k} = 0: the centre lies on edge e{k}, a {rows[k][5]}" for k in on)
-    elif filled:
-        reason = "every edge value is positive: the centre is inside"
-    else:
-        reason = ", ".join(f"e{k} = {draws.decimal_text(es[k])} < 0" for k in range(3) if es[k] < 0)
-        reason = (reason or "a zero edge value on an edge the rule leaves out") + ": outside"
     verdict = "filled" if filled else "not filled"
     worked = Worked(("edge", "from -> to", "side", "e at p"), worked_rows,
                     "; ".join(_edge_sum(k, vertices, step.pixel, es[k]) for k in range(3))
-                    + f". {reason[0].upper()}{reason[1:]}; so p is {verdict}.")
+                    + f". {_reason(step, es, rows)}; so p is {verdict}.")
     answer = Answer(CHOICE, 0 if filled else 1, "yes" if filled else "no", choices=("yes", "no"))
     return draws.question(TOP_LEFT, seed, "Top-left rule at a pixel", text, answer, worked,
                           _scene(TOP_LEFT, trace, grid, options, seed, "Top-left rule"))
+
+
+def _reason(step, es, rows) -> str:
+    """Why the centre is in or out, from the run's verdict and edges table."""
+    if _tie(step):
+        parts = []
+        for k in (k for k in range(3) if es[k] == 0):
+            side, rule = rows[k][5].split(" (")
+            kept = "keeps" if rule.startswith("kept") else "leaves out"
+            parts.append(f"e{k} = 0: the centre lies on e{k}, a {side} edge, which the "
+                         f"top-left rule {kept}")
+        return ", and ".join(parts)
+    if step.kind == PLOT:
+        return "Every edge value is positive: the centre is inside"
+    return ", ".join(f"e{k} = {draws.decimal_text(es[k])} < 0" for k in range(3)
+                     if es[k] < 0) + ": the centre is outside"
 
 
 def _perspective(seed, scene=None):

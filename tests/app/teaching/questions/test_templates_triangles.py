@@ -70,6 +70,8 @@ def test_top_left_verdicts_follow_the_rule_and_ask_about_ties():
         filled = oracle.inside(tri, point)
         assert question.answer.kind == CHOICE and question.answer.choices == ("yes", "no")
         assert question.answer.value == (0 if filled else 1), seed
+        if on_edge and min(es) == 0 and not any(e < 0 for e in es):
+            assert ("keeps" if filled else "leaves out") in question.worked.summary
         answers.append((on_edge, filled))
     assert ties >= 80, "the rule decides in many variants"
     assert {(True, True), (True, False), (False, True), (False, False)} <= set(answers)
