@@ -49,9 +49,14 @@ def _circle(name: str, seed: int, scene):
     return scene, trace, decisions, rng
 
 
+def _options(scene) -> dict:
+    """The scene's options, defaults filled in."""
+    return scene.spec.resolve(scene.options)
+
+
 def _inputs(scene) -> str:
     (xc, yc), = scene.points
-    return f"centre C = ({xc}, {yc}), radius R = {scene.options['radius']}"
+    return f"centre C = ({xc}, {yc}), radius R = {_options(scene)['radius']}"
 
 
 def _worked(trace, decisions, upto: int, summary: str) -> Worked:
@@ -72,8 +77,9 @@ def second_octant(seed: int, scene=None, pictured: bool = True):
                 xc + int(step.values["x"]), yc + int(step.values["y"])):
             pixels.append(step.pixel)
     pixels = list(dict.fromkeys(pixels))
-    text = (f"The midpoint circle with {_inputs(scene)} ({_rule(scene.options['start'])}). "
-            f"Which pixels does it plot in the second octant, from ({xc}, {yc + scene.options['radius']}) "
+    options = _options(scene)
+    text = (f"The midpoint circle with {_inputs(scene)} ({_rule(options['start'])}). "
+            f"Which pixels does it plot in the second octant, from ({xc}, {yc + options['radius']}) "
             "to the diagonal x = y, before mirroring? Answer with the pixels in the order "
             "plotted, as (x, y) separated by spaces.")
     canonical = " ".join(map(common.pixel_text, pixels))
@@ -94,7 +100,7 @@ def decision_after_steps(seed: int, scene=None, pictured: bool = True):
                          "it needs 2 or more")
     k = rng.randint(1, len(decisions) - 1)
     d = common.exact(trace.step(decisions[k]).values["d"])  # tested at step k + 1
-    text = (f"The midpoint circle with {_inputs(scene)} ({_rule(scene.options['start'])}). "
+    text = (f"The midpoint circle with {_inputs(scene)} ({_rule(_options(scene)['start'])}). "
             f"What is d after {k} step(s) (d_{k}, the value step {k + 1} tests)? Answer with "
             "an exact number (an integer, or a fraction p/q).")
     shown = common.fraction_text(d)

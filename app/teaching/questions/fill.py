@@ -74,7 +74,8 @@ def _fill(name: str, seed: int, scene):
         scene, rng = common.drawn(seed, _draw, _well_posed)
     else:
         common.suited(name, ALGORITHMS, scene)
-        if scene.options.get("fill_rule") != "evenodd" or scene.options.get("arithmetic") != "exact":
+        options = scene.spec.resolve(scene.options)
+        if options["fill_rule"] != "evenodd" or options["arithmetic"] != "exact":
             raise ValueError(f"{name}: the scene must fill by the even-odd rule in exact arithmetic")
         rng = random.Random(seed)
     trace = common.trace_of(scene)
