@@ -46,10 +46,6 @@ def outputs(path) -> list[Output]:
         for fmt in ("md", "pdf") for name in file_names(fmt)]
 
 
-def _group_heading(sid: str) -> str:
-    return f"Student: {sid}" if sid else "Questions"
-
-
 def _numbered(bank):
     """(group id, number within the bank, question) in order."""
     n = 0
@@ -67,7 +63,7 @@ def markdown(bank, key: bool) -> str:
     for sid, n, question in _numbered(bank):
         if sid != current:
             current = sid
-            lines += [f"## {md(_group_heading(sid))}", ""]
+            lines += [f"## Student: {md(sid)}", ""] if sid else []
             if not key:
                 lines += [md(FIELDS), ""]
         lines += [f"### {n}. {md(question.title)}", "", md(question.text), ""]
@@ -121,8 +117,8 @@ def pdf_bytes(bank, key: bool) -> bytes:
             pdf.add_page()
             pdf.set_font("sans", "B", 14)
             kind = "Answer key" if key else "Questions"
-            pdf.multi_cell(0, 7, f"{kind}: {_group_heading(sid)} (seed {bank.seed})",
-                           new_x="LMARGIN", new_y="NEXT")
+            heading = f"{kind}, student: {sid}" if sid else kind
+            pdf.multi_cell(0, 7, f"{heading} (seed {bank.seed})", new_x="LMARGIN", new_y="NEXT")
             if not key:
                 pdf.set_font("sans", "", 10)
                 pdf.multi_cell(0, 8, FIELDS, new_x="LMARGIN", new_y="NEXT")
@@ -131,6 +127,10 @@ def pdf_bytes(bank, key: bool) -> bytes:
 
 
 def _pdf_question(pdf, n: int, question, key: bool) -> None:
+    # A question starts a page of its own rather than leave its picture
+    # (or its worked steps) to the next one.
+    if pdf.get_y() + _room(question, key) > pdf.h - pdf.b_margin:
+        pdf.add_page()
     pdf.ln(3)
     pdf.set_font("sans", "B", 11)
     pdf.multi_cell(0, 6, f"{n}. {question.title}", new_x="LMARGIN", new_y="NEXT")
@@ -146,12 +146,26 @@ def _pdf_question(pdf, n: int, question, key: bool) -> None:
         pdf.multi_cell(0, 5, question.worked.summary, new_x="LMARGIN", new_y="NEXT")
 
 
-def _pdf_picture(pdf, png: bytes) -> None:
+def _room(question, key: bool) -> float:
+    """About the height (mm) a question takes: its text, and its picture or
+    its worked steps; a question longer than a page still runs on."""
+    text = 12 + 5 * (len(question.text) // 100 + 1)
+    if key:
+        return text + 12 + 4.5 * (len(question.worked.rows) + 1)
+    return text + (_picture_size(question.picture)[1] + 3 if question.picture else 0)
+
+
+def _picture_size(png: bytes) -> tuple[float, float]:
+    """The picture's width and height on the page, in mm."""
     from PIL import Image
     with Image.open(io.BytesIO(png)) as image:
         width, height = image.size
     w = min(PICTURE_WIDTH, width * 0.25)  # 0.25 mm a screen pixel: a 16 px cell is 4 mm
-    h = w * height / width
+    return w, w * height / width
+
+
+def _pdf_picture(pdf, png: bytes) -> None:
+    w, h = _picture_size(png)
     if pdf.get_y() + h > pdf.h - pdf.b_margin:
         pdf.add_page()
     pdf.image(io.BytesIO(png), x=pdf.l_margin, y=pdf.get_y() + 1, w=w, h=h)

@@ -102,7 +102,7 @@ def test_the_pdf_sheet_has_a_page_per_student_and_a_separate_key(tmp_path):
     assert len(sheet.pages) == 3
     for page, (sid, (question,)) in zip(sheet.pages, drawn.groups):
         text = " ".join(page.extract_text().split())
-        assert f"Student: {sid}" in text
+        assert f"student: {sid}" in text
         assert " ".join(question.text.split())[:60] in text
         assert question.answer.text not in text.split("plotted at step")[-1]
         assert page.images  # the picture is embedded
