@@ -6,7 +6,8 @@ this module on first use, so the command's start-up never does).
 Each function does what a command does, through the same code: ``run`` and
 ``open_scene`` as `rasterlab run` (app/model/runs.py), ``Run.export`` and
 ``export`` as `rasterlab export` (app/render/formats.py), ``check`` as
-`rasterlab check` (app/teaching/check_run.py). Bad input raises ValueError
+`rasterlab check` (app/teaching/check_run.py), ``question`` as one variant
+of `rasterlab questions` (app/teaching/questions/). Bad input raises ValueError
 with the one line the command would print; nothing here imports Qt.
 """
 from __future__ import annotations
@@ -25,7 +26,7 @@ from app.model import scene as scenes
 from app.model import shipped
 from app.model.escape import html_text
 
-__all__ = ["run", "open_scene", "export", "check", "Run", "CheckResult"]
+__all__ = ["run", "open_scene", "export", "check", "question", "Run", "CheckResult"]
 
 FORMATS = ("gif", "mp4", "webm", "pdf", "html", "png", "svg")
 FOLDERS = ("png", "svg")  # a folder of frames: named by format=, never by a suffix
@@ -246,6 +247,30 @@ def check(student_file, *, algorithm: str, cases="hard", seed: int = 0,
                         str(memory_limit), require_sandbox=require_sandbox)
     return CheckResult(check_report.as_json(*checked),
                        "\n".join(check_report.text_lines(*checked)))
+
+
+def question(template: str, seed: int, scene=None):
+    """One variant of a question template, as `rasterlab questions` draws it:
+    the same template and seed give the same question.
+
+    template: its name, as `rasterlab questions --list` shows it.
+    seed: a whole number; it picks the variant's inputs.
+    scene: None, or a scene (a Scene, a path, a shipped scene's name, or a Run) of an
+        algorithm the template asks about, whose inputs the question uses.
+    Returns a Question (app/teaching/questions/model.py): text, answer,
+    worked steps, scene and picture (PNG bytes).
+    """
+    from app.teaching.questions import registry as questions
+    if isinstance(seed, bool) or not isinstance(seed, int):
+        raise ValueError(f"seed: expected a whole number, got {seed!r}")
+    if isinstance(scene, Run):
+        scene = scene._scene
+    elif scene is not None and not isinstance(scene, scenes.Scene):
+        scene = _load(scene)
+    try:
+        return questions.get(template).make(seed, scene)
+    except InputError as error:
+        raise ValueError(str(error)) from None
 
 
 class CheckResult:

@@ -16,7 +16,7 @@ from algorithms.core import registry
 from algorithms.core.raster import MAX_GRID
 from algorithms.core.registry import InputError, parse_number
 from algorithms.core.trace import DEFAULT_STEP_CAP, MAX_STEP_CAP, TraceError
-from app import cli_teaching
+from app import cli_questions, cli_teaching
 from app.model import budget, runs
 from app.model.files import Output, OutputRefused, check_outputs
 from app.model.runs import DEFAULT_GRID, Rows, check_grid, fit_grid, run_result, save_new
@@ -77,6 +77,7 @@ def build_parser() -> Parser:
     cli_teaching.add_check_command(parser, commands)
     cli_teaching.add_grader_command(parser, commands)
     cli_teaching.add_worksheet_command(parser, commands)
+    cli_questions.add_questions_command(parser, commands)
     return parser
 
 
@@ -621,7 +622,8 @@ def main(argv: list[str] | None = None) -> int:
                 "export": command_export, "report": command_report,
                 "template": cli_teaching.command_template, "check": cli_teaching.command_check,
                 "grader": cli_teaching.command_grader,
-                "worksheet": cli_teaching.command_worksheet}[args.command](args)
+                "worksheet": cli_teaching.command_worksheet,
+                "questions": cli_questions.command_questions}[args.command](args)
     except (CommandError, InputError, OutputRefused) as error:
         print(f"rasterlab: {one_line(str(error))}", file=sys.stderr)
         return 2

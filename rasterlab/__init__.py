@@ -11,7 +11,7 @@ own packages before a same-named folder in the current directory. The
 price, stated in the docs: in a process that imported ``rasterlab``,
 ``import algorithms`` means RasterLab's.
 
-``rasterlab.run``, ``open_scene``, ``export``, ``check``, ``Run`` and
+``rasterlab.run``, ``open_scene``, ``export``, ``check``, ``question``, ``Run`` and
 ``CheckResult`` are the Python API (app/api.py, docs/reference/api.md).
 """
 from __future__ import annotations
@@ -45,7 +45,7 @@ def main(argv: list[str] | None = None) -> int:
 
 # The Python API (app/api.py), loaded on first use (PEP 562) so that the
 # command's start-up does not import it.
-_API = ("run", "open_scene", "export", "check", "Run", "CheckResult")
+_API = ("run", "open_scene", "export", "check", "question", "Run", "CheckResult")
 __all__ = ["main", *_API]
 
 

@@ -113,7 +113,8 @@ def default_blank(keys) -> tuple[str, ...]:
     return tuple(key for key in keys if key not in GIVEN)
 
 
-def _row(table: StepTable, i: int, keys: list[str]) -> tuple[str, ...]:
+def sheet_row(table: StepTable, i: int, keys: list[str]) -> tuple[str, ...]:
+    """Step i's cells for ``keys`` as text, the decision variable after its update too."""
     cells = dict(zip(table.keys, table.text_row(i)))
     decision = _decision(table.trace)
     if decision is not None and decision + AFTER in keys:
@@ -192,7 +193,7 @@ def build(scene, blank=None, memory_limit: int = budget.DEFAULT_MEMORY_LIMIT,
     note = "" if len(steps) <= MAX_ROWS else \
         f"The first {MAX_ROWS} such steps; the run goes on after step {steps[MAX_ROWS - 1]}."
     steps = steps[:MAX_ROWS]
-    rows = [_row(table, i, keys) for i in steps]
+    rows = [sheet_row(table, i, keys) for i in steps]
     # A column empty on every row (a count the run never sets) is left out.
     kept = [k for k, key in enumerate(keys) if key == "step" or any(row[k] for row in rows)]
     keys = [keys[k] for k in kept]
