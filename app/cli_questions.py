@@ -33,6 +33,9 @@ def add_questions_command(parser, commands) -> None:
     questions.add_argument("--per-student", metavar="IDS.csv",
                            help="one group of variants per student id: the column id, "
                                 "student or email, else the first column")
+    questions.add_argument("--scene", metavar="SCENE",
+                           help="ask about this scene's inputs (a file or a shipped scene's "
+                                "name); the seed then picks only the step or the pixel")
     questions.add_argument("--force", action="store_true",
                            help="replace files RasterLab did not write")
 
@@ -48,10 +51,12 @@ def _whole(text: str, option: str, low: int, high: int) -> int:
 
 
 def command_questions(args) -> int:
+    from app.model import scene as scenes
     from app.teaching.questions import bank, registry, writers
     if args.list:
+        width = max(len(name) for name in registry.TEMPLATES)
         for template in registry.TEMPLATES.values():
-            print(f"{template.name:24}  {template.family:10}  {template.title}")
+            print(f"{template.name:{width}}  {template.family:10}  {template.title}")
         return 0
     if not args.templates:
         raise InputError("name one or more templates (`rasterlab questions --list`)")
@@ -63,10 +68,12 @@ def command_questions(args) -> int:
         for name in args.templates:
             registry.get(name)
         ids = bank.read_ids(args.per_student) if args.per_student else None
+        scene_path = _scene_path(args.scene)
         check_outputs(writers.outputs(args.format, args.out),
-                      [args.per_student] if args.per_student else [], force=args.force)
-        drawn = (bank.per_student(args.templates, count, ids, seed) if ids is not None
-                 else bank.draw(args.templates, count, seed))
+                      [args.per_student, scene_path], force=args.force)
+        scene = scenes.load(scene_path) if scene_path is not None else None
+        drawn = (bank.per_student(args.templates, count, ids, seed, scene) if ids is not None
+                 else bank.draw(args.templates, count, seed, scene))
     except ValueError as error:  # OutputRefused is one too
         raise InputError(str(error)) from None
     files = writers.WRITERS[args.format](drawn, Path(args.out))
@@ -74,3 +81,9 @@ def command_questions(args) -> int:
     print(f"{args.out}: {total} questions in {len(drawn.groups)} group(s), "
           f"{len(files)} file(s) ({args.format}, seed {seed})")
     return 0
+
+
+def _scene_path(text: str | None):
+    """The file --scene names (a path or a shipped scene's name), or None."""
+    from app.model import shipped
+    return shipped.scene_path(text) if text is not None else None

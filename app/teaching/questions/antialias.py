@@ -100,7 +100,7 @@ def _coverage(seed, scene=None):
 
 
 COVERAGE = Template("aa-coverage", "antialias",
-                    "the coverage of pixel p with n x n samples (a fraction k/n^2)",
+                    "Supersampling: the coverage of pixel p with n x n samples (k/n^2)",
                     (ALGORITHM,), _coverage)
 
 TEMPLATES = (COVERAGE,)

@@ -34,41 +34,43 @@ def check_count(count: int) -> int:
     return count
 
 
-def group(names, count: int, seed) -> tuple[Question, ...]:
+def group(names, count: int, seed, scene=None) -> tuple[Question, ...]:
     """``count`` distinct variants of each template of ``names``, in order,
-    titled "<title> (#n)"."""
+    titled "<title> (#n)"; with ``scene``, all about that scene's inputs."""
     check_count(count)
     templates = [registry.get(name) for name in names]
     questions: list[Question] = []
     seen: set[str] = set()
     for template in templates:
         for n in range(1, count + 1):
-            question = _distinct(template, seed, n, seen)
+            question = _distinct(template, seed, n, seen, scene)
             seen.add(question.text)
             questions.append(dataclasses.replace(question, title=f"{question.title} (#{n})"))
     return tuple(questions)
 
 
-def _distinct(template, seed, n: int, seen: set) -> Question:
+def _distinct(template, seed, n: int, seen: set, scene) -> Question:
     for attempt in range(MAX_REDRAWS):
-        question = template.make(derived_seed(seed, template.name, n, attempt))
+        question = template.make(derived_seed(seed, template.name, n, attempt), scene)
         if question.text not in seen:
             return question
     raise ValueError(f"{template.name}: no new variant after {MAX_REDRAWS} draws for variant "
                      f"{n}; ask for fewer (--count)")
 
 
-def draw(names, count: int, seed: int) -> Bank:
-    """One group of ``count`` variants of each template, from ``seed``."""
-    return Bank(groups=(("", group(names, count, seed)),), seed=seed)
+def draw(names, count: int, seed: int, scene=None) -> Bank:
+    """One group of ``count`` variants of each template, from ``seed``
+    (about ``scene``'s inputs when given)."""
+    return Bank(groups=(("", group(names, count, seed, scene)),), seed=seed)
 
 
-def per_student(names, count: int, ids, seed: int = 0) -> Bank:
+def per_student(names, count: int, ids, seed: int = 0, scene=None) -> Bank:
     """A group for each student id, its seeds derived from the id (and ``seed``)."""
     ids = list(dict.fromkeys(ids))
     if not ids:
         raise ValueError("no student ids given")
-    return Bank(groups=tuple((sid, group(names, count, f"{seed}\x1e{sid}")) for sid in ids),
+    return Bank(groups=tuple((sid, group(names, count, f"{seed}\x1e{sid}", scene))
+                             for sid in ids),
                 seed=seed)
 
 

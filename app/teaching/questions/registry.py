@@ -10,7 +10,7 @@ from importlib import import_module
 
 from app.teaching.questions.model import Template
 
-FAMILIES = ("lines", "circles", "fill")
+FAMILIES = ("lines", "circles", "fill", "triangles", "visibility", "antialias", "textures")
 
 
 def _collect() -> dict[str, Template]:

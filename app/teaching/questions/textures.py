@@ -107,7 +107,7 @@ def _covered(trace):
             yield step
 
 
-MIP_LEVEL = Template("texture-mip-level", "textures", "the mip level pixel p reads",
+MIP_LEVEL = Template("texture-mip-level", "textures", "Texture: the mip level pixel p reads",
                      (ALGORITHM,), _mip_level)
 
 TEMPLATES = (MIP_LEVEL,)

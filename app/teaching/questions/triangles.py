@@ -236,15 +236,15 @@ def _recorded_fraction(value: float) -> Fraction:
     return found
 
 
-EDGE_VALUES = Template("triangle-edge-values", "triangles", "the edge values e0, e1, e2 at pixel p",
+EDGE_VALUES = Template("triangle-edge-values", "triangles", "Triangle: the edge values e0, e1, e2 at pixel p",
                        TRAVERSALS, _edge_values)
 BARYCENTRIC = Template("triangle-barycentric-weights", "triangles",
-                       "the barycentric weights at pixel p (exact fractions)",
+                       "Triangle: the barycentric weights at pixel p (exact fractions)",
                        ("triangle-barycentric",) + TRAVERSALS[:-2], _weights)
 TOP_LEFT = Template("triangle-top-left", "triangles",
-                    "is pixel p filled under the top-left rule (yes/no)", TRAVERSALS, _top_left)
+                    "Triangle: is pixel p filled under the top-left rule (yes/no)", TRAVERSALS, _top_left)
 PERSPECTIVE = Template("triangle-perspective-value", "triangles",
-                       "the perspective-correct value of an attribute at pixel p",
+                       "Triangle: the perspective-correct value of an attribute at pixel p",
                        ("triangle-perspective",), _perspective)
 
 TEMPLATES = (EDGE_VALUES, BARYCENTRIC, TOP_LEFT, PERSPECTIVE)

@@ -163,9 +163,9 @@ def _painter(seed, scene=None):
     return draws.question(PAINTER, seed, "Painter's order", text, answer, worked, picture_scene)
 
 
-VISIBLE = Template("zbuffer-visible", "visibility", "which triangle is visible at pixel p",
+VISIBLE = Template("zbuffer-visible", "visibility", "Z-buffer: which triangle is visible at pixel p",
                    ("zbuffer", "painter"), _visible)
-PAINTER = Template("painter-fails", "visibility", "does the painter's order fail here (yes/no)",
+PAINTER = Template("painter-fails", "visibility", "Painter's algorithm: does its order fail here (yes/no)",
                    ("painter", "zbuffer"), _painter)
 
 TEMPLATES = (VISIBLE, PAINTER)
