@@ -35,6 +35,7 @@ class ExercisePanel(QWidget):
     saveRequested = Signal()
     settingsChanged = Signal()
     studentNamed = Signal(str)     # the name typed in the Student field
+    practiceRequested = Signal()   # "Practice: new numbers": a new scene drawn for the algorithm
 
     def __init__(self, parent=None):
         super().__init__(parent)
@@ -74,10 +75,15 @@ class ExercisePanel(QWidget):
         self.undo_button = QPushButton("Undo answer")
         self.save_button = QPushButton("Save summary…")
         self.save_button.setToolTip("Save every answer and the totals as CSV")
+        self.practice_button = QPushButton("Practice: new numbers")
+        self.practice_button.setToolTip("Start again on a new scene for this algorithm, drawn "
+                                        "by the question generator")
         self.hint_button.clicked.connect(self.hintRequested)
         self.undo_button.clicked.connect(self.undoRequested)
         self.save_button.clicked.connect(self.saveRequested)
-        for button in (self.hint_button, self.undo_button, self.save_button):
+        self.practice_button.clicked.connect(self.practiceRequested)
+        for button in (self.hint_button, self.undo_button, self.save_button,
+                       self.practice_button):
             row.addWidget(button)
         return row
 

@@ -113,6 +113,7 @@ class MainWindow(QMainWindow):
         from app.gui.breakpoint_actions import Breakpoints
         from app.gui.entries import compare_entry, gallery_entry
         from app.gui.exercise_mode import ExerciseMode
+        from app.gui.question_actions import QuestionActions
         from app.gui.student_actions import StudentActions
         from app.gui.inspector_dock import InspectorDock
         from app.gui.preferences import Preferences, PreferencesController
@@ -134,6 +135,7 @@ class MainWindow(QMainWindow):
         self.recording_status = RecordingStatus(self)  # long runs: progress bar and Cancel
         self.exercise_mode = ExerciseMode(self)  # Run > Exercise
         self.student_actions = StudentActions(self)  # File > Open algorithm…, Run > First divergence
+        self.question_actions = QuestionActions(self)  # File > Export questions…, practice
         from app.gui.overlay_actions import TriangleOverlays
         self.overlays = TriangleOverlays(self)  # View > Overlays (triangle and line geometry)
         from app.gui.input_guard import InputGuard
