@@ -63,11 +63,12 @@ class QuestionActions(QObject):
         """Draw the bank the choices name and write it; says what it wrote or why not."""
         from app.teaching.questions import bank
         from app.teaching.questions.writers import WRITERS
-        scene = self.window.file_actions.current_scene() if choices["this_scene"] else None
+        scene = self.window.player.scene if choices["this_scene"] else None
         try:
             if choices["students"]:
                 ids = bank.read_ids(choices["students"])
-                drawn = bank.per_student([choices["template"]], choices["count"], ids, scene=scene)
+                drawn = bank.per_student([choices["template"]], choices["count"], ids,
+                                         choices["seed"], scene)
             else:
                 drawn = bank.draw([choices["template"]], choices["count"], choices["seed"],
                                   scene=scene)
@@ -87,7 +88,8 @@ class QuestionActions(QObject):
         template = templates[seed % len(templates)]
         try:
             scene = template.make(seed).scene
-            self.window.file_actions.apply_scene(scene)
+            self.window.set_scene(scene.algorithm, scene.points, scene.options,
+                                  (scene.width, scene.height))
         except (ValueError, InputError) as error:
             self.window.say_error(f"No new numbers for this algorithm: {error}")
             return False

@@ -19,7 +19,7 @@ def own_files(tmp_path, monkeypatch):
 
 
 def choices(**given):
-    base = {"template": "line-decision-after-step", "this_scene": False, "count": 3, "seed": 7,
+    base = {"template": "line-bresenham-d", "this_scene": False, "count": 3, "seed": 7,
             "format": "md", "students": ""}
     return {**base, **given}
 
@@ -28,7 +28,7 @@ def test_the_file_menu_offers_it_and_the_templates_ask_about_the_algorithm(windo
     actions = window.question_actions
     assert actions.export_action in window.menus["file"].actions()
     names = [t.name for t in actions.templates()]
-    assert "line-decision-after-step" in names
+    assert "line-bresenham-d" in names
     assert all("line-bresenham" in t.algorithms for t in actions.templates())
 
 
@@ -37,14 +37,14 @@ def test_a_bank_is_written_and_the_same_seed_writes_the_same_files(window, tmp_p
     again = window.question_actions.export(choices(), tmp_path / "b")
     assert first and again
     assert [p.read_bytes() for p in first] == [p.read_bytes() for p in again]
-    text = "\n".join(p.read_text(encoding="utf-8") for p in first if p.suffix == ".md")
-    assert text.count("Question") >= 3
+    sheet = next(p for p in first if p.name == "questions.md").read_text(encoding="utf-8")
+    assert [f"### {n}. Bresenham: d after step" in sheet for n in (1, 2, 3)] == [True] * 3
 
 
 def test_questions_about_the_scene_on_show_use_its_points(window, tmp_path):
     written = window.question_actions.export(choices(this_scene=True), tmp_path / "s")
-    text = "\n".join(p.read_text(encoding="utf-8") for p in written if p.suffix == ".md")
-    assert "(2, 3)" in text and "(9, 6)" in text
+    sheet = next(p for p in written if p.name == "questions.md").read_text(encoding="utf-8")
+    assert sheet.count("P = (2, 3), Q = (9, 6)") == 3
 
 
 def test_a_missing_ids_file_is_said_in_one_line(window, tmp_path):
