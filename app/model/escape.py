@@ -16,6 +16,9 @@ U+FFFD or a space, so the UTF-8 writers never fail on them.
     latex_file_name a file name LaTeX can be given, or ValueError
     markdown_text   Markdown inline text: no raw HTML, links or images
     csv_row         CSV cells guarded against spreadsheet formulas
+    gift_text       Moodle GIFT text: its marks (~ = # { } : and \\) escaped, one line
+    shortanswer     a Moodle short answer, matched as written: its wildcard * escaped
+    moodle_category one name in a Moodle category path: its separator / doubled
     foreign_text    what another program wrote (a student's code), safe for any of these
                     and for a terminal: no control character, escape sequence or lone surrogate
 """
@@ -153,6 +156,32 @@ def csv_cell(cell):
 def csv_row(cells) -> list:
     """A row for ``csv.writer``: every cell through ``csv_cell``."""
     return [csv_cell(cell) for cell in cells]
+
+
+# GIFT's marks: a backslash before one makes it text (Moodle's "GIFT format"
+# page); the backslash itself is escaped first, so "\\=" stays as written.
+_GIFT_MARKS = set("\\~=#{}:")
+
+
+def gift_text(text: str) -> str:
+    """Text inside a GIFT question (title, text, answers, feedback) that Moodle
+    reads as ``text``: each mark as ``\\mark``, line ends as GIFT's ``\\n``
+    (a blank line would end the question), other controls as spaces."""
+    lines = _LINE_END.split(_encodable(text))
+    return "\\n".join("".join("\\" + char if char in _GIFT_MARKS else char
+                               for char in _CONTROL.sub(" ", line)) for line in lines)
+
+
+def shortanswer(text: str) -> str:
+    """A Moodle short answer that matches only ``text``: Moodle reads ``*``
+    in an answer as "any characters", and ``\\*`` as the character itself."""
+    return _encodable(text).replace("*", "\\*")
+
+
+def moodle_category(name: str) -> str:
+    """One level of a Moodle category path (``$course$/top/NAME``): Moodle
+    splits the path at ``/`` and reads ``//`` as a ``/`` within a name."""
+    return _CONTROL.sub(" ", _encodable(name)).replace("/", "//")
 
 
 def foreign_text(text: str, limit: int | None = None) -> str:
