@@ -82,3 +82,26 @@ def per_student(seed: int = 7) -> Bank:
     """Two students' groups, one id holding a slash and a colon."""
     kinds = every_kind()
     return Bank(groups=(("s1/a:b", kinds[:3]), ("s2", kinds[3:])), seed=seed)
+
+
+def as_written(text: str) -> str:
+    """``text`` as an XML or HTML writer gives it back: what XML cannot
+    hold (the lone surrogate, the control character) as U+FFFD."""
+    return text.replace("\ud800", "\ufffd").replace("\x01", "\ufffd")
+
+
+def html_fragment(html: str):
+    """The elements of an HTML fragment the writers made (well-formed XHTML),
+    inside a <div>: parsing fails on any markup the escaping let through."""
+    import xml.etree.ElementTree as ET
+    return ET.fromstring(f"<div>{html}</div>")
+
+
+def table_cells(html: str) -> list[list[str]]:
+    """The rows of the first table of ``html``, header row first."""
+    table = html_fragment(html).find(".//table")
+    return [["".join(cell.itertext()) for cell in row] for row in table.iter("tr")]
+
+
+def worked_cells(worked: Worked) -> list[list[str]]:
+    return [list(worked.columns)] + [list(row) for row in worked.rows]
