@@ -9,6 +9,7 @@ U+FFFD or a space, so the UTF-8 writers never fail on them.
 
     html_text       HTML text and quoted attribute values
     script_json     a value as JSON inside a <script> element
+    json_text       a string for a JSON file another program reads (no lone surrogate)
     xml_text        XML (SVG) text and quoted attribute values
     xml_chars       text an XML library (ElementTree) escapes: what XML cannot hold as U+FFFD
     latex_text      LaTeX text: every special character as its command
@@ -61,6 +62,13 @@ def script_json(value) -> str:
     as a \\u escape."""
     text = json.dumps(value, separators=(",", ":"), allow_nan=False, ensure_ascii=True)
     return text.replace("<", "\\u003c").replace(">", "\\u003e").replace("&", "\\u0026")
+
+
+def json_text(text: str) -> str:
+    """A string for a JSON file another program reads: JSON can spell a
+    lone surrogate (``\\ud800``) but many readers refuse it, and controls
+    other than line ends and tabs mean nothing there; both as U+FFFD."""
+    return _FOREIGN.sub("\ufffd", _encodable(text))
 
 
 def xml_chars(text: str) -> str:

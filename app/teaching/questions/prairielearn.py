@@ -23,6 +23,7 @@ import re
 import uuid
 from pathlib import Path
 
+from app.model import escape
 from app.model.files import Output, check_outputs, listed, manifest_bytes, write_atomically
 from app.model.staging import StagedFolder
 from app.teaching.questions import lms
@@ -62,7 +63,7 @@ def write(bank: Bank, path: Path, force: bool = False) -> list[Path]:
 def files(question: Question) -> dict[str, bytes]:
     """The files of the folder of ``question``'s template."""
     info = {"uuid": str(uuid.uuid5(NAMESPACE, question.template)),
-            "title": re.sub(r"\s*\(#\d+\)$", "", question.title),
+            "title": escape.json_text(re.sub(r"\s*\(#\d+\)$", "", question.title)),
             "topic": "RasterLab", "tags": ["rasterlab"], "type": "v3"}
     return {"info.json": (json.dumps(info, indent=2, ensure_ascii=True) + "\n").encode(),
             "question.html": question_html(question.answer.kind).encode(),
