@@ -75,16 +75,17 @@ def how_to_write(answer: Answer) -> str:
 def text_html(text: str) -> str:
     """Plain question text as HTML paragraphs: a blank line starts a new one,
     a line end stays a line break."""
-    paragraphs = [part for part in text.replace("\r\n", "\n").split("\n\n") if part.strip()]
+    text = text.replace("\r\n", "\n").replace("\r", "\n")
+    paragraphs = [part for part in text.split("\n\n") if part.strip()]
     return "".join("<p>" + "<br/>".join(escape.html_text(line) for line in part.split("\n"))
                    + "</p>" for part in paragraphs)
 
 
-def question_html(question: Question, decimals: bool = True, picture: str | None = None) -> str:
-    """The question as HTML: its text, how to write a decimal answer (when
-    the tool reads decimals only) and the picture (``picture``: its src)."""
+def question_html(question: Question, picture: str | None = None) -> str:
+    """The question as HTML for a tool that reads decimals only: its text,
+    how to write the answer, and the picture (``picture``: its src)."""
     parts = [text_html(question.text)]
-    advice = how_to_write(question.answer) if decimals else ""
+    advice = how_to_write(question.answer)
     if advice:
         parts.append(text_html(advice))
     if picture is not None:

@@ -17,9 +17,9 @@ from pathlib import Path
 from app.model import escape
 from app.model.files import Output, check_outputs, not_ours, write_atomically
 from app.teaching.questions import lms
-from app.teaching.questions.model import CHOICE, NUMERICAL, Bank, Question
+from app.teaching.questions.model import CHOICE, NUMERICAL, SHORT, Bank, Question
 
-TYPES = {NUMERICAL: "numerical", "short": "shortanswer", CHOICE: "multichoice"}
+TYPES = {NUMERICAL: "numerical", SHORT: "shortanswer", CHOICE: "multichoice"}
 
 
 def outputs(bank: Bank, path) -> list[Output]:

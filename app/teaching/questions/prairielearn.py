@@ -27,7 +27,7 @@ from app.model import escape
 from app.model.files import Output, check_outputs, listed, manifest_bytes, write_atomically
 from app.model.staging import StagedFolder
 from app.teaching.questions import lms
-from app.teaching.questions.model import CHOICE, NUMERICAL, Bank, Question
+from app.teaching.questions.model import CHOICE, NUMERICAL, SHORT, Bank, Question
 
 MANIFEST = ".rasterlab-prairielearn.json"  # the files the last export wrote into a folder
 FILES = ("info.json", "question.html", "server.py")
@@ -102,7 +102,7 @@ def _templates(bank: Bank) -> dict[str, Question]:
 INPUTS = {
     NUMERICAL: '<pl-number-input answers-name="answer" comparison="relabs" rtol="0" '
                'atol="{{params.atol}}" allow-fractions="true" label="Answer:"></pl-number-input>',
-    "short": '<pl-string-input answers-name="answer" remove-leading-trailing="true" '
+    SHORT: '<pl-string-input answers-name="answer" remove-leading-trailing="true" '
              'label="Answer:"></pl-string-input>',
     CHOICE: '<pl-multiple-choice answers-name="answer">\n'
             '  {{#params.choices}}<pl-answer correct="{{correct}}">{{text}}</pl-answer>'

@@ -21,7 +21,7 @@ from pathlib import Path
 from app.model import escape
 from app.model.files import Output, check_outputs, not_ours, write_atomically
 from app.teaching.questions import lms
-from app.teaching.questions.model import CHOICE, NUMERICAL, Bank, Question
+from app.teaching.questions.model import CHOICE, NUMERICAL, SHORT, Bank, Question
 
 sub = ET.SubElement
 
@@ -111,7 +111,7 @@ def item(question: Question, identifier: str, title: str) -> ET.Element:
 
 def _response_declaration(question: Question) -> ET.Element:
     answer = question.answer
-    base = {NUMERICAL: "float", CHOICE: "identifier"}.get(answer.kind, "string")
+    base = {NUMERICAL: "float", SHORT: "string", CHOICE: "identifier"}[answer.kind]
     declaration = ET.Element("responseDeclaration", {
         "identifier": "RESPONSE", "cardinality": "single", "baseType": base})
     correct = sub(declaration, "correctResponse")
