@@ -38,6 +38,7 @@ def write(bank: Bank, path: Path, force: bool = False) -> list[Path]:
 
 
 def gift_bytes(bank: Bank) -> bytes:
+    """The file: the header, then per group its category line and questions."""
     parts = [HEADER.format(seed=int(bank.seed))]
     for group, members in bank.groups:
         category = escape.moodle_category(lms.group_name(bank, group))

@@ -36,6 +36,7 @@ def write(bank: Bank, path: Path, force: bool = False) -> list[Path]:
 
 
 def xml_bytes(bank: Bank) -> bytes:
+    """The file: per group its category question, then its questions."""
     quiz = ET.Element("quiz")
     quiz.append(ET.Comment(f" RasterLab question bank, seed {int(bank.seed)} "))
     for group, members in bank.groups:

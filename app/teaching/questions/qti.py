@@ -23,15 +23,14 @@ from app.model.files import Output, check_outputs, not_ours, write_atomically
 from app.teaching.questions import lms
 from app.teaching.questions.model import CHOICE, NUMERICAL, SHORT, Bank, Question
 
-sub = ET.SubElement
-
 QTI = "http://www.imsglobal.org/xsd/imsqti_v2p1"
 QTI_XSD = "http://www.imsglobal.org/xsd/qti/qtiv2p1/imsqti_v2p1.xsd"
 CP = "http://www.imsglobal.org/xsd/imscp_v1p1"
 CP_XSD = "http://www.imsglobal.org/xsd/imscp_v1p1.xsd"
 XSI = "http://www.w3.org/2001/XMLSchema-instance"
 ZIP_DATE = (1980, 1, 1, 0, 0, 0)  # the earliest a zip holds: no time of writing
-FEEDBACK = "WORKED"
+FEEDBACK = "WORKED"  # the identifier of the worked steps' modalFeedback
+sub = ET.SubElement
 
 
 def outputs(bank: Bank, path) -> list[Output]:
@@ -48,6 +47,7 @@ def write(bank: Bank, path: Path, force: bool = False) -> list[Path]:
 
 
 def zip_bytes(bank: Bank) -> bytes:
+    """The package: the manifest, and per question its item and picture."""
     files = {}
     entries = lms.questions(bank)
     named = len(bank.groups) > 1 or any(group for group, _ in bank.groups)
@@ -94,7 +94,8 @@ def item(question: Question, identifier: str, title: str) -> ET.Element:
     2.1 schema gives: declarations, itemBody, responseProcessing, modalFeedback."""
     root = ET.Element("assessmentItem", {
         "xmlns": QTI, "identifier": identifier, "title": escape.xml_chars(title),
-        "adaptive": "false", "timeDependent": "false", f"{{{XSI}}}schemaLocation": f"{QTI} {QTI_XSD}"})
+        "adaptive": "false", "timeDependent": "false",
+        f"{{{XSI}}}schemaLocation": f"{QTI} {QTI_XSD}"})
     root.append(_response_declaration(question))
     score = sub(root, "outcomeDeclaration", identifier="SCORE", cardinality="single",
                 baseType="float")
