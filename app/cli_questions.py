@@ -76,7 +76,10 @@ def command_questions(args) -> int:
                  else bank.draw(args.templates, count, seed, scene))
     except ValueError as error:  # OutputRefused is one too
         raise InputError(str(error)) from None
-    files = writers.WRITERS[args.format](drawn, Path(args.out))
+    try:
+        files = writers.WRITERS[args.format](drawn, Path(args.out), force=args.force)
+    except ValueError as error:  # refused now (the path changed meanwhile), or unfit for it
+        raise InputError(str(error)) from None
     total = sum(len(questions) for _, questions in drawn.groups)
     print(f"{args.out}: {total} questions in {len(drawn.groups)} group(s), "
           f"{len(files)} file(s) ({args.format}, seed {seed})")

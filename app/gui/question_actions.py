@@ -72,7 +72,8 @@ class QuestionActions(QObject):
             else:
                 drawn = bank.draw([choices["template"]], choices["count"], choices["seed"],
                                   scene=scene)
-            written = WRITERS[choices["format"]](drawn, Path(path))
+            # The save dialog has asked before replacing a file.
+            written = WRITERS[choices["format"]](drawn, Path(path), force=True)
         except (ValueError, InputError, OSError) as error:
             self.window.say_error(f"Could not export the questions: {error}")
             return None

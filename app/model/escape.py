@@ -9,6 +9,7 @@ U+FFFD or a space, so the UTF-8 writers never fail on them.
 
     html_text       HTML text and quoted attribute values
     script_json     a value as JSON inside a <script> element
+    json_text       a string for a JSON file another program reads (no lone surrogate)
     xml_text        XML (SVG) text and quoted attribute values
     xml_chars       text an XML library (ElementTree) escapes: what XML cannot hold as U+FFFD
     latex_text      LaTeX text: every special character as its command
@@ -16,6 +17,9 @@ U+FFFD or a space, so the UTF-8 writers never fail on them.
     latex_file_name a file name LaTeX can be given, or ValueError
     markdown_text   Markdown inline text: no raw HTML, links or images
     csv_row         CSV cells guarded against spreadsheet formulas
+    gift_text       Moodle GIFT text: its marks (~ = # { } : and \\) escaped, one line
+    shortanswer     a Moodle short answer, matched as written: its wildcard * escaped
+    moodle_category one name in a Moodle category path: its separator / doubled
     foreign_text    what another program wrote (a student's code), safe for any of these
                     and for a terminal: no control character, escape sequence or lone surrogate
 """
@@ -58,6 +62,13 @@ def script_json(value) -> str:
     as a \\u escape."""
     text = json.dumps(value, separators=(",", ":"), allow_nan=False, ensure_ascii=True)
     return text.replace("<", "\\u003c").replace(">", "\\u003e").replace("&", "\\u0026")
+
+
+def json_text(text: str) -> str:
+    """A string for a JSON file another program reads: JSON can spell a
+    lone surrogate (``\\ud800``) but many readers refuse it, and controls
+    other than line ends and tabs mean nothing there; both as U+FFFD."""
+    return _FOREIGN.sub("\ufffd", _encodable(text))
 
 
 def xml_chars(text: str) -> str:
@@ -153,6 +164,32 @@ def csv_cell(cell):
 def csv_row(cells) -> list:
     """A row for ``csv.writer``: every cell through ``csv_cell``."""
     return [csv_cell(cell) for cell in cells]
+
+
+# GIFT's marks: a backslash before one makes it text (Moodle's "GIFT format"
+# page); the backslash itself is escaped first, so "\\=" stays as written.
+_GIFT_MARKS = set("\\~=#{}:")
+
+
+def gift_text(text: str) -> str:
+    """Text inside a GIFT question (title, text, answers, feedback) that Moodle
+    reads as ``text``: each mark as ``\\mark``, line ends as GIFT's ``\\n``
+    (a blank line would end the question), other controls as spaces."""
+    lines = _LINE_END.split(_encodable(text))
+    return "\\n".join("".join("\\" + char if char in _GIFT_MARKS else char
+                               for char in _CONTROL.sub(" ", line)) for line in lines)
+
+
+def shortanswer(text: str) -> str:
+    """A Moodle short answer that matches only ``text``: Moodle reads ``*``
+    in an answer as "any characters", and ``\\*`` as the character itself."""
+    return _encodable(text).replace("*", "\\*")
+
+
+def moodle_category(name: str) -> str:
+    """One level of a Moodle category path (``$course$/top/NAME``): Moodle
+    splits the path at ``/`` and reads ``//`` as a ``/`` within a name."""
+    return _CONTROL.sub(" ", _encodable(name)).replace("/", "//")
 
 
 def foreign_text(text: str, limit: int | None = None) -> str:

@@ -161,6 +161,7 @@ SIGNATURES = {
     "json": (b"{",),
     "zip": (b"PK\x03\x04",),
     "csv": (b"id,passed,",),  # the header of `check --csv`
+    "gift": (b"// RasterLab",),  # the first comment of a question bank in GIFT
 }
 
 

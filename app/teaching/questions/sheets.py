@@ -21,7 +21,7 @@ from datetime import datetime, timezone
 from pathlib import Path
 
 from app.model.escape import markdown_text
-from app.model.files import Output, listed, manifest_bytes, write_atomically
+from app.model.files import Output, check_outputs, listed, manifest_bytes, write_atomically
 from app.model.shipped import FONTS
 from app.model.staging import StagedFolder
 from app.teaching.worksheet import FIELDS
@@ -38,8 +38,8 @@ def file_names(fmt: str) -> list[str]:
     return [f"questions.{fmt}", f"key.{fmt}"]
 
 
-def outputs(path) -> list[Output]:
-    """What the command checks before drawing (app/model/files.py policy)."""
+def outputs(bank, path) -> list[Output]:
+    """What the sheets write at ``path`` (app/model/files.py policy)."""
     path = Path(path)
     return [Output("--out", path, folder=True)] + [
         Output("--out", path / name, foreign=listed(MANIFEST))
@@ -86,7 +86,8 @@ def _markdown_key(question) -> list[str]:
     return lines + [md(worked.summary), ""]
 
 
-def write_md(bank, path) -> list[Path]:
+def write_md(bank, path, force: bool = False) -> list[Path]:
+    check_outputs(outputs(bank, path), force=force)
     files = {"questions.md": markdown(bank, False).encode("utf-8"),
              "key.md": markdown(bank, True).encode("utf-8")}
     files.update((f"picture-{n:03d}.png", q.picture) for _, n, q in _numbered(bank) if q.picture)
@@ -183,7 +184,8 @@ def _pdf_table(pdf, worked) -> None:
                 cells.cell(cell)
 
 
-def write_pdf(bank, path) -> list[Path]:
+def write_pdf(bank, path, force: bool = False) -> list[Path]:
+    check_outputs(outputs(bank, path), force=force)
     return write_folder(path, {"questions.pdf": pdf_bytes(bank, False),
                                "key.pdf": pdf_bytes(bank, True)})
 

@@ -93,7 +93,7 @@ def make_scene(algorithm: str, points, options: dict, grid, title: str) -> Scene
 
 def question(template: Template, seed: int, title: str, text: str, answer, worked,
              scene) -> Question:
-    return Question(template=template.name, seed=seed, title=f"{title} (#{seed})", text=text,
+    return Question(template=template.name, seed=seed, title=title, text=text,
                     answer=answer, worked=worked, scene=scene, picture=picture(scene))
 
 

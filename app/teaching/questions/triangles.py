@@ -84,7 +84,7 @@ def _edge_sum(k, vertices, pixel, value) -> str:
 def _scene(template, trace, grid, options, seed, label):
     vertices = [tuple(c) for c in _setup(trace)[0]]
     return draws.make_scene(template.algorithms[0], vertices, options, grid,
-                            f"{label} (#{seed})")
+                            f"{label}")
 
 
 # ------------------------------------------------------------ templates

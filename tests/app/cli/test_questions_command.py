@@ -73,3 +73,48 @@ def test_the_python_api_gives_the_same_question():
     with pytest.raises(ValueError, match="questions --list"):
         rasterlab.question("nope", 1)
     assert "question" in rasterlab.__all__
+
+
+@pytest.fixture(scope="module")
+def every_template_bank():
+    """One variant of every template, drawn once for the format tests below."""
+    from app.teaching.questions import bank
+    return bank.draw(list(registry.TEMPLATES), 1, 5)
+
+
+def test_every_template_in_moodle_xml(every_template_bank, tmp_path):
+    import xml.etree.ElementTree as ET
+    from app.teaching.questions import writers
+    from app.teaching.questions.model import CHOICE, NUMERICAL, SHORT
+    writers.WRITERS["moodle-xml"](every_template_bank, tmp_path / "bank.xml")
+    root = ET.parse(tmp_path / "bank.xml").getroot()
+    asked = [q for q in root.findall("question") if q.get("type") != "category"]
+    questions = every_template_bank.groups[0][1]
+    kinds = {NUMERICAL: "numerical", SHORT: "shortanswer", CHOICE: "multichoice"}
+    assert [q.get("type") for q in asked] == [kinds[q.answer.kind] for q in questions]
+    for element, question in zip(asked, questions):
+        right = [a for a in element.findall("answer") if a.get("fraction") == "100"]
+        assert right, question.template
+        if question.answer.kind == SHORT:  # the key's own text is accepted
+            assert question.answer.text in [a.findtext("text") for a in right]
+        assert element.find("generalfeedback/text").text  # the worked steps
+
+
+@pytest.mark.parametrize("fmt", ["qti", "gift", "prairielearn"])
+def test_every_template_in_the_other_formats(run_cli, tmp_path, fmt):
+    out = tmp_path / ("bank" if fmt == "prairielearn" else f"bank.{fmt}")
+    status, said, _ = run_cli("questions", *registry.TEMPLATES, "--seed", "5",
+                              "--format", fmt, "--out", out)
+    assert status == 0 and f"{len(registry.TEMPLATES)} questions" in said
+    if fmt == "prairielearn":
+        folders = sorted(p.name for p in (out / "questions").iterdir())
+        assert folders == sorted(registry.TEMPLATES)
+    elif fmt == "qti":
+        import zipfile
+        names = zipfile.ZipFile(out).namelist()
+        assert "imsmanifest.xml" in names
+        assert sum(name.endswith(".xml") and name.startswith("items/") for name in names) \
+            == len(registry.TEMPLATES)
+    else:
+        text = out.read_text(encoding="utf-8")
+        assert text.count("::") >= 2 * len(registry.TEMPLATES)

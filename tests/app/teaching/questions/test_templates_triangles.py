@@ -101,7 +101,7 @@ def test_a_seed_gives_the_same_question_and_seeds_differ(template, no_pictures):
     assert first == again
     texts = {template.make(seed).text for seed in range(40)}
     assert len(texts) >= 38
-    assert first.title == f"{first.title.split(' (#')[0]} (#7)"
+    assert first.title and "#" not in first.title  # the bank numbers the variants
     assert template.family == "triangles" and template.algorithms[0] == first.scene.algorithm
 
 

@@ -69,7 +69,7 @@ def test_a_seed_gives_the_same_question_and_seeds_differ(template, no_pictures):
     assert template.make(9) == template.make(9)
     texts = {template.make(seed).text for seed in range(40)}
     assert len(texts) >= 38
-    assert template.make(9).title.endswith("(#9)")
+    assert template.make(9).title and "#" not in template.make(9).title  # the bank numbers them
 
 
 @pytest.mark.parametrize("template", visibility.TEMPLATES, ids=lambda t: t.name)
