@@ -2,6 +2,7 @@
 (or per student), written as an LMS import or paper sheets with a key."""
 from __future__ import annotations
 
+import itertools
 from pathlib import Path
 
 from algorithms.core.registry import InputError
@@ -51,6 +52,7 @@ def _whole(text: str, option: str, low: int, high: int) -> int:
 
 
 def command_questions(args) -> int:
+    from app import progress
     from app.model import scene as scenes
     from app.teaching.questions import bank, registry, writers
     if args.list:
@@ -72,8 +74,12 @@ def command_questions(args) -> int:
         check_outputs(writers.outputs(args.format, args.out),
                       [args.per_student, scene_path], force=args.force)
         scene = scenes.load(scene_path) if scene_path is not None else None
-        drawn = (bank.per_student(args.templates, count, ids, seed, scene) if ids is not None
-                 else bank.draw(args.templates, count, seed, scene))
+        total = count * len(args.templates) * (len(ids) if ids is not None else 1)
+        with progress.drawn(progress.CountBar("drawing", "questions, about")) as bar:
+            done = itertools.count(1)
+            tick = (lambda: bar(next(done), total)) if bar is not None else None
+            drawn = (bank.per_student(args.templates, count, ids, seed, scene, tick)
+                     if ids is not None else bank.draw(args.templates, count, seed, scene, tick))
     except ValueError as error:  # OutputRefused is one too
         raise InputError(str(error)) from None
     try:

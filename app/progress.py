@@ -59,12 +59,23 @@ class DelayedBar(TerminalBar):
         self.draw(what, done, total, f"{label} {left:.0f} s left ")
 
 
-class CasesBar(DelayedBar):
-    """The cases of a check done so far, ``(done, total)``."""
+class CountBar(DelayedBar):
+    """Things done so far, ``(done, total)``: "WHAT [###...] LABEL n s left"."""
+
+    def __init__(self, what: str, label: str, stream=sys.stderr, clock=time.monotonic):
+        super().__init__(stream, clock)
+        self.what, self.label = what, label
 
     def __call__(self, done: int, total: int) -> None:
         if self.due():
-            self.show("checking", done, total, "cases, about")
+            self.show(self.what, done, total, self.label)
+
+
+class CasesBar(CountBar):
+    """The cases of a check done so far."""
+
+    def __init__(self, stream=sys.stderr, clock=time.monotonic):
+        super().__init__("checking", "cases, about", stream, clock)
 
 
 class GradingBar(DelayedBar):

@@ -34,9 +34,10 @@ def check_count(count: int) -> int:
     return count
 
 
-def group(names, count: int, seed, scene=None) -> tuple[Question, ...]:
+def group(names, count: int, seed, scene=None, progress=None) -> tuple[Question, ...]:
     """``count`` distinct variants of each template of ``names``, in order,
-    titled "<title> (#n)"; with ``scene``, all about that scene's inputs."""
+    titled "<title> (#n)"; with ``scene``, all about that scene's inputs.
+    ``progress()`` is called after each question when given."""
     check_count(count)
     templates = [registry.get(name) for name in names]
     questions: list[Question] = []
@@ -46,6 +47,8 @@ def group(names, count: int, seed, scene=None) -> tuple[Question, ...]:
             question = _distinct(template, seed, n, seen, scene)
             seen.add(question.text)
             questions.append(dataclasses.replace(question, title=f"{question.title} (#{n})"))
+            if progress is not None:
+                progress()
     return tuple(questions)
 
 
@@ -58,18 +61,18 @@ def _distinct(template, seed, n: int, seen: set, scene) -> Question:
                      f"{n}; ask for fewer (--count)")
 
 
-def draw(names, count: int, seed: int, scene=None) -> Bank:
+def draw(names, count: int, seed: int, scene=None, progress=None) -> Bank:
     """One group of ``count`` variants of each template, from ``seed``
     (about ``scene``'s inputs when given)."""
-    return Bank(groups=(("", group(names, count, seed, scene)),), seed=seed)
+    return Bank(groups=(("", group(names, count, seed, scene, progress)),), seed=seed)
 
 
-def per_student(names, count: int, ids, seed: int = 0, scene=None) -> Bank:
+def per_student(names, count: int, ids, seed: int = 0, scene=None, progress=None) -> Bank:
     """A group for each student id, its seeds derived from the id (and ``seed``)."""
     ids = list(dict.fromkeys(ids))
     if not ids:
         raise ValueError("no student ids given")
-    return Bank(groups=tuple((sid, group(names, count, f"{seed}\x1e{sid}", scene))
+    return Bank(groups=tuple((sid, group(names, count, f"{seed}\x1e{sid}", scene, progress))
                              for sid in ids),
                 seed=seed)
 

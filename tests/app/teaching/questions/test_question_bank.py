@@ -111,3 +111,11 @@ def test_the_pdf_sheet_has_a_page_per_student_and_a_separate_key(tmp_path):
     for _, (question,) in drawn.groups:
         assert f"Answer: {question.answer.text}" in key
         assert question.worked.summary in key
+
+
+def test_progress_is_told_once_per_question_drawn():
+    from app.teaching.questions import bank
+    calls = []
+    drawn = bank.per_student(["fill-span", "line-bresenham-ne"], 2, ["ann", "bob", "cy"],
+                             progress=lambda: calls.append(1))
+    assert len(calls) == 2 * 2 * 3 == sum(len(q) for _, q in drawn.groups)
