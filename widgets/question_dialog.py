@@ -47,7 +47,9 @@ class QuestionDialog(QDialog):
             form.addRow(label, widget)
             if label:
                 widget.setAccessibleName(label.replace("&", ""))
-        form.addRow("Per &student", students_row)
+        students_label = QLabel("Per &student")
+        students_label.setBuddy(self.students)  # a row of a layout takes no mnemonic itself
+        form.addRow(students_label, students_row)
         self.students.setAccessibleName("Student ids file")
         layout.addLayout(form)
         buttons = QDialogButtonBox(QDialogButtonBox.StandardButton.Ok
