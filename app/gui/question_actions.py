@@ -24,7 +24,7 @@ class QuestionActions(QObject):
     def __init__(self, window):
         super().__init__(window)
         self.window = window
-        self.export_action = QAction("Export &questions…", window)
+        self.export_action = QAction("Export q&uestions…", window)
         self.export_action.setToolTip("Write seeded variants of a question about this algorithm, "
                                       "with answer keys, for Moodle, Canvas, PrairieLearn or paper")
         self.export_action.triggered.connect(lambda: self.export_dialog())

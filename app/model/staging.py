@@ -27,7 +27,7 @@ import tempfile
 from pathlib import Path
 from typing import Iterable
 
-from app.model.files import write_atomically
+from app.model.files import manifest_bytes, write_atomically
 from app.model.processes import owner_pid, process_alive
 
 JOURNAL = ".commit.json"
@@ -169,3 +169,53 @@ def _read_journal(path: Path) -> bytes:
         return os.read(handle, MAX_JOURNAL_BYTES + 1)
     finally:
         os.close(handle)
+
+
+def listed_names(folder, manifest: str) -> list[str]:
+    """The names ``folder``'s manifest lists (app/model/files.py ``listed``):
+    the files the program last wrote there; [] when it has none to read."""
+    try:
+        names = json.loads((Path(folder) / manifest).read_text(encoding="utf-8"))
+    except (OSError, ValueError):
+        return []
+    return [name for name in names if isinstance(name, str)] if isinstance(names, list) else []
+
+
+def write_folder(folder, kind: str, names: list[str], fill, manifest: str,
+                 keep: Iterable[str] = (), remove: Iterable[str] = ()) -> list[Path]:
+    """Write the files ``names`` into ``folder`` together: ``fill(stage)``
+    writes them into the staging folder; the folder's ``manifest`` then
+    lists them and ``keep`` (files written there before that stay the
+    program's), and ``remove`` goes. A failure leaves the folder as it was,
+    removes the folders made for it, and names the folder, not the stage.
+    Returns the paths written."""
+    folder = Path(folder)
+    made = [parent for parent in [folder, *folder.parents] if not parent.exists()]
+    folder.mkdir(parents=True, exist_ok=True)
+    staged = StagedFolder(folder, kind)
+    try:
+        stage = staged.open()
+        try:
+            fill(stage)
+        except OSError as error:  # named where the person will look for the file
+            raise OSError(str(error).replace(str(stage), str(folder))) from None
+        remove = list(remove)
+        write_atomically(stage / manifest, manifest_bytes((set(names) | set(keep)) - set(remove)))
+        staged.commit(list(names) + [manifest], remove=remove)
+        return [folder / name for name in names]
+    except BaseException:
+        staged.discard()
+        for parent in made:  # deepest first; a folder that holds anything stays
+            try:
+                parent.rmdir()
+            except OSError:
+                break
+        raise
+
+
+def write_bytes(files: dict[str, bytes]):
+    """A ``fill`` for ``write_folder`` that writes ``files`` (name -> bytes)."""
+    def fill(stage: Path) -> None:
+        for name, data in files.items():
+            write_atomically(stage / name, data)
+    return fill

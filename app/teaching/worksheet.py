@@ -20,7 +20,6 @@ from __future__ import annotations
 import bisect
 import csv
 import io
-import json
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -30,9 +29,9 @@ from algorithms.core.trace import DEFAULT_STEP_CAP
 
 from app.model import budget, runs
 from app.model.escape import csv_row, latex_comment, latex_text, markdown_text
-from app.model.files import manifest_bytes, write_atomically
+from app.model.files import write_atomically
 from app.model.geometry import scene_paths
-from app.model.staging import StagedFolder
+from app.model.staging import listed_names, write_folder
 from app.model.steptable import StepTable, cell_to_text
 
 MAX_ROWS = 60
@@ -316,39 +315,11 @@ def write(sheet: Worksheet, folder, fmt: str, pdf_writer=None) -> list[Path]:
     """Write the worksheet and its answer key into ``folder``; the files
     written. They are staged and moved in together (app/model/staging.py),
     so a failure or a kill never leaves a new sheet beside an old key; a
-    write that fails removes the folders it made."""
-    folder = Path(folder)
-    made = [parent for parent in [folder, *folder.parents] if not parent.exists()]
-    folder.mkdir(parents=True, exist_ok=True)
-    staged = StagedFolder(folder, "worksheet")
-    try:
-        stage = staged.open()
-        try:
-            _write_files(sheet, stage, fmt, pdf_writer)
-        except OSError as error:  # named where the person will look for the file
-            raise OSError(str(error).replace(str(stage), str(folder))) from None
-        names = file_names(fmt)
-        (stage / MANIFEST).write_bytes(manifest_bytes(set(names) | set(_listed(folder))))
-        staged.commit(names + [MANIFEST])
-        return [folder / name for name in names]
-    except BaseException:
-        staged.discard()
-        for parent in made:  # deepest first; a folder that holds anything stays
-            try:
-                parent.rmdir()
-            except OSError:
-                break
-        raise
-
-
-def _listed(folder: Path) -> list[str]:
-    """The names the folder's manifest lists (the worksheets of other
-    formats written there before), so that they stay the program's."""
-    try:
-        names = json.loads((folder / MANIFEST).read_text(encoding="utf-8"))
-    except (OSError, ValueError):
-        return []
-    return [name for name in names if isinstance(name, str)] if isinstance(names, list) else []
+    write that fails removes the folders it made. The worksheets of other
+    formats written there before stay listed as the program's."""
+    return write_folder(folder, "worksheet", file_names(fmt),
+                        lambda stage: _write_files(sheet, stage, fmt, pdf_writer), MANIFEST,
+                        keep=listed_names(folder, MANIFEST))
 
 
 def _write_files(sheet: Worksheet, folder: Path, fmt: str, pdf_writer) -> None:

@@ -94,7 +94,7 @@ def _coverage(seed, scene=None):
     worked = Worked(("sample", "u", "v", "test"), rows, summary)
     answer = Answer(NUMERICAL, value, f"{hits}/{n * n}")
     picture_scene = draws.make_scene(ALGORITHM, points, {**OPTIONS, "n": n}, grid,
-                                     f"Coverage")
+                                     "Coverage")
     return draws.question(COVERAGE, seed, "Coverage of a pixel", text, answer, worked,
                           picture_scene)
 

@@ -24,8 +24,8 @@ import uuid
 from pathlib import Path
 
 from app.model import escape
-from app.model.files import Output, check_outputs, listed, manifest_bytes, write_atomically
-from app.model.staging import StagedFolder
+from app.model.files import Output, check_outputs, listed
+from app.model.staging import write_bytes, write_folder
 from app.teaching.questions import lms
 from app.teaching.questions.model import CHOICE, NUMERICAL, SHORT, Bank, Question
 
@@ -56,7 +56,9 @@ def write(bank: Bank, path: Path, force: bool = False) -> list[Path]:
     for template, first in _templates(bank).items():
         folder = Path(path) / "questions" / template
         folder.mkdir(parents=True, exist_ok=True)
-        written += _write_folder(folder, files(first))
+        contents = files(first)
+        written += write_folder(folder, "prairielearn", list(contents), write_bytes(contents),
+                                MANIFEST)
     return written
 
 
@@ -76,20 +78,6 @@ def _title(question: Question) -> str:
     from app.teaching.questions import registry
     template = registry.TEMPLATES.get(question.template)
     return template.title if template else re.sub(r"\s*\(#\d+\)$", "", question.title)
-
-
-def _write_folder(folder: Path, contents: dict[str, bytes]) -> list[Path]:
-    staged = StagedFolder(folder, "prairielearn")
-    try:
-        stage = staged.open()
-        for name, data in contents.items():
-            write_atomically(stage / name, data)
-        write_atomically(stage / MANIFEST, manifest_bytes(contents))
-        staged.commit([*contents, MANIFEST])
-    except BaseException:
-        staged.discard()
-        raise
-    return [folder / name for name in contents]
 
 
 def _templates(bank: Bank) -> dict[str, Question]:

@@ -16,14 +16,13 @@ bytes.
 from __future__ import annotations
 
 import io
-import json
 from datetime import datetime, timezone
 from pathlib import Path
 
 from app.model.escape import markdown_text
-from app.model.files import Output, check_outputs, listed, manifest_bytes, write_atomically
+from app.model.files import Output, check_outputs, listed
 from app.model.shipped import FONTS
-from app.model.staging import StagedFolder
+from app.model.staging import listed_names, write_bytes, write_folder
 from app.teaching.worksheet import FIELDS
 
 MANIFEST = ".rasterlab-questions.json"
@@ -91,7 +90,7 @@ def write_md(bank, path, force: bool = False) -> list[Path]:
     files = {"questions.md": markdown(bank, False).encode("utf-8"),
              "key.md": markdown(bank, True).encode("utf-8")}
     files.update((f"picture-{n:03d}.png", q.picture) for _, n, q in _numbered(bank) if q.picture)
-    return write_folder(path, files)
+    return _write_sheets(path, files)
 
 
 # ----------------------------------------------------------------------- PDF
@@ -186,42 +185,17 @@ def _pdf_table(pdf, worked) -> None:
 
 def write_pdf(bank, path, force: bool = False) -> list[Path]:
     check_outputs(outputs(bank, path), force=force)
-    return write_folder(path, {"questions.pdf": pdf_bytes(bank, False),
+    return _write_sheets(path, {"questions.pdf": pdf_bytes(bank, False),
                                "key.pdf": pdf_bytes(bank, True)})
 
 
 # --------------------------------------------------------------------- files
-def write_folder(path, files: dict[str, bytes]) -> list[Path]:
+def _write_sheets(path, files: dict[str, bytes]) -> list[Path]:
     """Write ``files`` (name -> bytes) into the folder ``path`` together;
-    the paths written. Files an earlier bank wrote there and this one does
-    not (pictures of a longer bank) are removed; others stay."""
-    folder = Path(path)
-    made = [parent for parent in [folder, *folder.parents] if not parent.exists()]
-    folder.mkdir(parents=True, exist_ok=True)
-    earlier = _listed(folder)
-    staged = StagedFolder(folder, "questions")
-    try:
-        stage = staged.open()
-        for name, data in files.items():
-            write_atomically(stage / name, data)
-        stale = [name for name in earlier if name.startswith("picture-") and name not in files]
-        # The other format's sheets written here before stay the program's.
-        (stage / MANIFEST).write_bytes(manifest_bytes(set(files) | set(earlier) - set(stale)))
-        staged.commit(sorted(files) + [MANIFEST], remove=stale)
-        return [folder / name for name in sorted(files)]
-    except BaseException:
-        staged.discard()
-        for parent in made:  # deepest first; a folder that holds anything stays
-            try:
-                parent.rmdir()
-            except OSError:
-                break
-        raise
-
-
-def _listed(folder: Path) -> list[str]:
-    try:
-        names = json.loads((folder / MANIFEST).read_text(encoding="utf-8"))
-    except (OSError, ValueError):
-        return []
-    return [name for name in names if isinstance(name, str)] if isinstance(names, list) else []
+    the paths written. Pictures an earlier bank wrote there and this one
+    does not (of a longer bank) are removed; the other format's sheets
+    written there before stay the program's."""
+    earlier = listed_names(path, MANIFEST)
+    stale = [name for name in earlier if name.startswith("picture-") and name not in files]
+    return write_folder(path, "questions", sorted(files), write_bytes(files), MANIFEST,
+                        keep=earlier, remove=stale)

@@ -95,7 +95,7 @@ def _mip_level(seed, scene=None):
                f"{v['lambda']:.4g} and the level is {level}.")
     worked = Worked(("quantity", "value at p"), rows, summary)
     answer = Answer(NUMERICAL, level, str(level))
-    picture_scene = draws.make_scene(ALGORITHM, points, options, grid, f"Mip level")
+    picture_scene = draws.make_scene(ALGORITHM, points, options, grid, "Mip level")
     return draws.question(MIP_LEVEL, seed, "Mip level at a pixel", text, answer, worked,
                           picture_scene)
 

@@ -101,7 +101,7 @@ def _visible(seed, scene=None):
     worked = Worked(("triangle", "z at p", "ZB before", "depth test"), rows, summary)
     answer = Answer(CHOICE, winner - 1, names[winner - 1], choices=names)
     picture_scene = draws.make_scene("zbuffer", points, {"z": z}, grid,
-                                     f"Visible triangle")
+                                     "Visible triangle")
     return draws.question(VISIBLE, seed, "Visible triangle at a pixel", text, answer, worked,
                           picture_scene)
 
@@ -159,7 +159,7 @@ def _painter(seed, scene=None):
     answer = Answer(CHOICE, 0 if differ else 1, "yes" if differ else "no",
                     choices=("yes", "no"))
     picture_scene = draws.make_scene("painter", points, {"z": z, "sort": "mean"}, grid,
-                                     f"Painter's order")
+                                     "Painter's order")
     return draws.question(PAINTER, seed, "Painter's order", text, answer, worked, picture_scene)
 
 

@@ -61,7 +61,7 @@ def test_the_file_menu_holds_the_actions(window, files):
     assert texts == ["&Open\u2026", "Open &Recent", "Open &Example", "&Save", "Save &As\u2026",
                      "&Export Animation\u2026", "Export Interactive &Page\u2026",
                      "Save algorithm &template\u2026", "Open &algorithm\u2026",
-                     "Export &worksheet\u2026", "&Quit"]
+                     "Export &worksheet\u2026", "Export q&uestions\u2026", "&Quit"]
     assert files.export_action.shortcut().toString() == "Ctrl+E"
     assert files.open_action.shortcut().toString() == "Ctrl+O"
     assert files.save_action.shortcut().toString() == "Ctrl+S"
