@@ -400,6 +400,10 @@ class VariablesPanel(QWidget):
             elif self.table.rowHeight(row) != default:
                 self.table.setRowHeight(row, default)
 
+    def value_text(self, name: str) -> str:
+        """A row's value as shown (a positive toned value with its "+")."""
+        return self.table.item(self._row_of[name], 1).text()
+
     def value_color(self, name: str) -> QColor | None:
         """The colour a row's value is drawn in (None: the default)."""
         brush = self.table.item(self._row_of[name], 1).foreground()

@@ -19,10 +19,10 @@ from PySide6.QtCore import Qt, QTimer
 from PySide6.QtGui import QAction, QActionGroup, QImage, QPixmap
 from PySide6.QtWidgets import QDialog, QLabel, QVBoxLayout
 
-from app.render.vision import DEFICIENCIES, simulate_rgb
-
 NORMAL = "normal"
-CHOICES = (NORMAL, *DEFICIENCIES)
+# app/render/vision.py's DEFICIENCIES; that module (daltonlens, Pillow) is
+# loaded when a preview first opens, not with the window.
+CHOICES = (NORMAL, "protanopia", "deuteranopia", "tritanopia")
 REFRESH_MS = 500
 
 
@@ -101,6 +101,7 @@ class ColourVisionPreview(QDialog):
         if digest == self._last:
             return
         self._last = digest
+        from app.render.vision import simulate_rgb
         self.shown = simulate_rgb(rgb, self.deficiency)
         self.picture.setPixmap(QPixmap.fromImage(image_of(self.shown)))
 
