@@ -13,11 +13,14 @@ import math
 import numpy as np
 import pyqtgraph as pg
 from PySide6.QtCore import Qt, Signal
-from PySide6.QtGui import QColor, QPainter, QPixmap
+from PySide6.QtGui import QBrush, QColor, QPainter, QPixmap
 from PySide6.QtWidgets import (QComboBox, QGridLayout, QHBoxLayout, QLabel, QLineEdit,
                                QSizePolicy, QToolButton, QVBoxLayout, QWidget)
 
+from app.model.colours import DIFF_PATTERNS
+
 from .grid_view import PixelGridView
+from .pattern_layer import PatternLayer
 
 ERROR_STYLE = "color: #c92a2a;"
 TITLE_STYLE = "font-weight: bold; color: #1d2733;"
@@ -150,6 +153,7 @@ class ComparePane(QWidget):
         self.title.setSizePolicy(QSizePolicy.Policy.Ignored, QSizePolicy.Policy.Fixed)
         self.grid = ReadOnlyGridView(palette, outline_styles, self)
         self.grid.setMinimumSize(160, 140)
+        self.patterns = PatternLayer(self.grid.view_box)
         self.message = QLabel(self)
         self.message.setWordWrap(True)
         self.message.setObjectName("paneMessage")
@@ -173,17 +177,32 @@ class ComparePane(QWidget):
         self.message.setToolTip(text)
         self.message.setStyleSheet(ERROR_STYLE if error else "color: #55606d;")
 
-    def show_frame(self, image, current=(), candidates=(), spans=(), differences=None) -> None:
+    def show_frame(self, image, current=(), candidates=(), spans=(), differences=None,
+                   patterned=None) -> None:
+        """Show ``image`` (one pixel per cell) and the step's highlights;
+        ``patterned``: the same cells enlarged with a pattern in each, shown
+        over them."""
         self.grid.set_image(image)
+        if patterned is None:
+            self.patterns.clear()
+        else:
+            self.patterns.show_cells(patterned, image.shape[1], image.shape[0])
         self.grid.set_highlights(current, candidates, spans)
         self.grid.set_differences(differences)
 
 
-def _chip(color: str) -> QLabel:
+# Qt's brush patterns nearest to the diff cells' patterns (app/render/patterns.py).
+CHIP_PATTERNS = {"stripes /": Qt.BrushStyle.BDiagPattern, "stripes \\": Qt.BrushStyle.FDiagPattern,
+                 "cross": Qt.BrushStyle.DiagCrossPattern}
+
+
+def _chip(color: str, pattern: str = "plain") -> QLabel:
     pixmap = QPixmap(14, 14)
     pixmap.fill(Qt.GlobalColor.transparent)
     painter = QPainter(pixmap)
     painter.fillRect(1, 1, 12, 12, QColor(color))
+    if pattern in CHIP_PATTERNS:
+        painter.fillRect(1, 1, 12, 12, QBrush(QColor("#ffffff"), CHIP_PATTERNS[pattern]))
     painter.setPen(QColor("#8a939e"))
     painter.drawRect(1, 1, 12, 12)
     painter.end()
@@ -203,8 +222,8 @@ class DiffLegend(QWidget):
         layout.setVerticalSpacing(1)
         self.labels: dict[str, QLabel] = {}
         self.counts: dict[str, QLabel] = {}
-        for row, (name, colour) in enumerate(zip(names, colours)):
-            layout.addWidget(_chip(colour), row, 0)
+        for row, (name, colour, pattern) in enumerate(zip(names, colours, DIFF_PATTERNS)):
+            layout.addWidget(_chip(colour, pattern), row, 0)
             label = QLabel(name, self)
             count = QLabel("", self)
             count.setAlignment(Qt.AlignmentFlag.AlignRight | Qt.AlignmentFlag.AlignVCenter)

@@ -1,5 +1,5 @@
 """The colour bar of the coverage-error map: blue where a run covers a
-pixel too little, white where it is right, red where it covers too much,
+pixel too little, white where it is right, vermillion where it covers too much,
 with the largest error at either end."""
 from __future__ import annotations
 
@@ -7,8 +7,10 @@ from PySide6.QtCore import QRectF, Qt
 from PySide6.QtGui import QColor, QLinearGradient, QPainter, QPixmap
 from PySide6.QtWidgets import QHBoxLayout, QLabel, QWidget
 
+from app.model.colours import LIGHT
+
 # The ends of the map (app/render/compose.py error_image with signed=True).
-TOO_LITTLE, RIGHT, TOO_MUCH = "#0000ff", "#ffffff", "#ff0000"
+TOO_LITTLE, RIGHT, TOO_MUCH = LIGHT.too_little, "#ffffff", LIGHT.too_much
 
 
 class ErrorScale(QWidget):

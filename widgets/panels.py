@@ -12,6 +12,8 @@ from PySide6.QtWidgets import (QAbstractItemView, QFrame, QGraphicsEllipseItem,
                                QGraphicsItem, QHeaderView, QLabel, QScrollArea, QTableWidget,
                                QTableWidgetItem, QVBoxLayout, QWidget)
 
+from app.model.colours import BRANCH_GLYPHS, BRANCH_SYMBOLS, LIGHT, UNDECIDED_SYMBOL
+
 from .axes_frame import axes_frame
 from .dirty import cache_drawing, fill_own_background
 from .series_points import plot_points
@@ -22,29 +24,39 @@ CURRENT_EDGE = QColor("#f08c00")
 CHANGED_VALUE = QColor("#b35900")
 LINE_NUMBER = QColor("#8a94a1")
 NOTES_MAX_HEIGHT = 120
-# Values whose sign or range matters: text colours by tone.
-TONE_COLORS = {"positive": QColor("#1f7a3d"), "negative": QColor("#c92a2a"),
-               "zero": QColor("#b35900")}
-# Chips of the step summary: (background, text) by tone.
-CHIP_COLORS = {"positive": ("#d3f9d8", "#1f6b35"), "negative": ("#ffe3e3", "#a61e1e"),
-               "zero": ("#fff3bf", "#8a5a00"), "in": ("#2f9e44", "#ffffff"),
+# Values whose sign or range matters: text colours by tone (app/model/colours.py),
+# and a positive value shows its "+" so that the sign is written, not only coloured.
+TONE_COLORS = {"positive": QColor(LIGHT.positive), "negative": QColor(LIGHT.negative),
+               "zero": QColor(LIGHT.zero)}
+# Chips of the step summary: (background, text) by tone; the chip's text says its meaning.
+CHIP_COLORS = {"positive": ("#dcecf7", "#005a8c"), "negative": ("#fbe4d5", "#9c4500"),
+               "zero": ("#ececec", "#3d3d3d"), "in": ("#007a5a", "#ffffff"),
                "out": ("#868e96", "#ffffff"), "info": ("#e7ecf2", "#3d4754")}
 
 
 ROWS_BEFORE_PLOT = 4  # rows the table keeps in sight before the plot gets room
 SERIES_DOTS = 300  # more steps than this: no dot per step on the plot over the run
 # A decision variable's dots by the branch its step took (E, NE, ...: the
-# k-th branch of a decision takes the k-th colour), and the steps that
-# decide nothing.
-BRANCH_COLORS = ("#2563a8", "#2f9e44", "#e8590c", "#9c36b5", "#0c8599", "#c2255c")
-UNDECIDED_COLOR = "#9aa5b1"
+# k-th branch of a decision takes the k-th colour and marker shape), and the
+# steps that decide nothing.
+BRANCH_COLORS = LIGHT.branches
+UNDECIDED_COLOR = LIGHT.undecided
 DOT_COLORS = (UNDECIDED_COLOR, *BRANCH_COLORS)  # by kind: decides nothing, then each branch
+DOT_SYMBOLS = (UNDECIDED_SYMBOL, *BRANCH_SYMBOLS)
 
 
 def branch_legend(names) -> str:
-    """Rich text naming each branch beside a dot of its colour."""
-    return ", ".join(f"<span style='color:{BRANCH_COLORS[k % len(BRANCH_COLORS)]}'>\u25cf "
-                     f"{name}</span>" for k, name in enumerate(names))
+    """Rich text naming each branch beside a marker of its shape and colour."""
+    return ", ".join(f"<span style='color:{BRANCH_COLORS[k % len(BRANCH_COLORS)]}'>"
+                     f"{BRANCH_GLYPHS[k % len(BRANCH_GLYPHS)]} {name}</span>"
+                     for k, name in enumerate(names))
+
+
+def _with_sign(text: str, tone) -> str:
+    """A positive value with its "+" written, so its sign is not told by colour alone."""
+    if tone == "positive" and text[:1] not in ("+", ""):
+        return "+" + text
+    return text
 
 
 def monospace_font(scale: float = 1.0) -> QFont:
@@ -266,6 +278,7 @@ class VariablesPanel(QWidget):
             self._set_text(self._cell(row, 0), name)
             changed = name in before and before[name] != text
             color = TONE_COLORS.get(tones.get(name)) or (CHANGED_VALUE if changed else None)
+            text = _with_sign(text, tones.get(name))
             swatch = text if name in color_names and QColor.isValidColorName(text) else None
             if self._set_value(row, text, color, changed, swatch):
                 fitted.append(row)
@@ -387,6 +400,10 @@ class VariablesPanel(QWidget):
             elif self.table.rowHeight(row) != default:
                 self.table.setRowHeight(row, default)
 
+    def value_text(self, name: str) -> str:
+        """A row's value as shown (a positive toned value with its "+")."""
+        return self.table.item(self._row_of[name], 1).text()
+
     def value_color(self, name: str) -> QColor | None:
         """The colour a row's value is drawn in (None: the default)."""
         brush = self.table.item(self._row_of[name], 1).foreground()
@@ -473,7 +490,7 @@ class VariablesPanel(QWidget):
             # order, so that where dots overlap a branch's lie on top.
             kind = np.where(taken >= 0, taken % len(BRANCH_COLORS) + 1, 0)
             order = np.argsort(kind, kind="stable")
-            self._set_dots(steps[order], known[order], kind[order], 4 if few else 3)
+            self._set_dots(steps[order], known[order], kind[order], 7 if few else 5)
             return
         self._set_dots()
         self.curve.setPen(pg.mkPen("#2563a8", width=1.5))
@@ -483,8 +500,10 @@ class VariablesPanel(QWidget):
     def _set_dots(self, steps=(), values=(), kinds=(), size=3) -> None:
         """The decision variable's dots, each brushed by its kind (see
         ``DOT_COLORS``); hidden when there are none."""
-        brushes = [self._dot_brushes[k] for k in np.asarray(kinds, dtype=np.int64).tolist()]
-        self.dots.setData(steps, values, brush=brushes, size=size)
+        kinds = np.asarray(kinds, dtype=np.int64).tolist()
+        brushes = [self._dot_brushes[k] for k in kinds]
+        self.dots.setData(steps, values, brush=brushes, symbol=[DOT_SYMBOLS[k] for k in kinds],
+                          size=size)
         self.dots.setVisible(len(brushes) > 0)
 
     def set_plot_allowed(self, allowed: bool) -> None:

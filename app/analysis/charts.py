@@ -14,10 +14,16 @@ from dataclasses import dataclass, field
 
 from PIL import Image, ImageDraw, ImageFont
 
+from app.model.colours import OKABE_ITO
 from app.model.shipped import FONTS
 
-PALETTE = ("#1f77b4", "#d62728", "#2ca02c", "#ff7f0e", "#9467bd", "#8c564b", "#e377c2",
-           "#17becf", "#7f7f7f", "#bcbd22", "#393b79", "#637939", "#843c39", "#7b4173")
+# The Okabe-Ito set (app/model/colours.py), its light members darkened to
+# reach 3:1 on white, and each colour with its own marker shape, so that a
+# series is told by shape as well as by colour.
+# Black is left for the reference series (the Pareto front, "adaptive").
+PALETTE = (OKABE_ITO["blue"], OKABE_ITO["vermillion"], OKABE_ITO["bluish green"], "#995a7d",
+           "#b87f00", "#3a8fc0")
+MARKERS = ("o", "s", "^", "d")
 BACKGROUND = "#ffffff"
 INK = "#222222"
 GRID = "#e4e4e4"
@@ -52,9 +58,12 @@ class Chart:
     legend: bool = True  # off where every point carries its own label
     palette: dict = field(default_factory=dict)  # label -> colour, the same in every panel
 
-    def add(self, label, points, color=None, line=True, labels=None, marker="o", width=2,
+    def add(self, label, points, color=None, line=True, labels=None, marker=None, width=2,
             in_legend=True):
+        """A series; ``marker`` None takes the shape that goes with its colour."""
         color = color or self.palette.get(label) or PALETTE[len(self.series) % len(PALETTE)]
+        if marker is None:
+            marker = MARKERS[PALETTE.index(color) % len(MARKERS)] if color in PALETTE else "o"
         points = [(float(x), float(y)) for x, y in points
                   if math.isfinite(float(x)) and math.isfinite(float(y))]
         self.series.append(Series(label, points, color, line, labels, marker, width, in_legend))

@@ -185,7 +185,8 @@ def _antialiasing(view: View):
                 chart.add(v, pts, color=PALETTE[patterns.index(pattern) % len(PALETTE)],
                           marker=markers.get(name, "o"), width=1, in_legend=False)
             for pattern in patterns:
-                chart.add(pattern, [], color=PALETTE[patterns.index(pattern) % len(PALETTE)])
+                chart.add(pattern, [], color=PALETTE[patterns.index(pattern) % len(PALETTE)],
+                          marker="o")  # here the marker tells the filter, not the pattern
             for name in filters:
                 chart.add(f"{name} filter", [], color="#555555", line=False, marker=markers[name])
             adaptive = [(view.get("antialiasing", "adaptive", "adaptive", d,

@@ -23,6 +23,7 @@ from app.model.compare import (FRAME, LINKS, MAX_PANES, MIN_PANES, PRESETS, Pane
                                window_primitives)
 from app.model.scene import Scene
 from app.render.compose import OUTLINE_STYLE, PALETTE, compose, diff_image
+from app.render.patterns import pattern_scale
 
 WINDOW_KEY = "window"  # the comparison of the main window's algorithm and the one before
 MIN_TICK_MS = 16
@@ -454,7 +455,9 @@ class CompareWindow(QMainWindow):
                                                  "the two panes have different grids"), True)
             view.legend.set_counts(None)
             return
-        view.diff.show_frame(diff_image(d, self.colours))
+        scale = pattern_scale(width, height)
+        view.diff.show_frame(diff_image(d, self.colours), patterned=(
+            diff_image(d, self.colours, scale) if scale > 1 else None))
         view.diff.grid.show_paths(run_a.paths())
         view.diff.set_title(f"Diff: A = {a + 1}, B = {b + 1}",
                             f"A: {run_a.title}\nB: {run_b.title}")

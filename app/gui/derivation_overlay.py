@@ -9,9 +9,12 @@ from __future__ import annotations
 
 import pyqtgraph as pg
 
+from app.model.colours import OKABE_ITO
 from app.model.derivation import distance_segments
 
-COLOURS = {"s": "#2b8a3e", "n": "#c2255c"}
+# Okabe-Ito hues (app/model/colours.py) that stay apart with any common
+# colour-vision deficiency; each segment also carries its name.
+COLOURS = {"s": OKABE_ITO["bluish green"], "n": OKABE_ITO["vermillion"]}
 LABEL = '<span style="color: {colour}; font-weight: bold; font-size: 11pt; background: #ffffffd0">' \
         '{name} = {value:.3g}</span>'
 

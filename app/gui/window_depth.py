@@ -10,6 +10,8 @@ from app.model.buffers import has_side_buffer, side_buffer
 from app.model.geometry import exact_reference
 from app.render import frame as frame_view
 from app.render.compose import depth_image, depth_range, error_image, error_stats
+from app.render.patterns import pattern_scale
+from widgets.pattern_layer import PatternLayer
 
 
 class DepthDisplay:
@@ -22,6 +24,8 @@ class DepthDisplay:
         self.window = window
         self._scale = None  # (clear, near, far) of a run that keeps a depth buffer
         self._side = False  # the run keeps another buffer (accumulation, stencil)
+        self._hatch = PatternLayer(window.grid.view_box)  # the error map's sign, hatched
+        self._hatched = None  # the AccuracyCache the hatch layer shows
         self.accuracy = None  # AccuracyCache of the antialiasing run on show
         window.depth_action.toggled.connect(self._toggled)
         window.depth_dock.visibilityChanged.connect(self._dock_shown)
@@ -137,18 +141,38 @@ class DepthDisplay:
         else:
             w.grid.set_samples(samples.xs, samples.ys, samples.hits, samples.current)
 
+    def _show_hatch(self, accuracy) -> None:
+        """The error map again, enlarged, with a hatch on the cells with too
+        little coverage, so that the sign does not rest on colour alone."""
+        if accuracy is None:
+            self._hatch.clear()
+            self._hatched = None
+            return
+        if accuracy is not self._hatched:
+            height, width = accuracy.exact.shape
+            scale = pattern_scale(width, height)
+            if scale == 1:
+                self._hatch.clear()
+                return
+            self._hatch.show_cells(error_image(accuracy.estimate - accuracy.exact, accuracy.max,
+                                               signed=True, scale=scale), width, height)
+            self._hatched = accuracy
+        self._hatch.setVisible(True)
+
     def _show_error_summary(self) -> None:
         w = self.window
         accuracy = self._shown_accuracy()
-        w.error_scale.setVisible(accuracy is not None and not w.coverage.isChecked())
+        shown = accuracy is not None and not w.coverage.isChecked()
+        w.error_scale.setVisible(shown)
+        self._show_hatch(accuracy if shown else None)
         if accuracy is None:
             w.error_label.setText("")
             return
         w.error_scale.set_range(accuracy.max)
         w.error_label.setText(f"Coverage error: RMS {accuracy.rms:.4f} \u00b7 "
                               f"max {accuracy.max:.4f}")
-        w.error_label.setToolTip("coverage - exact coverage per pixel (blue: too little, "
-                                 "red: too much); the RMS is taken over the pixels the "
+        w.error_label.setToolTip("coverage - exact coverage per pixel (blue, hatched: too "
+                                 "little; vermillion: too much); the RMS is taken over the pixels the "
                                  "run or the exact shape covers")
 
 

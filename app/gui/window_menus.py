@@ -9,6 +9,7 @@ from PySide6.QtWidgets import QToolBar
 
 from widgets.grid_view import DRAW, MARKER
 
+from app.gui import colour_vision
 from app.gui.appdata import APP_NAME
 
 
@@ -132,10 +133,11 @@ def _build_view_menu(window, view) -> None:
     window.error_action = view.addAction("Coverage error")
     window.error_action.setCheckable(True)
     window.error_action.setToolTip("Colour each pixel by coverage - exact coverage (white: "
-                                   "none; red: too much, blue: too little, fullest at the "
-                                   "run's largest)")
+                                   "none; vermillion: too much, blue and hatched: too "
+                                   "little, fullest at the run's largest)")
     window.error_action.toggled.connect(lambda _on: window.show_frame())
     window.actions_["view-Coverage error"] = window.error_action
+    colour_vision.install(window, view)
     view.addSeparator()
     for dock in (window.scene_dock, window.code_dock, window.variables_dock, window.tables_dock):
         view.addAction(dock.toggleViewAction())

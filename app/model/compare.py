@@ -36,6 +36,7 @@ from algorithms.core import registry
 from algorithms.core.errors import InputError
 from algorithms.core.raster import Raster, check_grid
 
+from app.model import colours
 from app.model.geometry import exact_reference, final_coverage, run_paths
 from app.model.inputs import split_contours
 from app.model.scene import SHIPPED, Scene, load
@@ -426,10 +427,10 @@ def diff_pair(old: tuple, a: int, b: int, count: int) -> tuple[int, int]:
     return (a, other) if picked_a else (other, b)
 
 
-# Colours of the diff view, in DIFF_CLASSES order: two hues far apart for
-# the two runs, a quiet grey for agreement, a strong magenta for a value
-# that differs.
-DIFF_COLOURS = ("#f08c00", "#1c7ed6", "#adb5bd", "#c2255c")
+# Colours of the diff view (light theme), in DIFF_CLASSES order: two hues
+# far apart for the two runs, a quiet grey for agreement, black for a value
+# that differs; each class also has a pattern (colours.DIFF_PATTERNS).
+DIFF_COLOURS = colours.LIGHT.diff
 
 
 # --------------------------------------------------------------- stepping

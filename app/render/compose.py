@@ -26,7 +26,9 @@ from typing import Sequence
 
 import numpy as np
 
-from app.model import compare
+from app.model import colours
+from app.model.colours import DARK, LIGHT
+from app.render import patterns
 
 # Little-endian so that the bytes of each cell read R, G, B, A on any machine.
 _RGBA = np.dtype("<u4")
@@ -48,10 +50,11 @@ class Palette:
     overdraw: str = "#0b2a4f"     # a cell written more than once
     grid: str = "#c5ccd6"         # cell borders
     outside: str = "#e4e8ee"      # the view around the grid
-    current: str = "#f08c00"      # the pixel the current step plots or visits
-    candidate: str = "#23a55a"    # the pixels the current decision chooses between
-    difference: str = "#e0327a"   # cells where the compared run ended differently
-    primitive: str = "#e8452c"    # the ideal primitive
+    # The colours with a meaning come from app/model/colours.py.
+    current: str = LIGHT.current      # the pixel the current step plots or visits
+    candidate: str = LIGHT.candidate  # the pixels the current decision chooses between
+    difference: str = LIGHT.difference  # cells where the compared run ended differently
+    primitive: str = LIGHT.primitive  # the ideal primitive
     handle: str = "#ffffff"       # vertex handles (fill)
     handle_edge: str = "#1d2733"  # vertex handles (border and label)
     seed: str = "#7048e8"         # the seed marker of a fill
@@ -59,6 +62,8 @@ class Palette:
     # Coverage counts 0, 1, 2, 3+: light to dark, and the two overlap
     # levels in warm hues that no ink or highlight colour uses.
     coverage: tuple[str, str, str, str] = ("#fbfcfd", "#a9cdf0", "#f59f00", "#c2255c")
+    # The compare diff's classes: only in A, only in B, both, different value.
+    diff: tuple[str, str, str, str] = LIGHT.diff
 
 
 PALETTE = Palette()
@@ -67,9 +72,10 @@ PALETTE = Palette()
 # the legend reads the same.
 DARK_PALETTE = Palette(
     background="#1b2027", ink="#5fa8f5", overdraw="#b9dcff", grid="#38414d",
-    outside="#11151a", current="#ffa94d", candidate="#40c057", difference="#f06595",
-    primitive="#ff6b5b", handle="#1b2027", handle_edge="#e6edf3", seed="#9775fa", guide="#e599f7",
-    coverage=("#1b2027", "#285a8c", "#f59f00", "#e64980"))
+    outside="#11151a", current=DARK.current, candidate=DARK.candidate,
+    difference=DARK.difference, primitive=DARK.primitive, handle="#1b2027", handle_edge="#e6edf3",
+    seed="#9775fa", guide="#e599f7", coverage=("#1b2027", "#285a8c", "#f59f00", "#e64980"),
+    diff=DARK.diff)
 
 
 @dataclass(frozen=True)
@@ -362,28 +368,36 @@ def error_stats(estimate, exact) -> tuple[float, float, np.ndarray]:
     return (float(np.sqrt(np.mean(error[touched] ** 2))), float(error.max()), error)
 
 
-def error_image(error, top: float | None = None, signed: bool = False) -> np.ndarray:
-    """Per-pixel error as a uint8 RGBA image (H, W, 4): white for none,
-    to pure red for ``top`` (the largest error when not given) and above.
-    ``signed``: a negative error (too little) goes to pure blue instead."""
+def error_image(error, top: float | None = None, signed: bool = False,
+                scale: int = 1) -> np.ndarray:
+    """Per-pixel error as a uint8 RGBA image (H * scale, W * scale, 4):
+    white for none, to the "too much" colour of app/model/colours.py for
+    ``top`` (the largest error when not given) and above. ``signed``: a
+    negative error (too little) goes to the "too little" colour instead,
+    and at ``scale`` 4 and above its cells also carry a hatch, so the sign
+    does not rest on colour alone."""
     error = np.asarray(error, dtype=np.float64)
     size = np.abs(error)
     if top is None:
         top = float(size.max()) if error.size else 0.0
     t = np.zeros(error.shape) if not top > 0 else np.clip(size / top, 0.0, 1.0)
-    fade = np.rint(255 * (1 - t)).astype(np.uint8)
-    image = np.empty(error.shape + (4,), np.uint8)
-    image[..., 0] = image[..., 1] = image[..., 2] = fade
     low = (error < 0) if signed else np.zeros(error.shape, bool)
-    image[..., 0][~low] = 255  # red stays full where there is too much
-    image[..., 2][low] = 255   # blue where there is too little
+    ends = np.array([colours.rgb(LIGHT.too_much), colours.rgb(LIGHT.too_little)], np.float64)
+    image = np.empty(error.shape + (4,), np.uint8)
+    image[..., :3] = np.rint(255 + (ends[low.astype(int)] - 255) * t[..., None]).astype(np.uint8)
     image[..., 3] = 255
-    return image
+    kinds = np.where(low & (t > 0), 0, -1)
+    return patterns.stamp(image, kinds, ("stripes \\",), (255, 255, 255), scale)
 
 
-def diff_image(d, palette=PALETTE) -> np.ndarray:
-    """The diff as a uint8 RGBA image (H, W, 4), row 0 at y = 0."""
+def diff_image(d, palette=PALETTE, scale: int = 1) -> np.ndarray:
+    """The diff as a uint8 RGBA image (H * scale, W * scale, 4), row 0 at
+    y = 0. At ``scale`` 4 and above each class also carries its pattern
+    (app/model/colours.py DIFF_PATTERNS) cut in the background colour."""
     lut = np.array([packed_rgba(palette.background)]
-                   + [packed_rgba(c) for c in compare.DIFF_COLOURS], dtype="<u4")
-    cells = lut[d.classes()]
-    return cells.view(np.uint8).reshape(cells.shape[0], cells.shape[1], 4)
+                   + [packed_rgba(c) for c in palette.diff], dtype="<u4")
+    classes = d.classes()
+    cells = lut[classes]
+    image = cells.view(np.uint8).reshape(cells.shape[0], cells.shape[1], 4)
+    return patterns.stamp(image, classes.astype(int) - 1, colours.DIFF_PATTERNS,
+                          _channels(palette.background), scale)

@@ -237,7 +237,8 @@ def _cell(value, numbers: str = "decimal") -> str:
 
 def _theme(theme) -> dict:
     colours = asdict(theme.palette)
-    colours.pop("coverage", None)
+    for unused in ("coverage", "diff"):  # the page shows neither coverage counts nor a diff
+        colours.pop(unused, None)
     return {**colours, "panel": theme.panel, "caption": theme.caption, "border": theme.border,
             "text": theme.text, "muted": theme.muted, "lineNumber": theme.line_number,
             "currentLine": theme.current_line, "currentEdge": theme.current_edge}

@@ -35,12 +35,14 @@ from dataclasses import dataclass
 import numpy as np
 
 from algorithms.core.steps import Vars
+from app.model import colours
 from app.render import octant_overlay
 
 OVERLAYS = ("half-planes", "sub-triangles", "distances", "basis", "octants")
-# One colour per edge k (and its opposite vertex P_k), and one for the basis.
+# One colour per edge k (and its opposite vertex P_k), and one for the basis,
+# from app/model/colours.py; each edge also carries its name as a label.
 # Not blue: the ink is blue, and a blue stroke over filled pixels disappears.
-EDGE_COLOURS = ((214, 40, 40), (43, 138, 62), (180, 40, 180))
+EDGE_COLOURS = tuple(colours.rgb(c) for c in colours.LIGHT.edges)
 BASIS_COLOUR = (30, 30, 30)
 COLOURS = EDGE_COLOURS + (BASIS_COLOUR,) + octant_overlay.COLOURS
 # One calm tint for every half-plane: on a projector three hatchings in

@@ -338,6 +338,11 @@ def test_a_decision_of_three_branches_colours_each_and_names_each(qtbot):
     for x, _y, name in dots:
         assert name == colour[int(taken[int(x)])]
     assert len(set(colour.values())) == 4  # four kinds, four colours
+    # Colour is not the only cue: each kind has its own marker shape too,
+    # and the title names each branch beside that shape (as text).
+    shape = {-1: "o", 0: "s", 1: "t", 2: "d"}
+    for spot in p.dots.points():
+        assert spot.symbol() == shape[int(taken[int(spot.pos().x())])]
     title = p.plot_title.text()
-    for k, branch in enumerate(("reflex", "blocked", "ear")):
-        assert f"color:{BRANCH_COLORS[k]}'>\u25cf {branch}</span>" in title
+    for k, (branch, glyph) in enumerate(zip(("reflex", "blocked", "ear"), "\u25a0\u25bc\u25c6")):
+        assert f"color:{BRANCH_COLORS[k]}'>{glyph} {branch}</span>" in title

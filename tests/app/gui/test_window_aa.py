@@ -166,24 +166,37 @@ def test_coverage_error_overlay_matches_exact_coverage(window):
     assert accuracy.max == pytest.approx(expected_max, rel=1e-9, abs=1e-12)
     assert f"RMS {expected_rms:.4f}" in w.error_label.text()
     assert f"max {expected_max:.4f}" in w.error_label.text()
-    # The grid shows the signed map: white where right, red where the run
-    # covers too much, blue where too little, fullest at the largest error.
+    # The grid shows the signed map: white where right, vermillion where the
+    # run covers too much, blue where too little, fullest at the largest error.
     image = w.grid.image.image
     signed = estimate - exact
-    fade = np.rint(255 * (1 - np.abs(signed) / expected_max)).astype(np.uint8)
-    red = np.stack([np.full_like(fade, 255), fade, fade], axis=-1)
-    blue = np.stack([fade, fade, np.full_like(fade, 255)], axis=-1)
-    expected = np.where((signed < 0)[..., None], blue, red)
+    t = np.abs(signed) / expected_max
+    too_much, too_little = np.array([0xd5, 0x5e, 0x00]), np.array([0x00, 0x72, 0xb2])
+    end = np.where((signed < 0)[..., None], too_little, too_much)
+    expected = np.rint(255 + (end - 255) * t[..., None]).astype(np.uint8)
     assert np.array_equal(image[..., :3], expected)
     assert (signed < 0).any() and (signed > 0).any()  # both signs are on show
     worst = np.unravel_index(np.argmax(np.abs(signed)), estimate.shape)
-    assert tuple(image[worst][:3]) == ((255, 0, 0) if signed[worst] > 0 else (0, 0, 255))
+    assert tuple(image[worst][:3]) == tuple(too_much if signed[worst] > 0 else too_little)
+    # The sign is not told by colour alone: over the map, cells with too
+    # little coverage carry a white hatch (8 image pixels a cell on this
+    # grid: its diagonal pixels are white), the others none.
+    hatch = w.depth_display._hatch
+    assert hatch.isVisible()
+    big = hatch.image
+    assert big.shape[:2] == (8 * height, 8 * width)
+    for (y, x) in np.argwhere(signed != 0):
+        cell = big[8 * y:8 * y + 8, 8 * x:8 * x + 8, :3]
+        white = (cell == 255).all(axis=-1)
+        assert white[0, 0] == (signed[y, x] < 0) or t[y, x] == 0
+        assert (white.sum() >= 8) == (signed[y, x] < 0)
     # The colour bar says what the colours mean, with the largest error at its ends.
     assert w.error_scale.isVisible()
     assert f"{expected_max:.3g}" in w.error_scale.high.text()
     assert "too little" in w.error_scale.low.text()
     w.error_action.setChecked(False)
     assert w.error_label.text() == "" and not w.error_scale.isVisible()
+    assert not hatch.isVisible()
 
 
 def test_the_current_pixel_shows_exact_coverage_and_error(window):

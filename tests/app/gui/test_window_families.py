@@ -216,7 +216,9 @@ def test_two_triangles_and_their_edge_values(open_window, qtbot):
     assert "outside" in chips and "not filled" in chips
     negative = next(n for n in ("e0", "e1", "e2") if values[outside][n] < 0)
     assert f"{negative} < 0" in chips
-    assert w.variables.value_color(negative).name() == "#c92a2a"
+    # Vermillion and blue (Okabe-Ito), and the sign written: not colour alone.
+    assert w.variables.value_color(negative).name() == "#d55e00"
+    assert w.variables.value_text(negative).startswith("-")
     tested = sum(1 for i in range(outside + 1) if trace.step(i).kind in ("plot", "visit")
                  and trace.step(i).pixel is not None and trace.step(i).record is None)
     filled = pixels_filled(trace, outside)
@@ -224,7 +226,8 @@ def test_two_triangles_and_their_edge_values(open_window, qtbot):
     w.transport.timeline.setValue(inside)
     chips = w.variables.chip_texts()
     assert "inside" in chips and "filled" in chips
-    assert w.variables.value_color("e0").name() == "#1f7a3d"
+    assert w.variables.value_color("e0").name() == "#0072b2"
+    assert w.variables.value_text("e0") == "+" + dict(w.variables.rows())["e0"]
 
 
 @pytest.mark.parametrize("name", ["aa-supersample", "aa-adaptive"])
