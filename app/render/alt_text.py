@@ -1,8 +1,9 @@
 """Alt text of exported frames: a title (the scene) and a description (the
 algorithm, the grid and the step in words, ``app.render.html.step_words``,
 the same words the interactive page reads out). SVG frames carry them as
-``<title>`` and ``<desc>``, PNG frames as the tEXt chunks "Title" and
-"Description", a PDF of frames as its document title and subject."""
+``<title>`` and ``<desc>``, PNG frames as the text chunks "Title" and
+"Description", a PDF of frames as its document title and subject, with an
+outline entry (bookmark) per page naming its step."""
 from __future__ import annotations
 
 from algorithms.core import registry
@@ -30,12 +31,16 @@ class AltText:
         return (f"{spec.title} ({spec.name}: {spec.summary}) on a {trace.width} x "
                 f"{trace.height} grid, {len(trace) - 1:,} steps")
 
-    def description(self, index: int) -> str:
-        """Frame ``index``: the algorithm, the grid, and step ``index`` in words."""
+    def words(self, index: int) -> str:
+        """Step ``index`` in words, as the interactive page says it."""
         if self._words is None:
             from app.render.html import step_words
             self._words = step_words(self.trace, self.numbers)
-        return f"{self.title}: {self.subject}. {self._words[index]}."
+        return self._words[index]
+
+    def description(self, index: int) -> str:
+        """Frame ``index``: the algorithm, the grid, and step ``index`` in words."""
+        return f"{self.title}: {self.subject}. {self.words(index)}."
 
     def png_info(self, index: int) -> dict[str, str]:
         """The PNG tEXt chunks of frame ``index``."""

@@ -342,6 +342,7 @@ class PdfWriter:
             self.pdf.set_lang(LANGUAGE)
             self.described = True
         _pdf_page(self.pdf, draw_frame(renderer, index))
+        self.pdf.start_section(renderer.alt_text.words(index))   # the reader's page list
         self.pages += 1
 
     def finish(self) -> None:

@@ -38,6 +38,9 @@ def test_every_frame_says_what_it_shows(run_cli, tmp_path):
     assert pdf.metadata.title == title
     assert "line-bresenham" in pdf.metadata.subject
     assert pdf.trailer["/Root"]["/Lang"] == "en"
+    titles = [entry.title for entry in pdf.outline]   # a bookmark per page, naming its step
+    assert len(titles) == 4 and titles[0] == "Step 0 of 26 \u00b7 set-up"
+    assert all(title.startswith(f"Step {k} of 26 \u00b7 ") for k, title in enumerate(titles))
     assert "map P, Q into octant" in pdf.pages[0].extract_text()   # the pseudo-code, as text
 
 
