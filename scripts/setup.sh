@@ -97,4 +97,9 @@ if ! up_to_date; then
   [ "$status" -eq 0 ] || exit "$status"
   checksum "requirements/$MODE.txt" pyproject.toml > ".venv/.rasterlab-$MODE"
 fi
+# The HTML page's accessibility tests run axe-core from npm: fetched once into
+# a cache outside the checkout and checked against npm's published integrity.
+if [ "$MODE" = test ]; then
+  "$BIN/python" -m tests.support.axe
+fi
 echo "RasterLab is set up in .venv (run $BIN/rasterlab, or 'source $BIN/activate' first to type just rasterlab)"

@@ -28,6 +28,7 @@ import time
 from pathlib import Path
 
 import numpy as np
+from PIL import PngImagePlugin
 
 from app.analysis import measure
 from app.model.files import Output, listed, manifest_bytes, write_atomically
@@ -93,7 +94,7 @@ def markdown(view: View, config, seconds: dict, missing_aa: str, figures=()) -> 
                 section_fill(view), section_interpolation(view),
                 section_antialias(view, missing_aa), section_textures(view),
                 section_visibility(view)]
-    pictures = "## Figures\n\n" + "\n\n".join(f"![{f}]({f}.png)" for f in FIGURE_ORDER
+    pictures = "## Figures\n\n" + "\n\n".join(f"![{figure_alt(f)}]({f}.png)" for f in FIGURE_ORDER
                                                  if f in figures)
     timing = "## Time per part\n\n" + table(["part", "seconds"],
                                              [[k, round(v, 1)] for k, v in seconds.items()])
@@ -102,6 +103,12 @@ def markdown(view: View, config, seconds: dict, missing_aa: str, figures=()) -> 
 
 FIGURE_ORDER = ("lines", "circles", "polygons", "fill", "triangles", "interpolation",
                 "antialiasing", "textures")
+
+
+def figure_alt(family: str) -> str:
+    """A figure's alt text: in report.md, and as its PNG's Title; the
+    figures' numbers are in the report's tables."""
+    return f"Cost against error of the {family} algorithms (its numbers are in the tables above)"
 
 
 def csv_text(rows: list[dict]) -> str:
@@ -150,7 +157,9 @@ def write_files(out, config, rows: list, seconds: dict, started: float | None = 
     }
     for family, image in images.items():
         buffer = io.BytesIO()
-        image.save(buffer, format="PNG", optimize=True)
+        text = PngImagePlugin.PngInfo()
+        text.add_text("Title", figure_alt(family))
+        image.save(buffer, format="PNG", optimize=True, pnginfo=text)
         documents[f"{family}.png"] = buffer.getvalue()
     names = sorted(documents)
     documents[MANIFEST] = manifest_bytes(names)

@@ -7,6 +7,14 @@ step table and the tables to fill in by hand (as many rows a page as fit,
 headings repeated), then one page with the grid and the ideal shape (shaded
 where the run plots, on the answer key). The command line imports this
 module only when it writes a PDF.
+
+What a reader of the PDF is told (what QPdfWriter can say): the title in
+the document information (setTitle), RasterLab as its creator, and an XMP
+metadata stream (setDocumentXmpMetadata) with the title, the subject and
+the language (dc:title, dc:description, dc:language). The text is real text
+in embedded fonts, which readers can select, search and read aloud. Qt
+writes no structure tree (an untagged PDF) and no /Lang entry in the
+document catalog: those need another PDF library.
 """
 from __future__ import annotations
 
@@ -19,10 +27,12 @@ from PySide6.QtGui import (QColor, QFont, QPageLayout, QPageSize, QPainter,
 from PySide6.QtWidgets import QApplication
 
 from app.gui.fonts import register_shipped_fonts
+from app.model.escape import xml_text
 from app.model.files import write_atomically
 from app.teaching.worksheet import FIELDS
 
 DPI = 150
+LANGUAGE = "en"   # the sheets are written in English
 ROW_HEIGHT = 1.5  # a table row, in lines of its 9 pt text
 
 
@@ -50,7 +60,10 @@ def write_pdf(sheet, path, answers: bool) -> None:
     writer.setResolution(DPI)
     writer.setPageLayout(QPageLayout(QPageSize(QPageSize.PageSizeId.A4),
                                      QPageLayout.Orientation.Portrait, QMarginsF(15, 15, 15, 15)))
-    writer.setTitle(f"{'Answer key' if answers else 'Worksheet'}: {sheet.title}")
+    title = f"{'Answer key' if answers else 'Worksheet'}: {sheet.title}"
+    writer.setTitle(title)
+    writer.setCreator("RasterLab")
+    writer.setDocumentXmpMetadata(xmp(title, subject(sheet, answers), LANGUAGE))
     painter = QPainter(writer)
     if not painter.isActive():
         raise OSError(f"{path}: Qt cannot draw the PDF")
@@ -67,6 +80,29 @@ def write_pdf(sheet, path, answers: bool) -> None:
     finally:
         painter.end()
     write_atomically(Path(path), bytes(buffer.data()), OSError)
+
+
+def subject(sheet, answers: bool) -> str:
+    """What the sheet asks, in one line: the PDF's subject."""
+    task = "the steps and pixels, filled in" if answers else \
+        "fill in the step table and shade the pixels it plots"
+    return f"{sheet.algorithm} on {sheet.inputs}: {task}"
+
+
+def xmp(title: str, subject: str, language: str) -> bytes:
+    """An XMP packet naming the document's title, subject and language."""
+    alt = '<rdf:Alt><rdf:li xml:lang="x-default">{}</rdf:li></rdf:Alt>'
+    return (
+        '<?xpacket begin="\ufeff" id="W5M0MpCehiHzreSzNTczkc9d"?>'
+        '<x:xmpmeta xmlns:x="adobe:ns:meta/"><rdf:RDF '
+        'xmlns:rdf="http://www.w3.org/1999/02/22-rdf-syntax-ns#">'
+        '<rdf:Description rdf:about="" xmlns:dc="http://purl.org/dc/elements/1.1/" '
+        'xmlns:xmp="http://ns.adobe.com/xap/1.0/">'
+        f'<dc:title>{alt.format(xml_text(title))}</dc:title>'
+        f'<dc:description>{alt.format(xml_text(subject))}</dc:description>'
+        f'<dc:language><rdf:Bag><rdf:li>{xml_text(language)}</rdf:li></rdf:Bag></dc:language>'
+        '<dc:format>application/pdf</dc:format><xmp:CreatorTool>RasterLab</xmp:CreatorTool>'
+        '</rdf:Description></rdf:RDF></x:xmpmeta><?xpacket end="w"?>').encode("utf-8")
 
 
 def _font(painter, size: float, bold: bool = False, mono: bool = False) -> float:

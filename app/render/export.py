@@ -25,6 +25,7 @@ from PIL import Image
 from algorithms.core import registry
 
 from app.model.geometry import run_paths
+from app.render.alt_text import AltText
 from app.render.derivation import draw_distances
 from app.render.octant_overlay import line_on_grid
 from app.render.overlays import draw_shapes, overlay_colours, overlay_shapes
@@ -124,6 +125,7 @@ class FrameRenderer:
         self._text.allocate()
         self._axes = self.axes.draw() if self.axes else None
         self.vertex_labels = vertex_labels(self.spec, scene) if settings.vertex_labels else []
+        self.alt_text = AltText(scene, trace, settings.numbers)   # what each frame shows, in words
 
     @property
     def text_parts(self) -> TextParts:
@@ -369,6 +371,7 @@ def hand_over(outputs, renderer: FrameRenderer, index: int) -> None:
             continue
         if image is None:
             image = renderer.image(index)
+            image.info.update(renderer.alt_text.png_info(index))   # PNG frames keep it
         output.grab_frame(image)
 
 

@@ -5,6 +5,7 @@ so every format gets the same frames, range, timing and look."""
 from __future__ import annotations
 
 import os
+from dataclasses import replace
 from pathlib import Path
 from typing import NamedTuple
 
@@ -49,17 +50,24 @@ def export_all(args, scene, settings, frames_limit: int, progress=None, cancelle
                trace=None, differences=None, names=("--from", "--to")):
     """Every output ``args`` (Outputs, or the command line's arguments) asks
     for: the frames (GIF, PNG, video, vector, Beamer) in one pass, then the
-    page; (ExportResult or None, Page or None)."""
+    page; (ExportResult or None, Page or None). An animation that would flash
+    more than three times a second is slowed (``app.render.flash_guard``),
+    and its summary line says so."""
     from app.render import export as exporting
+    from app.render.flash_guard import flash_safe
 
     result = None
     frame_outputs = (args.gif, args.frames_dir, args.mp4, args.webm, args.svg_dir, args.pdf)
     if any(output is not None for output in frame_outputs):
-        more = writers(args, settings, scene)
-        result = exporting.export(scene, settings, gif=args.gif, frames_dir=args.frames_dir,
-                                  progress=progress, cancelled=cancelled, names=names,
-                                  frames_limit=frames_limit, writers=more, trace=trace,
-                                  differences=differences, replace=args.force)
+        frame_settings, trace, slowed = flash_safe(scene, settings, trace)
+        more = writers(args, frame_settings, scene)
+        result = exporting.export(scene, frame_settings, gif=args.gif,
+                                  frames_dir=args.frames_dir, progress=progress,
+                                  cancelled=cancelled, names=names, frames_limit=frames_limit,
+                                  writers=more, trace=trace, differences=differences,
+                                  replace=args.force)
+        if slowed:
+            result = replace(result, chosen=f"{slowed}; {result.chosen}")
         finish(args, scene, more)
     page = write_html(args, scene, settings, trace) if args.html is not None else None
     return result, page

@@ -23,6 +23,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 import numpy as np
 
+from app.render.alt_text import LANGUAGE
 from app.model.escape import latex_comment, latex_file_name, latex_text, xml_text
 from app.render.compose import OUTLINE_STYLE, compose
 from app.render.frame import frame_marks
@@ -48,6 +49,7 @@ class Drawing:
     background: str
     shapes: list = field(default_factory=list)
     title: str = ""  # the scene's title: the SVG's <title>
+    description: str = ""  # the frame in words (app/render/alt_text.py): the SVG's <desc>
 
     def rect(self, x, y, w, h, fill=None, stroke=None, width=0.0):
         self.shapes.append(("rect", x, y, w, h, fill, stroke, width))
@@ -98,7 +100,9 @@ def draw_frame(renderer, index: int) -> Drawing:
     palette = theme.palette
     state = trace.state_at(index)
     width, height = renderer.size
-    drawing = Drawing(width, height, palette.outside, title=renderer.scene.title)
+    alt = renderer.alt_text
+    drawing = Drawing(width, height, palette.outside, title=alt.title,
+                      description=alt.description(index))
     at = _Place(renderer)
     _cells(drawing, state.raster, palette, at)
     if renderer.grid_lines:
@@ -214,10 +218,12 @@ def _labels(drawing, text, places, colour) -> None:
 # ---------------------------------------------------------------------- SVG
 def to_svg(drawing: Drawing) -> str:
     """The drawing as a standalone SVG document."""
+    # role="img" with its title and description: what screen readers read of an image.
     out = [f'<svg xmlns="http://www.w3.org/2000/svg" width="{drawing.width:g}" '
-           f'height="{drawing.height:g}" viewBox="0 0 {drawing.width:g} {drawing.height:g}">']
-    if drawing.title:
-        out.append(f"<title>{xml_text(drawing.title)}</title>")
+           f'height="{drawing.height:g}" viewBox="0 0 {drawing.width:g} {drawing.height:g}" '
+           f'role="img" aria-labelledby="title" aria-describedby="desc" xml:lang="en">']
+    out.append(f'<title id="title">{xml_text(drawing.title)}</title>')
+    out.append(f'<desc id="desc">{xml_text(drawing.description)}</desc>')
     out.append(f'<rect width="100%" height="100%" fill="{drawing.background}"/>')
     for shape in drawing.shapes:
         out.append(_svg_shape(shape))
@@ -322,13 +328,21 @@ class PdfWriter:
 
     def setup(self, size, count, palette, transparent) -> None:
         self.pdf = _new_pdf()
+        self.described = False
         self.target = target_of(self.path, ExportError)
         self.temporary = temporary_beside(self.target)
 
     def grab_step(self, renderer, index: int) -> None:
         if self.only is not None and index not in self.only:
             return
+        if not self.described:   # the document's title, subject and language
+            alt = renderer.alt_text
+            self.pdf.set_title(alt.title)
+            self.pdf.set_subject(alt.subject)
+            self.pdf.set_lang(LANGUAGE)
+            self.described = True
         _pdf_page(self.pdf, draw_frame(renderer, index))
+        self.pdf.start_section(renderer.alt_text.words(index))   # the reader's page list
         self.pages += 1
 
     def finish(self) -> None:

@@ -26,7 +26,7 @@ from pathlib import Path
 from typing import Iterator, Protocol, Sequence
 
 import numpy as np
-from PIL import Image
+from PIL import Image, PngImagePlugin
 
 from app.model.files import OutputRefused, remove_leftovers, target_of
 from app.model.staging import StagedFolder
@@ -183,7 +183,8 @@ class PngFolderWriter:
     def grab_frame(self, image: Image.Image) -> None:
         name = FRAME_NAME.format(len(self.names), width=self.width)
         try:
-            image.save(self.temporary / name, format="PNG", compress_level=3)
+            image.save(self.temporary / name, format="PNG", compress_level=3,
+                       pnginfo=_alt_text(image))
         except OSError as error:
             raise self._failed(error) from None
         self.names.append(name)
@@ -209,6 +210,16 @@ class PngFolderWriter:
     def _failed(self, error: OSError) -> ExportError:
         return ExportError(f"cannot write the frames in the folder {self.directory} "
                            f"({error.strerror or error})")
+
+
+def _alt_text(image: Image.Image) -> PngImagePlugin.PngInfo:
+    """The frame's alt text (``app.render.alt_text``, put in ``image.info``
+    by the export) as PNG tEXt chunks: Title and Description."""
+    info = PngImagePlugin.PngInfo()
+    for key in ("Title", "Description"):
+        if key in image.info:
+            info.add_text(key, image.info[key])
+    return info
 
 
 def foreign_frames(suffix: str, names=None):

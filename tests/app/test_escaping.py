@@ -91,8 +91,9 @@ def test_every_svg_frame_parses_with_the_title_as_given(scene_file, tmp_path, ru
     for frame in frames:
         root = ET.parse(frame).getroot()
         names = {element.tag.split("}")[1] for element in root.iter()}
-        assert names <= {"svg", "title", "rect", "polyline", "polygon", "text"}
+        assert names <= {"svg", "title", "desc", "rect", "polyline", "polygon", "text"}
         assert root.find("{http://www.w3.org/2000/svg}title").text == TITLE
+        assert root.find("{http://www.w3.org/2000/svg}desc").text.startswith(TITLE + ": ")
 
 
 # ------------------------------------------------------------------ LaTeX

@@ -105,6 +105,16 @@ def test_every_family_is_present(rows, report):
         assert f"({name}.png)" in text
 
 
+def test_every_figure_has_alt_text(report):
+    folder = report[0]
+    text = (folder / "report.md").read_text(encoding="utf-8")
+    for name in PICTURES:
+        alt = f"Cost against error of the {name} algorithms"
+        assert f"![{alt}" in text
+        with Image.open(folder / f"{name}.png") as image:
+            assert image.text["Title"].startswith(alt)
+
+
 def test_every_algorithm_family_has_operation_counts(rows):
     counted = defaultdict(set)
     for row in rows:

@@ -1,0 +1,60 @@
+"""Alt text in the exports, read back with the readers others use: SVG
+frames' <title> and <desc> (xml.etree), PNG frames' Title and Description
+(Pillow), the frames' PDF and the worksheets' PDFs (pypdf: title, subject,
+language, and the words of the page as text). The report's figures:
+tests/app/analysis/test_report.py."""
+from __future__ import annotations
+
+import xml.etree.ElementTree as ET
+
+from PIL import Image
+from pypdf import PdfReader
+
+from app.model import scene as scenes
+from tests.support import ROOT
+
+SVG = "{http://www.w3.org/2000/svg}"
+DEMO = ROOT / "resources" / "scenes" / "demo-bresenham.json"
+
+
+def test_every_frame_says_what_it_shows(run_cli, tmp_path):
+    status, _, err = run_cli("export", DEMO, "--svg-dir", tmp_path / "svg", "--frames-dir",
+                             tmp_path / "png", "--pdf", tmp_path / "frames.pdf", "--to", "3")
+    assert status == 0, err
+    title = scenes.load(DEMO).title
+    assert title   # the shipped demo has one
+    for k in range(4):
+        root = ET.parse(tmp_path / "svg" / f"frame_{k:04d}.svg").getroot()
+        assert root.get("role") == "img"
+        assert root.find(f"{SVG}title").text == title
+        desc = root.find(f"{SVG}desc").text
+        assert f"Step {k} of " in desc and "line-bresenham" in desc and "32 x 24 grid" in desc
+        with Image.open(tmp_path / "png" / f"frame_{k:04d}.png") as png:
+            assert png.text["Title"] == title
+            assert png.text["Description"] == desc   # the same words in both
+    assert "plots (" in ET.parse(tmp_path / "svg" / "frame_0001.svg").getroot() \
+        .find(f"{SVG}desc").text   # Bresenham's first step plots its first pixel
+    pdf = PdfReader(tmp_path / "frames.pdf")
+    assert pdf.metadata.title == title
+    assert "line-bresenham" in pdf.metadata.subject
+    assert pdf.trailer["/Root"]["/Lang"] == "en"
+    titles = [entry.title for entry in pdf.outline]   # a bookmark per page, naming its step
+    assert len(titles) == 4 and titles[0] == "Step 0 of 26 \u00b7 set-up"
+    assert all(title.startswith(f"Step {k} of 26 \u00b7 ") for k, title in enumerate(titles))
+    assert "map P, Q into octant" in pdf.pages[0].extract_text()   # the pseudo-code, as text
+
+
+def test_the_worksheets_have_a_title_subject_language_and_text(run_cli, tmp_path):
+    status, _, err = run_cli("worksheet", DEMO, "--out", tmp_path / "sheet")
+    assert status == 0, err
+    for name, kind in (("worksheet.pdf", "Worksheet"), ("answers.pdf", "Answer key")):
+        pdf = PdfReader(tmp_path / "sheet" / name)
+        title = f"{kind}: {scenes.load(DEMO).title}"
+        assert pdf.metadata.title == title
+        xmp = pdf.xmp_metadata   # Qt's QPdfWriter sets no /Subject nor /Lang: XMP carries them
+        assert xmp.dc_title == {"x-default": title}
+        assert xmp.dc_language == ["en"]
+        assert "line-bresenham" in xmp.dc_description["x-default"]
+        words = " ".join(pdf.pages[0].extract_text().split())
+        assert kind in words and "Inputs: P = (3, 4)" in words and "dx = x1 - x0" in words
+
