@@ -1,0 +1,99 @@
+"""The window by keyboard alone: the grid's cell cursor
+(widgets/grid_cursor.py) with its place in the status bar and in the Edit
+menu, F6 and Shift+F6 to go round the grid and the docks on show, and a ring
+around the widget that has the focus (widgets/focus_ring.py).
+
+F6 gives the focus to the first widget of a dock that Tab would reach, or,
+in a dock of read-only panels that Tab passes by (Pseudo-code, Variables),
+to its first list or table, so that a screen reader reads it and the ring
+shows where the keyboard is; the playback keys keep working there.
+"""
+from __future__ import annotations
+
+from PySide6.QtCore import QObject, Qt
+from PySide6.QtWidgets import QAbstractScrollArea, QDockWidget, QLabel, QWidget
+
+from widgets.focus_ring import FocusRing
+from widgets.grid_cursor import GridCursor
+
+GO_ROUND = Qt.FocusReason.ShortcutFocusReason
+
+
+class KeyboardAccess(QObject):
+    """Installs the cursor, the F6 keys and the focus ring on ``window``."""
+
+    def __init__(self, window):
+        super().__init__(window)
+        self.window = window
+        self.cursor = GridCursor(window.grid)
+        self.ring = FocusRing(window)
+        self.label = QLabel(window)
+        self.label.setObjectName("keyCursor")
+        self.label.hide()
+        window.statusBar().addPermanentWidget(self.label)
+        self.cursor.moved.connect(self._cursor_moved)
+        window.player.traceChanged.connect(lambda: self._cursor_moved(
+            self.cursor.cell if self.cursor.active else None))
+        self.toggle = window.add_action(window.menus["edit"], "cursor", "&Keyboard cursor", "K",
+                                        self.toggle_cursor)
+        self.toggle.setToolTip("A cell cursor on the grid: the arrows move it, Enter places or "
+                               "picks up a point, Esc puts a held point back (K)")
+        view = window.menus["view"]
+        view.addSeparator()
+        window.add_action(view, "next-panel", "Ne&xt panel", "F6", lambda: self.go_round(1))
+        window.add_action(view, "previous-panel", "Pre&vious panel", "Shift+F6",
+                          lambda: self.go_round(-1))
+
+    def toggle_cursor(self) -> None:
+        """K: the cursor on (the grid takes the focus) or off."""
+        grid = self.window.grid
+        on = not self.cursor.active
+        if on:
+            grid.setFocus(GO_ROUND)
+        self.cursor.set_enabled(on)
+
+    def _cursor_moved(self, cell) -> None:
+        if cell is None:
+            self.label.hide()
+            return
+        self.label.setText(f"cursor ({cell[0]}, {cell[1]}) \u00b7 {self.cursor.hint()}")
+        self.label.show()
+
+    # ------------------------------------------------------------ F6
+    def regions(self) -> list[QWidget]:
+        """The grid, then the docks on show (floating ones apart), left to right
+        and top down."""
+        # A dock behind another's tab counts as visible, but shows nothing.
+        docks = [d for d in self.window.findChildren(QDockWidget)
+                 if d.isVisible() and not d.visibleRegion().isEmpty()
+                 and d.widget() is not None and d.window() is self.window]
+        docks.sort(key=lambda d: (d.mapTo(self.window, d.rect().topLeft()).x(),
+                                  d.mapTo(self.window, d.rect().topLeft()).y()))
+        return [self.window.grid, *docks]
+
+    def go_round(self, direction: int) -> None:
+        """F6 (1) or Shift+F6 (-1): the focus to the next region."""
+        regions = self.regions()
+        focus = self.window.focusWidget()
+        here = next((k for k, r in enumerate(regions)
+                     if focus is not None and (r is focus or r.isAncestorOf(focus))), -1)
+        if here < 0 and direction < 0:
+            here = 0
+        target = regions[(here + direction) % len(regions)]
+        _focus_target(target).setFocus(GO_ROUND)
+
+
+def _focus_target(region: QWidget) -> QWidget:
+    """The widget in ``region`` the keyboard goes to."""
+    if not isinstance(region, QDockWidget):
+        return region
+    start = widget = region.widget()
+    for _ in range(500):  # the focus chain is a ring; a dock holds far fewer widgets
+        widget = widget.nextInFocusChain()
+        if widget is start or not region.isAncestorOf(widget):
+            break
+        if (widget.focusPolicy() & Qt.FocusPolicy.TabFocus) and widget.isVisible() \
+                and widget.isEnabled():
+            return widget
+    views = [w for w in start.findChildren(QAbstractScrollArea) if w.isVisible()]
+    return views[0] if views else start
