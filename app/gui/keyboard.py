@@ -7,16 +7,22 @@ F6 gives the focus to the first widget of a dock that Tab would reach, or,
 in a dock of read-only panels that Tab passes by (Pseudo-code, Variables),
 to its first list or table, so that a screen reader reads it and the ring
 shows where the keyboard is; the playback keys keep working there.
+
+A button that has the focus takes Space and Enter (``ButtonKeys``): the
+window's Space (play) and Return (close the contour) would otherwise take
+them, and a focused button could not be pressed without a mouse.
 """
 from __future__ import annotations
 
-from PySide6.QtCore import QObject, Qt
-from PySide6.QtWidgets import QAbstractScrollArea, QDockWidget, QLabel, QWidget
+from PySide6.QtCore import QEvent, QObject, Qt
+from PySide6.QtWidgets import (QAbstractButton, QAbstractScrollArea, QApplication, QCheckBox,
+                               QDockWidget, QLabel, QRadioButton, QWidget)
 
 from widgets.focus_ring import FocusRing
 from widgets.grid_cursor import GridCursor
 
 GO_ROUND = Qt.FocusReason.ShortcutFocusReason
+PRESS_KEYS = (Qt.Key.Key_Space, Qt.Key.Key_Return, Qt.Key.Key_Enter)
 
 
 class KeyboardAccess(QObject):
@@ -27,6 +33,7 @@ class KeyboardAccess(QObject):
         self.window = window
         self.cursor = GridCursor(window.grid)
         self.ring = FocusRing(window)
+        self.button_keys = ButtonKeys(window)
         self.label = QLabel(window)
         self.label.setObjectName("keyCursor")
         self.label.hide()
@@ -40,6 +47,8 @@ class KeyboardAccess(QObject):
                                "picks up a point, Esc puts a held point back (K)")
         view = window.menus["view"]
         view.addSeparator()
+        window.add_action(window.menus["edit"], "find-algorithm", "&Find algorithm\u2026",
+                          "Ctrl+F", self.find_algorithm)
         window.add_action(view, "next-panel", "Ne&xt panel", "F6", lambda: self.go_round(1))
         window.add_action(view, "previous-panel", "Pre&vious panel", "Shift+F6",
                           lambda: self.go_round(-1))
@@ -51,6 +60,15 @@ class KeyboardAccess(QObject):
         if on:
             grid.setFocus(GO_ROUND)
         self.cursor.set_enabled(on)
+
+    def find_algorithm(self) -> None:
+        """Ctrl+F: the keyboard to the algorithm search (Enter picks the first
+        algorithm shown and gives the keys back to the grid)."""
+        search = self.window.picker_search
+        self.window.scene_dock.show()
+        self.window.scene_dock.raise_()
+        search.setFocus(GO_ROUND)
+        search.selectAll()
 
     def _cursor_moved(self, cell) -> None:
         if cell is None:
@@ -81,6 +99,41 @@ class KeyboardAccess(QObject):
             here = 0
         target = regions[(here + direction) % len(regions)]
         _focus_target(target).setFocus(GO_ROUND)
+
+
+class ButtonKeys(QObject):
+    """Space and Enter press the focused button of the window (Space alone
+    toggles a check box or a radio button, as everywhere)."""
+
+    def __init__(self, window):
+        super().__init__(window)
+        self.window = window
+        self._watched: set[int] = set()
+        QApplication.instance().focusChanged.connect(self._focus_changed)
+
+    def _focus_changed(self, _old, new) -> None:
+        if isinstance(new, QAbstractButton) and new.window() is self.window \
+                and id(new) not in self._watched:
+            self._watched.add(id(new))
+            new.installEventFilter(self)
+            new.destroyed.connect(lambda *_a, key=id(new): self._watched.discard(key))
+
+    def eventFilter(self, obj, event) -> bool:  # noqa: N802
+        kind = event.type()
+        if kind not in (QEvent.Type.ShortcutOverride, QEvent.Type.KeyPress) \
+                or event.modifiers() & ~Qt.KeyboardModifier.KeypadModifier:
+            return False
+        key = event.key()
+        toggles = isinstance(obj, (QCheckBox, QRadioButton))
+        if key not in PRESS_KEYS or toggles and key != Qt.Key.Key_Space:
+            return False
+        if kind == QEvent.Type.ShortcutOverride:
+            event.accept()  # the key comes to the button
+            return True
+        if key != Qt.Key.Key_Space:  # Space the button handles itself
+            obj.click()
+            return True
+        return False
 
 
 def _focus_target(region: QWidget) -> QWidget:
