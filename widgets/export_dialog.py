@@ -217,6 +217,7 @@ class ExportDialog(QDialog):
         grid.addWidget(self.theme, 5, 1)
         grid.addWidget(QLabel("Text size", drawn), 6, 0)
         grid.addWidget(self.text_size, 6, 1)
+        QWidget.setTabOrder(self.theme, self.text_size)  # made before them, shown under them
         return drawn
 
     def _output_box(self) -> QGroupBox:

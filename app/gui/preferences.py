@@ -425,7 +425,7 @@ class PreferencesDialog(QDialog):
         self.theme.addItems(["Light", "Dark"])
         self.theme.setToolTip("Light or dark look for the whole window and the grid")
         self.theme.currentIndexChanged.connect(lambda _i: self._show_colors())
-        form.addRow("Theme", self.theme)
+        form.addRow("&Theme", self.theme)
         colors = QGridLayout()
         self.color_buttons = {}
         for k, (name, text) in enumerate(COLOR_NAMES.items()):
@@ -435,10 +435,10 @@ class PreferencesDialog(QDialog):
             colors.addWidget(button, k // 2, k % 2)
             self.color_buttons[name] = button
         form.addRow("Grid colours", colors)
-        self.grid_lines = QCheckBox("Show grid lines", group)
+        self.grid_lines = QCheckBox("Show grid &lines", group)
         self.grid_lines.setToolTip("Draw the lines between the cells of the grid")
         form.addRow("", self.grid_lines)
-        self.reduce_motion = QCheckBox("Reduce motion", group)
+        self.reduce_motion = QCheckBox("Reduce &motion", group)
         self.reduce_motion.setToolTip("No animated menus, tooltips or docks (the default is the "
                                       "system's own setting where it can be read)")
         form.addRow("", self.reduce_motion)
@@ -451,13 +451,13 @@ class PreferencesDialog(QDialog):
         self.origin.addItems(["Bottom-left, y up", "Top-left, y down"])
         self.origin.setToolTip("Where pixel (0, 0) is in a new window (a scene file's own "
                                "origin wins when it is opened)")
-        form.addRow("Origin", self.origin)
+        form.addRow("Or&igin", self.origin)
         self.speed = QSpinBox(group)
         self.speed.setRange(SPEED_MIN, SPEED_MAX)
         self.speed.setSuffix(" steps/s")
         self.speed.setToolTip("Playback speed, in steps per second")
-        form.addRow("Playback speed", self.speed)
-        self.reopen_last = QCheckBox("Reopen the last scene at start", group)
+        form.addRow("Playback &speed", self.speed)
+        self.reopen_last = QCheckBox("R&eopen the last scene at start", group)
         self.reopen_last.setToolTip("At start, open the scene file opened or saved last "
                                     "instead of the demo scene")
         form.addRow("", self.reopen_last)
@@ -474,13 +474,13 @@ class PreferencesDialog(QDialog):
         self.step_cap.setToolTip("A run stops recording after this many steps (a longer run "
                                  f"takes more memory); {STEP_CAP_RANGE[0]:,} to "
                                  f"{STEP_CAP_RANGE[1]:,}")
-        form.addRow("Step cap", self.step_cap)
+        form.addRow("Step ca&p", self.step_cap)
         self.max_grid = QSpinBox(group)
         self.max_grid.setRange(MIN_GRID, MAX_GRID)
         self.max_grid.setSuffix(" px a side")
         self.max_grid.setToolTip(f"The largest grid width and height accepted ({MIN_GRID} to "
                                  f"{MAX_GRID})")
-        form.addRow("Maximum grid size", self.max_grid)
+        form.addRow("Maximum &grid size", self.max_grid)
         self.memory_mb = QSpinBox(group)
         self.memory_mb.setRange(*MEMORY_MB_RANGE)
         self.memory_mb.setSingleStep(512)
@@ -488,7 +488,7 @@ class PreferencesDialog(QDialog):
         self.memory_mb.setSuffix(" MiB")
         self.memory_mb.setToolTip("A run whose estimated memory is larger is refused before it "
                                   "starts, and the scene stays as it was")
-        form.addRow("Memory for a run", self.memory_mb)
+        form.addRow("Memory for a &run", self.memory_mb)
         return group
 
     # ---------------------------------------------------------- values
