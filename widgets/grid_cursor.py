@@ -60,7 +60,7 @@ class GridCursor(QObject):
     def __init__(self, view):
         super().__init__(view)
         self.view = view
-        self.cell = (0, 0)
+        self.cell = None  # the grid's centre until it first shows
         self.enabled = False
         self._held = None  # ("point", i, was) | ("marker", was) | ("rim", radii)
         self._rings = (_ring(OUTER, 5), _ring(INNER, 2))
@@ -209,7 +209,15 @@ class GridCursor(QObject):
 
     # ---------------------------------------------------------- drawing
     def _show(self) -> None:
-        shown = self.active and self.view.grid_size[0] > 0
+        view = self.view
+        shown = self.active and view.grid_size[0] > 0
+        if self.cell is None and shown:
+            self.cell = (view.grid_size[0] // 2, view.grid_size[1] // 2)
+        if self.cell is None:
+            return
+        if shown:  # the dashed preview runs to the cursor, as it does to the pointer
+            view._cursor_at = QPointF(self.cell[0] + 0.5, self.cell[1] + 0.5)
+            view._draw_preview()
         rect = QRectF(self.cell[0], self.cell[1], 1, 1)
         self._rings[1].setPen(self._pen(HOLDING if self._held else INNER))
         for ring in self._rings:

@@ -3,10 +3,11 @@
 menu, F6 and Shift+F6 to go round the grid and the docks on show, and a ring
 around the widget that has the focus (widgets/focus_ring.py).
 
-F6 gives the focus to the first widget of a dock that Tab would reach, or,
-in a dock of read-only panels that Tab passes by (Pseudo-code, Variables),
-to its first list or table, so that a screen reader reads it and the ring
-shows where the keyboard is; the playback keys keep working there.
+F6 gives the focus to a dock's first list, table or tree, even one that Tab
+passes by (the pseudo-code, the variables: they never take the focus from
+Tab, so that the playback keys stay with the window), so that a screen
+reader reads it and the ring shows where the keyboard is; the playback keys
+keep working there. A dock without one gets its first widget Tab reaches.
 
 A button that has the focus takes Space and Enter (``ButtonKeys``): the
 window's Space (play) and Return (close the contour) would otherwise take
@@ -15,7 +16,7 @@ them, and a focused button could not be pressed without a mouse.
 from __future__ import annotations
 
 from PySide6.QtCore import QEvent, QObject, Qt
-from PySide6.QtWidgets import (QAbstractButton, QAbstractScrollArea, QApplication, QCheckBox,
+from PySide6.QtWidgets import (QAbstractButton, QAbstractItemView, QApplication, QCheckBox,
                                QDockWidget, QLabel, QRadioButton, QWidget)
 
 from widgets.focus_ring import FocusRing
@@ -59,6 +60,7 @@ class KeyboardAccess(QObject):
         on = not self.cursor.active
         if on:
             grid.setFocus(GO_ROUND)
+            self.ring.follow(grid)  # a click may have given it the focus: no ring then
         self.cursor.set_enabled(on)
 
     def find_algorithm(self) -> None:
@@ -141,6 +143,9 @@ def _focus_target(region: QWidget) -> QWidget:
     if not isinstance(region, QDockWidget):
         return region
     start = widget = region.widget()
+    views = [w for w in start.findChildren(QAbstractItemView) if w.isVisible()]
+    if views:
+        return views[0]
     for _ in range(500):  # the focus chain is a ring; a dock holds far fewer widgets
         widget = widget.nextInFocusChain()
         if widget is start or not region.isAncestorOf(widget):
@@ -148,5 +153,4 @@ def _focus_target(region: QWidget) -> QWidget:
         if (widget.focusPolicy() & Qt.FocusPolicy.TabFocus) and widget.isVisible() \
                 and widget.isEnabled():
             return widget
-    views = [w for w in start.findChildren(QAbstractScrollArea) if w.isVisible()]
-    return views[0] if views else start
+    return start
