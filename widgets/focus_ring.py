@@ -5,18 +5,27 @@ that never take the focus from Tab, such as the Variables table, draw none
 when F6 gives it to them).
 
 The ring is a child of the window laid over the focused widget; it takes no
-clicks. It shows when the focus moved by the keyboard (no mouse button was
-down at the time), so a click leaves the window as it was. A black line
+clicks. It shows when the focus moved by the keyboard (not by a click on the
+widget), so a click leaves the window as it was. A black line
 under a white one stands out on any background, in either theme.
 """
 from __future__ import annotations
 
 from PySide6.QtCore import QEvent, QRect, Qt
-from PySide6.QtGui import QColor, QGuiApplication, QPainter, QPen
+from PySide6.QtGui import QColor, QCursor, QGuiApplication, QPainter, QPen
 from PySide6.QtWidgets import QApplication, QWidget
 
 WIDTH = 4  # screen pixels: a 2 px black line and a 2 px white one inside it
 OUTER, INNER = QColor("#000000"), QColor("#ffffff")
+
+
+def _clicked(widget: QWidget) -> bool:
+    """Whether ``widget`` took the focus from a click: a button is down with
+    the pointer over it."""
+    if QGuiApplication.mouseButtons() == Qt.MouseButton.NoButton:
+        return False
+    under = QApplication.widgetAt(QCursor.pos())
+    return under is not None and (under is widget or widget.isAncestorOf(under))
 
 
 class FocusRing(QWidget):
@@ -32,8 +41,7 @@ class FocusRing(QWidget):
         QApplication.instance().focusChanged.connect(self._focus_changed)
 
     def _focus_changed(self, _old, new) -> None:
-        by_mouse = QGuiApplication.mouseButtons() != Qt.MouseButton.NoButton
-        self.follow(None if new is None or by_mouse or new.window() is not self.window()
+        self.follow(None if new is None or _clicked(new) or new.window() is not self.window()
                     else new)
 
     def follow(self, widget: QWidget | None) -> None:

@@ -1,6 +1,7 @@
 """The grid's keyboard cursor and F6, driven by key events on the window."""
 import pytest
 from PySide6.QtCore import Qt
+from PySide6.QtGui import QCursor
 from PySide6.QtTest import QTest
 
 pytestmark = pytest.mark.window(settled=True)
@@ -183,3 +184,15 @@ def test_every_menu_of_the_menu_bar_has_a_mnemonic(window):
     assert titles and all("&" in title for title in titles)
     letters = [title[title.index("&") + 1].lower() for title in titles]
     assert len(set(letters)) == len(letters)
+
+
+def test_a_click_gives_the_focus_without_a_ring(qtbot, window):
+    window.activateWindow()
+    search = window.picker_search
+    QCursor.setPos(search.mapToGlobal(search.rect().center()))  # the pointer is where it clicks
+    QTest.mouseClick(search, Qt.MouseButton.LeftButton)
+    assert search.hasFocus()
+    assert not window.keyboard.ring.isVisible()
+    key(window, "Tab")  # then the keyboard moves it: the ring shows
+    assert window.keyboard.ring.isVisible()
+    assert window.keyboard.ring.target is window.focusWidget() is not search
