@@ -14,12 +14,13 @@ from __future__ import annotations
 from PySide6.QtCore import QEvent, QRect, Qt
 from PySide6.QtGui import QColor, QCursor, QGuiApplication, QPainter, QPen
 from PySide6.QtWidgets import QApplication, QWidget
+from shiboken6 import isValid
 
 WIDTH = 4  # screen pixels: a 2 px black line and a 2 px white one inside it
 OUTER, INNER = QColor("#000000"), QColor("#ffffff")
 
 
-def _clicked(widget: QWidget) -> bool:
+def clicked(widget: QWidget) -> bool:
     """Whether ``widget`` took the focus from a click: a button is down with
     the pointer over it."""
     if QGuiApplication.mouseButtons() == Qt.MouseButton.NoButton:
@@ -37,16 +38,18 @@ class FocusRing(QWidget):
         self.setAttribute(Qt.WidgetAttribute.WA_TransparentForMouseEvents)
         self.setFocusPolicy(Qt.FocusPolicy.NoFocus)
         self.target: QWidget | None = None
+        #: Whether a widget that took the focus, not by a click, is ringed.
+        self.accepts = lambda widget: True
         self.hide()
         QApplication.instance().focusChanged.connect(self._focus_changed)
 
     def _focus_changed(self, _old, new) -> None:
-        self.follow(None if new is None or _clicked(new) or new.window() is not self.window()
-                    else new)
+        self.follow(None if new is None or clicked(new) or new.window() is not self.window()
+                    or not self.accepts(new) else new)
 
     def follow(self, widget: QWidget | None) -> None:
         """Ring ``widget`` (None: no ring)."""
-        if self.target is not None:
+        if self.target is not None and isValid(self.target):  # not deleted meanwhile
             self.target.removeEventFilter(self)
         self.target = widget
         if widget is not None:
@@ -55,7 +58,7 @@ class FocusRing(QWidget):
 
     def _place(self) -> None:
         target = self.target
-        if target is None or not target.isVisible():
+        if target is None or not isValid(target) or not target.isVisible():
             self.hide()
             return
         top_left = target.mapTo(self.window(), target.rect().topLeft())

@@ -62,6 +62,7 @@ class GridCursor(QObject):
         self.view = view
         self.cell = None  # the grid's centre until it first shows
         self.enabled = False
+        self.by_keyboard = False  # the grid's focus came from Tab, Shift+Tab or a shortcut
         self._held = None  # ("point", i, was) | ("marker", was) | ("rim", radii)
         self._rings = (_ring(OUTER, 5), _ring(INNER, 2))
         for ring in self._rings:
@@ -234,7 +235,8 @@ class GridCursor(QObject):
     def eventFilter(self, obj, event) -> bool:  # noqa: N802
         kind = event.type()
         if kind == QEvent.Type.FocusIn:
-            if event.reason() in KEYBOARD_REASONS:
+            self.by_keyboard = event.reason() in KEYBOARD_REASONS
+            if self.by_keyboard:
                 self.enabled = True
             elif event.reason() == Qt.FocusReason.MouseFocusReason:
                 self.set_enabled(False)

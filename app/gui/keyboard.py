@@ -9,9 +9,10 @@ Tab, so that the playback keys stay with the window), so that a screen
 reader reads it and the ring shows where the keyboard is; the playback keys
 keep working there. A dock without one gets its first widget Tab reaches.
 
-A button that has the focus takes Space and Enter (``ButtonKeys``): the
-window's Space (play) and Return (close the contour) would otherwise take
-them, and a focused button could not be pressed without a mouse.
+A button that has the focus takes Enter, and Space when the keyboard moved
+the focus to it (``ButtonKeys``): the window's Space (play) and Return (close
+the contour) would otherwise take them, and a focused button could not be
+pressed without a mouse. After a click Space still plays.
 """
 from __future__ import annotations
 
@@ -19,11 +20,13 @@ from PySide6.QtCore import QEvent, QObject, Qt
 from PySide6.QtWidgets import (QAbstractButton, QAbstractItemView, QApplication, QCheckBox,
                                QDockWidget, QLabel, QRadioButton, QWidget)
 
-from widgets.focus_ring import FocusRing
+from widgets.focus_ring import FocusRing, clicked
 from widgets.grid_cursor import GridCursor
 
 GO_ROUND = Qt.FocusReason.ShortcutFocusReason
-PRESS_KEYS = (Qt.Key.Key_Space, Qt.Key.Key_Return, Qt.Key.Key_Enter)
+ENTER_KEYS = (Qt.Key.Key_Return, Qt.Key.Key_Enter)
+KEYBOARD_REASONS = (Qt.FocusReason.TabFocusReason, Qt.FocusReason.BacktabFocusReason,
+                    Qt.FocusReason.ShortcutFocusReason)
 
 
 class KeyboardAccess(QObject):
@@ -34,6 +37,11 @@ class KeyboardAccess(QObject):
         self.window = window
         self.cursor = GridCursor(window.grid)
         self.ring = FocusRing(window)
+        # The grid takes the focus when a scene opens: a ring only when the keyboard moved it.
+        self.ring.accepts = lambda widget: widget is not window.grid or self.cursor.by_keyboard
+        # The window's dialogs and windows (export, preferences, compare,
+        # gallery) get a ring of their own when the keyboard first moves in them.
+        QApplication.instance().focusChanged.connect(self._ring_dialogs)
         self.button_keys = ButtonKeys(window)
         self.label = QLabel(window)
         self.label.setObjectName("keyCursor")
@@ -62,6 +70,15 @@ class KeyboardAccess(QObject):
             grid.setFocus(GO_ROUND)
             self.ring.follow(grid)  # a click may have given it the focus: no ring then
         self.cursor.set_enabled(on)
+
+    def _ring_dialogs(self, _old, new) -> None:
+        if new is None or clicked(new):
+            return
+        top = new.window()
+        if top is self.window or top.findChild(FocusRing) is not None \
+                or not _opened_from(top, self.window):
+            return
+        FocusRing(top).follow(new)
 
     def find_algorithm(self) -> None:
         """Ctrl+F: the keyboard to the algorithm search (Enter picks the first
@@ -104,38 +121,62 @@ class KeyboardAccess(QObject):
 
 
 class ButtonKeys(QObject):
-    """Space and Enter press the focused button of the window (Space alone
-    toggles a check box or a radio button, as everywhere)."""
+    """Enter presses the focused button. Space presses it too (or toggles a
+    check box or a radio button) when the keyboard took the focus there (Tab,
+    Shift+Tab, F6); after a click or a program's choice Space plays the run,
+    as it does wherever the focus is."""
 
     def __init__(self, window):
         super().__init__(window)
         self.window = window
         self._watched: set[int] = set()
+        self._by_keyboard = None  # the button Tab or F6 gave the focus to
+        self._watch_new()
         QApplication.instance().focusChanged.connect(self._focus_changed)
 
     def _focus_changed(self, _old, new) -> None:
-        if isinstance(new, QAbstractButton) and new.window() is self.window \
-                and id(new) not in self._watched:
-            self._watched.add(id(new))
-            new.installEventFilter(self)
-            new.destroyed.connect(lambda *_a, key=id(new): self._watched.discard(key))
+        if new is not None and new.window() is self.window:
+            self._watch_new()  # buttons made since (an exercise's choices)
+
+    def _watch_new(self) -> None:
+        for button in self.window.findChildren(QAbstractButton):
+            if id(button) not in self._watched:
+                self._watched.add(id(button))
+                button.installEventFilter(self)
+                button.destroyed.connect(lambda *_a, key=id(button): self._watched.discard(key))
 
     def eventFilter(self, obj, event) -> bool:  # noqa: N802
         kind = event.type()
+        if kind == QEvent.Type.FocusIn:
+            self._by_keyboard = obj if event.reason() in KEYBOARD_REASONS else None
+            return False
         if kind not in (QEvent.Type.ShortcutOverride, QEvent.Type.KeyPress) \
                 or event.modifiers() & ~Qt.KeyboardModifier.KeypadModifier:
             return False
         key = event.key()
-        toggles = isinstance(obj, (QCheckBox, QRadioButton))
-        if key not in PRESS_KEYS or toggles and key != Qt.Key.Key_Space:
+        if key == Qt.Key.Key_Space:
+            takes = obj is self._by_keyboard
+        else:
+            takes = key in ENTER_KEYS and not isinstance(obj, (QCheckBox, QRadioButton))
+        if not takes:
             return False
         if kind == QEvent.Type.ShortcutOverride:
-            event.accept()  # the key comes to the button
+            event.accept()  # the key comes to the button, not to the window's action
             return True
         if key != Qt.Key.Key_Space:  # Space the button handles itself
             obj.click()
             return True
         return False
+
+
+def _opened_from(top: QWidget, window: QWidget) -> bool:
+    """Whether the window ``top`` belongs to ``window`` (a dialog of it)."""
+    parent = top.parentWidget()
+    while parent is not None:
+        if parent is window:
+            return True
+        parent = parent.parentWidget()
+    return False
 
 
 def _focus_target(region: QWidget) -> QWidget:

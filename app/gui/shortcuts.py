@@ -27,7 +27,8 @@ GESTURES = (
      "the seed or a circle's square handle: pick it up, move it with the arrows, Enter "
      "drops it, Esc puts it back"),
     ("Shift+Enter (grid cursor)", "Start a new contour at the cursor, as Shift+click does"),
-    ("Space, Enter (a button)", "Press the button that has the focus"),
+    ("Enter or Space (a button)", "Press the button that Tab or F6 moved to (after a "
+     "click, Space plays)"),
     ("Tab, Enter (vertex table)", "Next cell; typing replaces the value"),
     ("Insert, Delete (vertex table)", "Add a vertex after the selected one, remove it"),
     ("F2 (bookmarks)", "Rename the selected bookmark"),

@@ -3,7 +3,7 @@ import re
 
 import pytest
 from PySide6.QtCore import Qt
-from PySide6.QtWidgets import QAbstractButton, QLabel, QWidget
+from PySide6.QtWidgets import QAbstractButton, QApplication, QLabel, QWidget
 
 pytestmark = pytest.mark.window(files=True)
 
@@ -62,3 +62,18 @@ def test_compare_tabs_pane_by_pane_then_the_diff_and_the_speed(window, qtbot):
     assert grids[-1] < chain.index(compare.view.diff.grid) < chain.index(
         compare.transport.speed_box)
     compare.close()
+
+
+def test_a_dialog_rings_the_widget_tab_moves_to(window, qtbot):
+    from PySide6.QtTest import QTest
+    from widgets.focus_ring import FocusRing
+    dialog = window.preferences.open_dialog()
+    qtbot.waitExposed(dialog)
+    dialog.activateWindow()
+    qtbot.waitUntil(lambda: QApplication.focusWidget() is not None
+                    and QApplication.focusWidget().window() is dialog)
+    QTest.keyClick(QApplication.focusWidget(), Qt.Key.Key_Tab)
+    ring = dialog.findChild(FocusRing)
+    assert ring is not None and ring.isVisible()
+    assert ring.target is QApplication.focusWidget()
+    dialog.close()
