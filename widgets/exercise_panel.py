@@ -135,12 +135,26 @@ class ExercisePanel(QWidget):
             button.setObjectName(f"choice-{choice}")
             button.clicked.connect(lambda _=False, c=choice: self.answered.emit(c))
             self.choices.addWidget(button)
+            button.show()  # now, not when the layout next runs: the focus may go to it
+            # Tab goes from the question's choices on to the entry, as they are laid out.
+            QWidget.setTabOrder(self._choice_buttons[-1] if self._choice_buttons
+                                else self.save_button, button)
             self._choice_buttons.append(button)
+        if self._choice_buttons:
+            QWidget.setTabOrder(self._choice_buttons[-1], self.entry)
         self.entry.clear()
         self.entry.setEnabled(typed)
         self.answer_button.setEnabled(typed)
         self.entry.setPlaceholderText(placeholder or "type the answer, then Enter")
         self.hint.clear()
+
+    def focus_answer(self) -> None:
+        """The keyboard to the first choice, else the entry when it is open."""
+        first = self._choice_buttons[0] if self._choice_buttons else None
+        if first is None and self.entry.isEnabled():
+            first = self.entry
+        if first is not None:
+            first.setFocus(Qt.FocusReason.OtherFocusReason)
 
     def choice_button(self, choice: str) -> QPushButton | None:
         return next((b for b in self._choice_buttons if b.text() == choice), None)

@@ -31,6 +31,13 @@ MORE_OUTPUTS = (
 )
 
 
+def _label(text: str, buddy, parent) -> QLabel:
+    """A label whose Alt+letter takes the keyboard to ``buddy``."""
+    label = QLabel(text, parent)
+    label.setBuddy(buddy)
+    return label
+
+
 class ExportDialog(QDialog):
     """Choices for exporting the run on show as an animated GIF (and,
     optionally, numbered PNG frames)."""
@@ -210,6 +217,7 @@ class ExportDialog(QDialog):
         grid.addWidget(self.theme, 5, 1)
         grid.addWidget(QLabel("Text size", drawn), 6, 0)
         grid.addWidget(self.text_size, 6, 1)
+        QWidget.setTabOrder(self.theme, self.text_size)  # made before them, shown under them
         return drawn
 
     def _output_box(self) -> QGroupBox:
@@ -224,10 +232,10 @@ class ExportDialog(QDialog):
         self.browse_frames = QPushButton("Browse\u2026", output)
         self.browse_frames.clicked.connect(self._choose_folder)
         where = QGridLayout(output)
-        where.addWidget(QLabel("GIF file", output), 0, 0)
+        where.addWidget(_label("&GIF file", self.path, output), 0, 0)
         where.addWidget(self.path, 0, 1)
         where.addWidget(self.browse, 0, 2)
-        where.addWidget(QLabel("PNG frames", output), 1, 0)
+        where.addWidget(_label("P&NG frames", self.frames_dir, output), 1, 0)
         where.addWidget(self.frames_dir, 1, 1)
         where.addWidget(self.browse_frames, 1, 2)
         self.more: dict[str, QLineEdit] = {}

@@ -24,7 +24,8 @@ Mouse and keys (the window's Help lists them too):
 * circles: drag from an empty cell: centre and radius; drag the square
   rim handle: radius; Shift keeps an ellipse's radii equal;
 * drag the seed marker, or use the marker tool, to move a fill's seed;
-* drag elsewhere, or with the middle button: pan; wheel: zoom.
+* drag elsewhere, or with the middle button: pan; wheel: zoom;
+* by keyboard, a cell cursor does all of the above (widgets/grid_cursor.py).
 """
 from __future__ import annotations
 

@@ -124,7 +124,7 @@ class CompareWindow(QMainWindow):
         self.next_button.setToolTip("Zoom to the next cell where the two diffed panes differ "
                                     "(N)")
         self.next_button.clicked.connect(self.next_difference)
-        fit = QPushButton("Fit", self)
+        fit = self.fit_button = QPushButton("Fit", self)
         fit.setToolTip("Fit the grid to the views (F)")
         fit.clicked.connect(lambda: self.view.fit())
         for widget in (QLabel("Compare", self), self.preset_box):
@@ -282,6 +282,19 @@ class CompareWindow(QMainWindow):
             header.algorithmChosen.connect(lambda name, p=pane: self._header_algorithm(p, name))
             header.optionsTyped.connect(lambda text, p=pane: self._header_options(p, text))
             header.removeRequested.connect(lambda p=pane: self._header_remove(p))
+        self._order_tabs()
+
+    def _order_tabs(self) -> None:
+        """Tab as the window reads: the bar, each pane left to right (its
+        algorithm, options, grid), the diff, the speed. Panes added later
+        would otherwise come last, after the diff and the speed."""
+        chain = [self.preset_box, self.link_box, self.a_box, self.b_box, self.add_button,
+                 self.next_button, self.fit_button]
+        for pane in self.view.panes:
+            chain += [pane.header.algorithm, pane.header.options, pane.grid]
+        chain += [self.view.diff.grid, self.transport.speed_box]
+        for before, after in zip(chain, chain[1:]):
+            QWidget.setTabOrder(before, after)
 
     def _pane_index(self, widget) -> int:
         return self.view.panes.index(widget)

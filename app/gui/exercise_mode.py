@@ -20,7 +20,7 @@ from pathlib import Path
 
 from PySide6.QtCore import QEvent, QObject, Qt
 from PySide6.QtGui import QAction
-from PySide6.QtWidgets import QFileDialog
+from PySide6.QtWidgets import QApplication, QFileDialog
 
 from widgets.docks import panel_dock
 from widgets.exercise_panel import ExercisePanel
@@ -171,8 +171,12 @@ class ExerciseMode(QObject):
                 "or change a setting to start again.")
             return
         typed = question.kind in PLACEHOLDERS
+        focus = QApplication.focusWidget()
+        answering = focus is not None and self.panel.isAncestorOf(focus)
         self.panel.show_question(question.prompt, question.choices, typed,
                                  PLACEHOLDERS.get(question.kind, ""))
+        if answering:  # the keyboard to the new question's first choice or the entry
+            self.panel.focus_answer()
 
     def _show(self, index: int) -> None:
         self._holding = True

@@ -4,6 +4,11 @@
 ``MainWindow.__init__``) reads the stored preferences, applies them to the
 window, and adds Edit > Preferences… (Ctrl+,) and View > Grid lines.
 
+Reduce motion (Appearance) defaults to the system's own setting
+(app/model/system_motion.py), read once when first needed; on, it stops Qt's
+animated menus, tooltips, combo boxes and docks. Nothing in the window plays
+on its own either way: play starts only by Space or the play button.
+
 Preferences live in QSettings: the INI file named by ``$RASTERLAB_SETTINGS``
 when that is set (tests and portable set-ups), else the person's RasterLab
 settings (organisation and application "RasterLab", as the recent-files list
@@ -13,6 +18,7 @@ range counts as unset: its default is used, nothing raises.
 from __future__ import annotations
 
 import dataclasses
+import functools
 import re
 from dataclasses import dataclass
 from pathlib import Path
@@ -29,6 +35,7 @@ from algorithms.core.raster import MAX_GRID
 from algorithms.core.registry import InputError
 from algorithms.core.trace import DEFAULT_STEP_CAP, MAX_STEP_CAP
 from app.model.budget import DEFAULT_MEMORY_LIMIT
+from app.model.system_motion import reduce_motion
 from app.model.notation import NUMBERS
 from widgets.transport import SPEED_MAX, SPEED_MIN
 
@@ -93,8 +100,17 @@ def _color(value) -> str:
 @dataclass(frozen=True)
 class Setting:
     key: str
-    default: Any
+    default: Any  # a value, or a function that finds it (the system's setting)
     parse: Callable[[Any], Any]
+
+    def fallback(self):
+        return self.default() if callable(self.default) else self.default
+
+
+@functools.lru_cache(maxsize=1)
+def system_reduce_motion() -> bool:
+    """The system's reduce-motion setting, asked once per run."""
+    return reduce_motion()
 
 
 SETTINGS = {
@@ -108,6 +124,7 @@ SETTINGS = {
     "memory_mb": Setting("limits/memory_mb", DEFAULT_MEMORY_LIMIT // MB, _int_in(*MEMORY_MB_RANGE)),
     # View > Exact fractions (app/gui/numbers_setting.py)
     "numbers": Setting("appearance/numbers", NUMBERS[0], _one_of(*NUMBERS)),
+    "reduce_motion": Setting("appearance/reduce_motion", system_reduce_motion, _as_bool),
 }
 
 
@@ -119,7 +136,7 @@ class Preferences:
 
     def get(self, name: str):
         setting = SETTINGS[name]
-        return self._read(setting.key, setting.default, setting.parse)
+        return self._read(setting.key, setting.fallback, setting.parse)
 
     def set(self, name: str, value) -> None:
         """Store ``value``; raises ValueError when it is not acceptable."""
@@ -154,15 +171,16 @@ class Preferences:
     def _read(self, key: str, default, parse):
         raw = self.settings.value(key)
         if raw is None:
-            return default
+            return default() if callable(default) else default
         try:
             return parse(raw)
         except (TypeError, ValueError, OverflowError):
-            return default  # a hand-edited or damaged file: fall back quietly
+            # a hand-edited or damaged file: fall back quietly
+            return default() if callable(default) else default
 
 
 def default_values() -> dict:
-    values = {name: setting.default for name, setting in SETTINGS.items()}
+    values = {name: setting.fallback() for name, setting in SETTINGS.items()}
     values["colors"] = {theme: {name: getattr(BASE_PALETTES[theme], name)
                                 for name in COLOR_NAMES} for theme in THEMES}
     return values
@@ -270,6 +288,7 @@ class PreferencesController(QObject):
             window.transport.set_speed(values["speed"])
         self._apply_limits(values["step_cap"], values["max_grid"])
         window.player.memory_limit = values["memory_mb"] * MB
+        apply_motion(window, values["reduce_motion"])
         window.show_frame()
 
     def _apply_limits(self, step_cap: int, max_grid: int) -> None:
@@ -313,6 +332,24 @@ class PreferencesController(QObject):
             self.window.statusBar().showMessage(
                 f"The grid is at its maximum size of {limit} pixels a side; raise "
                 f"\"Maximum grid size\" in Edit > Preferences (up to {MAX_GRID}).", 8000)
+
+
+ANIMATED_EFFECTS = (Qt.UIEffect.UI_AnimateMenu, Qt.UIEffect.UI_FadeMenu,
+                    Qt.UIEffect.UI_AnimateCombo, Qt.UIEffect.UI_AnimateTooltip,
+                    Qt.UIEffect.UI_FadeTooltip, Qt.UIEffect.UI_AnimateToolBox)
+_system_effects: dict | None = None  # Qt's effects as the platform set them
+
+
+def apply_motion(window, reduce: bool) -> None:
+    """Reduce motion: no animated menus, tooltips, combo boxes or docks
+    (the system's effects back when it is off)."""
+    global _system_effects
+    if _system_effects is None:
+        _system_effects = {e: QApplication.isEffectEnabled(e) for e in ANIMATED_EFFECTS}
+    for effect, enabled in _system_effects.items():
+        QApplication.setEffectEnabled(effect, enabled and not reduce)
+    window.setAnimated(not reduce)
+    window.reduce_motion = bool(reduce)
 
 
 def _theme_panels(window, dark: bool) -> None:
@@ -388,7 +425,7 @@ class PreferencesDialog(QDialog):
         self.theme.addItems(["Light", "Dark"])
         self.theme.setToolTip("Light or dark look for the whole window and the grid")
         self.theme.currentIndexChanged.connect(lambda _i: self._show_colors())
-        form.addRow("Theme", self.theme)
+        form.addRow("&Theme", self.theme)
         colors = QGridLayout()
         self.color_buttons = {}
         for k, (name, text) in enumerate(COLOR_NAMES.items()):
@@ -398,9 +435,13 @@ class PreferencesDialog(QDialog):
             colors.addWidget(button, k // 2, k % 2)
             self.color_buttons[name] = button
         form.addRow("Grid colours", colors)
-        self.grid_lines = QCheckBox("Show grid lines", group)
+        self.grid_lines = QCheckBox("Show grid &lines", group)
         self.grid_lines.setToolTip("Draw the lines between the cells of the grid")
         form.addRow("", self.grid_lines)
+        self.reduce_motion = QCheckBox("Reduce &motion", group)
+        self.reduce_motion.setToolTip("No animated menus, tooltips or docks (the default is the "
+                                      "system's own setting where it can be read)")
+        form.addRow("", self.reduce_motion)
         return group
 
     def _defaults_group(self) -> QGroupBox:
@@ -410,13 +451,13 @@ class PreferencesDialog(QDialog):
         self.origin.addItems(["Bottom-left, y up", "Top-left, y down"])
         self.origin.setToolTip("Where pixel (0, 0) is in a new window (a scene file's own "
                                "origin wins when it is opened)")
-        form.addRow("Origin", self.origin)
+        form.addRow("Or&igin", self.origin)
         self.speed = QSpinBox(group)
         self.speed.setRange(SPEED_MIN, SPEED_MAX)
         self.speed.setSuffix(" steps/s")
         self.speed.setToolTip("Playback speed, in steps per second")
-        form.addRow("Playback speed", self.speed)
-        self.reopen_last = QCheckBox("Reopen the last scene at start", group)
+        form.addRow("Playback &speed", self.speed)
+        self.reopen_last = QCheckBox("R&eopen the last scene at start", group)
         self.reopen_last.setToolTip("At start, open the scene file opened or saved last "
                                     "instead of the demo scene")
         form.addRow("", self.reopen_last)
@@ -433,13 +474,13 @@ class PreferencesDialog(QDialog):
         self.step_cap.setToolTip("A run stops recording after this many steps (a longer run "
                                  f"takes more memory); {STEP_CAP_RANGE[0]:,} to "
                                  f"{STEP_CAP_RANGE[1]:,}")
-        form.addRow("Step cap", self.step_cap)
+        form.addRow("Step ca&p", self.step_cap)
         self.max_grid = QSpinBox(group)
         self.max_grid.setRange(MIN_GRID, MAX_GRID)
         self.max_grid.setSuffix(" px a side")
         self.max_grid.setToolTip(f"The largest grid width and height accepted ({MIN_GRID} to "
                                  f"{MAX_GRID})")
-        form.addRow("Maximum grid size", self.max_grid)
+        form.addRow("Maximum &grid size", self.max_grid)
         self.memory_mb = QSpinBox(group)
         self.memory_mb.setRange(*MEMORY_MB_RANGE)
         self.memory_mb.setSingleStep(512)
@@ -447,7 +488,7 @@ class PreferencesDialog(QDialog):
         self.memory_mb.setSuffix(" MiB")
         self.memory_mb.setToolTip("A run whose estimated memory is larger is refused before it "
                                   "starts, and the scene stays as it was")
-        form.addRow("Memory for a run", self.memory_mb)
+        form.addRow("Memory for a &run", self.memory_mb)
         return group
 
     # ---------------------------------------------------------- values
@@ -458,6 +499,7 @@ class PreferencesDialog(QDialog):
         self.origin.setCurrentIndex(1 if values["origin"] == "top-left" else 0)
         self.speed.setValue(values["speed"])
         self.reopen_last.setChecked(values["reopen_last"])
+        self.reduce_motion.setChecked(values["reduce_motion"])
         self.step_cap.setValue(values["step_cap"])
         self.max_grid.setValue(values["max_grid"])
         self.memory_mb.setValue(values["memory_mb"])
@@ -470,6 +512,7 @@ class PreferencesDialog(QDialog):
                 "speed": self.speed.value(), "reopen_last": self.reopen_last.isChecked(),
                 "step_cap": self.step_cap.value(), "max_grid": self.max_grid.value(),
                 "memory_mb": self.memory_mb.value(),
+                "reduce_motion": self.reduce_motion.isChecked(),
                 "colors": {theme: dict(colors) for theme, colors in self._colors.items()}}
 
     def set_color(self, name: str, color: str) -> None:

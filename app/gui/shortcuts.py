@@ -21,6 +21,14 @@ GESTURES = (
     ("Drag the star", "Flood fill: move the seed"),
     ("Right-click", "Menu: place the seed, close the contour, remove or clear points"),
     ("Alt+click", "Pin the pixel for the pixel inspector (Ctrl+I); Esc lets go"),
+    ("Arrows, Shift+arrows (grid cursor)", "Move the cell cursor one cell, five cells (K or "
+     "Tab to the grid turns it on; the arrows step the run again when it is off)"),
+    ("Enter (grid cursor)", "Place the next point (the seed, with the seed tool); on a point, "
+     "the seed or a circle's square handle: pick it up, move it with the arrows, Enter "
+     "drops it, Esc puts it back"),
+    ("Shift+Enter (grid cursor)", "Start a new contour at the cursor, as Shift+click does"),
+    ("Enter or Space (a button)", "Press the button that Tab or F6 moved to (after a "
+     "click, Space plays)"),
     ("Tab, Enter (vertex table)", "Next cell; typing replaces the value"),
     ("Insert, Delete (vertex table)", "Add a vertex after the selected one, remove it"),
     ("F2 (bookmarks)", "Rename the selected bookmark"),

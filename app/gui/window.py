@@ -144,6 +144,8 @@ class MainWindow(QMainWindow):
         self.view = WindowView(self)  # screen fit, layout, presentation, zoom, Copy view
         from app.gui.presenter_keys import PresenterKeys
         self.presenter = PresenterKeys(self)  # PageUp/PageDown, B; the keys back to the grid
+        from app.gui.keyboard import KeyboardAccess
+        self.keyboard = KeyboardAccess(self)  # the grid's cursor (K), F6, the focus ring
 
     def add_action(self, menu, key, text, shortcut, slot,
                    context=Qt.ShortcutContext.WindowShortcut, owner=None):
