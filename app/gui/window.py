@@ -142,6 +142,8 @@ class MainWindow(QMainWindow):
         self.view = WindowView(self)  # screen fit, layout, presentation, zoom, Copy view
         from app.gui.presenter_keys import PresenterKeys
         self.presenter = PresenterKeys(self)  # PageUp/PageDown, B; the keys back to the grid
+        from app.gui.step_announcer import StepAnnouncer
+        self.announcer = StepAnnouncer(self)  # steps said to a screen reader; View > Describe step
 
     def add_action(self, menu, key, text, shortcut, slot,
                    context=Qt.ShortcutContext.WindowShortcut, owner=None):
