@@ -79,9 +79,6 @@ def summary(args, result, page) -> list[str]:
         written = [str(path) for path in (result.gif, result.frames_dir) if path is not None] \
             + [str(path) for path in (args.mp4, args.webm, args.svg_dir, args.pdf, args.beamer)
                if path is not None]
-        if args.transcript:
-            written += [str(path) for _option, path
-                        in transcript.transcript_paths(args.gif, args.mp4, args.webm)]
         lines.append(f"{' and '.join(written)}: {result.frames} "
                      f"frame{'s' if result.frames != 1 else ''} of {width}x{height} pixels, "
                      f"{sum(result.durations) / 1000:g} s"
