@@ -44,6 +44,8 @@ class StepAnnouncer(QObject):
         self._trace = window.player.trace
         window.player.frameChanged.connect(self._frame_changed)
         window.player.traceChanged.connect(self._trace_changed)
+        # Play from the end first goes back to step 0: not a step to say.
+        window.player.playingChanged.connect(self._playing_changed)
 
     def text(self) -> str:
         """The step on show in words ("" when there is no run)."""
@@ -79,8 +81,14 @@ class StepAnnouncer(QObject):
         if player.trace is not self._trace:
             self._trace = player.trace
             return
-        if not player.playing:
+        if player.playing:
+            self._settle.stop()
+        else:
             self._settle.start()
 
     def _trace_changed(self) -> None:
         self._settle.stop()
+
+    def _playing_changed(self, playing: bool) -> None:
+        if playing:
+            self._settle.stop()
