@@ -2,7 +2,8 @@
 pictures can follow them: the description of each exported step in words
 (``app/model/step_words.py``).
 
-* Beside a GIF, ``NAME.txt``: one description a line, one line a frame.
+* Beside a GIF, ``NAME.txt``: one description a line, a line for each
+  exported step.
 * Beside an MP4 or WebM, ``NAME.vtt``: WebVTT captions, one cue a frame,
   timed as the frames are (the export's fps, the hold on the last frame),
   which video players show under the picture.
@@ -18,8 +19,7 @@ from __future__ import annotations
 import re
 from pathlib import Path
 
-from app.model.files import Output
-from app.model.files import write_atomically
+from app.model.files import Output, write_atomically
 from app.model.step_words import describe
 from app.render.settings import ExportError, frame_durations
 
@@ -90,10 +90,9 @@ class TranscriptWriter:
         self.path = Path(path)
         self.fps, self.hold, self.numbers = fps, hold, numbers
         self.lines: list[str] = []
-        self.count = 0
 
     def setup(self, size, count, palette, transparent) -> None:
-        self.count = count
+        self.lines = []  # the words need no picture: nothing to get ready
 
     def grab_step(self, renderer, index: int) -> None:
         self.lines.append(describe(renderer.trace, index, self.numbers))
