@@ -189,7 +189,9 @@ class Run:
             only with force=True), a link's target is written.
         settings: format (one of gif, mp4, webm, pdf, html, png, svg), force
             (replace a file RasterLab did not write; write a page over its
-            size budget), and those of `rasterlab
+            size budget), transcript (default True: the steps in words
+            beside a GIF as NAME.txt, beside a video as NAME.vtt captions),
+            and those of `rasterlab
             export`, by their Python names: first, last (steps or bookmark
             names), fps, hold, scale, caption, panel, unit, text_size,
             theme, loop, per, axes, vertex_labels, overlays ("all" or a
@@ -357,8 +359,9 @@ def _export(scene, trace, path, settings: dict) -> str:
     settings = dict(settings)
     kind = _format(path, settings.pop("format", None))
     force = bool(settings.pop("force", False))
+    transcript = bool(settings.pop("transcript", True))
     outputs = formats.Outputs(**{{"png": "frames_dir", "svg": "svg_dir"}.get(kind, kind):
-                                 os.fspath(path)}, force=force)
+                                 os.fspath(path)}, force=force, transcript=transcript)
     formats.check(outputs, scene)
     chosen = _settings(settings)
     done = formats.export_all(outputs, scene, chosen, exporting.MAX_FRAMES_BYTES, trace=trace,

@@ -16,7 +16,7 @@ from algorithms.core import registry
 from algorithms.core.raster import MAX_GRID
 from algorithms.core.registry import InputError, parse_number
 from algorithms.core.trace import DEFAULT_STEP_CAP, MAX_STEP_CAP, TraceError
-from app import cli_questions, cli_teaching
+from app import cli_describe, cli_questions, cli_teaching
 from app.model import budget, runs
 from app.model.files import Output, OutputRefused, check_outputs
 from app.model.runs import DEFAULT_GRID, Rows, check_grid, fit_grid, run_result, save_new
@@ -64,7 +64,8 @@ def build_parser() -> Parser:
     output.add_argument("--json", action="store_true", help="print one JSON object")
     output.add_argument("--ascii", action="store_true", help="print the grid as text")
     output.add_argument("--csv", action="store_true", help="with --steps: print the steps as CSV")
-    add_numbers_option(run, "--steps tables (and --json's extra *_exact fields)")
+    add_numbers_option(run, "--steps tables, --describe (and --json's extra *_exact fields)")
+    cli_describe.add_describe_option(run)
     run.add_argument("--save", metavar="SCENE.json",
                      help="also write the run's scene to a file the window, export and run "
                           "--scene open; prints one line instead of the pixels unless --json, "
@@ -171,7 +172,8 @@ def command_run(args) -> int:
         raise CommandError("--steps prints a table: use it alone, with --json or with --csv")
     if args.force and args.save is None:
         raise CommandError("--force replaces the file of --save: give --save SCENE.json too")
-    if args.numbers != "decimal" and not args.steps:
+    cli_describe.check_describe(args)
+    if args.numbers != "decimal" and not (args.steps or args.describe):
         raise CommandError("--numbers sets how the table of steps shows fractions: add --steps")
     if args.scene is not None:
         return run_scene(args)
@@ -268,7 +270,7 @@ def save_run(args, scene, trace) -> int:
     worked; then the output asked for (--json, --ascii, --steps), or else
     one line saying what was saved in place of the pixels."""
     save_new(scene, args.save, args.force, "give --force to replace it")
-    if args.json or args.ascii or args.steps:
+    if args.json or args.ascii or args.steps or args.describe:
         return print_run(args, scene.spec, trace, scene.options)
     if trace.truncated:
         print(f"rasterlab: {trace.message}", file=sys.stderr)
@@ -282,6 +284,8 @@ def print_run(args, spec, trace, options) -> int:
         print(f"rasterlab: {trace.message}", file=sys.stderr)
     if args.steps:
         return print_steps(args, spec, trace, options)
+    if args.describe:
+        return cli_describe.print_descriptions(args, trace)
     if args.json:
         write_json(sys.stdout, run_result(spec, trace, options))
     elif args.ascii:
@@ -389,6 +393,9 @@ def add_export_command(parser, commands) -> None:
                         help="last step, included: a number or a bookmark name (default: the last)")
     export.add_argument("--hold", default="2", metavar="SECONDS",
                         help="extra time on the last frame (default %(default)s)")
+    export.add_argument("--transcript", action=argparse.BooleanOptionalAction, default=True,
+                        help="write the steps in words beside a GIF (NAME.txt) and a video "
+                             "(NAME.vtt captions) (default: on)")
     export.add_argument("--caption", action=argparse.BooleanOptionalAction, default=True,
                         help="the caption under the grid: step, pseudo-code line, values "
                              "(default: on)")

@@ -182,6 +182,7 @@ class BookmarksPanel(QWidget):
         super().__init__(parent)
         self.setObjectName("bookmarks")
         self.table = QTableWidget(0, 2, self)
+        self.table.setAccessibleName("Bookmarks")
         self._ink = self.table.palette().text().color()
         self._muted = QColor("#8a939e")  # a bookmark past the end of the run
         self.table.setObjectName("bookmarkTable")

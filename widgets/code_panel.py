@@ -33,6 +33,9 @@ class CodePanel(QWidget):
         super().__init__(parent)
         self.lines = _WrappingTable(0, 2, self)
         self.lines.setObjectName("codeLines")
+        self.lines.setAccessibleName("Pseudo-code")
+        self.lines.setAccessibleDescription("The algorithm's lines; the line the step runs is "
+                                            "selected")
         self.lines.setFont(monospace_font())
         self.lines.horizontalHeader().setVisible(False)
         self.lines.verticalHeader().setVisible(False)

@@ -97,6 +97,7 @@ class PaneHeader(QWidget):
         self.algorithm.activated.connect(
             lambda _i: self.algorithmChosen.emit(self.algorithm.currentData()))
         self.options = QLineEdit(self)
+        self.options.setAccessibleName("Options of this pane")
         self.options.setPlaceholderText("options: key=value ...")
         self.options.setClearButtonEnabled(True)
         self.options.editingFinished.connect(lambda: self.optionsTyped.emit(self.options.text()))
@@ -152,6 +153,7 @@ class ComparePane(QWidget):
         self.title.setTextInteractionFlags(Qt.TextInteractionFlag.TextSelectableByMouse)
         self.title.setSizePolicy(QSizePolicy.Policy.Ignored, QSizePolicy.Policy.Fixed)
         self.grid = ReadOnlyGridView(palette, outline_styles, self)
+        self.grid.setAccessibleName("Pixel grid of this pane")
         self.grid.setMinimumSize(160, 140)
         self.patterns = PatternLayer(self.grid.view_box)
         self.message = QLabel(self)

@@ -12,10 +12,12 @@ import pyqtgraph as pg
 from PySide6.QtWidgets import QLabel, QVBoxLayout, QWidget
 
 
-def quiet_plot(palette, parent) -> pg.PlotWidget:
+def quiet_plot(palette, parent, name: str) -> pg.PlotWidget:
     """A plot that only shows: the view's background, no buttons, no menu,
-    square units (the side views' common ground)."""
+    square units (the side views' common ground); ``name`` is what a screen
+    reader calls it."""
     plot = pg.PlotWidget(parent, enableMenu=False)  # no view menu is built
+    plot.setAccessibleName(name)
     plot.setBackground(palette.outside)
     item = plot.getPlotItem()
     item.hideButtons()
@@ -52,7 +54,7 @@ class DepthView(QWidget):
     def _build(self) -> None:
         if self.plot is not None:
             return
-        self.plot = quiet_plot(self._palette, self)
+        self.plot = quiet_plot(self._palette, self, "Buffer picture")
         item = self.plot.getPlotItem()
         item.hideAxis("bottom")
         item.hideAxis("left")

@@ -46,6 +46,7 @@ class ExercisePanel(QWidget):
         self.choices = QHBoxLayout()
         entry_row = QHBoxLayout()
         self.entry = AnswerEntry(placeholderText="type the answer, then Enter")
+        self.entry.setAccessibleName("Answer")
         self.entry.returnPressed.connect(self._typed)
         self.answer_button = QPushButton("Answer")
         self.answer_button.clicked.connect(self._typed)

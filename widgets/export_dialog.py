@@ -247,6 +247,12 @@ class ExportDialog(QDialog):
             where.addWidget(QLabel(label, output), row, 0)
             where.addWidget(edit, row, 1)
             where.addWidget(browse, row, 2)
+        self.transcript = QCheckBox("Transcript: the steps in words beside the GIF (.txt) "
+                                    "and the videos (.vtt captions)", output)
+        self.transcript.setToolTip("For a person who cannot see the pictures: each exported "
+                                   "step described in words, in a file beside the animation")
+        self.transcript.setChecked(True)
+        where.addWidget(self.transcript, len(MORE_OUTPUTS) + 2, 0, 1, 3)
         return output
 
     def _choose(self, edit: QLineEdit, title: str, pattern: str | None) -> None:
@@ -358,6 +364,7 @@ class ExportDialog(QDialog):
             "unit": self.unit.currentData(), "reasoning": self.reasoning.isChecked(),
             "axes": self.axes.isChecked(), "vertex_labels": self.vertex_labels.isChecked(),
             "text_size": self.text_size.value() or None,
+            "transcript": self.transcript.isChecked(),
             **{key: edit.text().strip() for key, edit in self.more.items()},
         }
 
@@ -369,7 +376,8 @@ class ExportDialog(QDialog):
         for name, box in (("loop", self.loop), ("grid_lines", self.grid_lines),
                           ("primitive", self.primitive), ("highlight", self.highlight),
                           ("caption", self.caption), ("reasoning", self.reasoning),
-                          ("axes", self.axes), ("vertex_labels", self.vertex_labels)):
+                          ("axes", self.axes), ("vertex_labels", self.vertex_labels),
+                          ("transcript", self.transcript)):
             if name in values:
                 box.setChecked(bool(values[name]))
         if "text_size" in values:

@@ -33,6 +33,7 @@ class InspectorPanel(QWidget):
         self.unpin.setVisible(False)
         self.tree = QTreeWidget(self)
         self.tree.setObjectName("inspectorRows")
+        self.tree.setAccessibleName("Inspected pixel")
         self.tree.setColumnCount(2)
         self.tree.setHeaderLabels(["Quantity", "Value"])
         self.tree.setRootIsDecorated(False)

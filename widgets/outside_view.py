@@ -25,7 +25,7 @@ class OutsideView(QWidget):
 
     def __init__(self, palette, parent=None):
         super().__init__(parent)
-        self.plot = quiet_plot(palette, self)
+        self.plot = quiet_plot(palette, self, "The scene seen from outside")
         box = self.plot.getViewBox()
         box.invertY(True)  # z grows downwards: the camera looks up the picture towards -z
         self.scene_lines = pg.PlotDataItem(connect="pairs", pen=pg.mkPen(SCENE_PEN, width=1.5))

@@ -172,6 +172,8 @@ class VariablesPanel(QWidget):
         """The name/value table of the step's variables."""
         table = QTableWidget(0, 2, self)
         table.setObjectName("variables")
+        table.setAccessibleName("Variables")
+        table.setAccessibleDescription("Each variable's name and its value at the step on show")
         # Values change every step; a scroll bar that comes or goes as rows
         # are added repaints the table alone.
         fill_own_background(table, table.viewport())
@@ -195,6 +197,9 @@ class VariablesPanel(QWidget):
         window's start-up."""
         plot = pg.GraphicsView(self)
         plot.setObjectName("series")
+        plot.setAccessibleName("Plot of the decision variable")
+        plot.setAccessibleDescription("The decision variable at every step of the run, the "
+                                      "step on show marked")
         plot.setBackground("#ffffff")
         plot.setMinimumHeight(120)
         plot.setMaximumHeight(190)

@@ -115,6 +115,8 @@ class StepsView(QWidget):
         self.model = StepsModel(self)
         self.view = QTableView(self)
         self.view.setObjectName("stepsView")
+        self.view.setAccessibleName("Steps")
+        self.view.setAccessibleDescription("One row per step: its line, pixel, choice and values")
         self.view.setModel(self.model)
         self.view.setSelectionBehavior(QAbstractItemView.SelectionBehavior.SelectRows)
         self.view.setEditTriggers(QAbstractItemView.EditTrigger.NoEditTriggers)

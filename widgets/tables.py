@@ -33,6 +33,7 @@ class _Block(QWidget):
         self.title.setTextFormat(Qt.TextFormat.RichText)
         self.table = QTableWidget(0, 0, self)
         self.table.setObjectName("snapshot")
+        self.table.setAccessibleName("Table at the step on show")
         self.table.verticalHeader().setVisible(False)
         self.table.setEditTriggers(QAbstractItemView.EditTrigger.NoEditTriggers)
         self.table.setSelectionMode(QAbstractItemView.SelectionMode.NoSelection)

@@ -16,8 +16,9 @@ FOOTPRINT = (230, 30, 30)
 SMALLEST_PICTURE = 120  # px: the pictures' height however small the window
 
 
-def _plot(parent, background) -> tuple:
+def _plot(parent, background, name: str) -> tuple:
     plot = pg.PlotWidget(parent, enableMenu=False)  # no view menu is built
+    plot.setAccessibleName(name)
     plot.setBackground(background)
     item = plot.getPlotItem()
     item.hideButtons()
@@ -39,8 +40,8 @@ class TextureView(QWidget):
 
     def __init__(self, palette, parent=None):
         super().__init__(parent)
-        self.texture_plot, self.texture_image = _plot(self, palette.outside)
-        self.level_plot, self.level_image = _plot(self, palette.outside)
+        self.texture_plot, self.texture_image = _plot(self, palette.outside, "Texture")
+        self.level_plot, self.level_image = _plot(self, palette.outside, "Mip-map level")
         self.footprint = pg.PlotDataItem(pen=pg.mkPen(FOOTPRINT, width=2))
         self.texture_plot.getViewBox().addItem(self.footprint)
         self.fetches = pg.ScatterPlotItem(symbol="s", pen=pg.mkPen(FOOTPRINT, width=1.5))

@@ -75,11 +75,12 @@ class TransportBar(QWidget):
     def _make_buttons(self) -> None:
         """First, back, play, forward and last (their icons: ``_paint_icons``)."""
 
-        def button(icon, tip, signal):
+        def button(icon, name, key, signal):
             b = QToolButton(self)
             b.setObjectName(icon)
             b.setIconSize(QSize(20, 20))
-            b.setToolTip(tip)
+            b.setAccessibleName(name)  # an icon alone says nothing to a screen reader
+            b.setToolTip(f"{name} ({key})")
             b.setAutoRaise(True)
             # Buttons never take the keyboard focus, so Space and the arrows
             # stay with the window's shortcuts.
@@ -87,12 +88,12 @@ class TransportBar(QWidget):
             b.clicked.connect(signal.emit)
             return b
 
-        self.first_button = button("first", "First step (Home)", self.firstRequested)
-        self.back_button = button("back", "Step back (Left)", self.backRequested)
-        self.play_button = button("play", "Play (Space)", self.playRequested)
+        self.first_button = button("first", "First step", "Home", self.firstRequested)
+        self.back_button = button("back", "Step back", "Left", self.backRequested)
+        self.play_button = button("play", "Play", "Space", self.playRequested)
         self.play_button.setIconSize(QSize(26, 26))
-        self.forward_button = button("forward", "Step forward (Right)", self.forwardRequested)
-        self.last_button = button("last", "Last step (End)", self.lastRequested)
+        self.forward_button = button("forward", "Step forward", "Right", self.forwardRequested)
+        self.last_button = button("last", "Last step", "End", self.lastRequested)
         self._paint_icons()
 
     def _paint_icons(self) -> None:
@@ -114,6 +115,7 @@ class TransportBar(QWidget):
         """The scrub slider and the step counter."""
         self.timeline = Timeline(Qt.Orientation.Horizontal, self)
         self.timeline.setToolTip("Drag to scrub through the run")
+        self.timeline.setAccessibleName("Step")
         self.timeline.setFocusPolicy(Qt.FocusPolicy.NoFocus)
         self.timeline.setRange(0, 0)
         self.timeline.setSizePolicy(QSizePolicy.Policy.Expanding, QSizePolicy.Policy.Fixed)
@@ -133,9 +135,11 @@ class TransportBar(QWidget):
         self.speed_slider.setFixedWidth(110)
         self.speed_slider.setFocusPolicy(Qt.FocusPolicy.NoFocus)
         self.speed_slider.setToolTip("Steps per second while playing (logarithmic)")
+        self.speed_slider.setAccessibleName("Speed")
         self.speed_box = QSpinBox(self)
         self.speed_box.setRange(SPEED_MIN, SPEED_MAX)
         self.speed_box.setSuffix(" steps/s")
+        self.speed_box.setAccessibleName("Steps per second")
         self.speed_box.setKeyboardTracking(False)
         self.speed_box.setToolTip("Steps per second while playing; at high speeds "
                                   "frames are skipped to keep up")
@@ -234,7 +238,9 @@ class TransportBar(QWidget):
     def set_playing(self, playing: bool) -> None:
         self._playing = playing
         self._paint_icons()
-        self.play_button.setToolTip("Pause (Space)" if playing else "Play (Space)")
+        name = "Pause" if playing else "Play"
+        self.play_button.setAccessibleName(name)
+        self.play_button.setToolTip(f"{name} (Space)")
 
     @property
     def speed(self) -> float:

@@ -89,7 +89,8 @@ class ExportController(QObject):
             reasoning=values["reasoning"], axes=values["axes"],
             vertex_labels=values["vertex_labels"], text_size=values["text_size"])
         return settings, formats.Outputs(**{key: values[key] or None for key in (
-            "gif", "frames_dir", "mp4", "webm", "svg_dir", "pdf", "html")})
+            "gif", "frames_dir", "mp4", "webm", "svg_dir", "pdf", "html")},
+            transcript=values["transcript"])
 
     def _summarise(self) -> None:
         values = self.dialog.values()
@@ -110,6 +111,10 @@ class ExportController(QObject):
         if self.thread is not None:
             return
         settings, outputs = self.export_settings()
+        refused = _transcript_refused(outputs)
+        if refused:
+            self.dialog.set_message(refused)
+            return
         self.outputs = outputs
         self.result = None
         self.thread = ExportThread(self.scene, self.trace, self.differences, settings, outputs,
@@ -164,3 +169,17 @@ class ExportController(QObject):
         self.dialog.set_running(False)
         if thread is not None:
             thread.deleteLater()
+
+
+def _transcript_refused(outputs) -> str:
+    """Why a transcript of ``outputs`` may not be written (in its place a
+    file RasterLab did not write, or no file at all), or ""."""
+    if not outputs.transcript:
+        return ""
+    from app.render import transcript
+    for output in transcript.outputs(outputs.gif, outputs.mp4, outputs.webm):
+        path = Path(output.path)
+        if path.exists() and (not path.is_file() or output.foreign(path)):
+            return (f"Not exported: {path} is in the transcript's place and is not a "
+                    "transcript RasterLab wrote: rename it, or turn the transcript off")
+    return ""

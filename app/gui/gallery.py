@@ -68,6 +68,7 @@ class GalleryDialog(QDialog):
         self.list = QListWidget()
         self.list.setSpacing(2)
         self.list.setToolTip("Double-click a scene to open it in the window")
+        self.list.setAccessibleName("Scenes")
         # Selected rows stay light, so that the dark text on them stays readable.
         self.list.setStyleSheet("QListWidget::item:selected { background: #d3e4f6; }")
         paths = None if folder is None else sorted(Path(folder).glob("*.json"))

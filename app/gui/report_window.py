@@ -115,6 +115,7 @@ class ReportDialog(QDialog):
         layout.addWidget(self.status)
         layout.addLayout(self._choosers())
         self.plot = pg.PlotWidget(background="w")
+        self.plot.setAccessibleName("Chart of speed against error")
         self.plot.addLegend(offset=(10, 10))
         self.plot.showGrid(x=True, y=True, alpha=0.2)
         layout.addWidget(self.plot, 1)

@@ -43,6 +43,7 @@ class ShortcutsDialog(QDialog):
         self.rows = list(rows)
         table = QTableWidget(len(self.rows), 2, self)
         table.setHorizontalHeaderLabels(["Key", "Action"])
+        table.setAccessibleName("Keyboard shortcuts")
         table.verticalHeader().setVisible(False)
         table.setEditTriggers(QTableWidget.EditTrigger.NoEditTriggers)
         table.setSelectionMode(QTableWidget.SelectionMode.NoSelection)

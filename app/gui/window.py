@@ -146,6 +146,8 @@ class MainWindow(QMainWindow):
         self.presenter = PresenterKeys(self)  # PageUp/PageDown, B; the keys back to the grid
         from app.gui.keyboard import KeyboardAccess
         self.keyboard = KeyboardAccess(self)  # the grid's cursor (K), F6, the focus ring
+        from app.gui.step_announcer import StepAnnouncer
+        self.announcer = StepAnnouncer(self)  # steps said to a screen reader; View > Describe step
 
     def add_action(self, menu, key, text, shortcut, slot,
                    context=Qt.ShortcutContext.WindowShortcut, owner=None):

@@ -35,6 +35,9 @@ def build_layout(window) -> None:
 def _build_centre(window) -> None:
     window.grid = PixelGridView(PALETTE, OUTLINE_STYLE, window)
     window.grid.setObjectName("pixelGrid")
+    window.grid.setAccessibleName("Pixel grid")
+    window.grid.setAccessibleDescription("The pixels the run has written up to the step on "
+                                         "show, the points and the ideal primitive")
     window.transport = TransportBar(window)
     centre = QWidget(window)
     layout = QVBoxLayout(centre)

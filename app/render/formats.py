@@ -1,5 +1,6 @@
 """The export's further formats, as the command line asks for them: video
-(MP4, WebM), vector frames (an SVG folder, a PDF) and a Beamer snippet.
+(MP4, WebM), vector frames (an SVG folder, a PDF), a Beamer snippet, and
+the transcripts beside a GIF or a video (``app/render/transcript.py``).
 Each is a writer of the export's one writer protocol (``app.render.writers``),
 so every format gets the same frames, range, timing and look."""
 from __future__ import annotations
@@ -11,6 +12,7 @@ from typing import NamedTuple
 
 from app.model.escape import latex_file_name
 from app.model.files import Output, check_outputs, not_ours, write_atomically
+from app.render import transcript
 from app.render.settings import ExportError
 from app.render.writers import foreign_frames
 
@@ -28,6 +30,8 @@ class Outputs(NamedTuple):
     html: str | None = None
     # Replace files RasterLab did not write, and write a page over its size budget.
     force: bool = False
+    # The steps in words beside a GIF (NAME.txt) and a video (NAME.vtt).
+    transcript: bool = True
 
 
 def check(args, scene, scene_path=None) -> None:
@@ -41,6 +45,8 @@ def check(args, scene, scene_path=None) -> None:
     outputs = [Output(option, path, foreign=not_ours(kind)) for option, path, kind in files] \
         + [Output(option, path, folder=True, foreign=foreign_frames(suffix))
            for option, path, suffix in folders]
+    if args.transcript:
+        outputs += transcript.outputs(args.gif, args.mp4, args.webm)
     texture = scene.options.get("texture")
     texture = texture if isinstance(texture, str) and os.path.isfile(texture) else None
     check_outputs(outputs, [scene_path, texture], args.force)
@@ -92,7 +98,8 @@ def summary(args, result, page) -> list[str]:
 
 
 def writers(args, settings, scene) -> list:
-    """The writers for the format options given (--mp4, --webm, --svg-dir, --pdf)."""
+    """The writers for the format options given (--mp4, --webm, --svg-dir, --pdf)
+    and the transcripts (unless --no-transcript)."""
     out = []
     if args.mp4 is not None or args.webm is not None:
         from app.render.video import VideoWriter
@@ -104,6 +111,8 @@ def writers(args, settings, scene) -> list:
         out += [SvgFolderWriter(args.svg_dir, only, args.force)] if args.svg_dir is not None \
             else []
         out += [PdfWriter(args.pdf, only)] if args.pdf is not None else []
+    if args.transcript:  # last: written once the pictures are
+        out += transcript.writers(args.gif, args.mp4, args.webm, settings)
     return out
 
 
