@@ -1,5 +1,5 @@
 """Alt text of exported frames: a title (the scene) and a description (the
-algorithm, the grid and the step in words, ``app.render.html.step_words``,
+algorithm, the grid and the step in words, ``app.model.step_words.describe``,
 the same words the interactive page reads out). SVG frames carry them as
 ``<title>`` and ``<desc>``, PNG frames as the text chunks "Title" and
 "Description", a PDF of frames as its document title and subject, with an
@@ -7,18 +7,17 @@ outline entry (bookmark) per page naming its step."""
 from __future__ import annotations
 
 from algorithms.core import registry
+from app.model.step_words import describe
 
 LANGUAGE = "en"   # every text the program writes is English
 
 
 class AltText:
-    """The alt text of one export's frames (the steps' words are put
-    together once, on the first frame asked for)."""
+    """The alt text of one export's frames."""
 
     def __init__(self, scene, trace, numbers: str = "decimal"):
         self.scene, self.trace, self.numbers = scene, trace, numbers
         self.spec = registry.get(scene.algorithm)
-        self._words: list[str] | None = None
 
     @property
     def title(self) -> str:
@@ -32,11 +31,8 @@ class AltText:
                 f"{trace.height} grid, {len(trace) - 1:,} steps")
 
     def words(self, index: int) -> str:
-        """Step ``index`` in words, as the interactive page says it."""
-        if self._words is None:
-            from app.render.html import step_words
-            self._words = step_words(self.trace, self.numbers)
-        return self._words[index]
+        """Step ``index`` in words, as the interactive page and the window say it."""
+        return describe(self.trace, index, self.numbers)
 
     def description(self, index: int) -> str:
         """Frame ``index``: the algorithm, the grid, and step ``index`` in words."""

@@ -34,12 +34,13 @@ from pathlib import Path
 import numpy as np
 
 from algorithms.core import registry
-from algorithms.core.steps import NO_PIXEL, PLOT, VISIT, Note, Span, Table, Vars
+from algorithms.core.steps import NO_PIXEL, Note, Span, Table, Vars
 
 from app.model.escape import script_json
 from app.model.files import write_atomically
 from app.model.geometry import scene_paths
 from app.model.notation import fraction
+from app.model.step_words import describe
 from app.render.frame import colour_name
 from app.render.palette import THEMES
 from app.render.settings import ExportError, frame_range
@@ -49,10 +50,11 @@ DATA_MARK = "/*RASTERLAB-DATA*/null"
 # Size budgets of a page, as the README states them: at most 2 MB for a run
 # of up to 100,000 steps, 5 MB for a longer one.
 SHORT_RUN, SHORT_BUDGET, LONG_BUDGET = 100_000, 2 * 2 ** 20, 5 * 2 ** 20
-# Runs up to this many steps carry each step's words; a longer run's page
-# builds its short caption itself (a million steps in words would take
-# about 5 MB, the whole budget of the page).
-WORDED_STEPS = SHORT_RUN
+# Pages of up to this many steps carry each step's words; a longer one
+# builds a short caption itself. Words take about 0.12 ms a step to make
+# (2.4 s for 20,000) and a million steps in words would take about 5 MB,
+# the whole budget of the page.
+WORDED_STEPS = 20_000
 
 
 def page_budget(steps: int) -> int:
@@ -111,34 +113,17 @@ def page_data(scene, trace, settings) -> dict:
                   for points, closed in scene_paths(spec, scene.points, spec.resolve(scene.options))],
         "bookmarks": [{"name": b["name"], "step": int(b["step"])} for b in scene.bookmarks],
         "themes": {name: _theme(theme) for name, theme in THEMES.items()},
-        "words": (_pack_json(step_words(trace, settings.numbers)[first:last + 1])
-                  if len(trace) <= WORDED_STEPS else None),
+        "words": (_pack_json(step_words(trace, first, last, settings.numbers))
+                  if last - first < WORDED_STEPS else None),
     }
 
 
-def step_words(trace, numbers: str = "decimal") -> list[str]:
-    """Each step of ``trace`` in words, as the page's caption shows it and
-    its live region reads it: "Step 5 of 26 · plots (5, 2) · branch E"."""
-    spans = {int(row["step"]): row for row in trace.spans()}
-    return [_caption(trace, i, spans.get(i)) for i in range(len(trace))]
-
-
-def _caption(trace, i: int, span) -> str:
-    line = trace.code[int(trace.line[i])]
-    x, y = int(trace.x[i]), int(trace.y[i])
-    parts = [f"Step {i:,} of {len(trace) - 1:,}"]
-    if x == NO_PIXEL:
-        parts.append("set-up" if i == 0 else "updates variables")
-    elif span is not None:
-        verb = "fills" if line.kind == PLOT else "scans"
-        parts.append(f"{verb} row {span['y']}, x {span['x_start']}\u2013{span['x_end'] - 1}")
-    elif line.kind in (PLOT, VISIT):
-        parts.append(f"{'plots' if line.kind == PLOT else 'visits'} ({x}, {y})")
-    else:
-        parts.append("set-up" if i == 0 else "updates variables")
-    if line.branch:
-        parts.append(f"branch {line.branch}")
-    return " \u00b7 ".join(parts)
+def step_words(trace, first: int, last: int, numbers: str = "decimal") -> list[str]:
+    """Steps ``first`` .. ``last`` of ``trace`` in words, as the page's
+    caption shows them and its live region reads them: "step 5 of 26: d =
+    -4, at most 0, so E: plot (5, 2)" (app/model/step_words.py, the words of
+    the window's announcements and of the transcripts)."""
+    return [describe(trace, i, numbers) for i in range(first, last + 1)]
 
 
 def _arrays(trace) -> dict:

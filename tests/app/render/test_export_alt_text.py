@@ -28,19 +28,21 @@ def test_every_frame_says_what_it_shows(run_cli, tmp_path):
         assert root.get("role") == "img"
         assert root.find(f"{SVG}title").text == title
         desc = root.find(f"{SVG}desc").text
-        assert f"Step {k} of " in desc and "line-bresenham" in desc and "32 x 24 grid" in desc
+        assert f"step {k} of 26: " in desc and "line-bresenham" in desc and "32 x 24 grid" in desc
         with Image.open(tmp_path / "png" / f"frame_{k:04d}.png") as png:
             assert png.text["Title"] == title
             assert png.text["Description"] == desc   # the same words in both
-    assert "plots (" in ET.parse(tmp_path / "svg" / "frame_0001.svg").getroot() \
-        .find(f"{SVG}desc").text   # Bresenham's first step plots its first pixel
+    assert "plot (3, 4)" in ET.parse(tmp_path / "svg" / "frame_0001.svg").getroot() \
+        .find(f"{SVG}desc").text   # Bresenham's first step plots P = (3, 4)
     pdf = PdfReader(tmp_path / "frames.pdf")
     assert pdf.metadata.title == title
     assert "line-bresenham" in pdf.metadata.subject
     assert pdf.trailer["/Root"]["/Lang"] == "en"
     titles = [entry.title for entry in pdf.outline]   # a bookmark per page, naming its step
-    assert len(titles) == 4 and titles[0] == "Step 0 of 26 \u00b7 set-up"
-    assert all(title.startswith(f"Step {k} of 26 \u00b7 ") for k, title in enumerate(titles))
+    assert len(titles) == 4
+    assert all(title.startswith(f"step {k} of 26: ") for k, title in enumerate(titles))
+    # P = (3, 4), Q = (27, 15): dx = 24, dy = 11, d0 = 2dy - dx = -2, so E first.
+    assert titles[2] == "step 2 of 26: d = -2, at most 0, so E: plot (4, 4)"
     assert "map P, Q into octant" in pdf.pages[0].extract_text()   # the pseudo-code, as text
 
 

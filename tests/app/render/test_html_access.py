@@ -67,15 +67,18 @@ def test_the_caption_reads_each_step_the_keys_move_to(page, plain):
     open_page(plain, page)
     caption = plain.find_element(By.ID, "caption")
     assert caption.get_attribute("aria-live") == "polite"
-    words = html.step_words(TRACE)
+    words = html.step_words(TRACE, 0, len(TRACE) - 1)
     body = plain.find_element(By.TAG_NAME, "body")
     for key, step in ((Keys.ARROW_RIGHT, 1), (Keys.ARROW_RIGHT, 2), (Keys.END, len(TRACE) - 1),
                       (Keys.ARROW_LEFT, len(TRACE) - 2), (Keys.HOME, 0)):
         body.send_keys(key)
         assert caption.text == words[step]
-    assert words[1] == "Step 1 of 13 \u00b7 plots (1, 1)"   # Bresenham's first pixel is P
-    assert words[0].startswith("Step 0 of 13 \u00b7 set-up")
-    assert any("branch" in text for text in words)
+    # From P = (1, 1) to Q = (12, 6): dx = 11, dy = 5, d0 = 2dy - dx = -1 (E), then
+    # d = -1 + 2dy = 9 (NE), then 9 + 2(dy - dx) = -3 (E).
+    assert words[1].startswith("step 1 of 13:") and "plot (1, 1)" in words[1]
+    assert words[2] == "step 2 of 13: d = -1, at most 0, so E: plot (2, 1)"
+    assert words[3] == "step 3 of 13: d = 9, above 0, so NE: plot (3, 2)"
+    assert words[4] == "step 4 of 13: d = -3, at most 0, so E: plot (4, 2)"
 
 
 def test_the_caption_is_silent_while_playing_and_speaks_where_play_stops(page, plain):
@@ -89,7 +92,7 @@ def test_the_caption_is_silent_while_playing_and_speaks_where_play_stops(page, p
     assert not plain.execute_script("return window.rasterlab.playing()")
     assert caption.get_attribute("aria-live") == "polite"
     step = plain.execute_script("return window.rasterlab.step()")
-    assert caption.text == html.step_words(TRACE)[step]
+    assert caption.text == html.step_words(TRACE, 0, len(TRACE) - 1)[step]
 
 
 def test_every_control_has_a_name(page, plain):
