@@ -65,7 +65,7 @@ def _worked(trace, decisions, upto: int, summary: str) -> Worked:
                   summary)
 
 
-def second_octant(seed: int, scene=None, pictured: bool = True):
+def second_octant(seed: int, scene=None):
     name = "circle-octant-pixels"
     scene, trace, decisions, _ = _circle(name, seed, scene)
     (xc, yc), = scene.points
@@ -89,10 +89,10 @@ def second_octant(seed: int, scene=None, pictured: bool = True):
     return common.question(name, seed, "Midpoint circle: the second octant", text,
                            common.short(canonical, compact, compact.replace(" ", ""),
                                         canonical.replace(") (", "), (")),
-                           worked, scene, pictured)
+                           worked, scene)
 
 
-def decision_after_steps(seed: int, scene=None, pictured: bool = True):
+def decision_after_steps(seed: int, scene=None):
     name = "circle-midpoint-d"
     scene, trace, decisions, rng = _circle(name, seed, scene)
     if len(decisions) < 2:
@@ -106,7 +106,7 @@ def decision_after_steps(seed: int, scene=None, pictured: bool = True):
     shown = common.fraction_text(d)
     worked = _worked(trace, decisions, k, f"d after step {k} is {shown}.")
     return common.question(name, seed, f"Midpoint circle: d after step {k}", text,
-                           Answer(NUMERICAL, d, shown), worked, scene, pictured)
+                           Answer(NUMERICAL, d, shown), worked, scene)
 
 
 TEMPLATES = (

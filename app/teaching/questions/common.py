@@ -64,11 +64,10 @@ def short(text: str, *also: str) -> Answer:
 
 
 def question(template: str, seed: int, title: str, text: str, answer: Answer, worked: Worked,
-             scene, pictured: bool = True) -> Question:
-    """The Question, with the scene's picture unless ``pictured`` is False
-    (the tests that check answers over hundreds of seeds skip drawing it)."""
-    image = picture(scene, picture_cell(scene)) if pictured else b""
-    return Question(template, seed, title, text, answer, worked, scene, image)
+             scene) -> Question:
+    """The Question, with the picture of its scene."""
+    return Question(template, seed, title, text, answer, worked, scene,
+                    picture(scene, picture_cell(scene)))
 
 
 def picture_cell(scene) -> int:

@@ -111,7 +111,7 @@ def _spanned_rows(name, trace) -> dict:
     return rows
 
 
-def aet_at(seed: int, scene=None, pictured: bool = True):
+def aet_at(seed: int, scene=None):
     name = "fill-aet"
     scene, trace, rng = _fill(name, seed, scene)
     rows = _spanned_rows(name, trace)
@@ -127,10 +127,10 @@ def aet_at(seed: int, scene=None, pictured: bool = True):
                           canonical.replace(", ", ",").replace(") (", ")("))
     worked = _table_worked(aet, f"At scan line {y} the AET holds {canonical}.")
     return common.question(name, seed, f"Scan line: the AET at y = {y}", text, answer, worked,
-                           scene, pictured)
+                           scene)
 
 
-def span_at(seed: int, scene=None, pictured: bool = True):
+def span_at(seed: int, scene=None):
     name = "fill-span"
     scene, trace, rng = _fill(name, seed, scene)
     rows = _spanned_rows(name, trace)
@@ -145,10 +145,10 @@ def span_at(seed: int, scene=None, pictured: bool = True):
     worked = _table_worked(aet, f"The AET sorted at scan line {y} pairs its crossings; the "
                                 f"pixels with x_left <= i + 1/2 < x_right are {canonical}.")
     return common.question(name, seed, f"Scan line: the span at y = {y}", text, answer, worked,
-                           scene, pictured)
+                           scene)
 
 
-def edge_entry(seed: int, scene=None, pictured: bool = True):
+def edge_entry(seed: int, scene=None):
     name = "fill-edge-entry"
     scene, trace, rng = _fill(name, seed, scene)
     et = next(record for _, record in trace.records_of(Table) if record.name == "ET")
@@ -163,7 +163,7 @@ def edge_entry(seed: int, scene=None, pictured: bool = True):
     worked = _table_worked(et, f"Edge {edge} is bucketed under ymin = "
                                f"{dict(zip(et.columns, row))['ymin']} as {canonical}.")
     return common.question(name, seed, f"Scan line: the ET entry of {edge}", text, answer,
-                           worked, scene, pictured)
+                           worked, scene)
 
 
 TEMPLATES = (

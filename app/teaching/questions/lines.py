@@ -69,7 +69,7 @@ def _worked(trace, decisions, upto: int, summary: str) -> Worked:
                   summary)
 
 
-def decision_after_step(seed: int, scene=None, pictured: bool = True):
+def decision_after_step(seed: int, scene=None):
     name = "line-bresenham-d"
     scene, trace, decisions, rng = _bresenham(name, seed, scene)
     k = rng.randint(1, len(decisions) - 1)
@@ -79,10 +79,10 @@ def decision_after_step(seed: int, scene=None, pictured: bool = True):
             "an integer.")
     worked = _worked(trace, decisions, k, f"d after step {k} is {d}.")
     return common.question(name, seed, f"Bresenham: d after step {k}", text,
-                           Answer(NUMERICAL, d, str(d)), worked, scene, pictured)
+                           Answer(NUMERICAL, d, str(d)), worked, scene)
 
 
-def pixel_at_step(seed: int, scene=None, pictured: bool = True):
+def pixel_at_step(seed: int, scene=None):
     name = "line-bresenham-pixel"
     scene, trace, decisions, rng = _bresenham(name, seed, scene)
     k = rng.randint(1, len(decisions) - 1)
@@ -93,10 +93,10 @@ def pixel_at_step(seed: int, scene=None, pictured: bool = True):
     answer = common.short(common.pixel_text(pixel), f"({pixel[0]},{pixel[1]})",
                           f"{pixel[0]},{pixel[1]}", f"{pixel[0]}, {pixel[1]}")
     return common.question(name, seed, f"Bresenham: the pixel of step {k}", text, answer,
-                           worked, scene, pictured)
+                           worked, scene)
 
 
-def steps_choosing_ne(seed: int, scene=None, pictured: bool = True):
+def steps_choosing_ne(seed: int, scene=None):
     name = "line-bresenham-ne"
     scene, trace, decisions, _ = _bresenham(name, seed, scene)
     chosen = [k + 1 for k, i in enumerate(decisions) if trace.step(i).branch == "NE"]
@@ -109,8 +109,7 @@ def steps_choosing_ne(seed: int, scene=None, pictured: bool = True):
                      f"NE at steps {canonical}." if chosen else "No step chooses NE.")
     answer = common.short(canonical, ",".join(map(str, chosen)) or "none",
                           ", ".join(map(str, chosen)) or "none")
-    return common.question(name, seed, "Bresenham: the NE steps", text, answer, worked, scene,
-                           pictured)
+    return common.question(name, seed, "Bresenham: the NE steps", text, answer, worked, scene)
 
 
 # ------------------------------------------------------------ DDA precision
@@ -143,7 +142,7 @@ def _draw_long_segment(rng):
     return Scene(algorithm=DDA, points=(p, q), width=DDA_GRID, height=DDA_GRID)
 
 
-def dda_precision(seed: int, scene=None, pictured: bool = True):
+def dda_precision(seed: int, scene=None):
     name = "line-dda-precision"
     if scene is None:
         scene, _ = common.drawn(seed, _draw_long_segment,
@@ -171,7 +170,7 @@ def dda_precision(seed: int, scene=None, pictured: bool = True):
     worked = Worked(("step", "x (float32)", "y (float32)", "pixel (float32)", "x (float64)",
                      "y (float64)", "pixel (float64)"), tuple(rows), summary)
     return common.question(name, seed, "DDA: float32 against float64", text,
-                           Answer(NUMERICAL, k, str(k)), worked, scene, pictured)
+                           Answer(NUMERICAL, k, str(k)), worked, scene)
 
 
 TEMPLATES = (

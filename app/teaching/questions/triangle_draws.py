@@ -19,7 +19,7 @@ from algorithms.core.steps import NO_PIXEL
 from app.model import runs
 from app.model.scene import Scene
 from app.teaching.questions.model import Question, Template
-from app.teaching.questions.picture import picture
+from app.teaching.questions import common
 
 GRID = (10, 8)          # small enough to read coordinates off the picture
 STEP_CAP = 200_000      # far above what a 16x12 grid needs
@@ -93,8 +93,7 @@ def make_scene(algorithm: str, points, options: dict, grid, title: str) -> Scene
 
 def question(template: Template, seed: int, title: str, text: str, answer, worked,
              scene) -> Question:
-    return Question(template=template.name, seed=seed, title=title, text=text,
-                    answer=answer, worked=worked, scene=scene, picture=picture(scene))
+    return common.question(template.name, seed, title, text, answer, worked, scene)
 
 
 # ------------------------------------------------------------- numbers

@@ -101,8 +101,9 @@ def entry_text(entry):
 
 # -------------------------------------------------------------------- lines
 @pytest.mark.parametrize("seed", SEEDS)
+@pytest.mark.usefixtures("no_pictures")
 def test_bresenham_templates(seed):
-    q = lines.decision_after_step(seed, pictured=False)
+    q = lines.decision_after_step(seed)
     steps = bresenham_octant1(*q.scene.points)
     assert all(tested != 0 for *_, tested in steps)  # no tie in a drawn variant
     k = number_in(q.text, r"d after step (\d+)")
@@ -110,7 +111,7 @@ def test_bresenham_templates(seed):
     assert q.answer.kind == NUMERICAL and q.answer.value == steps[k - 1][2]
     assert len(q.worked.rows) == k
 
-    q = lines.pixel_at_step(seed, pictured=False)
+    q = lines.pixel_at_step(seed)
     steps = bresenham_octant1(*q.scene.points)
     k = number_in(q.text, r"plotted at step (\d+)\?")
     x, y = steps[k - 1][0]
@@ -119,7 +120,7 @@ def test_bresenham_templates(seed):
     (x0, y0), (x1, y1) = q.scene.points
     assert max(x0, x1) < 16 and max(y0, y1) < 12
 
-    q = lines.steps_choosing_ne(seed, pictured=False)
+    q = lines.steps_choosing_ne(seed)
     steps = bresenham_octant1(*q.scene.points)
     chosen = [str(k + 1) for k, step in enumerate(steps) if step[1] == "NE"]
     assert q.answer.text == (" ".join(chosen) or "none")
@@ -127,8 +128,9 @@ def test_bresenham_templates(seed):
 
 
 @pytest.mark.parametrize("seed", SEEDS)
+@pytest.mark.usefixtures("no_pictures")
 def test_dda_precision(seed):
-    q = lines.dda_precision(seed, pictured=False)
+    q = lines.dda_precision(seed)
     p, r = q.scene.points
     single, double = dda_pixels(p, r, np.float32), dda_pixels(p, r, np.float64)
     first = next(k for k, (a, b) in enumerate(zip(single, double)) if a != b)
@@ -138,15 +140,16 @@ def test_dda_precision(seed):
 
 # ------------------------------------------------------------------ circles
 @pytest.mark.parametrize("seed", SEEDS)
+@pytest.mark.usefixtures("no_pictures")
 def test_circle_templates(seed):
-    q = circles.second_octant(seed, pictured=False)
+    q = circles.second_octant(seed)
     (xc, yc), = q.scene.points
     offsets, _ = midpoint_octant(q.scene.options["radius"], q.scene.options["start"])
     expected = " ".join(f"({xc + x}, {yc + y})" for x, y in offsets)
     assert q.answer.text == expected
     assert all(0 <= yc + y < 12 and 0 <= xc + x < 16 for x, y in offsets)
 
-    q = circles.decision_after_steps(seed, pictured=False)
+    q = circles.decision_after_steps(seed)
     start = q.scene.options["start"]
     assert ("5/4 - R" if start == "fraction" else "1 - R") in q.text
     _, after = midpoint_octant(q.scene.options["radius"], start)
@@ -156,23 +159,25 @@ def test_circle_templates(seed):
     assert q.answer.text == fraction_text(after[k - 1])
 
 
+@pytest.mark.usefixtures("no_pictures")
 def test_both_circle_starts_are_drawn():
-    starts = {circles.decision_after_steps(seed, pictured=False).scene.options["start"]
+    starts = {circles.decision_after_steps(seed).scene.options["start"]
               for seed in range(40)}
     assert starts == {"integer", "fraction"}
 
 
 # --------------------------------------------------------------------- fill
 @pytest.mark.parametrize("seed", SEEDS)
+@pytest.mark.usefixtures("no_pictures")
 def test_fill_templates(seed):
-    q = fill.aet_at(seed, pictured=False)
+    q = fill.aet_at(seed)
     points = q.scene.points[0]
     y = number_in(q.text, r"at scan line (\d+), sorted")
     entries = aet(points, y)
     assert q.answer.text == " ".join(entry_text(e) for e in entries)
     assert all((x - Fraction(1, 2)).denominator != 1 for _, x, _ in entries)  # no tie
 
-    q = fill.span_at(seed, pictured=False)
+    q = fill.span_at(seed)
     points = q.scene.points[0]
     y = number_in(q.text, r"filled on scan line (\d+)\?")
     entries = aet(points, y)
@@ -183,7 +188,7 @@ def test_fill_templates(seed):
             runs.append(f"{first}..{end - 1}")
     assert runs and q.answer.text == " ".join(runs)
 
-    q = fill.edge_entry(seed, pictured=False)
+    q = fill.edge_entry(seed)
     label = re.search(r"entry of edge (P\dP\d)\?", q.text).group(1)
     _, ymax, x, inv = xlow_edges(q.scene.points[0])[label]
     assert q.answer.text == entry_text((ymax, x, inv))
@@ -193,7 +198,7 @@ def test_fill_templates(seed):
 # --------------------------------------------------------- given scenes
 def test_a_given_scene_is_asked_about():
     scene = Scene(algorithm="line-bresenham", points=((1, 1), (9, 4)), width=16, height=12)
-    q = lines.decision_after_step(3, scene, pictured=False)
+    q = lines.decision_after_step(3, scene)
     assert q.scene == scene and "P = (1, 1), Q = (9, 4)" in q.text
     k = number_in(q.text, r"d after step (\d+)")
     assert q.answer.value == bresenham_octant1((1, 1), (9, 4))[k - 1][2]

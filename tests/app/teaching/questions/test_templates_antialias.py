@@ -8,17 +8,11 @@ from fractions import Fraction
 import pytest
 
 from app.model.scene import Scene
-from app.teaching.questions import antialias, triangle_draws
+from app.teaching.questions import antialias
 from app.teaching.questions.model import NUMERICAL
 from tests.support import question_oracles as oracle
 
 SEEDS = range(200)
-
-
-@pytest.fixture
-def no_pictures(monkeypatch):
-    """The answers are under test here; the picture is tested once below."""
-    monkeypatch.setattr(triangle_draws, "picture", lambda scene: b"picture")
 
 
 @pytest.mark.usefixtures("no_pictures")

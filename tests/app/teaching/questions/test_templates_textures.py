@@ -7,18 +7,12 @@ from __future__ import annotations
 import pytest
 
 from app.model.scene import Scene
-from app.teaching.questions import textures, triangle_draws
+from app.teaching.questions import textures
 from app.teaching.questions.model import NUMERICAL
 from tests.support import question_oracles as oracle
 
 SEEDS = range(200)
 SIZE, TOP = (64, 64), 6  # checker:8: 64 x 64 texels, levels 0 .. 6
-
-
-@pytest.fixture
-def no_pictures(monkeypatch):
-    """The answers are under test here; the picture is tested once below."""
-    monkeypatch.setattr(triangle_draws, "picture", lambda scene: b"picture")
 
 
 @pytest.mark.usefixtures("no_pictures")

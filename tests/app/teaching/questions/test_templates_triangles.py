@@ -16,13 +16,6 @@ SEEDS = range(200)
 PNG = b"\x89PNG\r\n\x1a\n"
 
 
-@pytest.fixture
-def no_pictures(monkeypatch):
-    """The answers are under test here, not the pictures (tested once below):
-    a stand-in keeps 800 variants fast."""
-    monkeypatch.setattr(triangle_draws, "picture", lambda scene: b"picture")
-
-
 def _triangle(question):
     tri = oracle.exact_points(question.scene.points)
     assert oracle.twice_area(tri) >= triangle_draws.MIN_AREA2, "counter-clockwise, no sliver"

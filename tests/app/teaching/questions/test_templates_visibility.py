@@ -7,17 +7,11 @@ from __future__ import annotations
 import pytest
 
 from app.model.scene import Scene
-from app.teaching.questions import triangle_draws, visibility
+from app.teaching.questions import visibility
 from app.teaching.questions.model import CHOICE
 from tests.support import question_oracles as oracle
 
 SEEDS = range(200)
-
-
-@pytest.fixture
-def no_pictures(monkeypatch):
-    """The answers are under test here; the pictures are tested once below."""
-    monkeypatch.setattr(triangle_draws, "picture", lambda scene: b"picture")
 
 
 def _inputs(question):
