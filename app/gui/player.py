@@ -6,6 +6,12 @@ signals, and timed play.
 frames: each timer tick advances by as many steps as the elapsed time and
 the speed call for, so the display never falls behind. Play stops at the
 end of the run and whenever a new trace is installed at its last step.
+
+A run with animation frames (aa-temporal) plays at no more than
+``flash_guard.playback_cap`` steps a second, SAFE_FPS animation frames a
+second, whatever speed is chosen (WCAG 2.3.1): the chosen speed is kept and
+shown, the effective one is ``effective_speed``, and ``speedCapped`` says
+so when play starts, or the speed changes, above the cap.
 """
 from __future__ import annotations
 
@@ -18,6 +24,7 @@ from algorithms.core.trace import DEFAULT_STEP_CAP
 
 from app.gui.main_thread_gc import collect_in_main_thread
 from app.model.session import Session
+from app.render.flash_guard import cap_note, playback_cap
 
 MIN_SPEED = 1.0
 MAX_SPEED = 2000.0
@@ -55,6 +62,9 @@ class Player(QObject):
     #: asked, else why the scene is not the one asked for (cancelled,
     #: refused, an example shape instead).
     recordingFinished = Signal(str)
+    #: Play goes slower than the speed chosen, lest the animation flash:
+    #: the line saying so.
+    speedCapped = Signal(str)
     # News from the recording worker, run in this object's thread.
     _posted = Signal(object)
 
@@ -70,6 +80,7 @@ class Player(QObject):
         session.recording_progress.connect(self.recordingProgress.emit)
         session.recording_finished.connect(self.recordingFinished.emit)
         self._speed = DEFAULT_SPEED
+        self._cap = None  # the run's playback_cap, steps a second
         self._timer = QTimer(self)
         self._timer.setTimerType(Qt.TimerType.PreciseTimer)
         self._timer.timeout.connect(self._tick)
@@ -179,8 +190,12 @@ class Player(QObject):
         news()
 
     def _trace_changed(self) -> None:
+        capped = self.capped
+        self._cap = None if self.trace is None else playback_cap(self.trace_spec, self.trace)
         if self.trace is None or self.index >= self.last:
             self.pause()
+        elif self.playing:
+            self._speed_changed(capped)
         self.traceChanged.emit()
 
     # -------------------------------------------------------------- play
@@ -193,9 +208,36 @@ class Player(QObject):
         speed = float(steps_per_second)
         if not math.isfinite(speed):
             raise InputError("the speed must be a finite number of steps per second")
+        capped = self.capped
         self._speed = min(max(speed, MIN_SPEED), MAX_SPEED)
         if self.playing:
-            self._timer.setInterval(self._interval())
+            self._speed_changed(capped)
+
+    @property
+    def speed_cap(self) -> float | None:
+        """The most steps a second the run on show plays at (None: no limit)."""
+        return self._cap
+
+    @property
+    def capped(self) -> bool:
+        """Is the chosen speed above the run's cap?"""
+        return self._cap is not None and self._speed > self._cap
+
+    @property
+    def effective_speed(self) -> float:
+        """Steps per second play goes at: the speed, held to the cap."""
+        return min(self._speed, self._cap) if self.capped else self._speed
+
+    @property
+    def interval(self) -> int:
+        """Milliseconds between two timer ticks of play."""
+        return self._timer.interval()
+
+    def _speed_changed(self, was_capped: bool) -> None:
+        """While playing: retime the ticks, and say so when the cap newly applies."""
+        self._timer.setInterval(self._interval())
+        if self.capped and not was_capped:
+            self.speedCapped.emit(cap_note(self._cap))
 
     @property
     def playing(self) -> bool:
@@ -210,6 +252,8 @@ class Player(QObject):
         self._clock.start()
         self._timer.start(self._interval())
         self.playingChanged.emit(True)
+        if self.capped:
+            self.speedCapped.emit(cap_note(self._cap))
 
     def pause(self) -> None:
         if self.playing:
@@ -223,11 +267,11 @@ class Player(QObject):
             self.play()
 
     def _interval(self) -> int:
-        return max(MIN_TICK_MS, int(1000.0 / self._speed))
+        return max(MIN_TICK_MS, int(1000.0 / self.effective_speed))
 
     def _tick(self) -> None:
         elapsed = self._clock.restart() / 1000.0
-        self._owed += elapsed * self._speed
+        self._owed += elapsed * self.effective_speed
         # At least one step a tick, so slow speeds move visibly on time.
         steps = max(1, int(self._owed))
         self._owed = max(0.0, self._owed - steps)

@@ -200,6 +200,7 @@ class MainWindow(QMainWindow):
         p.playingChanged.connect(self.transport.set_playing)
         p.comparisonChanged.connect(self._comparison_changed)
         p.session.message.connect(self.say_error)
+        p.speedCapped.connect(lambda line: self.statusBar().showMessage(line, 8000))
 
         t = self.transport
         t.firstRequested.connect(p.first)

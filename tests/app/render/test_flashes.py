@@ -6,6 +6,8 @@ second, the fast ones slowed to what is safe (app/render/flash_guard.py)."""
 import numpy as np
 import pytest
 
+from algorithms.core import registry
+from algorithms.core.steps import Vars
 from app.model import shipped
 from app.model.scene import Scene, load
 from app.render import flash_guard, flashes
@@ -124,3 +126,30 @@ def test_the_export_line_says_it_was_slowed(tmp_path, run_cli):
     from PIL import Image
     with Image.open(gif) as image:
         assert image.info["duration"] >= 140   # 1/7 s, in ms (GIF's hundredths)
+
+
+def picture_steps(trace):
+    """The steps showing the empty grid and each complete animation frame,
+    read from the records: frame k begins at the Vars record naming it and is
+    complete one step before frame k + 1 begins, the last one step before the
+    closing record."""
+    starts = [index for index, record in trace.records_of(Vars) if "frame" in record.values]
+    return [0] + [start - 1 for start in starts[1:]] + [len(trace) - 2]
+
+
+@pytest.mark.parametrize("name", TEMPORAL)
+def test_playback_is_capped_at_7_pictures_a_second(name):
+    scene = TEMPORAL[name]
+    trace = ex.record(scene)
+    steps = picture_steps(trace)
+    fewest = min(b - a for a, b in zip(steps, steps[1:]))
+    cap = flash_guard.playback_cap(registry.get("aa-temporal"), trace)
+    assert cap == 7 * fewest
+    # At the cap, no second of play holds more than 7 changes of picture.
+    window = cap  # steps in one second
+    assert all(sum(start < s <= start + window for s in steps) <= 7 for start in range(len(trace)))
+
+
+def test_a_run_without_animation_frames_has_no_playback_cap():
+    scene = load(shipped.scene_path("demo-bresenham"))
+    assert flash_guard.playback_cap(registry.get(scene.algorithm), ex.record(scene)) is None
