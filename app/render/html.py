@@ -20,6 +20,11 @@ as HTML.
 Each step is also put in words (``step_words``): the caption under the grid
 shows them and, being an ``aria-live`` region, a screen reader reads them
 when a person moves to another step.
+
+A run with animation frames plays at no more than
+``flash_guard.playback_cap`` steps a second whatever speed is chosen (the
+page's data carries the cap and the line saying so, shown beside the speed
+list when the speed chosen is above it).
 """
 from __future__ import annotations
 
@@ -41,6 +46,7 @@ from app.model.files import write_atomically
 from app.model.geometry import scene_paths
 from app.model.notation import fraction
 from app.model.step_words import describe
+from app.render.flash_guard import cap_note, playback_cap
 from app.render.frame import colour_name
 from app.render.palette import THEMES
 from app.render.settings import ExportError, frame_range
@@ -90,6 +96,7 @@ def page_data(scene, trace, settings) -> dict:
     steps = frame_range(scene, trace, settings.first, settings.last)
     first, last = steps.start, steps.stop - 1
     start = trace.start
+    cap = playback_cap(spec, trace)
     return {
         "version": 1,
         "title": scene.title or spec.name,
@@ -98,6 +105,8 @@ def page_data(scene, trace, settings) -> dict:
         "yDown": scene.origin == "top-left",
         "steps": len(trace), "first": first, "last": last,
         "fps": settings.fps, "theme": settings.theme, "loop": bool(settings.loop),
+        # Play held to SAFE_FPS animation frames a second (None: not held).
+        "playCap": cap, "playCapNote": None if cap is None else cap_note(cap),
         "code": [{"text": c.text, "kind": c.kind, "branch": c.branch,
                   "candidates": [list(o) for o in c.candidates]} for c in trace.code],
         "startCandidates": [list(o) for o in start.candidates],
