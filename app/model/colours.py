@@ -62,6 +62,7 @@ class Meanings:
     primitive: str               # the ideal primitive
     edges: tuple[str, str, str]  # the edge functions of a triangle (overlay)
     coverage: tuple[str, str, str]  # cells written once, twice, 3 or more times
+    octants: tuple[str, str, str]  # octant diagram: the line's octant, the mirrors, its image
 
     def groups(self) -> dict[str, tuple[str, ...]]:
         """Colours that stand for different things side by side, by picture."""
@@ -70,7 +71,8 @@ class Meanings:
                 "error": (self.too_little, self.too_much),
                 "highlights": (self.ink, self.current, self.candidate, self.difference,
                                self.primitive),
-                "edges": self.edges, "coverage": self.coverage}
+                "edges": self.edges, "coverage": self.coverage,
+                "octants": self.octants}
 
 
 LIGHT = Meanings(
@@ -80,7 +82,8 @@ LIGHT = Meanings(
     too_little="#0072b2", too_much="#d55e00",
     ink="#2563a8", current="#d55e00", candidate="#009e73", difference="#995a7d",
     primitive="#000000", edges=("#d55e00", "#009e73", "#7a4a9a"),
-    coverage=("#4999c6", "#b35900", "#3d1f5c"))
+    coverage=("#4999c6", "#b35900", "#3d1f5c"),
+    octants=("#009e73", "#7a4a9a", "#d55e00"))
 
 DARK = Meanings(
     ground="#1b2027", diff=("#e69f00", "#56b4e9", "#8c8c8c", "#ffffff"),
@@ -89,7 +92,8 @@ DARK = Meanings(
     too_little="#0072b2", too_much="#d55e00",
     ink="#5fa8f5", current="#e69f00", candidate="#009e73", difference="#cc79a7",
     primitive="#f0e442", edges=("#e69f00", "#009e73", "#cc79a7"),
-    coverage=("#2f80c0", "#e69f00", "#ffffff"))
+    coverage=("#2f80c0", "#e69f00", "#ffffff"),
+    octants=("#009e73", "#cc79a7", "#e69f00"))
 
 THEMES = {"light": LIGHT, "dark": DARK}
 # The coverage-error map is drawn on white in either theme (white is "no error").
