@@ -9,6 +9,8 @@ over the cells: a cell written twice reads as such without its colour.
 """
 from __future__ import annotations
 
+import numpy as np
+
 from algorithms.core.steps import Table
 from app.render.compose import coverage_counts, coverage_image
 from app.render.patterns import pattern_scale
@@ -21,6 +23,9 @@ class CoverageDisplay:
     def __init__(self, window):
         self.window = window
         self.patterns = PatternLayer(window.grid.view_box)
+        # The counts and palette on show: a step that writes nothing keeps
+        # the layer (it takes some 50 ms to make for a 256 x 256 grid).
+        self._shown = None
 
     def show(self, state) -> None:
         """The coverage of ``state`` (a FrameState of the player's run), or
@@ -44,10 +49,16 @@ class CoverageDisplay:
         scale = 1 if counts is None else pattern_scale(counts.shape[1], counts.shape[0])
         if scale == 1 or not (counts >= 2).any():
             self.patterns.clear()
+            self._shown = None
+            return
+        palette = self.window.palette_
+        if self._shown is not None and self._shown[1] is palette \
+                and np.array_equal(self._shown[0], counts):
+            self.patterns.setVisible(True)
             return
         height, width = counts.shape
-        self.patterns.show_cells(coverage_image(counts, self.window.palette_, scale),
-                                 width, height)
+        self.patterns.show_cells(coverage_image(counts, palette, scale), width, height)
+        self._shown = (counts.copy(), palette)
 
 
 def summary(levels, cracks: int) -> str:
