@@ -24,10 +24,10 @@ CURRENT_EDGE = QColor("#f08c00")
 CHANGED_VALUE = QColor("#b35900")
 LINE_NUMBER = QColor("#8a94a1")
 NOTES_MAX_HEIGHT = 120
-# Values whose sign or range matters: text colours by tone (app/model/colours.py),
-# and a positive value shows its "+" so that the sign is written, not only coloured.
-TONE_COLORS = {"positive": QColor(LIGHT.positive), "negative": QColor(LIGHT.negative),
-               "zero": QColor(LIGHT.zero)}
+# Values whose sign or range matters: text colours by tone (app/model/colours.py,
+# the set of the panel's theme: ``set_meanings``), and a positive value shows
+# its "+" so that the sign is written, not only coloured.
+TONES = ("positive", "negative", "zero")
 # Chips of the step summary: (background, text) by tone; the chip's text says its meaning.
 CHIP_COLORS = {"positive": ("#dcecf7", "#005a8c"), "negative": ("#fbe4d5", "#9c4500"),
                "zero": ("#ececec", "#3d3d3d"), "in": ("#007a5a", "#ffffff"),
@@ -38,16 +38,16 @@ ROWS_BEFORE_PLOT = 4  # rows the table keeps in sight before the plot gets room
 SERIES_DOTS = 300  # more steps than this: no dot per step on the plot over the run
 # A decision variable's dots by the branch its step took (E, NE, ...: the
 # k-th branch of a decision takes the k-th colour and marker shape), and the
-# steps that decide nothing.
+# steps that decide nothing. These are the light theme's; the dark theme's
+# come from app/model/colours.py DARK the same way.
 BRANCH_COLORS = LIGHT.branches
 UNDECIDED_COLOR = LIGHT.undecided
-DOT_COLORS = (UNDECIDED_COLOR, *BRANCH_COLORS)  # by kind: decides nothing, then each branch
 DOT_SYMBOLS = (UNDECIDED_SYMBOL, *BRANCH_SYMBOLS)
 
 
-def branch_legend(names) -> str:
+def branch_legend(names, colors=BRANCH_COLORS) -> str:
     """Rich text naming each branch beside a marker of its shape and colour."""
-    return ", ".join(f"<span style='color:{BRANCH_COLORS[k % len(BRANCH_COLORS)]}'>"
+    return ", ".join(f"<span style='color:{colors[k % len(colors)]}'>"
                      f"{BRANCH_GLYPHS[k % len(BRANCH_GLYPHS)]} {name}</span>"
                      for k, name in enumerate(names))
 
@@ -100,6 +100,11 @@ def _step_dot() -> QGraphicsEllipseItem:
     return dot
 
 
+def _dot_brushes(meanings) -> list:
+    """Brushes of the decision dots by kind: decides nothing, then each branch."""
+    return [pg.mkBrush(color) for color in (meanings.undecided, *meanings.branches)]
+
+
 class VariablesPanel(QWidget):
     """A table of the current step's named values and a plot of one value
     over the whole run, with a marker at the current step."""
@@ -119,6 +124,8 @@ class VariablesPanel(QWidget):
         self.table = self._make_table()
         self.table.cellClicked.connect(self._clicked)
         self._value_fonts = _value_fonts(self.font())
+        self.meanings = LIGHT  # the colours with a meaning, for the panel's ground
+        self._series_shown = (None,)  # set_series's arguments, to draw again in other colours
 
         self.plot = self._make_plot()
         self.plot_title = QLabel(self)
@@ -211,8 +218,9 @@ class VariablesPanel(QWidget):
         # No background grid: pyqtgraph redraws it whole whenever the
         # step marker moves, which costs more than the rest of the panel.
         self.zero = pg.InfiniteLine(0, angle=0, pen=pg.mkPen("#9aa5b1", style=Qt.PenStyle.DashLine))
-        self.curve = pg.PlotDataItem(pen=pg.mkPen("#2563a8", width=1.5), connect="finite",
-                                     symbol="o", symbolSize=4, symbolBrush="#2563a8",
+        self.curve = pg.PlotDataItem(pen=pg.mkPen(self.meanings.ink, width=1.5),
+                                     connect="finite", symbol="o", symbolSize=4,
+                                     symbolBrush=self.meanings.ink,
                                      symbolPen=None, autoDownsample=True,
                                      downsampleMethod="peak", clipToView=True)
         self.marker = pg.InfiniteLine(0, angle=90, pen=pg.mkPen("#f08c00", width=2))
@@ -221,7 +229,7 @@ class VariablesPanel(QWidget):
         # item with a brush per dot, since pyqtgraph measures each item's
         # bounds on every step.
         self.dots = pg.ScatterPlotItem(pen=None, symbol="o")
-        self._dot_brushes = [pg.mkBrush(color) for color in DOT_COLORS]
+        self._dot_brushes = _dot_brushes(self.meanings)
         for part in (self.zero, self.curve, self.dots, self.marker):
             view.addItem(part)
         view.addItem(self.point, ignoreBounds=True)  # it stands on the curve
@@ -282,7 +290,9 @@ class VariablesPanel(QWidget):
             row = self._row_of[name]
             self._set_text(self._cell(row, 0), name)
             changed = name in before and before[name] != text
-            color = TONE_COLORS.get(tones.get(name)) or (CHANGED_VALUE if changed else None)
+            tone = tones.get(name)
+            color = QColor(getattr(self.meanings, tone)) if tone in TONES else (
+                CHANGED_VALUE if changed else None)
             text = _with_sign(text, tones.get(name))
             swatch = text if name in color_names and QColor.isValidColorName(text) else None
             if self._set_value(row, text, color, changed, swatch):
@@ -455,6 +465,7 @@ class VariablesPanel(QWidget):
         branch it took (code k for the k-th of ``names``; -1 for a step that
         decides nothing), as app/model/branches.py works it out.
         """
+        self._series_shown = (values, name, decision, branches)
         finite = values is not None and bool(np.isfinite(values).any())
         self._plot_wanted = finite
         self._fit_plot()
@@ -473,7 +484,8 @@ class VariablesPanel(QWidget):
         self._draw_series(steps, known,
                           branches[0][steps.astype(np.int64)] if coloured else None)
         self.plot_title.setText(f"{name} over the run" + (
-            f" (the branch taken: {branch_legend(branches[1])})" if coloured else ""))
+            f" (the branch taken: {branch_legend(branches[1], self.meanings.branches)})"
+            if coloured else ""))
         low, high = float(known.min()), float(known.max())
         self.zero.setVisible(decision)
         if decision:
@@ -489,27 +501,37 @@ class VariablesPanel(QWidget):
         step), and another value its line."""
         few = len(known) <= SERIES_DOTS
         if taken is not None:
-            self.curve.setPen(pg.mkPen(UNDECIDED_COLOR, width=1))
+            self.curve.setPen(pg.mkPen(self.meanings.undecided, width=1))
             self.curve.setData(steps if few else [], known if few else [], symbol=None)
             # 0: decides nothing, 1, 2, ...: the branches. Drawn in that
             # order, so that where dots overlap a branch's lie on top.
-            kind = np.where(taken >= 0, taken % len(BRANCH_COLORS) + 1, 0)
+            kind = np.where(taken >= 0, taken % len(self.meanings.branches) + 1, 0)
             order = np.argsort(kind, kind="stable")
             self._set_dots(steps[order], known[order], kind[order], 7 if few else 5)
             return
         self._set_dots()
-        self.curve.setPen(pg.mkPen("#2563a8", width=1.5))
+        self.curve.setPen(pg.mkPen(self.meanings.ink, width=1.5))
         self.curve.setData(steps, known, symbol="o" if few else None, symbolSize=4,
-                           symbolBrush="#2563a8", symbolPen=None)
+                           symbolBrush=self.meanings.ink, symbolPen=None)
 
     def _set_dots(self, steps=(), values=(), kinds=(), size=3) -> None:
         """The decision variable's dots, each brushed by its kind (see
-        ``DOT_COLORS``); hidden when there are none."""
+        ``_dot_brushes``); hidden when there are none."""
         kinds = np.asarray(kinds, dtype=np.int64).tolist()
         brushes = [self._dot_brushes[k] for k in kinds]
         self.dots.setData(steps, values, brush=brushes, symbol=[DOT_SYMBOLS[k] for k in kinds],
                           size=size)
         self.dots.setVisible(len(brushes) > 0)
+
+    def set_meanings(self, meanings) -> None:
+        """Draw signed values and the branches' dots in ``meanings``'
+        colours (app/model/colours.py LIGHT or DARK, for the theme's ground);
+        the rows take them when they are next set."""
+        if meanings is self.meanings:
+            return
+        self.meanings = meanings
+        self._dot_brushes = _dot_brushes(meanings)
+        self.set_series(*self._series_shown)
 
     def set_plot_allowed(self, allowed: bool) -> None:
         """Presentation mode gives the plot's room to the rows."""

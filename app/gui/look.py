@@ -3,9 +3,10 @@ titles and colour legends of the Scene dock, and the program's icon."""
 from __future__ import annotations
 
 from PySide6.QtCore import QRect, Qt
-from PySide6.QtGui import QColor, QIcon, QPainter, QPixmap
+from PySide6.QtGui import QBrush, QColor, QIcon, QPainter, QPixmap
 from PySide6.QtWidgets import QHBoxLayout, QLabel, QVBoxLayout, QWidget
 
+from app.model.colours import COVERAGE_PATTERNS
 from app.render.compose import COVERAGE_LEVELS, PALETTE
 
 # Each named widget has a style sheet of its own (object name: light rules,
@@ -32,6 +33,8 @@ LOOK = {
     "drawingTools": ("spacing: 2px; padding: 1px 4px;", ""),
 }
 ERROR_STYLE = "color: #c92a2a;"
+# A chip's pattern (app/model/colours.py names) as Qt draws it at chip size.
+CHIP_BRUSHES = {"stripes /": Qt.BrushStyle.BDiagPattern, "cross": Qt.BrushStyle.DiagCrossPattern}
 
 
 def look_sheet(name: str, dark: bool) -> str:
@@ -65,18 +68,22 @@ def section(text: str, parent=None) -> QLabel:
     return label
 
 
-def legend_chip(color: str, fill: bool) -> QLabel:
+def legend_chip(color: str, fill: bool, marks=None) -> QLabel:
     label = QLabel()
-    label.setPixmap(chip_pixmap(color, fill))
+    label.setPixmap(chip_pixmap(color, fill, marks))
     return label
 
 
-def chip_pixmap(color: str, fill: bool) -> QPixmap:
+def chip_pixmap(color: str, fill: bool, marks=None) -> QPixmap:
+    """A filled or outlined chip; ``marks`` (pattern, colour) draws the
+    pattern a filled cell of this meaning carries on the grid."""
     pixmap = QPixmap(14, 14)
     pixmap.fill(Qt.GlobalColor.transparent)
     painter = QPainter(pixmap)
     if fill:
         painter.fillRect(1, 1, 12, 12, QColor(color))
+        if marks is not None and marks[0] in CHIP_BRUSHES:
+            painter.fillRect(1, 1, 12, 12, QBrush(QColor(marks[1]), CHIP_BRUSHES[marks[0]]))
     else:
         pen = painter.pen()
         pen.setColor(QColor(color))
@@ -88,17 +95,18 @@ def chip_pixmap(color: str, fill: bool) -> QPixmap:
 
 
 def legend(rows) -> QWidget:
-    """Chips with their meaning: (colour, filled?, text) per row;
-    ``widget.chips`` keeps (chip, filled?) to recolour them."""
+    """Chips with their meaning: (colour, filled?, text, marks) per row
+    (marks: see ``chip_pixmap``); ``widget.chips`` keeps (chip, filled?) to
+    recolour them."""
     widget = QWidget()
     widget.chips = []
     box = QVBoxLayout(widget)
     box.setSpacing(2)
     box.setContentsMargins(0, 4, 0, 0)
-    for color, fill, text in rows:
+    for color, fill, text, marks in rows:
         row = QHBoxLayout()
         row.setSpacing(6)
-        chip = legend_chip(color, fill)
+        chip = legend_chip(color, fill, marks)
         widget.chips.append((chip, fill))
         row.addWidget(chip)
         label = QLabel(text)
@@ -116,16 +124,19 @@ LEGEND = (("current", False, "pixel or span of this step"),
 
 
 def legend_rows(palette) -> list:
-    return [(getattr(palette, field), fill, text) for field, fill, text in LEGEND]
+    return [(getattr(palette, field), fill, text, None) for field, fill, text in LEGEND]
 
 
 def coverage_rows(palette) -> list:
-    return [(color, True, text) for color, text in zip(palette.coverage, COVERAGE_LEVELS)]
+    """The coverage levels' chips, patterned as on the grid (app/render/compose.py)."""
+    ground = palette.coverage[0]
+    return [(color, True, text, (pattern, ground)) for color, text, pattern
+            in zip(palette.coverage, COVERAGE_LEVELS, COVERAGE_PATTERNS)]
 
 
 def recolor(legend, rows) -> None:
-    for (chip, fill), (color, _fill, _text) in zip(legend.chips, rows):
-        chip.setPixmap(chip_pixmap(color, fill))
+    for (chip, fill), (color, _fill, _text, marks) in zip(legend.chips, rows):
+        chip.setPixmap(chip_pixmap(color, fill, marks))
 
 
 def app_icon() -> QIcon:

@@ -34,6 +34,7 @@ from PySide6.QtWidgets import (QApplication, QCheckBox, QColorDialog, QComboBox,
 from algorithms.core.raster import MAX_GRID
 from algorithms.core.registry import InputError
 from algorithms.core.trace import DEFAULT_STEP_CAP, MAX_STEP_CAP
+from app.model import colours
 from app.model.budget import DEFAULT_MEMORY_LIMIT
 from app.model.system_motion import reduce_motion
 from app.model.notation import NUMBERS
@@ -356,6 +357,7 @@ def _theme_panels(window, dark: bool) -> None:
     """The few colours the panels set themselves for the light look."""
     for k in range(window.picker.topLevelItemCount()):
         window.picker.topLevelItem(k).setForeground(0, QColor("#9aa7b5" if dark else "#3d4754"))
+    window.variables.set_meanings(colours.DARK if dark else colours.LIGHT)
     plot = getattr(window.variables, "plot", None)
     if plot is None:
         return

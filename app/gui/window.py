@@ -13,13 +13,14 @@ from PySide6.QtWidgets import QMainWindow, QMessageBox
 from algorithms.core import registry
 from algorithms.core.raster import Raster
 from algorithms.core.registry import InputError
-from algorithms.core.steps import Note, Table
+from algorithms.core.steps import Note
 from widgets.grid_view import DRAW, MARKER
 
 from app.gui.appdata import APP_NAME
 from app.gui.look import ERROR_STYLE, app_icon, apply_look, coverage_rows, legend_rows, recolor
 from app.gui.player import Player
 from app.gui.shortcuts import GESTURES, ShortcutsDialog
+from app.gui.coverage_display import CoverageDisplay
 from app.gui.window_depth import DepthDisplay
 from app.gui.window_texture import TextureDisplay
 from app.gui.window_layout import build_layout
@@ -39,7 +40,7 @@ from app.model.branches import decision_branches
 from app.model.tools import (circle_kind, circle_options, clamp_option, drawing_mode,
                              marker_option, placing_message, shape_paths, tool_hint)
 from app.render import frame as frame_view
-from app.render.compose import PALETTE, compose, coverage_counts
+from app.render.compose import PALETTE, compose
 from app.render.incremental import StepImages
 # What a frame shows is worked out in app/render/frame.py, shared with export.
 from app.render.frame import step_cells as _step_cells
@@ -87,6 +88,7 @@ class MainWindow(QMainWindow):
         build_menus(self)  # app/gui/window_menus.py
         self.depth_display = DepthDisplay(self)  # depth dock, samples, coverage error
         self.texture_display = TextureDisplay(self)  # texture, outside-view docks
+        self.coverage_display = CoverageDisplay(self)  # overlaps' patterns, cracks
         self._connect()
 
         specs = registry.all_specs()
@@ -499,7 +501,7 @@ class MainWindow(QMainWindow):
             self.grid.set_highlights((), ())
             self.guides.show(None, None)
             self.variables.set_caption("No run: place the points first.")
-            self.coverage_label.setText("")
+            self.coverage_display.show(None)
             self._update_message()
             return
         errors = None if self.coverage.isChecked() else self.depth_display.error_map()
@@ -514,7 +516,6 @@ class MainWindow(QMainWindow):
         cells, spans = _step_cells(state)
         self.grid.set_highlights(cells, state.candidates, spans)
         self.guides.show(player.trace, state)
-        self._show_cracks(player.trace, state.index)
         trace, index = player.trace, state.index
         self.transport.set_position(index)
         self.code.set_current(state.step.line)
@@ -522,7 +523,7 @@ class MainWindow(QMainWindow):
         self._show_values(state)
         if self._tables:
             self.tables.set_tables(self._tables.at(index))
-        self._show_coverage(state)
+        self.coverage_display.show(state)
         self._update_message()
         self._hover(self._last_hover)
 
@@ -544,27 +545,6 @@ class MainWindow(QMainWindow):
                           "pixels looked at, and pixels written, up to this step"))
         self.variables.set_chips(chips)
         self.variables.set_marker(index)
-
-    def _show_coverage(self, state) -> None:
-        if not self.coverage.isChecked():
-            self.coverage_label.setText("")
-            return
-        _none, _once, twice, more = coverage_counts(state.raster)
-        overlaps = twice + more
-        cracks = len(crack_cells(self.player.trace, state.index))
-        self.coverage_label.setText(
-            ("No pixel covered twice" if not overlaps else
-             f"{overlaps:,} pixel{'s' if overlaps != 1 else ''} covered twice or more"
-             + (f" ({more:,} three times or more)" if more else ""))
-            + (f" · {cracks:,} crack{'s' if cracks != 1 else ''} outlined" if cracks else ""))
-
-    def _show_cracks(self, trace, index: int) -> None:
-        """With coverage counts on, outline the cracks a mesh run reports
-        (its "cracks" table) instead of the compared run's differences."""
-        if not self.coverage.isChecked():
-            self.grid.set_differences(self.player.differences)
-            return
-        self.grid.set_differences(crack_cells(trace, index))
 
     def _coverage_toggled(self, on: bool) -> None:
         self.legend.setVisible(not on)
@@ -689,11 +669,3 @@ def _series_name(trace) -> str | None:
         if np.isfinite(trace.series(name)).any():
             return name
     return None
-
-
-def crack_cells(trace, index: int) -> list:
-    """The pixels of the run's "cracks" table recorded at or before ``index``."""
-    for _, table in trace.records_of(Table, hi=index + 1):
-        if table.name == "cracks":
-            return [tuple(row) for row in table.rows]
-    return []

@@ -12,8 +12,9 @@ of one meaning and checks their distance and contrast.
 
 Colour is never the only cue: diff cells carry a pattern
 (``DIFF_PATTERNS``), signed values a sign glyph (``SIGN_GLYPHS``), the
-decision dots a marker shape per branch (``BRANCH_SYMBOLS``) and the
-error map's "too little" side a hatch.
+decision dots a marker shape per branch (``BRANCH_SYMBOLS``), the
+coverage counts' overlaps a pattern (``COVERAGE_PATTERNS``) and the error
+map's "too little" side a hatch.
 
 This module lives in ``app.model`` because the widgets, the renderer and
 the report all read it and may import nothing else they share.
@@ -30,6 +31,8 @@ OKABE_ITO = {"black": "#000000", "orange": "#e69f00", "sky blue": "#56b4e9",
 
 # The diff classes (app/model/compare.py DIFF_CLASSES order) and their patterns.
 DIFF_PATTERNS = ("stripes /", "stripes \\", "plain", "cross")
+# Coverage counts 0, 1, 2, 3 or more: the overlaps carry a pattern.
+COVERAGE_PATTERNS = ("plain", "plain", "stripes /", "cross")
 # A sign glyph set beside a signed value, so its tone is never the only cue.
 SIGN_GLYPHS = {"positive": "+", "negative": "\u2212", "zero": "0"}
 # pyqtgraph symbols of the decision dots: undecided, then one per branch.
@@ -58,6 +61,8 @@ class Meanings:
     difference: str              # a cell that differs from a compared run
     primitive: str               # the ideal primitive
     edges: tuple[str, str, str]  # the edge functions of a triangle (overlay)
+    coverage: tuple[str, str, str]  # cells written once, twice, 3 or more times
+    octants: tuple[str, str, str]  # octant diagram: the line's octant, the mirrors, its image
 
     def groups(self) -> dict[str, tuple[str, ...]]:
         """Colours that stand for different things side by side, by picture."""
@@ -66,7 +71,8 @@ class Meanings:
                 "error": (self.too_little, self.too_much),
                 "highlights": (self.ink, self.current, self.candidate, self.difference,
                                self.primitive),
-                "edges": self.edges}
+                "edges": self.edges, "coverage": self.coverage,
+                "octants": self.octants}
 
 
 LIGHT = Meanings(
@@ -75,7 +81,9 @@ LIGHT = Meanings(
     undecided="#8c8c8c", branches=("#0072b2", "#d55e00", "#000000", "#4999c6"),
     too_little="#0072b2", too_much="#d55e00",
     ink="#2563a8", current="#d55e00", candidate="#009e73", difference="#995a7d",
-    primitive="#000000", edges=("#d55e00", "#009e73", "#7a4a9a"))
+    primitive="#000000", edges=("#d55e00", "#009e73", "#7a4a9a"),
+    coverage=("#4999c6", "#b35900", "#3d1f5c"),
+    octants=("#009e73", "#7a4a9a", "#d55e00"))
 
 DARK = Meanings(
     ground="#1b2027", diff=("#e69f00", "#56b4e9", "#8c8c8c", "#ffffff"),
@@ -83,7 +91,9 @@ DARK = Meanings(
     undecided="#8c8c8c", branches=("#56b4e9", "#e69f00", "#b54f00", "#0072b2"),
     too_little="#0072b2", too_much="#d55e00",
     ink="#5fa8f5", current="#e69f00", candidate="#009e73", difference="#cc79a7",
-    primitive="#f0e442", edges=("#e69f00", "#009e73", "#cc79a7"))
+    primitive="#f0e442", edges=("#e69f00", "#009e73", "#cc79a7"),
+    coverage=("#2f80c0", "#e69f00", "#ffffff"),
+    octants=("#009e73", "#cc79a7", "#e69f00"))
 
 THEMES = {"light": LIGHT, "dark": DARK}
 # The coverage-error map is drawn on white in either theme (white is "no error").

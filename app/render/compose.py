@@ -16,7 +16,9 @@ grid lines and the ideal primitive.
 
 ``coverage=True`` colours each cell by how many times it was written
 (0, 1, 2, 3 or more) instead of by its ink or colour, so that pixels two
-triangles of a mesh both fill stand out.
+triangles of a mesh both fill stand out; at ``scale`` 4 and above the
+overlaps also carry a pattern (app/model/colours.py COVERAGE_PATTERNS), so
+that their count is not told by colour alone.
 """
 from __future__ import annotations
 
@@ -35,7 +37,7 @@ _RGBA = np.dtype("<u4")
 
 __all__ = ["Palette", "PALETTE", "Overlay", "OUTLINE_STYLE", "compose", "top_down",
            "packed_rgba", "coverage_counts", "COVERAGE_LEVELS", "depth_image",
-           "depth_range", "error_image", "error_stats", "diff_image"]
+           "depth_range", "error_image", "error_stats", "diff_image", "coverage_image"]
 
 # What the coverage colours stand for, in Palette.coverage order.
 COVERAGE_LEVELS = ("not covered", "covered once", "covered twice", "covered 3+ times")
@@ -59,9 +61,8 @@ class Palette:
     handle_edge: str = "#1d2733"  # vertex handles (border and label)
     seed: str = "#7048e8"         # the seed marker of a fill
     guide: str = "#9c36b5"        # the reasoning drawn on the grid (scan line, M, samples)
-    # Coverage counts 0, 1, 2, 3+: light to dark, and the two overlap
-    # levels in warm hues that no ink or highlight colour uses.
-    coverage: tuple[str, str, str, str] = ("#fbfcfd", "#a9cdf0", "#f59f00", "#c2255c")
+    # Coverage counts 0, 1, 2, 3+: the ground, then app/model/colours.py's.
+    coverage: tuple[str, str, str, str] = (LIGHT.ground, *LIGHT.coverage)
     # The compare diff's classes: only in A, only in B, both, different value.
     diff: tuple[str, str, str, str] = LIGHT.diff
 
@@ -74,7 +75,7 @@ DARK_PALETTE = Palette(
     background="#1b2027", ink="#5fa8f5", overdraw="#b9dcff", grid="#38414d",
     outside="#11151a", current=DARK.current, candidate=DARK.candidate,
     difference=DARK.difference, primitive=DARK.primitive, handle="#1b2027", handle_edge="#e6edf3",
-    seed="#9775fa", guide="#e599f7", coverage=("#1b2027", "#285a8c", "#f59f00", "#e64980"),
+    seed="#9775fa", guide="#e599f7", coverage=(DARK.ground, *DARK.coverage),
     diff=DARK.diff)
 
 
@@ -155,8 +156,11 @@ def compose(raster, overlay: Overlay | None = None, palette: Palette = PALETTE,
         _tint(cells, overlay, palette)
     if scale > 1:
         height, width = cells.shape
-        cells = np.broadcast_to(cells[:, None, :, None], (height, scale, width, scale))
-        cells = cells.reshape(height * scale, width * scale).copy()
+        if coverage:
+            cells = _coverage_patterns(cells, raster.counts, palette, scale)
+        else:
+            cells = np.broadcast_to(cells[:, None, :, None], (height, scale, width, scale))
+            cells = cells.reshape(height * scale, width * scale).copy()
         if grid_lines is None:
             grid_lines = scale >= 4
         if grid_lines:
@@ -221,6 +225,26 @@ def coverage_colors(counts: np.ndarray, palette: Palette) -> np.ndarray:
     """Packed RGBA of cells by their write count (0, 1, 2, 3 or more)."""
     lut = np.array([packed_rgba(color) for color in palette.coverage], dtype=_RGBA)
     return lut.take(counts, mode="clip")
+
+
+def coverage_image(counts: np.ndarray, palette: Palette = PALETTE, scale: int = 1) -> np.ndarray:
+    """Coverage counts as a uint8 RGBA image (H * scale, W * scale, 4), row 0
+    at y = 0. At ``scale`` 4 and above the cells written twice, and three
+    times or more, carry their pattern (app/model/colours.py
+    COVERAGE_PATTERNS) cut in the background colour."""
+    cells = coverage_colors(counts, palette)
+    return _coverage_patterns(cells, counts, palette, scale).view(np.uint8).reshape(
+        cells.shape[0] * scale, cells.shape[1] * scale, 4)
+
+
+def _coverage_patterns(cells: np.ndarray, counts: np.ndarray, palette: Palette,
+                       scale: int) -> np.ndarray:
+    """Packed cells enlarged ``scale`` times, with the coverage patterns cut in."""
+    height, width = cells.shape
+    image = cells.view(np.uint8).reshape(height, width, 4)
+    big = patterns.stamp(image, np.minimum(counts, 3), colours.COVERAGE_PATTERNS,
+                         _channels(palette.background), scale)
+    return np.ascontiguousarray(big).view(_RGBA).reshape(height * scale, width * scale)
 
 
 def _darken(packed: np.ndarray, factor: float) -> np.ndarray:

@@ -13,11 +13,13 @@ from __future__ import annotations
 import math
 
 from algorithms.lines.common import OctantMap, octant_map
+from app.model import colours
 
-RAY_COLOUR = (120, 120, 120)
-OCTANT_COLOUR = (30, 150, 30)    # the line's octant
-MIRROR_COLOUR = (120, 60, 200)   # the mirrors applied
-IMAGE_COLOUR = (200, 130, 0)    # the line mapped into octant 1
+RAY_COLOUR = (120, 120, 120)  # the rays and the other octants' numbers: neutral
+# The line's octant, the mirrors applied and the line mapped into octant 1,
+# from app/model/colours.py (overlays are drawn in the light set's colours,
+# as the edges are: app/render/overlays.py). The mirrors are also dashed.
+OCTANT_COLOUR, MIRROR_COLOUR, IMAGE_COLOUR = (colours.rgb(c) for c in colours.LIGHT.octants)
 COLOURS = (RAY_COLOUR, OCTANT_COLOUR, MIRROR_COLOUR, IMAGE_COLOUR)
 RADIUS = 5.0      # grid units from P to the end of each ray
 DIGIT_SIZE = 0.9  # a digit's height in grid units

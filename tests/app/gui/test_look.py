@@ -115,3 +115,13 @@ def test_the_export_dialog_takes_the_theme(window, qtbot, theme):
     label = controller.dialog.size_label
     assert text_colour(label) == TEXT["summary"][1]
     controller.dialog.reject()
+
+
+def test_the_coverage_legend_shows_the_overlaps_patterns(window):
+    def colours_of(k):
+        image = window.coverage_legend.chips[k][0].pixmap().toImage()
+        return {image.pixelColor(x, y).name() for x in range(2, 12) for y in range(2, 12)}
+    # Written once: its colour alone; twice, three times or more: marked in the ground colour.
+    assert colours_of(1) == {"#4999c6"}
+    assert colours_of(2) == {"#b35900", "#fbfcfd"}
+    assert colours_of(3) == {"#3d1f5c", "#fbfcfd"}

@@ -381,3 +381,32 @@ def test_apply_takes_effect_at_once_in_the_open_window(qtbot, settings_file):
     window.preferences.grid_lines_action.setChecked(False)
     assert not window.grid.grid_lines.isVisible()
     assert Preferences().get("grid_lines") is False
+
+
+def _signed_value_colours(window) -> set:
+    """The text colours of the Variables panel's values written with a '+'."""
+    table = window.variables.table
+    items = [table.item(row, 1) for row in range(table.rowCount())]
+    return {item.foreground().color().name() for item in items
+            if item is not None and item.text().startswith("+")}
+
+
+def test_the_dark_theme_draws_signs_and_branches_in_its_own_colours(qtbot, settings_file):
+    window = open_window(qtbot)
+    window.picker.setCurrentItem(window.picker.item_for("triangle-bbox"))
+    window.set_points([(2, 2), (14, 3), (6, 12)])
+    window.player.first()
+    window.player.step(5)  # a pixel inside: e0, e1 and e2 all positive
+    # Okabe-Ito blue on the light ground, sky blue on the dark one (app/model/colours.py).
+    assert _signed_value_colours(window) == {"#0072b2"}
+    dialog = window.preferences.open_dialog()
+    dialog.theme.setCurrentIndex(1)
+    dialog.apply_button.click()
+    dialog.reject()
+    assert _signed_value_colours(window) == {"#56b4e9"}
+    # The decision dots of the d plot: orange for NE, not the light theme's vermillion.
+    window.picker.setCurrentItem(window.picker.item_for("line-bresenham"))
+    window.set_points([(0, 0), (12, 5)])
+    brushes = {brush.color().name() for brush in window.variables.dots.data["brush"]}
+    assert "#e69f00" in brushes and "#d55e00" not in brushes
+    assert "color:#56b4e9" in window.variables.plot_title.text()

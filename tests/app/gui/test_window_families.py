@@ -272,12 +272,26 @@ def test_coverage_counts_overlaps_of_two_triangles(open_window, qtbot):
     assert w.coverage_label.text().startswith(f"{overlaps:,} pixel")
     y, x = np.argwhere(final.counts == 2)[0]
     twice = int(PALETTE.coverage[2].lstrip("#"), 16)
-    assert w.grid.image.image[y, x, :3].tolist() == [twice >> 16, (twice >> 8) & 255, twice & 255]
+    twice_rgb = [twice >> 16, (twice >> 8) & 255, twice & 255]
+    assert w.grid.image.image[y, x, :3].tolist() == twice_rgb
+    # Over the grid, the same cell is enlarged and striped "/" in the background colour.
+    layer = w.coverage_display.patterns
+    assert layer.isVisible()
+    scale = layer.image.shape[0] // final.counts.shape[0]
+    assert scale >= 4 and layer.image.shape[1] == final.counts.shape[1] * scale
+    cell = layer.image[y * scale:(y + 1) * scale, x * scale:(x + 1) * scale, :3]
+    ground = int(PALETTE.background.lstrip("#"), 16)
+    assert cell[2, 2].tolist() == [ground >> 16, (ground >> 8) & 255, ground & 255]
+    assert cell[2, 3].tolist() == twice_rgb
     # The top-left rule gives each shared pixel to one triangle only.
     w.options.valueEdited.emit("fill_rule", "top-left")
     assert w.coverage_label.text() == "No pixel covered twice"
+    assert not layer.isVisible()
+    w.options.valueEdited.emit("fill_rule", "inclusive")
+    assert layer.isVisible()
     QTest.keyClick(w, Qt.Key.Key_C)
     assert not w.coverage.isChecked() and w.coverage_label.text() == ""
+    assert not layer.isVisible()
 
 
 def test_degenerate_triangle_note_in_the_status_bar(open_window):

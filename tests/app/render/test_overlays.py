@@ -6,7 +6,7 @@ from fractions import Fraction
 import numpy as np
 import pytest
 
-from app.render import overlays
+from app.render import octant_overlay, overlays
 from app.render.export import ExportSettings, FrameRenderer
 from app.model import scene as scenes
 from tests.support import record
@@ -215,7 +215,7 @@ def test_the_octant_diagram_outlines_the_lines_octant_and_its_image():
 def test_the_octant_overlay_needs_a_line():
     trace = record("line-bresenham", LINE)
     assert overlays.overlay_strokes(trace, 3, ["octants"], None) == []
-    assert not any(s.colour == (120, 60, 200) for s in octant_strokes(((3.5, 3.5), (9.5, 5.5))))
+    assert not any(s.colour == octant_overlay.MIRROR_COLOUR for s in octant_strokes(((3.5, 3.5), (9.5, 5.5))))
 
 
 def test_octants_is_named_and_a_scene_can_switch_it_on():

@@ -5,7 +5,8 @@ import numpy as np
 from algorithms.core.raster import Raster
 from algorithms.core.steps import PLOT, VISIT
 from app.model.insight import row_tones, inside_chips
-from app.render.compose import PALETTE, Overlay, compose, coverage_counts
+from app.render.compose import (DARK_PALETTE, PALETTE, Overlay, compose, coverage_counts,
+                                coverage_image)
 
 
 def rgba(color):
@@ -23,6 +24,37 @@ def test_coverage_colours_and_counts():
     assert coverage_counts(raster) == (1, 1, 1, 1)
     # The default composition is unchanged.
     assert compose(raster)[0, 2].tolist() == rgba(PALETTE.overdraw)
+
+
+def test_overlaps_carry_a_pattern_in_the_background_colour():
+    # Cells written 0, 1, 2 and 3 times, at 8 image pixels a cell.
+    raster = Raster(4, 1)
+    for x, times in ((1, 1), (2, 2), (3, 3)):
+        for _ in range(times):
+            raster.write(x, 0)
+    for palette in (PALETTE, DARK_PALETTE):
+        for image in (compose(raster, palette=palette, scale=8, coverage=True),
+                      coverage_image(raster.counts, palette, 8)):
+            ground, once, twice, more = (rgba(c) for c in palette.coverage)
+            def at(x, dx, dy):  # pixel (dx, dy) of cell (x, 0), clear of the grid lines
+                return image[dy, 8 * x + dx].tolist()
+            # Twice: stripes "/" every 4 pixels, marked where dx - dy is 0 or 4.
+            assert at(2, 2, 2) == ground and at(2, 5, 1) == ground
+            assert at(2, 3, 2) == twice and at(2, 2, 5) == twice
+            # Three times or more: a cross, on both diagonals of the cell.
+            assert at(3, 3, 3) == ground and at(3, 1, 6) == ground
+            assert at(3, 3, 2) == more and at(3, 5, 1) == more
+            # Written once, or not at all: one colour over the whole cell.
+            assert {tuple(p) for p in image[1:8, 9:16].reshape(-1, 4).tolist()} == {tuple(once)}
+            assert {tuple(p) for p in image[1:8, 1:8].reshape(-1, 4).tolist()} == {tuple(ground)}
+
+
+def test_coverage_patterns_need_room():
+    raster = Raster(2, 1)
+    raster.write(1, 0)
+    raster.write(1, 0)
+    image = compose(raster, scale=3, coverage=True)
+    assert {tuple(p) for p in image[:, 3:].reshape(-1, 4).tolist()} == {tuple(rgba(PALETTE.coverage[2]))}
 
 
 def test_span_box_outlines_the_whole_run():
