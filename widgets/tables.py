@@ -18,6 +18,9 @@ from app.model.tables import ShownTable
 from .panels import CHANGED_VALUE, monospace_font
 
 CHANGED_ROW = QColor("#fff3bf")
+# The text of a changed row: dark on its light ground in either theme (the
+# dark theme's light text would all but vanish on it).
+CHANGED_ROW_TEXT = QColor("#1d2733")
 FRESH_TITLE = "#b35900"
 
 
@@ -108,7 +111,8 @@ class _Block(QWidget):
         font = QFont(self._font)
         font.setBold(cell_changed)
         item.setFont(font)
-        item.setForeground(QBrush(CHANGED_VALUE) if cell_changed else QBrush())
+        text = CHANGED_VALUE if cell_changed else CHANGED_ROW_TEXT if row_changed else None
+        item.setForeground(QBrush(text) if text is not None else QBrush())
 
     def _fit_height(self) -> None:
         table = self.table

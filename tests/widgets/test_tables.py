@@ -73,6 +73,11 @@ def test_panel_shows_rows_and_highlights(qtbot):
     assert widget.horizontalHeaderItem(0).text() == "edge"
     assert widget.item(1, 2).text() == "3"
     assert widget.item(1, 0).background().color() == CHANGED_ROW
+    # A changed row's text is dark on its light ground, whatever the theme's text colour.
+    text = widget.item(1, 0).foreground()
+    assert text.style() == Qt.BrushStyle.SolidPattern   # set, not the theme's
+    assert text.color().lightnessF() < 0.3 < CHANGED_ROW.lightnessF()
+    assert widget.item(0, 0).foreground().style() == Qt.BrushStyle.NoBrush
     assert widget.item(0, 0).background().style() == Qt.BrushStyle.NoBrush
     assert widget.item(1, 2).font().bold() and not widget.item(1, 1).font().bold()
     panel.set_side_by_side(True)
