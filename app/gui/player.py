@@ -8,7 +8,7 @@ the speed call for, so the display never falls behind. Play stops at the
 end of the run and whenever a new trace is installed at its last step.
 
 A run with animation frames (aa-temporal) plays at no more than
-``flash_guard.playback_cap`` steps a second, SAFE_FPS animation frames a
+``flashes.playback_cap`` steps a second, SAFE_FPS animation frames a
 second, whatever speed is chosen (WCAG 2.3.1): the chosen speed is kept and
 shown, the effective one is ``effective_speed``, and ``speedCapped`` says
 so when play starts, or the speed changes, above the cap.
@@ -24,7 +24,7 @@ from algorithms.core.trace import DEFAULT_STEP_CAP
 
 from app.gui.main_thread_gc import collect_in_main_thread
 from app.model.session import Session
-from app.render.flash_guard import cap_note, playback_cap
+from app.render.flashes import cap_note, playback_cap
 
 MIN_SPEED = 1.0
 MAX_SPEED = 2000.0

@@ -11,7 +11,7 @@ change from frame to frame) are drawn and measured first
 only add or outline a few cells each and are not measured.
 
 Playback (the window's transport, the HTML page) is held to the same
-SAFE_FPS animation frames a second by ``playback_cap``, for every run with
+SAFE_FPS animation frames a second by ``flashes.playback_cap``, for every run with
 animation frames, without measuring: a person can change the speed at any
 moment, and measuring means drawing every frame of the run first.
 """
@@ -24,9 +24,8 @@ from algorithms.core import registry
 
 from app.render import flashes
 from app.render.export import FrameRenderer
+from app.render.flashes import SAFE_FPS
 from app.render.settings import chosen_frames, frame_durations, record
-
-SAFE_FPS = 2 * flashes.LIMIT + 1
 
 
 def flash_safe(scene, settings, trace=None):
@@ -52,24 +51,6 @@ def flash_safe(scene, settings, trace=None):
         f"slowed from {checked.fps:g} to {SAFE_FPS} frames a second: at {checked.fps:g} the "
         f"animation would flash {found.per_second} times a second over a large area "
         f"(WCAG 2.3.1 allows {flashes.LIMIT})")
-
-
-def playback_cap(spec, trace) -> float | None:
-    """The most steps a second a run may be played at so that it shows no
-    more than SAFE_FPS pictures a second: SAFE_FPS times the fewest steps
-    between two consecutive pictures, the empty grid at step 0 and each
-    complete animation frame. None when the run has no animation frames."""
-    ends = animation_frame_steps(spec, trace)
-    if not ends:
-        return None
-    pictures = [0, *ends]
-    return float(SAFE_FPS * min(b - a for a, b in zip(pictures, pictures[1:])))
-
-
-def cap_note(cap: float) -> str:
-    """The line saying play is held to ``cap`` steps a second, and why."""
-    return (f"Playing at most {cap:g} steps/s: faster, this animation could flash more "
-            f"than {flashes.LIMIT} times a second")
 
 
 def measure(renderer, steps, settings) -> flashes.Flashes:

@@ -27,7 +27,12 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from algorithms.antialias import animation_frame_steps
+
 LIMIT = 3               # flashes in any one second, WCAG 2.3.1
+# A flash takes two changes of picture: at this many pictures a second or
+# fewer, nothing can flash more than LIMIT times in any second.
+SAFE_FPS = 2 * LIMIT + 1
 CHANGE = 0.1            # a transition: this much relative luminance ...
 DARKER_BELOW = 0.8      # ... where the darker state is below this
 FIELD = (256 / 768, 341 / 1024)   # the 10-degree field, as a fraction of (height, width)
@@ -113,3 +118,21 @@ def _covers(mask: np.ndarray) -> bool:
     table[1:, 1:] = mask.cumsum(0).cumsum(1)
     sums = table[bh:, bw:] - table[:-bh, bw:] - table[bh:, :-bw] + table[:-bh, :-bw]
     return bool(sums.max() >= AREA * bh * bw)
+
+
+def playback_cap(spec, trace) -> float | None:
+    """The most steps a second a run may be played at so that it shows no
+    more than SAFE_FPS pictures a second: SAFE_FPS times the fewest steps
+    between two consecutive pictures, the empty grid at step 0 and each
+    complete animation frame. None when the run has no animation frames."""
+    ends = animation_frame_steps(spec, trace)
+    if not ends:
+        return None
+    pictures = [0, *ends]
+    return float(SAFE_FPS * min(b - a for a, b in zip(pictures, pictures[1:])))
+
+
+def cap_note(cap: float) -> str:
+    """The line saying play is held to ``cap`` steps a second, and why."""
+    return (f"Playing at most {cap:g} steps/s: faster, this animation could flash more "
+            f"than {LIMIT} times a second")

@@ -22,7 +22,7 @@ shows them and, being an ``aria-live`` region, a screen reader reads them
 when a person moves to another step.
 
 A run with animation frames plays at no more than
-``flash_guard.playback_cap`` steps a second whatever speed is chosen (the
+``flashes.playback_cap`` steps a second whatever speed is chosen (the
 page's data carries the cap and the line saying so, shown beside the speed
 list when the speed chosen is above it).
 """
@@ -46,7 +46,7 @@ from app.model.files import write_atomically
 from app.model.geometry import scene_paths
 from app.model.notation import fraction
 from app.model.step_words import describe
-from app.render.flash_guard import cap_note, playback_cap
+from app.render.flashes import cap_note, playback_cap
 from app.render.frame import colour_name
 from app.render.palette import THEMES
 from app.render.settings import ExportError, frame_range

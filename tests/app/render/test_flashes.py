@@ -143,7 +143,7 @@ def test_playback_is_capped_at_7_pictures_a_second(name):
     trace = ex.record(scene)
     steps = picture_steps(trace)
     fewest = min(b - a for a, b in zip(steps, steps[1:]))
-    cap = flash_guard.playback_cap(registry.get("aa-temporal"), trace)
+    cap = flashes.playback_cap(registry.get("aa-temporal"), trace)
     assert cap == 7 * fewest
     # At the cap, no second of play holds more than 7 changes of picture.
     window = cap  # steps in one second
@@ -152,4 +152,4 @@ def test_playback_is_capped_at_7_pictures_a_second(name):
 
 def test_a_run_without_animation_frames_has_no_playback_cap():
     scene = load(shipped.scene_path("demo-bresenham"))
-    assert flash_guard.playback_cap(registry.get(scene.algorithm), ex.record(scene)) is None
+    assert flashes.playback_cap(registry.get(scene.algorithm), ex.record(scene)) is None
