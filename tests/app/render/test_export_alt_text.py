@@ -60,3 +60,19 @@ def test_the_worksheets_have_a_title_subject_language_and_text(run_cli, tmp_path
         words = " ".join(pdf.pages[0].extract_text().split())
         assert kind in words and "Inputs: P = (3, 4)" in words and "dx = x1 - x0" in words
 
+
+
+def test_a_title_no_file_can_hold_is_written_with_replacement_characters(run_cli, tmp_path):
+    """A scene file may spell lone surrogates and control characters in its
+    title (JSON allows "\\ud800"); PNG chunks and PDF strings cannot hold them."""
+    import json
+    scene = json.loads(DEMO.read_text(encoding="utf-8"))
+    scene["title"] = "\ud800 wheel \x1b[31m"
+    path = tmp_path / "odd.json"
+    path.write_text(json.dumps(scene), encoding="utf-8")   # ensure_ascii spells \ud800
+    status, _, err = run_cli("export", path, "--frames-dir", tmp_path / "png", "--pdf",
+                             tmp_path / "frames.pdf", "--to", "1")
+    assert status == 0, err
+    with Image.open(tmp_path / "png" / "frame_0000.png") as png:
+        assert png.text["Title"] == "\ufffd wheel \ufffd[31m"
+    assert PdfReader(tmp_path / "frames.pdf").metadata.title == "\ufffd wheel \ufffd[31m"
