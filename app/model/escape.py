@@ -45,13 +45,14 @@ _LINE_END = re.compile("\r\n|\r|\n")  # where TeX ends a line
 _FOREIGN = re.compile("[\x00-\x08\x0b-\x1f\x7f-\x9f\ufffe\uffff]")
 
 
-def _encodable(text: str) -> str:
+def encodable(text: str) -> str:
+    """``text`` with its lone surrogates (which no UTF encoding can write) as U+FFFD."""
     return _SURROGATE.sub("\ufffd", str(text))
 
 
 def html_text(text: str) -> str:
     """HTML text, also safe inside a quoted attribute value (" and ' too)."""
-    return html.escape(_encodable(text), quote=True)
+    return html.escape(encodable(text), quote=True)
 
 
 def script_json(value) -> str:
@@ -68,7 +69,7 @@ def json_text(text: str) -> str:
     """A string for a JSON file another program reads: JSON can spell a
     lone surrogate (``\\ud800``) but many readers refuse it, and controls
     other than line ends and tabs mean nothing there; both as U+FFFD."""
-    return _FOREIGN.sub("\ufffd", _encodable(text))
+    return _FOREIGN.sub("\ufffd", encodable(text))
 
 
 def xml_chars(text: str) -> str:
@@ -76,7 +77,7 @@ def xml_chars(text: str) -> str:
     surrogates) as U+FFFD, for a library that escapes the rest itself:
     ElementTree writes them as they are, or as character references, and
     the file no longer parses."""
-    return _NOT_XML.sub("\ufffd", _encodable(text))
+    return _NOT_XML.sub("\ufffd", encodable(text))
 
 
 def xml_text(text: str) -> str:
@@ -95,14 +96,14 @@ _LATEX = {"\\": r"\textbackslash{}", "{": r"\{", "}": r"\}", "$": r"\$", "&": r"
 def latex_text(text: str) -> str:
     """LaTeX text that typesets as ``text``: each special character as its
     command, line ends and other controls as spaces."""
-    text = _CONTROL.sub(" ", _encodable(text))
+    text = _CONTROL.sub(" ", encodable(text))
     return "".join(_LATEX.get(char, char) for char in text)
 
 
 def latex_comment(text: str) -> str:
     """``text`` as LaTeX comment lines, each starting with ``% ``: a line
     end in the text starts a new comment line instead of ending the comment."""
-    lines = _LINE_END.split(_encodable(text))
+    lines = _LINE_END.split(encodable(text))
     return "\n".join(f"% {_CONTROL.sub(' ', line)}".rstrip() for line in lines)
 
 
@@ -134,7 +135,7 @@ def markdown_text(text: str) -> str:
     ends as spaces. A bare URL stays text, which some viewers show as a
     link; no image is ever fetched."""
     out = []
-    for char in _CONTROL.sub(" ", _encodable(text)):
+    for char in _CONTROL.sub(" ", encodable(text)):
         if char in _MARKDOWN_ENTITIES:
             out.append(_MARKDOWN_ENTITIES[char])
         else:
@@ -155,7 +156,7 @@ def csv_cell(cell):
     as -1/2 included, and non-text cells are left as they are."""
     if not isinstance(cell, str):
         return cell
-    cell = _encodable(cell)
+    cell = encodable(cell)
     if cell.startswith(_FORMULA_START) and not _NUMBER.fullmatch(cell):
         return "'" + cell
     return cell
@@ -175,7 +176,7 @@ def gift_text(text: str) -> str:
     """Text inside a GIFT question (title, text, answers, feedback) that Moodle
     reads as ``text``: each mark as ``\\mark``, line ends as GIFT's ``\\n``
     (a blank line would end the question), other controls as spaces."""
-    lines = _LINE_END.split(_encodable(text))
+    lines = _LINE_END.split(encodable(text))
     return "\\n".join("".join("\\" + char if char in _GIFT_MARKS else char
                                for char in _CONTROL.sub(" ", line)) for line in lines)
 
@@ -183,13 +184,13 @@ def gift_text(text: str) -> str:
 def shortanswer(text: str) -> str:
     """A Moodle short answer that matches only ``text``: Moodle reads ``*``
     in an answer as "any characters", and ``\\*`` as the character itself."""
-    return _encodable(text).replace("*", "\\*")
+    return encodable(text).replace("*", "\\*")
 
 
 def moodle_category(name: str) -> str:
     """One level of a Moodle category path (``$course$/top/NAME``): Moodle
     splits the path at ``/`` and reads ``//`` as a ``/`` within a name."""
-    return _CONTROL.sub(" ", _encodable(name)).replace("/", "//")
+    return _CONTROL.sub(" ", encodable(name)).replace("/", "//")
 
 
 def foreign_text(text: str, limit: int | None = None) -> str:
@@ -198,7 +199,7 @@ def foreign_text(text: str, limit: int | None = None) -> str:
     and control characters other than line ends and tabs as U+FFFD, a
     carriage return as a line end; at most ``limit`` characters, with the
     count of those left out."""
-    text = _FOREIGN.sub("\ufffd", _encodable(text).replace("\r\n", "\n").replace("\r", "\n"))
+    text = _FOREIGN.sub("\ufffd", encodable(text).replace("\r\n", "\n").replace("\r", "\n"))
     if limit is not None and len(text) > limit:
         text = f"{text[:limit]}\n[{len(text) - limit:,} more characters not shown]"
     return text

@@ -7,7 +7,7 @@ outline entry (bookmark) per page naming its step."""
 from __future__ import annotations
 
 from algorithms.core import registry
-from app.model.escape import foreign_text
+from app.model.escape import encodable
 from app.model.step_words import describe
 
 LANGUAGE = "en"   # every text the program writes is English
@@ -22,9 +22,9 @@ class AltText:
 
     @property
     def title(self) -> str:
-        """The scene's title (a person's text: lone surrogates and control
-        characters, which no PNG chunk or PDF string can hold, as U+FFFD)."""
-        return foreign_text(self.scene.title) or self.spec.title
+        """The scene's title, its lone surrogates (which no PNG chunk or PDF
+        string can hold) as U+FFFD; each format escapes the rest."""
+        return encodable(self.scene.title) or self.spec.title
 
     @property
     def subject(self) -> str:
